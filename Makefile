@@ -1,0 +1,48 @@
+# The two commands of the README, and the steps they are made of.
+# Every target installs what is missing first (scripts/install-deps.sh), then builds.
+SHELL := /bin/bash
+JOBS ?= $(shell nproc)
+DEMO_OUT ?= out/demo
+
+.PHONY: all deps build build-asan demo test test-unit test-asan bench format format-check clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	@cmake --preset default >/dev/null
+	@cmake --build --preset default -j $(JOBS)
+
+build-asan: deps
+	@cmake --preset asan >/dev/null
+	@cmake --build --preset asan -j $(JOBS)
+
+# Runs the demo on the virtual bus and prints where its output is.
+demo: build
+	@build/hilrig demo --out $(DEMO_OUT)
+
+test-unit: build
+	@ctest --preset default -j $(JOBS)
+
+test-asan: build-asan
+	@ctest --preset asan -j $(JOBS)
+
+# Every test, then the sanitizer build's tests.
+test: test-unit test-asan format-check
+	@echo "make test: all suites passed (default and ASan+UBSan builds)"
+
+bench: deps
+	@cmake --preset release >/dev/null
+	@cmake --build --preset release -j $(JOBS)
+	@bash bench/run-all.sh
+
+format:
+	@git ls-files '*.cpp' '*.hpp' | xargs clang-format -i
+
+format-check:
+	@git ls-files '*.cpp' '*.hpp' | xargs -r clang-format --dry-run -Werror
+
+clean:
+	rm -rf build build-asan build-release

@@ -1,0 +1,57 @@
+# Common flags for every hilrig target, and small helpers so each folder's
+# CMakeLists.txt says only what it builds and what it depends on.
+
+add_library(hilrig_flags INTERFACE)
+target_compile_options(hilrig_flags INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion
+  -Wnon-virtual-dtor -Wold-style-cast -Woverloaded-virtual -Wnull-dereference
+  -Wdouble-promotion -Wimplicit-fallthrough)
+if(HILRIG_WERROR)
+  target_compile_options(hilrig_flags INTERFACE -Werror)
+endif()
+if(HILRIG_SANITIZE)
+  target_compile_options(hilrig_flags INTERFACE
+    -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_link_options(hilrig_flags INTERFACE -fsanitize=address,undefined)
+endif()
+target_include_directories(hilrig_flags INTERFACE ${PROJECT_SOURCE_DIR})
+
+# hilrig_library(NAME SOURCES ... DEPS ...)
+function(hilrig_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_library(${name} STATIC ${ARG_SOURCES})
+  target_link_libraries(${name} PUBLIC hilrig_flags ${ARG_DEPS})
+endfunction()
+
+# hilrig_test(NAME SOURCES ... DEPS ...): one GoogleTest executable, tests discovered by ctest.
+function(hilrig_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE hilrig_flags ${ARG_DEPS} GTest::gtest GTest::gtest_main GTest::gmock)
+  # Project root and shared/ (the spec digests) are visible to tests as compile-time paths,
+  # never hard-coded machine paths.
+  target_compile_definitions(${name} PRIVATE
+    HILRIG_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    HILRIG_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  include(GoogleTest)
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
+endfunction()
+
+# hilrig_bench(NAME SOURCES ... DEPS ...)
+function(hilrig_bench name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE hilrig_flags ${ARG_DEPS} benchmark::benchmark)
+endfunction()
+
+# Adds every immediate subfolder of the current folder that has a CMakeLists.txt,
+# so a new device or driver folder joins the build without editing its parent.
+function(hilrig_add_subfolders)
+  file(GLOB children LIST_DIRECTORIES true RELATIVE ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR}/*)
+  list(SORT children)
+  foreach(child ${children})
+    if(IS_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/${child} AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${child}/CMakeLists.txt)
+      add_subdirectory(${child})
+    endif()
+  endforeach()
+endfunction()

@@ -1,0 +1,81 @@
+#pragma once
+// Discrete-event scheduler that owns virtual time. Events at equal times run in the
+// order they were scheduled (a sequence number breaks ties), so a run is deterministic.
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "core/clock.hpp"
+
+namespace hilrig {
+
+struct EventId {
+  std::uint32_t slot = UINT32_MAX;
+  std::uint32_t generation = 0;
+  [[nodiscard]] bool valid() const { return slot != UINT32_MAX; }
+};
+
+class Scheduler {
+public:
+  using Action = std::function<void()>;
+
+  enum class StopReason { ReachedTime, Idle, Stopped };
+
+  explicit Scheduler(Nanos start = Nanos{0}) : clock_(start) {}
+  Scheduler(const Scheduler&) = delete;
+  Scheduler& operator=(const Scheduler&) = delete;
+
+  [[nodiscard]] Nanos now() const { return clock_.now(); }
+  [[nodiscard]] const Clock& clock() const { return clock_; }
+
+  // Schedules at an absolute time; a time before now() is a logic error and throws.
+  EventId at(Nanos t, Action action);
+  EventId after(Nanos delay, Action action) { return at(now() + delay, std::move(action)); }
+
+  // True when the event was still pending (and now never runs).
+  bool cancel(EventId id);
+  [[nodiscard]] bool pending(EventId id) const;
+  [[nodiscard]] std::size_t pending_count() const { return live_; }
+  [[nodiscard]] std::uint64_t executed() const { return executed_; }
+  // Time of the next pending event, or Nanos::max() when idle.
+  [[nodiscard]] Nanos next_time();
+
+  // Runs every event with time <= t, then sets the clock to t.
+  StopReason run_until(Nanos t);
+  // Runs until no event is pending (or one at/after `limit` is next).
+  StopReason run_until_idle(Nanos limit = Nanos::max());
+  // Runs the next event, if any. False when idle.
+  bool step();
+  // From inside an event: the current run_* returns StopReason::Stopped after it.
+  void stop() { stop_requested_ = true; }
+
+private:
+  struct Entry {
+    std::int64_t time;
+    std::uint64_t seq;
+    std::uint32_t slot;
+    std::uint32_t generation;
+  };
+  struct Slot {
+    Action action;
+    std::uint32_t generation = 0;
+    bool live = false;
+  };
+  static bool later(const Entry& a, const Entry& b) {
+    return a.time != b.time ? a.time > b.time : a.seq > b.seq;
+  }
+  void drop_dead_top();
+  void release(std::uint32_t slot);
+
+  VirtualClock clock_;
+  std::vector<Entry> heap_;
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> free_;
+  std::uint64_t next_seq_ = 0;
+  std::uint64_t executed_ = 0;
+  std::size_t live_ = 0;
+  bool stop_requested_ = false;
+};
+
+} // namespace hilrig

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# The one place hilrig's Debian 12 packages are named. Installs only what is missing,
+# so `make demo` and `make test` can call it every time at no cost.
+set -euo pipefail
+
+# package            why
+packages=(
+  build-essential     # g++ 12 (C++20), make
+  cmake               # build system (>= 3.25)
+  ninja-build         # fast parallel builds for every preset
+  pkg-config          # finds libgpiod and libmodbus
+  libgtest-dev        # GoogleTest: unit, property and virtual-lane tests
+  libgmock-dev        # GoogleMock, shipped with GoogleTest
+  libbenchmark-dev    # Google Benchmark: bench/
+  libboost-dev        # Boost.Asio: serial ports, host-link I/O, signals on the non-RT side
+  libeigen3-dev       # plant models (shafts, press brake, stepper load)
+  libtomlplusplus-dev # campaign files (TOML) with line/column in errors
+  libcli11-dev        # the hilrig command line
+  libfmt-dev          # formatting of reports and messages
+  nlohmann-json3-dev  # results.json, shard merging, baselines
+  libmodbus-dev       # Modbus RTU/TCP host link and the virtual SMD23E server
+  libgpiod-dev        # GPIO backend (libgpiod 1.6 on Debian 12)
+  mbpoll              # an independent Modbus client for integration tests
+  can-utils           # candump/log2asc/canplayer: read the rig's CAN logs
+  rt-tests            # cyclictest: the peer for the RT loop's latency
+  python3             # test helpers: an independent VCD/JUnit reader
+  clang-format        # the committed .clang-format
+)
+
+want=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    want+=("$p")
+  fi
+done
+
+if [ ${#want[@]} -eq 0 ]; then
+  exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: missing packages: ${want[*]}" >&2
+  echo "install-deps: run as root (or: sudo $0)" >&2
+  exit 1
+fi
+
+echo "install-deps: installing ${want[*]}"
+export DEBIAN_FRONTEND=noninteractive
+# An old package list can miss packages: refresh once, then install.
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${want[@]}"

@@ -1,0 +1,103 @@
+#include "core/scheduler.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using namespace hilrig;
+using namespace hilrig::literals;
+
+TEST(Scheduler, RunsEventsInTimeOrder) {
+  Scheduler s;
+  std::vector<int> order;
+  s.at(3_us, [&] { order.push_back(3); });
+  s.at(1_us, [&] { order.push_back(1); });
+  s.at(2_us, [&] { order.push_back(2); });
+  EXPECT_EQ(s.run_until_idle(), Scheduler::StopReason::Idle);
+  EXPECT_EQ(order, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(s.now(), 3_us);
+}
+
+TEST(Scheduler, EqualTimesRunInSchedulingOrder) {
+  Scheduler s;
+  std::string order;
+  for (char c : std::string("abcdefghij")) {
+    s.at(5_us, [&order, c] { order.push_back(c); });
+  }
+  // An event scheduled from inside another at the same time runs after those already queued.
+  s.at(5_us, [&] { s.at(5_us, [&] { order.push_back('z'); }); });
+  s.at(5_us, [&] { order.push_back('k'); });
+  s.run_until_idle();
+  EXPECT_EQ(order, "abcdefghijkz");
+}
+
+TEST(Scheduler, CancelledEventNeverRuns) {
+  Scheduler s;
+  int ran = 0;
+  EventId a = s.at(1_us, [&] { ran += 1; });
+  EventId b = s.at(2_us, [&] { ran += 10; });
+  EXPECT_TRUE(s.pending(a));
+  EXPECT_TRUE(s.cancel(a));
+  EXPECT_FALSE(s.pending(a));
+  EXPECT_FALSE(s.cancel(a)); // twice is a no-op
+  EXPECT_EQ(s.pending_count(), 1U);
+  s.run_until_idle();
+  EXPECT_EQ(ran, 10);
+  EXPECT_FALSE(s.cancel(b)); // already ran
+}
+
+TEST(Scheduler, StaleIdDoesNotCancelReusedSlot) {
+  Scheduler s;
+  int ran = 0;
+  EventId a = s.at(1_us, [&] { ran += 1; });
+  s.cancel(a);
+  s.at(2_us, [&] { ran += 10; }); // reuses a's slot
+  EXPECT_FALSE(s.cancel(a));
+  s.run_until_idle();
+  EXPECT_EQ(ran, 10);
+}
+
+TEST(Scheduler, RunUntilStopsAtTimeAndAdvancesClock) {
+  Scheduler s;
+  int ran = 0;
+  s.at(10_us, [&] { ++ran; });
+  s.at(20_us, [&] { ++ran; });
+  EXPECT_EQ(s.run_until(15_us), Scheduler::StopReason::ReachedTime);
+  EXPECT_EQ(ran, 1);
+  EXPECT_EQ(s.now(), 15_us);
+  s.run_until(20_us); // inclusive
+  EXPECT_EQ(ran, 2);
+}
+
+TEST(Scheduler, StopFromInsideAnEvent) {
+  Scheduler s;
+  int ran = 0;
+  s.at(1_us, [&] {
+    ++ran;
+    s.stop();
+  });
+  s.at(2_us, [&] { ++ran; });
+  EXPECT_EQ(s.run_until_idle(), Scheduler::StopReason::Stopped);
+  EXPECT_EQ(ran, 1);
+  EXPECT_EQ(s.run_until_idle(), Scheduler::StopReason::Idle);
+  EXPECT_EQ(ran, 2);
+}
+
+TEST(Scheduler, RejectsEventsInThePast) {
+  Scheduler s;
+  s.run_until(5_us);
+  EXPECT_THROW(s.at(4_us, [] {}), std::logic_error);
+}
+
+TEST(Scheduler, PeriodicEventReschedulesItself) {
+  Scheduler s;
+  std::vector<Nanos> ticks;
+  std::function<void()> tick = [&] {
+    ticks.push_back(s.now());
+    if (ticks.size() < 4) s.after(200_us, tick);
+  };
+  s.at(0_ns, tick);
+  s.run_until_idle();
+  EXPECT_EQ(ticks, (std::vector<Nanos>{0_us, 200_us, 400_us, 600_us}));
+}
