@@ -1,0 +1,62 @@
+#pragma once
+// A motion profile is a queue of constant-acceleration segments, as in Klipper's trapq:
+// each move is a start time, a duration, a start position and velocity, and an
+// acceleration. Position, velocity and acceleration at any time come in closed form.
+// Units: position in "counts" of the caller's choosing (usually turns or encoder counts
+// — the profile does not care), time in Nanos, velocity per second, acceleration per s².
+
+#include <cstddef>
+#include <vector>
+
+#include "core/time.hpp"
+
+namespace hilrig::signals {
+
+struct Segment {
+  Nanos start;        // absolute start time
+  Nanos duration;     // > 0, or Nanos::max() for "forever" (last segment only)
+  double position;    // at start
+  double velocity;    // at start, units/s
+  double acceleration;// units/s², constant through the segment
+
+  [[nodiscard]] Nanos end() const;
+  [[nodiscard]] double position_at(Nanos t) const;  // t measured absolutely
+  [[nodiscard]] double velocity_at(Nanos t) const;
+  [[nodiscard]] double end_position() const;
+  [[nodiscard]] double end_velocity() const;
+};
+
+class MotionProfile {
+public:
+  MotionProfile() = default;
+  explicit MotionProfile(double start_position, Nanos start_time = Nanos{0});
+
+  // Appends a segment that starts where and when the last one ended (continuous position
+  // and velocity).
+  MotionProfile& accelerate(double acceleration, Nanos duration);
+  MotionProfile& cruise(Nanos duration);    // constant velocity (acceleration 0)
+  MotionProfile& dwell(Nanos duration);     // velocity must be 0 (throws otherwise)
+  // Appends an arbitrary segment; its start must equal the current end time.
+  MotionProfile& append(const Segment& s);
+
+  [[nodiscard]] const std::vector<Segment>& segments() const { return segments_; }
+  [[nodiscard]] Nanos start_time() const;
+  [[nodiscard]] Nanos end_time() const;
+  [[nodiscard]] double end_position() const;
+  [[nodiscard]] double end_velocity() const;
+
+  // Closed form at any time; before the start: start state; after the end: the last
+  // segment's end position held (velocity 0) unless the last segment is open-ended.
+  [[nodiscard]] double position(Nanos t) const;
+  [[nodiscard]] double velocity(Nanos t) const;
+  [[nodiscard]] double acceleration(Nanos t) const;
+  // The segment index containing t (binary search).
+  [[nodiscard]] std::size_t segment_index(Nanos t) const;
+
+private:
+  double start_position_ = 0.0;
+  Nanos start_time_{0};
+  std::vector<Segment> segments_;
+};
+
+} // namespace hilrig::signals
