@@ -1,0 +1,65 @@
+#pragma once
+// A measurement, as in OpenHTF: a named value with a unit, optional limits, a
+// three-valued outcome, and the window of the trace that proves it.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/time.hpp"
+
+namespace hilrig::rig {
+
+enum class Outcome { Pass, Fail, Error }; // Error: could not be measured (no data, rig fault)
+
+[[nodiscard]] constexpr const char* to_string(Outcome o) {
+  return o == Outcome::Pass ? "pass" : o == Outcome::Fail ? "fail" : "error";
+}
+
+struct TraceWindow {
+  Nanos begin;
+  Nanos end;
+};
+
+struct Measurement {
+  std::string name; // e.g. "throughput.ls1.p99"
+  double value = 0.0;
+  std::string unit;            // "us", "counts", "ms", "rpm", "" ...
+  std::optional<double> lower; // inclusive
+  std::optional<double> upper; // inclusive
+  Outcome outcome = Outcome::Error;
+  std::string detail; // one human sentence: what was compared, why it failed
+  std::optional<TraceWindow> window;
+};
+
+// An observation: a value read from the DUT (a status or data word) recorded by name.
+struct Observation {
+  std::string name;
+  double value = 0.0;
+  std::string unit;
+  Nanos time;
+};
+
+// Judges value against the limits: Pass when inside (inclusive), Fail otherwise.
+[[nodiscard]] inline Outcome judge(double value, std::optional<double> lower, std::optional<double> upper) {
+  if (lower && value < *lower) return Outcome::Fail;
+  if (upper && value > *upper) return Outcome::Fail;
+  return Outcome::Pass;
+}
+
+// One check's result: its measurements, all of which must pass for the check to pass.
+struct CheckResult {
+  std::string check; // the check's name in the campaign
+  std::string kind;  // "throughput", "debounce", ...
+  std::vector<Measurement> measurements;
+  [[nodiscard]] Outcome outcome() const {
+    Outcome o = Outcome::Pass;
+    for (const auto& m : measurements) {
+      if (m.outcome == Outcome::Error) return Outcome::Error;
+      if (m.outcome == Outcome::Fail) o = Outcome::Fail;
+    }
+    return measurements.empty() ? Outcome::Error : o;
+  }
+};
+
+} // namespace hilrig::rig
