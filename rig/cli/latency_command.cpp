@@ -1,0 +1,87 @@
+#include "rig/cli/latency_command.hpp"
+
+#include <fmt/core.h>
+
+#include <atomic>
+#include <csignal>
+#include <memory>
+#include <thread>
+
+#include "core/clock.hpp"
+#include "rig/cli/exit_status.hpp"
+#include "rig/rt/rt_loop.hpp"
+#include "rig/rt/rt_thread.hpp"
+
+namespace hilrig::cli {
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int /*sig*/) { g_stop.store(true); }
+
+struct LatencyOptions {
+  double duration_s = 10.0;
+  int priority = 80;
+  int cpu = -1;
+  std::int64_t interval_us = 1000;
+  bool quiet_histogram = false;
+};
+
+int run_latency(const LatencyOptions& o) {
+  auto histogram = std::make_unique<rig::LatencyHistogram>();
+  const auto loops = static_cast<std::uint64_t>(o.duration_s * 1e6 / static_cast<double>(o.interval_us));
+  rig::RtSetupReport setup;
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  // The measuring thread is set up exactly as the campaign RT loop is.
+  std::thread rt([&] {
+    rig::RtSettings settings;
+    settings.priority = o.priority;
+    if (o.cpu >= 0) settings.cpu = o.cpu;
+    setup = rig::make_current_thread_realtime(settings);
+    const Nanos start = MonotonicClock{}.now();
+    rig::measure_wakeups(start, microseconds(o.interval_us), loops, g_stop, *histogram);
+  });
+  rt.join();
+
+  const auto& h = *histogram;
+  fmt::print("# hilrig latency: SCHED_FIFO priority {} ({}), cpu {} ({}), memory {}\n", o.priority,
+             setup.scheduled ? "applied" : "NOT applied",
+             o.cpu < 0 ? std::string("any") : std::to_string(o.cpu), setup.pinned ? "pinned" : "not pinned",
+             setup.locked ? "locked" : "NOT locked");
+  if (!setup.problems.empty()) fmt::print("# problems: {}\n", setup.problems);
+  fmt::print("T: 0 P:{:2d} I:{} C:{:7d} Min:{:7d} Avg:{:7d} Max:{:7d}\n", o.priority, o.interval_us,
+             h.count(), h.min().count() / 1000, h.average().count() / 1000, h.max().count() / 1000);
+  if (!o.quiet_histogram) {
+    fmt::print("# Histogram\n");
+    for (std::size_t us = 0; us <= h.last_bin(); ++us) fmt::print("{:06d} {:06d}\n", us, h.bin(us));
+  }
+  fmt::print("# Total: {:09d}\n", h.count());
+  fmt::print("# Min Latencies: {:05d}\n", h.min().count() / 1000);
+  fmt::print("# Avg Latencies: {:05d}\n", h.average().count() / 1000);
+  fmt::print("# Max Latencies: {:05d}\n", h.max().count() / 1000);
+  fmt::print("# P99 Latencies: {:05d}\n", h.percentile_us(0.99));
+  fmt::print("# Histogram Overflows: {:05d}\n", h.overflow());
+  // A box that could not give the loop SCHED_FIFO is not qualified to run a board.
+  return setup.scheduled || o.priority == 0 ? kPassed : kRigFault;
+}
+
+} // namespace
+
+void add_latency_command(CLI::App& app) {
+  auto opts = std::make_shared<LatencyOptions>();
+  CLI::App* cmd = app.add_subcommand("latency", "Measure the RT loop's wake-up latency, like cyclictest");
+  cmd->add_option("--duration", opts->duration_s, "seconds to measure")->check(CLI::PositiveNumber);
+  cmd->add_option("--priority", opts->priority, "SCHED_FIFO priority (0 = SCHED_OTHER)")
+      ->check(CLI::Range(0, 99));
+  cmd->add_option("--cpu", opts->cpu, "pin to this CPU")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--interval", opts->interval_us, "wake-up interval in us")
+      ->check(CLI::Range(10, 1'000'000));
+  cmd->add_flag("--quiet", opts->quiet_histogram, "omit the histogram");
+  cmd->callback([opts] {
+    const int code = run_latency(*opts);
+    if (code != kPassed) exit_with(code);
+  });
+}
+
+} // namespace hilrig::cli
