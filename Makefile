@@ -4,7 +4,7 @@ SHELL := /bin/bash
 JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
 
-.PHONY: all deps build build-asan demo test test-unit test-asan bench format format-check clean
+.PHONY: all deps build build-asan demo test test-unit test-asan test-vm bench format format-check clean
 
 all: build
 
@@ -29,8 +29,13 @@ test-unit: build
 test-asan: build-asan
 	@ctest --preset asan -j $(JOBS)
 
-# Every test, then the sanitizer build's tests.
-test: test-unit test-asan format-check
+# The RT VM lane: Debian's PREEMPT_RT kernel under QEMU with gpio-sim, SocketCAN and UARTs.
+test-vm: build
+	@bash scripts/install-deps.sh --vm
+	@bash rt-config/vm/run-lane.sh build-vm
+
+# Every test, then the sanitizer build's tests, then the RT VM lane.
+test: test-unit test-asan format-check test-vm
 	@echo "make test: all suites passed (default and ASan+UBSan builds)"
 
 bench: deps

@@ -27,6 +27,28 @@ packages=(
   clang-format        # the committed .clang-format
 )
 
+# The RT VM lane (rt-config/vm/, `make test-vm`) needs more: `install-deps.sh --vm`.
+if [ "${1:-}" = "--vm" ]; then
+  # The PREEMPT_RT kernel behind Debian's metapackage; its image is downloaded and extracted
+  # by rt-config/vm/prepare.sh (never installed on the host), its headers are installed here.
+  kabi=$(apt-cache depends linux-image-rt-amd64 2>/dev/null | awk '/Depends: linux-image-[0-9]/ {print $2; exit}')
+  if [ -z "$kabi" ] && [ "$(id -u)" -eq 0 ]; then
+    apt-get update -qq
+    kabi=$(apt-cache depends linux-image-rt-amd64 2>/dev/null | awk '/Depends: linux-image-[0-9]/ {print $2; exit}')
+  fi
+  packages+=(
+    qemu-system-x86          # boots the PREEMPT_RT kernel under TCG
+    busybox-static           # the guest's initramfs
+    cpio                     # packs the initramfs
+    kmod                     # modinfo: module dependency order for the guest
+    iproute2                 # ip link: vcan, CAN bitrates inside the guest
+    linux-source-6.1         # gpio-sim.c and irq_sim.c, built as a module
+    bc                       # kernel module build (Kbuild)
+    "linux-headers-${kabi#linux-image-}" # module build against the guest kernel
+    gpiod                    # gpiodetect/gpioinfo in the guest: shows the gpio-sim chip
+  )
+fi
+
 want=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
