@@ -20,7 +20,7 @@ console="$work/console.log"
 step "booting $kver under QEMU (TCG); console in $console"
 append="console=ttyS0 panic=-1 quiet hilrig.guest=$here/guest.sh hilrig.out=$out hilrig.work=$work"
 [ -n "$payload" ] && append="$append hilrig.payload=$(cd "$(dirname "$payload")" && pwd)/$(basename "$payload")"
-# ttyS1 <-> ttyS2: two guest UARTs joined by UDP on loopback, for the serial host link.
+# ttyS0 is the console; ttyS1 <-> ttyS2: two guest UARTs joined by UDP on loopback, for the serial host link.
 p1=$((20000 + RANDOM % 20000)); p2=$((p1 + 1))
 set +e
 timeout --foreground 280 qemu-system-x86_64 -accel tcg -m 1024 -smp 2 -nographic -no-reboot \
@@ -28,6 +28,7 @@ timeout --foreground 280 qemu-system-x86_64 -accel tcg -m 1024 -smp 2 -nographic
   -virtfs local,path=/,mount_tag=hostroot,security_model=none,readonly=on,multidevs=remap \
   -virtfs local,path="$out",mount_tag=laneout,security_model=none \
   -object can-bus,id=cb0 -device kvaser_pci,canbus=cb0 -device kvaser_pci,canbus=cb0 \
+  -serial mon:stdio \
   -chardev udp,id=u1,host=127.0.0.1,port=$p2,localaddr=127.0.0.1,localport=$p1 -serial chardev:u1 \
   -chardev udp,id=u2,host=127.0.0.1,port=$p1,localaddr=127.0.0.1,localport=$p2 -serial chardev:u2 \
   </dev/null >"$console" 2>&1
