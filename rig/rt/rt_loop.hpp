@@ -9,39 +9,17 @@
 #include <span>
 
 #include "core/line.hpp"
+#include "core/rt_ports.hpp"
 #include "core/time.hpp"
 #include "rig/rt/latency_histogram.hpp"
 #include "rig/rt/spsc_ring.hpp"
 
 namespace hilrig::rig {
 
-// One output edge of a precomputed schedule; time is relative to the run's start.
-struct ScheduledEdge {
-  Nanos time;
-  std::uint16_t line;
-  Level level;
-};
-
-// An input edge as the backend timestamped it (kernel timestamp for gpiod).
-struct InputEdge {
-  Nanos time;
-  std::uint16_t line;
-  Level level;
-};
-
-// Where the loop writes: one call per edge. Implementations do the I/O and nothing else.
-class RtOutputPort {
-public:
-  virtual ~RtOutputPort() = default;
-  virtual void write(std::uint16_t line, Level level) noexcept = 0;
-};
-
-// Where the loop reads: fills `out` with edges seen since the last poll; never blocks.
-class RtInputPort {
-public:
-  virtual ~RtInputPort() = default;
-  virtual std::size_t poll(std::span<InputEdge> out) noexcept = 0;
-};
+using hilrig::InputEdge;
+using hilrig::RtInputPort;
+using hilrig::RtOutputPort;
+using hilrig::ScheduledEdge;
 
 struct LoopSample {
   enum class Kind : std::uint8_t { Output, Input };
