@@ -32,7 +32,7 @@ test-asan: build-asan
 # The RT VM lane: Debian's PREEMPT_RT kernel under QEMU with gpio-sim, SocketCAN and UARTs.
 test-vm: build
 	@bash scripts/install-deps.sh --vm
-	@bash rt-config/vm/run-lane.sh build-vm
+	@bash rt-config/vm/run-lane.sh build-vm rt-config/vm/payload-kernel-tests.sh
 
 # Every test, then the sanitizer build's tests, then the RT VM lane.
 test: test-unit test-asan format-check test-vm

@@ -1,0 +1,70 @@
+#pragma once
+// A raw SocketCAN socket: classic and CAN FD frames, receive filters, error frames, kernel
+// receive timestamps (SO_TIMESTAMPNS: CLOCK_REALTIME, as candump logs them), and transmit
+// with a deadline. Receive and send never allocate, so the RT side may use them.
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/can_frame.hpp"
+#include "core/time.hpp"
+#include "drivers/socketcan/bus_state.hpp"
+
+namespace hilrig::socketcan {
+
+struct CanFilter {
+  std::uint32_t id = 0;
+  std::uint32_t mask = 0; // bits that must match; 0 accepts everything
+  bool extended = false;
+};
+
+struct CanSocketOptions {
+  bool fd = false;                // accept and send CAN FD frames
+  std::vector<CanFilter> filters; // empty: receive everything
+  bool error_frames = true;       // receive controller error frames
+  bool receive_own = false;       // see our own transmitted frames
+};
+
+// A failure to open or configure the socket; names the interface and the reason.
+class CanError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct CanReceived {
+  Nanos timestamp; // kernel receive time, CLOCK_REALTIME
+  bool is_error = false;
+  CanFrame frame;    // valid when !is_error
+  ErrorReport error; // valid when is_error
+};
+
+enum class SendStatus : std::uint8_t { Sent, DeadlineMissed, BusOff, Failed };
+
+class CanSocket {
+public:
+  CanSocket(const std::string& interface, const CanSocketOptions& options = {});
+  ~CanSocket();
+  CanSocket(const CanSocket&) = delete;
+  CanSocket& operator=(const CanSocket&) = delete;
+
+  // Queues a frame, waiting for room in the transmit queue until `deadline`
+  // (CLOCK_MONOTONIC, absolute). A frame that could not be queued in time is not sent.
+  SendStatus send(const CanFrame& frame, Nanos deadline);
+  // One received frame or error frame, waiting at most `timeout` (0: do not wait).
+  std::optional<CanReceived> receive(Nanos timeout = Nanos{0});
+
+  [[nodiscard]] int fd() const { return fd_; }
+  [[nodiscard]] const std::string& interface() const { return interface_; }
+  [[nodiscard]] int last_errno() const { return last_errno_; }
+
+private:
+  int fd_ = -1;
+  std::string interface_;
+  bool fd_frames_ = false;
+  int last_errno_ = 0;
+};
+
+} // namespace hilrig::socketcan

@@ -1,0 +1,141 @@
+// libgpiod backend against a real gpio-sim chip. The lane gives the chip's name and its
+// simulator sysfs directory in HILRIG_GPIO_CHIP and HILRIG_GPIO_SIM (sim_gpioN/value reads a
+// line the rig drives; sim_gpioN/pull drives a line the rig reads).
+#include <poll.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "core/clock.hpp"
+#include "drivers/gpiod/input_request.hpp"
+#include "drivers/gpiod/output_request.hpp"
+
+using namespace hilrig;
+using namespace hilrig::gpiod;
+
+namespace {
+
+std::string env(const char* name) {
+  const char* v = std::getenv(name);
+  if (v == nullptr) throw std::runtime_error(std::string(name) + " is not set: run this from rt-config/vm");
+  return v;
+}
+
+int sim_value(unsigned line) {
+  std::ifstream f(env("HILRIG_GPIO_SIM") + "/sim_gpio" + std::to_string(line) + "/value");
+  int v = -1;
+  f >> v;
+  return v;
+}
+
+void sim_pull(unsigned line, const char* pull) {
+  std::ofstream f(env("HILRIG_GPIO_SIM") + "/sim_gpio" + std::to_string(line) + "/pull");
+  f << pull;
+}
+
+} // namespace
+
+TEST(GpiodOutput, SingleLineReachesTheFarSide) {
+  const std::array<unsigned, 1> lines{0};
+  OutputRequest out(env("HILRIG_GPIO_CHIP"), lines, LineSettings{});
+  EXPECT_EQ(sim_value(0), 0); // requested at its inactive level
+  out.write(0, Level::High);
+  EXPECT_EQ(sim_value(0), 1);
+  out.write(0, Level::Low);
+  EXPECT_EQ(sim_value(0), 0);
+  EXPECT_EQ(out.write_errors(), 0U);
+}
+
+TEST(GpiodOutput, BulkWriteChangesABAndZTogether) {
+  const std::array<unsigned, 3> lines{2, 3, 4};
+  OutputRequest out(env("HILRIG_GPIO_CHIP"), lines, LineSettings{});
+  const std::array<Level, 3> abz{Level::High, Level::Low, Level::High};
+  out.write_all(abz);
+  EXPECT_EQ(sim_value(2), 1);
+  EXPECT_EQ(sim_value(3), 0);
+  EXPECT_EQ(sim_value(4), 1);
+  out.drive_inactive();
+  EXPECT_EQ(sim_value(2), 0);
+  EXPECT_EQ(sim_value(4), 0);
+}
+
+TEST(GpiodOutput, ActiveLowInvertsTheWire) {
+  const std::array<unsigned, 1> lines{5};
+  LineSettings s;
+  s.active_low = true;
+  OutputRequest out(env("HILRIG_GPIO_CHIP"), lines, s);
+  EXPECT_EQ(sim_value(5), 1); // inactive = wire high for an active-low pin
+  out.write(0, Level::High);
+  EXPECT_EQ(sim_value(5), 0);
+}
+
+TEST(GpiodOutput, LineIsFreeAgainAfterTheRequestEnds) {
+  const std::array<unsigned, 1> lines{6};
+  { OutputRequest first(env("HILRIG_GPIO_CHIP"), lines, LineSettings{}); }
+  EXPECT_NO_THROW(OutputRequest second(env("HILRIG_GPIO_CHIP"), lines, LineSettings{}));
+}
+
+TEST(GpiodOutput, BusyLineIsANamedError) {
+  const std::array<unsigned, 1> lines{7};
+  OutputRequest first(env("HILRIG_GPIO_CHIP"), lines, LineSettings{});
+  try {
+    OutputRequest second(env("HILRIG_GPIO_CHIP"), lines, LineSettings{});
+    FAIL() << "a line can have one driver";
+  } catch (const GpioError& e) {
+    EXPECT_NE(std::string(e.what()).find("lines 7"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GpiodInput, EdgesCarryKernelTimestampsInOrder) {
+  const std::array<unsigned, 2> lines{8, 9};
+  sim_pull(8, "pull-down");
+  sim_pull(9, "pull-down");
+  InputRequest in(env("HILRIG_GPIO_CHIP"), lines, LineSettings{});
+  const Nanos before = MonotonicClock{}.now();
+  sim_pull(8, "pull-up");
+  sim_pull(9, "pull-up");
+  sim_pull(8, "pull-down");
+  const Nanos after = MonotonicClock{}.now();
+  // On PREEMPT_RT the simulator's interrupts are delivered by a kernel thread, so the
+  // events may still be on their way: wait on the event fds, bounded, until all three came.
+  std::array<InputEdge, 8> edges{};
+  std::size_t n = 0;
+  for (int tries = 0; tries < 200 && n < 3; ++tries) {
+    std::array<pollfd, 2> fds{pollfd{in.event_fds()[0], POLLIN, 0}, pollfd{in.event_fds()[1], POLLIN, 0}};
+    ::poll(fds.data(), fds.size(), 10);
+    n += in.poll(std::span<InputEdge>(edges).subspan(n));
+  }
+  ASSERT_EQ(n, 3U);
+  std::size_t rising8 = 0, rising9 = 0, falling8 = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_GE(edges[i].time, before);
+    EXPECT_LE(edges[i].time, after);
+    if (edges[i].line == 0 && edges[i].level == Level::High) ++rising8;
+    if (edges[i].line == 1 && edges[i].level == Level::High) ++rising9;
+    if (edges[i].line == 0 && edges[i].level == Level::Low) ++falling8;
+  }
+  // Per line, the kernel's timestamps follow the order the edges happened.
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (edges[i].line == edges[j].line) {
+        EXPECT_LE(edges[i].time, edges[j].time);
+      }
+    }
+  }
+  EXPECT_EQ(rising8, 1U);
+  EXPECT_EQ(rising9, 1U);
+  EXPECT_EQ(falling8, 1U);
+  EXPECT_EQ(in.level(1), Level::High);
+  EXPECT_EQ(in.poll(edges), 0U); // drained
+}
+
+TEST(GpiodInput, DebounceIsRefusedOnLibgpiod16NotIgnored) {
+  const std::array<unsigned, 1> lines{10};
+  LineSettings s;
+  s.debounce = microseconds(100);
+  EXPECT_THROW(InputRequest(env("HILRIG_GPIO_CHIP"), lines, s), GpioError);
+}
