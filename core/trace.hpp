@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,9 +24,14 @@ enum class SignalKind : std::uint8_t {
 };
 
 struct SignalInfo {
-  std::string name;  // hierarchical with '.', e.g. "rig.enc.A" or "dut.ls1"
+  std::string name; // hierarchical with '.', e.g. "rig.enc.A" or "dut.ls1"
   SignalKind kind = SignalKind::Wire;
   std::uint8_t width = 1; // bits, for Integer
+  // The value before the first sample (written in the VCD's $dumpvars); unknown ('x')
+  // until set_initial() is called.
+  bool has_initial = false;
+  std::int64_t initial = 0;  // Wire, Integer
+  double initial_real = 0.0; // Real
 };
 
 enum class SerialDirection : std::uint8_t { AtoB, BtoA };
@@ -53,7 +59,11 @@ struct TraceSerialByte {
 class TraceRecorder {
 public:
   // Declares a signal; declaring the same name twice returns the same index.
+  // Declaring it again with another kind or width throws std::invalid_argument.
   std::uint32_t declare(std::string_view name, SignalKind kind = SignalKind::Wire, std::uint8_t width = 1);
+  // The value a signal has before its first sample (e.g. a line's initial level).
+  void set_initial(std::uint32_t signal, std::int64_t v);
+  void set_initial_real(std::uint32_t signal, double v);
 
   void edge(std::uint32_t signal, const Edge& e);
   void value(std::uint32_t signal, Nanos t, std::int64_t v);
@@ -69,19 +79,42 @@ public:
   [[nodiscard]] std::vector<Edge> edges_of(std::string_view name) const;
   [[nodiscard]] std::int64_t find(std::string_view name) const; // -1 when absent
 
-  // FNV-1a 64 over a canonical serialisation of everything recorded.
+  // FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3) over the bytes of
+  // canonical_text(): equal hashes mean equal recordings, in the same order.
   [[nodiscard]] std::uint64_t content_hash() const;
+  // The canonical serialisation, version 1: ASCII, one record a line, each ending in '\n':
+  //   hilrig-trace 1
+  //   signal <index> <name> <wire|integer|real> <width> <initial|x>  (declaration order)
+  //   sample <time_ns> <index> <value>                                (record order)
+  //   can <time_ns> <bus> <candump frame text, e.g. 123##1DEADBEEF>   (record order)
+  //   serial <time_ns> <link> <ab|ba> <byte, 2 lowercase hex digits>  (record order)
+  // Integers in decimal; a real is 'r' and the 16 lowercase hex digits of its IEEE-754 bits,
+  // so the text is exact and locale-free. Diff two runs' texts to find where they part.
+  [[nodiscard]] std::string canonical_text() const;
 
 private:
+  std::map<std::string, std::uint32_t, std::less<>> index_;
   std::vector<SignalInfo> signals_;
   std::vector<TraceSample> samples_;
   std::vector<TraceCanFrame> can_;
   std::vector<TraceSerialByte> serial_;
 };
 
-// VCD (IEEE 1364 §18): 1 ns timescale, scopes from the dotted names.
+// VCD (IEEE 1364 §18): 1 ns timescale, a $scope per dotted name component; wires as 1-bit
+// "wire" vars, integers as "integer" vars of their width (b..., two's complement), reals as
+// "real" (r..., shortest round-trip decimal); $dumpvars at #0 holds each signal's initial
+// value (x when unset; 0 for a real); then the samples with times ascending (stable for
+// equal times). The date comment, when given, is the only thing not fixed by the trace.
+// Negative times throw std::invalid_argument. For long runs see core/vcd_stream.hpp.
 void write_vcd(const TraceRecorder& trace, std::ostream& out, std::string_view date_comment = "");
-// candump -l format: "(seconds.micros) bus ID#DATA" / "ID##FDATA" for FD.
-void write_candump(const TraceRecorder& trace, std::ostream& out);
+// candump -l format: "(seconds.micros) bus ID#DATA" / "ID##FDATA" for FD (see core/candump.hpp).
+struct CandumpOptions {
+  // Adds CANFD_FDF to the FD flags nibble, as Linux 6.0+ kernels report received FD frames.
+  bool fdf_flag = false;
+  // Added to every timestamp. Virtual time starts at 0, but log2asc (can-utils 2020.11) takes
+  // any frame whose seconds are 0 for the start of a new log: give it a wall-clock epoch.
+  Nanos epoch{0};
+};
+void write_candump(const TraceRecorder& trace, std::ostream& out, const CandumpOptions& options = {});
 
 } // namespace hilrig

@@ -1,6 +1,10 @@
 #pragma once
 // A virtual digital line: one driver, many readers. A level set by the driver at time t
 // reaches readers at t + propagation delay (0 by default), as an Edge with that time.
+// With no delay readers see the edge inside set(); with a delay it is a scheduled event.
+// The delay is a transport delay: a pulse shorter than it still arrives whole. Each edge is
+// recorded in the trace (if any) under the line's name when readers see it, and the initial
+// level as the signal's initial value. The line must outlive the scheduler's pending events.
 
 #include <memory>
 #include <string>
@@ -15,24 +19,27 @@ namespace hilrig::virt {
 class DigitalLine {
 public:
   DigitalLine(Scheduler& scheduler, std::string name, Level initial, TraceRecorder* trace);
+  ~DigitalLine();
+  DigitalLine(const DigitalLine&) = delete;
+  DigitalLine& operator=(const DigitalLine&) = delete;
 
   [[nodiscard]] const std::string& name() const { return name_; }
-  void set_propagation_delay(Nanos delay) { delay_ = delay; }
+  // Applies to levels set from now on; a negative delay throws std::invalid_argument.
+  void set_propagation_delay(Nanos delay);
+  [[nodiscard]] Nanos propagation_delay() const;
 
   // The one driving end. Setting the level it already has is not an edge.
   [[nodiscard]] LineOutput& driver();
   // A new reading end; each reader keeps its own handlers.
   [[nodiscard]] LineInput& reader();
 
-  [[nodiscard]] Level level() const;        // as readers see it now
+  [[nodiscard]] Level level() const; // as readers see it now
   [[nodiscard]] std::uint64_t edge_count() const;
 
-  // (private state: implementer's choice)
 private:
   struct Impl;
-  std::shared_ptr<Impl> impl_;
+  std::unique_ptr<Impl> impl_; // stable address: scheduled deliveries point at it
   std::string name_;
-  Nanos delay_{0};
 };
 
 } // namespace hilrig::virt

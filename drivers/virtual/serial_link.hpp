@@ -1,6 +1,10 @@
 #pragma once
 // A virtual full-duplex serial link between end A and end B. Each byte takes
-// SerialFormat::char_time() on the wire; bytes queue behind each other per direction.
+// SerialFormat::char_time() on the wire; bytes queue behind each other per direction, the
+// two directions independent. A byte reaches the far end's handlers (and the trace, under
+// the link's name with its direction) when its stop bit ends. A dropped byte still takes its
+// time on the wire and is neither delivered nor traced; a corrupted byte is delivered and
+// traced as the value the hook returns. The link must outlive the scheduler's pending events.
 
 #include <cstdint>
 #include <functional>

@@ -15,10 +15,10 @@
 #include "core/scheduler.hpp"
 #include "core/serial.hpp"
 #include "core/trace.hpp"
+#include "drivers/virtual/analog_channel.hpp"
 #include "drivers/virtual/can_bus.hpp"
 #include "drivers/virtual/digital_line.hpp"
 #include "drivers/virtual/serial_link.hpp"
-#include "drivers/virtual/analog_channel.hpp"
 
 namespace hilrig::virt {
 

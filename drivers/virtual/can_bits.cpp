@@ -1,0 +1,203 @@
+// Frame lengths on the wire: the bit layout and stuffing rules are summarised in can_bus.hpp.
+#include <array>
+#include <stdexcept>
+
+#include "drivers/virtual/can_bus.hpp"
+
+namespace hilrig::virt {
+namespace {
+
+// Longest unstuffed SOF..CRC of any frame: FD extended, 64 bytes: 41 + 512 + 21 bits.
+constexpr std::size_t kMaxBits = 600;
+
+struct BitStream {
+  std::array<std::uint8_t, kMaxBits> bits{};
+  std::size_t n = 0;
+  std::size_t brs = 0; // index of the BRS bit (FD only)
+
+  void push(std::uint32_t v, unsigned count) {
+    for (unsigned i = count; i-- > 0;) bits[n++] = static_cast<std::uint8_t>((v >> i) & 1U);
+  }
+};
+
+bool fd_length_ok(std::uint8_t len) {
+  return len <= 8 || len == 12 || len == 16 || len == 20 || len == 24 || len == 32 || len == 48 || len == 64;
+}
+
+void validate(const CanFrame& f) {
+  if (f.id > (f.extended ? 0x1FFF'FFFFU : 0x7FFU))
+    throw std::invalid_argument("CAN: identifier out of range");
+  if (f.fd) {
+    if (f.rtr) throw std::invalid_argument("CAN FD has no remote frames");
+    if (!fd_length_ok(f.len)) throw std::invalid_argument("CAN FD: length is not a DLC length");
+  } else {
+    if (f.len > 8) throw std::invalid_argument("classic CAN: length above 8");
+    if (f.brs || f.esi) throw std::invalid_argument("classic CAN: BRS/ESI are FD bits");
+  }
+}
+
+// SOF through the data field, unstuffed.
+BitStream header_and_data(const CanFrame& f) {
+  validate(f);
+  BitStream s;
+  s.push(0, 1); // SOF
+  if (f.extended) {
+    s.push(f.id >> 18, 11);
+    s.push(1, 1); // SRR (recessive)
+    s.push(1, 1); // IDE
+    s.push(f.id & 0x3'FFFFU, 18);
+    if (f.fd) {
+      s.push(0, 1); // RRS
+      s.push(1, 1); // FDF
+      s.push(0, 1); // res
+    } else {
+      s.push(f.rtr ? 1U : 0U, 1);
+      s.push(0, 2); // r1, r0
+    }
+  } else {
+    s.push(f.id, 11);
+    if (f.fd) {
+      s.push(0, 1); // RRS
+      s.push(0, 1); // IDE
+      s.push(1, 1); // FDF
+      s.push(0, 1); // res
+    } else {
+      s.push(f.rtr ? 1U : 0U, 1);
+      s.push(0, 2); // IDE, r0
+    }
+  }
+  if (f.fd) {
+    s.brs = s.n;
+    s.push(f.brs ? 1U : 0U, 1);
+    s.push(f.esi ? 1U : 0U, 1);
+  }
+  s.push(can_len_to_dlc(f.len), 4);
+  if (!f.rtr) {
+    for (std::size_t i = 0; i < f.len; ++i) s.push(f.data[i], 8);
+  }
+  return s;
+}
+
+// Trailing bits, never stuffed: CRC delimiter, ACK slot, ACK delimiter, EOF (7), intermission (3).
+constexpr std::uint32_t kTail = 1 + 1 + 1 + 7 + 3;
+
+std::uint32_t fd_crc_width(const CanFrame& f) { return f.len <= 16 ? 17U : 21U; }
+// One fixed stuff bit before the stuff count, then one after every 4 bits of count + CRC.
+std::uint32_t fd_fixed_stuff(const CanFrame& f) { return 1U + (4U + fd_crc_width(f) - 1U) / 4U; }
+
+struct StuffCount {
+  std::uint32_t nominal = 0;
+  std::uint32_t data = 0;
+};
+
+// Counts dynamic stuff bits: after 5 equal bits (stuff bits included) a complement is sent,
+// which starts the next run. `last_stuffed` says whether a stuff bit due after the final bit
+// is sent (classic CRC end: yes; FD data end: no, the fixed stuff bit takes its place).
+StuffCount count_stuff(const BitStream& s, bool last_stuffed, bool split_at_brs) {
+  StuffCount c;
+  std::uint8_t prev = 2;
+  unsigned run = 0;
+  for (std::size_t i = 0; i < s.n; ++i) {
+    const std::uint8_t b = s.bits[i];
+    run = b == prev ? run + 1 : 1;
+    prev = b;
+    if (run == 5) {
+      if (i + 1 == s.n && !last_stuffed) break;
+      (split_at_brs && i >= s.brs ? c.data : c.nominal) += 1;
+      prev = static_cast<std::uint8_t>(1U - b);
+      run = 1;
+    }
+  }
+  return c;
+}
+
+CanFrameBits assemble(const CanFrame& f, const BitStream& s, StuffCount dyn) {
+  CanFrameBits bits;
+  const auto n = static_cast<std::uint32_t>(s.n);
+  if (!f.fd) {
+    bits.nominal = n + dyn.nominal + kTail;
+    bits.stuff = dyn.nominal;
+    return bits;
+  }
+  const std::uint32_t crc_part = 4U + fd_crc_width(f) + fd_fixed_stuff(f);
+  bits.stuff = dyn.nominal + dyn.data + fd_fixed_stuff(f);
+  if (f.brs) {
+    const auto up_to_brs = static_cast<std::uint32_t>(s.brs) + 1U;
+    bits.nominal = up_to_brs + dyn.nominal + kTail;
+    bits.data = (n - up_to_brs) + dyn.data + crc_part;
+  } else {
+    bits.nominal = n + dyn.nominal + dyn.data + crc_part + kTail;
+  }
+  return bits;
+}
+
+} // namespace
+
+std::uint32_t can_crc(const std::uint8_t* bits, std::size_t count, const CanCrc& crc) {
+  const std::uint32_t top = 1U << (crc.width - 1U);
+  const std::uint32_t mask = (top << 1U) - 1U;
+  std::uint32_t reg = crc.init & mask;
+  for (std::size_t i = 0; i < count; ++i) {
+    const bool feedback = ((reg & top) != 0) != (bits[i] != 0);
+    reg = (reg << 1U) & mask;
+    if (feedback) reg ^= crc.poly;
+  }
+  return reg;
+}
+
+std::uint8_t can_dlc_to_len(std::uint8_t dlc, bool fd) {
+  static constexpr std::array<std::uint8_t, 16> kFd{0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64};
+  if (dlc > 15) throw std::invalid_argument("CAN: DLC above 15");
+  return fd ? kFd[dlc] : static_cast<std::uint8_t>(dlc > 8 ? 8 : dlc);
+}
+
+std::uint8_t can_len_to_dlc(std::uint8_t len) {
+  if (len <= 8) return len;
+  if (len <= 12) return 9;
+  if (len <= 16) return 10;
+  if (len <= 20) return 11;
+  if (len <= 24) return 12;
+  if (len <= 32) return 13;
+  if (len <= 48) return 14;
+  return 15;
+}
+
+CanFrameBits can_frame_bits(const CanFrame& frame) {
+  BitStream s = header_and_data(frame);
+  if (!frame.fd) {
+    const std::uint32_t crc = can_crc(s.bits.data(), s.n, kCanCrc15);
+    s.push(crc, 15);
+    return assemble(frame, s, count_stuff(s, true, false));
+  }
+  return assemble(frame, s, count_stuff(s, false, frame.brs));
+}
+
+CanFrameBits can_frame_bits_worst(const CanFrame& frame) {
+  BitStream s = header_and_data(frame);
+  StuffCount dyn;
+  if (!frame.fd) {
+    s.push(0, 15); // the CRC field's length (its value does not matter here)
+    // The stuffed region is SOF..CRC; the first stuff bit after 5 bits, then one every 4.
+    dyn.nominal = (static_cast<std::uint32_t>(s.n) - 1U) / 4U;
+    return assemble(frame, s, dyn);
+  }
+  // FD: SOF..data, without a stuff bit after the last data bit; the k-th stuff bit follows
+  // unstuffed bit index 4k.
+  const std::uint32_t count = (static_cast<std::uint32_t>(s.n) - 2U) / 4U;
+  for (std::uint32_t k = 1; k <= count; ++k) {
+    (frame.brs && std::size_t{4U} * k >= s.brs ? dyn.data : dyn.nominal) += 1;
+  }
+  return assemble(frame, s, dyn);
+}
+
+Nanos can_frame_duration(const CanFrameBits& bits, const CanBitTiming& timing) {
+  const auto part = [](std::uint32_t count, std::uint32_t rate) {
+    if (count == 0) return std::int64_t{0};
+    if (rate == 0) throw std::invalid_argument("CAN: zero bitrate");
+    const std::uint64_t num = std::uint64_t{count} * 1'000'000'000ULL;
+    return static_cast<std::int64_t>((num + rate / 2) / rate);
+  };
+  return Nanos{part(bits.nominal, timing.nominal_bitrate) + part(bits.data, timing.data_bitrate)};
+}
+
+} // namespace hilrig::virt

@@ -1,0 +1,162 @@
+#include "core/trace.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <sstream>
+#include <string>
+
+using namespace hilrig;
+using namespace hilrig::literals;
+
+namespace {
+
+// Reference FNV-1a 64, checked below against the published test vectors.
+std::uint64_t fnv1a(std::string_view s) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (char c : s) {
+    h ^= static_cast<std::uint8_t>(c);
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+// A seeded random trace: a few wires, an integer, a real, CAN frames and serial bytes.
+TraceRecorder random_trace(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  TraceRecorder t;
+  const std::uint32_t a = t.declare("rig.enc.A");
+  const std::uint32_t b = t.declare("rig.enc.B");
+  const std::uint32_t n = t.declare("dut.count", SignalKind::Integer, 16);
+  const std::uint32_t v = t.declare("dut.volt", SignalKind::Real);
+  t.set_initial(a, 0);
+  t.set_initial(b, 1);
+  std::int64_t now = 0;
+  int level_a = 0;
+  for (int i = 0; i < 200; ++i) {
+    now += static_cast<std::int64_t>(rng() % 5000);
+    switch (rng() % 5) {
+    case 0:
+      level_a ^= 1;
+      t.edge(a, Edge{Nanos{now}, level_of(level_a != 0)});
+      break;
+    case 1:
+      t.value(n, Nanos{now}, static_cast<std::int64_t>(rng() % 65536));
+      break;
+    case 2:
+      t.real(v, Nanos{now}, static_cast<double>(rng() % 1000) / 64.0);
+      break;
+    case 3: {
+      CanFrame f;
+      f.id = rng() % 0x800;
+      f.len = static_cast<std::uint8_t>(rng() % 9);
+      for (std::size_t k = 0; k < f.len; ++k) f.data[k] = static_cast<std::uint8_t>(rng());
+      t.can("can0", Nanos{now}, f);
+      break;
+    }
+    default:
+      t.serial("host", SerialDirection::AtoB, Nanos{now}, static_cast<std::uint8_t>(rng()));
+      break;
+    }
+  }
+  return t;
+}
+
+std::string vcd_of(const TraceRecorder& t) {
+  std::ostringstream out;
+  write_vcd(t, out);
+  return out.str();
+}
+
+} // namespace
+
+TEST(TraceRecorder, DeclareIsIdempotentAndFindKnowsNames) {
+  TraceRecorder t;
+  EXPECT_EQ(t.declare("rig.a"), 0U);
+  EXPECT_EQ(t.declare("rig.b", SignalKind::Integer, 12), 1U);
+  EXPECT_EQ(t.declare("rig.a"), 0U);
+  EXPECT_EQ(t.find("rig.b"), 1);
+  EXPECT_EQ(t.find("nope"), -1);
+  EXPECT_EQ(t.signals().size(), 2U);
+  EXPECT_THROW(t.declare("rig.a", SignalKind::Real), std::invalid_argument);
+  EXPECT_THROW(t.declare("rig.c", SignalKind::Integer, 65), std::invalid_argument);
+}
+
+TEST(TraceRecorder, KindMismatchIsRejected) {
+  TraceRecorder t;
+  const std::uint32_t r = t.declare("v", SignalKind::Real);
+  EXPECT_THROW(t.edge(r, Edge{1_us, Level::High}), std::invalid_argument);
+  EXPECT_THROW(t.value(r, 1_us, 3), std::invalid_argument);
+  EXPECT_THROW(t.edge(7, Edge{1_us, Level::High}), std::out_of_range);
+}
+
+TEST(TraceRecorder, EdgesOfReturnsOneWireInTimeOrder) {
+  TraceRecorder t;
+  const std::uint32_t a = t.declare("a");
+  const std::uint32_t b = t.declare("b");
+  t.edge(a, Edge{1_us, Level::High});
+  t.edge(b, Edge{2_us, Level::High});
+  t.edge(a, Edge{3_us, Level::Low});
+  EXPECT_EQ(t.edges_of("a"), (std::vector<Edge>{{1_us, Level::High}, {3_us, Level::Low}}));
+  EXPECT_EQ(t.edges_of("b"), (std::vector<Edge>{{2_us, Level::High}}));
+  EXPECT_TRUE(t.edges_of("c").empty());
+}
+
+TEST(TraceRecorder, Fnv1aReferenceMatchesPublishedVectors) {
+  // FNV-1a 64 test vectors (Fowler/Noll/Vo reference): "" and "a".
+  EXPECT_EQ(fnv1a(""), 0xcbf29ce484222325ULL);
+  EXPECT_EQ(fnv1a("a"), 0xaf63dc4c8601ec8cULL);
+}
+
+TEST(TraceRecorder, CanonicalTextIsTheDocumentedFormatAndHashIsItsFnv1a) {
+  TraceRecorder t;
+  const std::uint32_t a = t.declare("rig.A");
+  const std::uint32_t r = t.declare("rig.V", SignalKind::Real);
+  t.set_initial(a, 0);
+  t.edge(a, Edge{1500_ns, Level::High});
+  t.real(r, 2_us, 1.0); // IEEE-754 1.0 = 0x3ff0000000000000
+  CanFrame f;
+  f.id = 0x123;
+  f.len = 2;
+  f.data[0] = 0xAB;
+  f.data[1] = 0x01;
+  t.can("can0", 3_us, f);
+  t.serial("host", SerialDirection::BtoA, 4_us, 0x5A);
+  const std::string expected = "hilrig-trace 1\n"
+                               "signal 0 rig.A wire 1 0\n"
+                               "signal 1 rig.V real 64 x\n"
+                               "sample 1500 0 1\n"
+                               "sample 2000 1 r3ff0000000000000\n"
+                               "can 3000 can0 123#AB01\n"
+                               "serial 4000 host ba 5a\n";
+  EXPECT_EQ(t.canonical_text(), expected);
+  EXPECT_EQ(t.content_hash(), fnv1a(expected));
+}
+
+TEST(TraceRecorder, IdenticalInputsGiveIdenticalVcdAndHash) {
+  // Property over seeds: the same recorded input twice is byte-identical in VCD and hash.
+  for (std::uint32_t seed = 1; seed <= 20; ++seed) {
+    const TraceRecorder x = random_trace(seed);
+    const TraceRecorder y = random_trace(seed);
+    EXPECT_EQ(vcd_of(x), vcd_of(y)) << "seed " << seed;
+    EXPECT_EQ(x.content_hash(), y.content_hash()) << "seed " << seed;
+  }
+}
+
+TEST(TraceRecorder, DifferentInputGivesDifferentHash) {
+  const TraceRecorder base = random_trace(7);
+  EXPECT_NE(base.content_hash(), random_trace(8).content_hash());
+  // A single edge one nanosecond later changes the hash.
+  TraceRecorder x;
+  TraceRecorder y;
+  for (TraceRecorder* t : {&x, &y}) t->declare("a");
+  x.edge(0, Edge{100_ns, Level::High});
+  y.edge(0, Edge{101_ns, Level::High});
+  EXPECT_NE(x.content_hash(), y.content_hash());
+  // So does one serial byte's direction.
+  TraceRecorder p;
+  TraceRecorder q;
+  p.serial("l", SerialDirection::AtoB, 1_us, 1);
+  q.serial("l", SerialDirection::BtoA, 1_us, 1);
+  EXPECT_NE(p.content_hash(), q.content_hash());
+}

@@ -1,0 +1,139 @@
+#include "core/trace.hpp"
+#include "core/vcd_stream.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+using namespace hilrig;
+using namespace hilrig::literals;
+
+namespace {
+
+// rig.enc.A/B (wires), dut.count (8-bit integer), dut.volt (real), top (wire, no scope).
+TraceRecorder small_trace() {
+  TraceRecorder t;
+  const std::uint32_t a = t.declare("rig.enc.A");
+  const std::uint32_t b = t.declare("rig.enc.B");
+  const std::uint32_t n = t.declare("dut.count", SignalKind::Integer, 8);
+  const std::uint32_t v = t.declare("dut.volt", SignalKind::Real);
+  t.declare("top");
+  t.set_initial(a, 0);
+  t.set_initial(n, 5);
+  t.set_initial_real(v, 0.5);
+  t.edge(a, Edge{100_ns, Level::High});
+  t.value(n, 100_ns, 6);
+  t.edge(b, Edge{250_ns, Level::High});
+  t.real(v, 250_ns, 1.25);
+  t.value(n, 300_ns, -1); // two's complement within 8 bits: 11111111
+  return t;
+}
+
+// Written by hand from IEEE 1364 §18.2: identifiers '!' '"' '#' '$' '%' in declaration order,
+// scopes per dotted component, $dumpvars with the initial values (x where none), then
+// the value changes under ascending #times.
+const char* const kSmallVcd = "$version\n"
+                              "  hilrig trace\n"
+                              "$end\n"
+                              "$timescale 1ns $end\n"
+                              "$scope module rig $end\n"
+                              "$scope module enc $end\n"
+                              "$var wire 1 ! A $end\n"
+                              "$var wire 1 \" B $end\n"
+                              "$upscope $end\n"
+                              "$upscope $end\n"
+                              "$scope module dut $end\n"
+                              "$var integer 8 # count $end\n"
+                              "$var real 64 $ volt $end\n"
+                              "$upscope $end\n"
+                              "$var wire 1 % top $end\n"
+                              "$enddefinitions $end\n"
+                              "#0\n"
+                              "$dumpvars\n"
+                              "0!\n"
+                              "x\"\n"
+                              "b101 #\n"
+                              "r0.5 $\n"
+                              "x%\n"
+                              "$end\n"
+                              "#100\n"
+                              "1!\n"
+                              "b110 #\n"
+                              "#250\n"
+                              "1\"\n"
+                              "r1.25 $\n"
+                              "#300\n"
+                              "b11111111 #\n";
+
+} // namespace
+
+TEST(Vcd, WritesTheHandWrittenFile) {
+  std::ostringstream out;
+  write_vcd(small_trace(), out);
+  EXPECT_EQ(out.str(), kSmallVcd);
+}
+
+TEST(Vcd, DateCommentIsOptionalHeader) {
+  std::ostringstream out;
+  write_vcd(small_trace(), out, "run 42");
+  EXPECT_EQ(out.str().rfind("$date\n  run 42\n$end\n$version", 0), 0U);
+}
+
+TEST(Vcd, SamplesOutOfOrderAreWrittenInTimeOrder) {
+  TraceRecorder t;
+  const std::uint32_t a = t.declare("a");
+  t.edge(a, Edge{300_ns, Level::Low});
+  t.edge(a, Edge{200_ns, Level::High});
+  std::ostringstream out;
+  write_vcd(t, out);
+  const std::string s = out.str();
+  EXPECT_LT(s.find("#200\n1!"), s.find("#300\n0!"));
+}
+
+TEST(Vcd, NegativeTimeIsRejected) {
+  TraceRecorder t;
+  t.declare("a");
+  t.edge(0, Edge{-1_ns, Level::High});
+  std::ostringstream out;
+  EXPECT_THROW(write_vcd(t, out), std::invalid_argument);
+}
+
+TEST(VcdStream, AppendsAsTheRunGoesAndEndsEqualToWriteVcd) {
+  TraceRecorder t = small_trace();
+  // Rebuild the same trace in two halves, updating the stream in between.
+  TraceRecorder live;
+  for (const SignalInfo& s : t.signals()) live.declare(s.name, s.kind, s.width);
+  live.set_initial(0, 0);
+  live.set_initial(2, 5);
+  live.set_initial_real(3, 0.5);
+  std::ostringstream out;
+  VcdStream stream(out);
+  stream.update(live); // header only: already a readable file
+  EXPECT_NE(out.str().find("$enddefinitions $end\n#0\n$dumpvars\n"), std::string::npos);
+  live.edge(0, Edge{100_ns, Level::High});
+  live.value(2, 100_ns, 6);
+  stream.update(live);
+  const std::string half = out.str();
+  EXPECT_TRUE(half.ends_with("$end\n#100\n1!\nb110 #\n"));
+  live.edge(1, Edge{250_ns, Level::High});
+  live.real(3, 250_ns, 1.25);
+  live.value(2, 300_ns, -1);
+  stream.update(live);
+  EXPECT_EQ(out.str(), kSmallVcd);
+  EXPECT_EQ(stream.skipped(), 0U);
+}
+
+TEST(VcdStream, SignalsDeclaredAfterTheHeaderAreSkipped) {
+  TraceRecorder t;
+  t.declare("a");
+  std::ostringstream out;
+  VcdStream stream(out);
+  stream.update(t);
+  const std::uint32_t late = t.declare("b");
+  t.edge(late, Edge{5_ns, Level::High});
+  t.edge(0, Edge{6_ns, Level::High});
+  stream.update(t);
+  EXPECT_EQ(stream.skipped(), 1U);
+  EXPECT_TRUE(out.str().ends_with("$end\n#6\n1!\n"));
+}
