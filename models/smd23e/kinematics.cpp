@@ -1,0 +1,168 @@
+#include "models/smd23e/kinematics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hilrig::models::smd23e {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+} // namespace
+
+double ramp_time(double v1, double v2, double rate, RampShape shape) {
+  return std::abs(v2 - v1) / shape.effective(rate);
+}
+
+double ramp_steps(double v1, double v2, double rate, RampShape shape) {
+  return std::abs(v2 * v2 - v1 * v1) / (2.0 * shape.effective(rate));
+}
+
+void append_ramp(std::vector<Piece>& pieces, double v1, double v2, double rate, RampShape shape) {
+  if (v1 == v2) {
+    return;
+  }
+  const double sign = v2 > v1 ? 1.0 : -1.0;
+  const Phase phase = v2 > v1 ? Phase::Accelerate : Phase::Decelerate;
+  const double total = ramp_time(v1, v2, rate, shape);
+  const double f = shape.linear_fraction;
+  if (f >= 1.0) {
+    pieces.push_back({total, v1, sign * rate, 0.0, phase});
+    return;
+  }
+  // Jerk up to the peak rate, constant rate, jerk back down: point-symmetric (spec §3.3).
+  const double tj = (1.0 - f) * total / 2.0;
+  const double tl = f * total;
+  const double jerk = sign * rate / tj;
+  Piece up{tj, v1, 0.0, jerk, phase};
+  pieces.push_back(up);
+  double v = up.velocity_at(tj);
+  if (tl > 0.0) {
+    pieces.push_back({tl, v, sign * rate, 0.0, phase});
+    v += sign * rate * tl;
+  }
+  pieces.push_back({tj, v, sign * rate, -jerk, phase});
+}
+
+void append_cruise(std::vector<Piece>& pieces, double v, double steps) {
+  if (steps <= 0.0) {
+    return;
+  }
+  pieces.push_back({steps == kInf ? kInf : steps / v, v, 0.0, 0.0, Phase::Cruise});
+}
+
+ProfileFigures profile_figures(double n, double vs, double vp, double a, double d, RampShape shape) {
+  ProfileFigures f;
+  const double ae = shape.effective(a);
+  const double de = shape.effective(d);
+  const double n_acc = (vp * vp - vs * vs) / (2.0 * ae);
+  const double n_dec = (vp * vp - vs * vs) / (2.0 * de);
+  if (n_acc + n_dec <= n) {
+    f.peak_speed = vp;
+    f.accel_steps = n_acc;
+    f.decel_steps = n_dec;
+    f.duration = (vp - vs) / ae + (n - n_acc - n_dec) / vp + (vp - vs) / de;
+    return f;
+  }
+  f.triangle = true;
+  f.peak_speed = std::sqrt(vs * vs + 2.0 * n * ae * de / (ae + de));
+  f.accel_steps = (f.peak_speed * f.peak_speed - vs * vs) / (2.0 * ae);
+  f.decel_steps = n - f.accel_steps;
+  f.duration = (f.peak_speed - vs) * (1.0 / ae + 1.0 / de);
+  return f;
+}
+
+std::vector<Piece> plan_move(double n, double vs, double vp, double a, double d, RampShape shape) {
+  std::vector<Piece> pieces;
+  if (n <= 0.0) {
+    return pieces;
+  }
+  const ProfileFigures f = profile_figures(n, vs, vp, a, d, shape);
+  append_ramp(pieces, vs, f.peak_speed, a, shape);
+  if (!f.triangle) {
+    append_cruise(pieces, vp, n - f.accel_steps - f.decel_steps);
+  }
+  append_ramp(pieces, f.peak_speed, vs, d, shape);
+  return pieces;
+}
+
+Motion::Motion(Nanos start, std::vector<Piece> pieces) : start_(start), pieces_(std::move(pieces)) {
+  double t = 0.0;
+  double p = 0.0;
+  placed_.reserve(pieces_.size());
+  for (const Piece& piece : pieces_) {
+    placed_.push_back({t, p});
+    t += piece.duration;
+    p = piece.duration == kInf ? kInf : p + piece.distance_at(piece.duration);
+  }
+  total_ = p;
+  end_ = t == kInf ? Nanos::max() : start_ + Nanos::from_seconds(t);
+}
+
+std::size_t Motion::index_at(double tau) const {
+  std::size_t i = 0;
+  while (i + 1 < placed_.size() && placed_[i + 1].t0 <= tau) {
+    ++i;
+  }
+  return i;
+}
+
+double Motion::progress(Nanos t) const {
+  if (pieces_.empty() || t <= start_) {
+    return 0.0;
+  }
+  if (t >= end_) {
+    return total_;
+  }
+  const double tau = (t - start_).seconds();
+  const std::size_t i = index_at(tau);
+  const double local = std::min(tau - placed_[i].t0, pieces_[i].duration);
+  return placed_[i].p0 + pieces_[i].distance_at(local);
+}
+
+double Motion::velocity(Nanos t) const {
+  if (pieces_.empty() || t < start_ || t >= end_) {
+    return 0.0;
+  }
+  const double tau = (t - start_).seconds();
+  const std::size_t i = index_at(tau);
+  return pieces_[i].velocity_at(std::min(tau - placed_[i].t0, pieces_[i].duration));
+}
+
+Phase Motion::phase(Nanos t) const {
+  if (pieces_.empty() || t < start_ || t >= end_) {
+    return Phase::Cruise;
+  }
+  return pieces_[index_at((t - start_).seconds())].phase;
+}
+
+Nanos Motion::time_at_progress(double x) const {
+  if (x <= 0.0) {
+    return start_;
+  }
+  if (x > total_) {
+    return Nanos::max();
+  }
+  // Progress is non-decreasing (speed never drops below v_s > 0): bisect on whole ns.
+  std::int64_t lo = start_.count();
+  std::int64_t hi = end_ == Nanos::max() ? lo : end_.count();
+  if (end_ == Nanos::max()) {
+    std::int64_t step = 1'000'000;
+    while (progress(Nanos{hi}) < x) {
+      lo = hi;
+      hi += step;
+      step *= 2;
+    }
+  }
+  while (hi - lo > 1) {
+    const std::int64_t mid = lo + (hi - lo) / 2;
+    if (progress(Nanos{mid}) >= x) {
+      hi = mid;
+    } else {
+      lo = mid;
+    }
+  }
+  return progress(Nanos{lo}) >= x ? Nanos{lo} : Nanos{hi};
+}
+
+} // namespace hilrig::models::smd23e

@@ -1,0 +1,94 @@
+#pragma once
+// Move kinematics of the SMD23E indexer (spec §3.2–§3.3), in "progress" coordinates: steps
+// travelled along the move's direction, from 0. A motion is a chain of pieces, each of
+// constant jerk (jerk 0 for linear ramps and cruise), like Klipper's trapq moves. Times come
+// from the closed-form profile formulas, never from sampling.
+
+#include <cstdint>
+#include <vector>
+
+#include "core/time.hpp"
+
+namespace hilrig::models::smd23e {
+
+enum class Phase : std::uint8_t { Accelerate, Cruise, Decelerate };
+
+struct Piece {
+  double duration = 0.0; // s; +inf for an open-ended cruise (jog)
+  double v0 = 0.0;       // steps/s at start
+  double a0 = 0.0;       // steps/s² at start
+  double jerk = 0.0;     // steps/s³
+  Phase phase = Phase::Cruise;
+
+  [[nodiscard]] double distance_at(double tau) const {
+    return tau * (v0 + tau * (a0 / 2.0 + tau * jerk / 6.0));
+  }
+  [[nodiscard]] double velocity_at(double tau) const { return v0 + tau * (a0 + tau * jerk / 2.0); }
+  [[nodiscard]] double accel_at(double tau) const { return a0 + tau * jerk; }
+};
+
+// The ramp shape of a move: the fraction of the ramp time spent at constant acceleration.
+// 1 = linear (J = 0); 0 = triangular S (J = 1); between = trapezoidal S (J = 2…5000).
+struct RampShape {
+  double linear_fraction = 1.0;
+  // A ramp of this shape covers the same distance in the same time as a linear ramp at
+  // rate·(1+f)/2 (spec §3.3: T_ramp = 2·t_lin/(1+f)).
+  [[nodiscard]] double effective(double rate) const { return rate * (1.0 + linear_fraction) / 2.0; }
+};
+
+// Ramp time and steps from v1 to v2 at a (peak) rate, spec §3.2 and §3.3.
+[[nodiscard]] double ramp_time(double v1, double v2, double rate, RampShape shape);
+[[nodiscard]] double ramp_steps(double v1, double v2, double rate, RampShape shape);
+
+// Appends a ramp v1 → v2 (either direction) to a chain of pieces.
+void append_ramp(std::vector<Piece>& pieces, double v1, double v2, double rate, RampShape shape);
+// Appends a cruise at v over `steps` (or forever when steps is +inf).
+void append_cruise(std::vector<Piece>& pieces, double v, double steps);
+
+struct ProfileFigures {
+  bool triangle = false;
+  double peak_speed = 0.0; // steps/s
+  double accel_steps = 0.0;
+  double decel_steps = 0.0;
+  double duration = 0.0; // s, from the start (speed jumps to v_s) to the stop
+};
+
+// Trapezoid or triangle for a move of n steps (spec §3.2), accel a and decel d in steps/s².
+[[nodiscard]] ProfileFigures profile_figures(double n, double vs, double vp, double a, double d,
+                                             RampShape shape);
+// The pieces of that move, from v_s up to the peak and back down to v_s.
+[[nodiscard]] std::vector<Piece> plan_move(double n, double vs, double vp, double a, double d,
+                                           RampShape shape);
+
+// A planned run of the motor: pieces placed at an absolute start time.
+class Motion {
+public:
+  Motion() = default;
+  Motion(Nanos start, std::vector<Piece> pieces);
+
+  [[nodiscard]] Nanos start() const { return start_; }
+  // End of the last piece; Nanos::max() when open-ended.
+  [[nodiscard]] Nanos end() const { return end_; }
+  [[nodiscard]] double total_steps() const { return total_; } // +inf when open-ended
+  [[nodiscard]] const std::vector<Piece>& pieces() const { return pieces_; }
+
+  [[nodiscard]] double progress(Nanos t) const;
+  [[nodiscard]] double velocity(Nanos t) const;
+  [[nodiscard]] Phase phase(Nanos t) const;
+  // First time the progress reaches x (exact to 1 ns); Nanos::max() if never.
+  [[nodiscard]] Nanos time_at_progress(double x) const;
+
+private:
+  struct Placed {
+    double t0; // s from start_
+    double p0; // progress at t0
+  };
+  [[nodiscard]] std::size_t index_at(double tau) const;
+  Nanos start_{0};
+  Nanos end_{0};
+  double total_ = 0.0;
+  std::vector<Piece> pieces_;
+  std::vector<Placed> placed_;
+};
+
+} // namespace hilrig::models::smd23e

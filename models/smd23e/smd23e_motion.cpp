@@ -1,0 +1,781 @@
+// Motion engine of the virtual SMD23E: moves, stops, homing, assembled moves, inputs and
+// the shaft plant (spec §3, §4, §5).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "models/smd23e/multiword.hpp"
+#include "models/smd23e/smd23e.hpp"
+
+namespace hilrig::models::smd23e {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kEps = 1e-6; // steps: absorbs floating error at whole-step boundaries
+constexpr std::int32_t kMaxTarget = 8'388'607;
+
+std::int64_t whole(double progress) { return static_cast<std::int64_t>(std::floor(progress + kEps)); }
+
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+  const std::int64_t q = a / b;
+  return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
+}
+
+double run_progress(const ShaftRun& r, Nanos t) { return r.base + r.motion.progress(std::min(t, r.stop)); }
+std::int64_t issued_at(const ShaftRun& r, Nanos t) {
+  return r.issued_before + whole(run_progress(r, t)) - whole(r.base);
+}
+} // namespace
+
+// ---- Plant -----------------------------------------------------------------------------------
+
+std::int64_t Smd23e::step_position(Nanos t) const {
+  for (auto it = runs_.rbegin(); it != runs_.rend(); ++it) {
+    if (it->motion.start() <= t) {
+      return it->origin + it->dir * whole(run_progress(*it, t));
+    }
+  }
+  return 0;
+}
+
+std::int64_t Smd23e::shaft_steps(Nanos t) const {
+  if (shaft_blocked_) {
+    return shaft_frozen_;
+  }
+  std::int64_t lost = 0;
+  if (p_.fault == Fault::LostSteps) {
+    for (auto it = runs_.rbegin(); it != runs_.rend(); ++it) {
+      if (it->motion.start() <= t) {
+        const std::int64_t n = std::max<std::int64_t>(1, p_.lost_step_interval);
+        lost =
+            it->lost_before + it->dir * (floor_div(issued_at(*it, t), n) - floor_div(it->issued_before, n));
+        break;
+      }
+    }
+  }
+  return step_position(t) - lost - slip_;
+}
+
+std::int64_t Smd23e::motor_position() const { return step_position(sched_.now()) + reg_offset_; }
+
+std::int64_t Smd23e::encoder_position() const {
+  if (!p_.has_encoder || steps_per_turn() == 0) {
+    return 0;
+  }
+  // [A] counts = shaft steps × 1024 / steps per turn (spec §2.3).
+  return floor_div(shaft_steps(sched_.now()) * 1024, steps_per_turn()) + enc_offset_;
+}
+
+void Smd23e::block_shaft(bool blocked) {
+  if (blocked == shaft_blocked_) {
+    return;
+  }
+  const std::int64_t here = shaft_steps(sched_.now());
+  if (blocked) {
+    shaft_frozen_ = here;
+    shaft_blocked_ = true;
+    schedule_stall_check();
+  } else {
+    shaft_blocked_ = false;
+    slip_ += shaft_steps(sched_.now()) - shaft_frozen_;
+  }
+}
+
+void Smd23e::over_temperature() {
+  const bool drive =
+      configured_ && (cfg_.words[1] & cfgw::kDriverEnable) != 0 && (out_[1] & lsw::kDriveEnable) != 0;
+  if (!drive) {
+    return;
+  }
+  drv_fault_ = true; // motor power removed (L565, L2892)
+  if (run_ || pause_event_.valid()) {
+    immediate_stop();
+    pos_invalid_ = true;
+  }
+}
+
+void Smd23e::network_link(bool up) {
+  if (!up) {
+    if (run_ || pause_event_.valid()) {
+      immediate_stop(); // [A] motion stops on link loss
+      pos_invalid_ = true;
+    }
+    return;
+  }
+  net_loss_ = true;
+  in_err_ = true;
+  pos_invalid_ = true;
+}
+
+// ---- Motion engine ---------------------------------------------------------------------------
+
+double Smd23e::progress() const { return run_progress(runs_.back(), sched_.now()); }
+
+double Smd23e::velocity() const { return runs_.back().motion.velocity(sched_.now()); }
+
+void Smd23e::start_motion(Run run, std::vector<Piece> pieces, int dir) {
+  const Nanos now = sched_.now();
+  ShaftRun sr;
+  sr.origin = step_position(now);
+  sr.dir = dir;
+  if (!runs_.empty()) {
+    const ShaftRun& last = runs_.back();
+    sr.issued_before = issued_at(last, now);
+    const std::int64_t n = std::max<std::int64_t>(1, p_.lost_step_interval);
+    sr.lost_before =
+        last.lost_before + last.dir * (floor_div(sr.issued_before, n) - floor_div(last.issued_before, n));
+  }
+  sr.motion = Motion(now, std::move(pieces));
+  runs_.push_back(std::move(sr));
+  run.dir = dir;
+  run_ = std::move(run);
+  const Nanos end = runs_.back().motion.end();
+  sched_.cancel(end_event_);
+  if (end != Nanos::max()) {
+    end_event_ = sched_.at(end, [this] { on_motion_end(); });
+  }
+  schedule_stall_check();
+}
+
+void Smd23e::continue_motion(std::vector<Piece> pieces) {
+  const Nanos now = sched_.now();
+  ShaftRun& last = runs_.back();
+  ShaftRun sr;
+  sr.origin = last.origin;
+  sr.dir = last.dir;
+  sr.base = run_progress(last, now);
+  sr.issued_before = issued_at(last, now);
+  const std::int64_t n = std::max<std::int64_t>(1, p_.lost_step_interval);
+  sr.lost_before =
+      last.lost_before + last.dir * (floor_div(sr.issued_before, n) - floor_div(last.issued_before, n));
+  last.stop = now;
+  sr.motion = Motion(now, std::move(pieces));
+  runs_.push_back(std::move(sr));
+  const Nanos end = runs_.back().motion.end();
+  sched_.cancel(end_event_);
+  end_event_ = {};
+  if (end != Nanos::max()) {
+    end_event_ = sched_.at(end, [this] { on_motion_end(); });
+  }
+  schedule_stall_check();
+}
+
+void Smd23e::end_motion(Nanos at) {
+  if (!runs_.empty()) {
+    ShaftRun& last = runs_.back();
+    last.stop = std::min(last.stop, at);
+  }
+  sched_.cancel(end_event_);
+  sched_.cancel(aux_event_);
+  sched_.cancel(stall_event_);
+  end_event_ = aux_event_ = stall_event_ = {};
+  last_motion_end_ = at;
+}
+
+void Smd23e::immediate_stop() {
+  end_motion(sched_.now());
+  sched_.cancel(pause_event_);
+  pause_event_ = {};
+  run_.reset();
+  held_.reset();
+  hold_state_ = false;
+}
+
+void Smd23e::controlled_stop(bool hold) {
+  Run& r = *run_;
+  r.stopping = true;
+  r.holding = hold;
+  sched_.cancel(aux_event_);
+  aux_event_ = {};
+  MoveSpec spec = r.spec;
+  if (r.kind == Kind::Blend) {
+    // A blend move stops at the deceleration of the segment it is in (L1138).
+    double start = 0.0;
+    const double p = progress();
+    for (const Segment& s : segments_) {
+      spec = s.spec;
+      start += std::abs(static_cast<double>(s.offset));
+      if (p < start) {
+        break;
+      }
+    }
+  }
+  std::vector<Piece> pieces;
+  append_ramp(pieces, velocity(), vs(), spec.d, spec.shape);
+  continue_motion(std::move(pieces));
+  if (runs_.back().motion.pieces().empty()) {
+    end_event_ = sched_.at(sched_.now(), [this] { on_motion_end(); });
+  }
+}
+
+void Smd23e::registration_stop() {
+  Run& r = *run_;
+  r.stopping = true;
+  r.reg_triggered = true;
+  sched_.cancel(aux_event_);
+  aux_event_ = {};
+  // Exactly Stopping Distance further steps from the trigger (L1052–1054).
+  const double p = progress();
+  const double remaining = static_cast<double>(whole(p) + r.reg_stop) - p;
+  const double v = velocity();
+  const double d = r.spec.d;
+  const double n_dec = (v * v - vs() * vs()) / (2.0 * d);
+  std::vector<Piece> pieces;
+  if (remaining > 0.0) {
+    if (remaining >= n_dec) {
+      append_cruise(pieces, v, remaining - n_dec);
+      append_ramp(pieces, v, vs(), d, RampShape{});
+    } else {
+      // Too short to reach v_s: decelerate at D, then stop abruptly at what speed remains.
+      const double v_end = std::sqrt(std::max(0.0, v * v - 2.0 * d * remaining));
+      pieces.push_back({(v - v_end) / d, v, -d, 0.0, Phase::Decelerate});
+    }
+  }
+  continue_motion(std::move(pieces));
+  if (runs_.back().motion.pieces().empty()) {
+    end_event_ = sched_.at(sched_.now(), [this] { on_motion_end(); });
+  }
+}
+
+void Smd23e::act(std::function<void()> action, bool stop_like) {
+  if (stop_like && p_.fault == Fault::LateStop) {
+    sched_.after(p_.late_stop_delay, std::move(action));
+  } else {
+    action();
+  }
+}
+
+void Smd23e::on_motion_end() {
+  end_event_ = {};
+  const Nanos now = sched_.now();
+  end_motion(now);
+  Run r = std::move(*run_);
+  run_.reset();
+  if (r.holding) {
+    hold_state_ = true;
+    if (r.kind == Kind::Position || r.kind == Kind::EncoderMove || r.kind == Kind::Jog) {
+      held_ = Held{r.kind, r.dir, r.target};
+    }
+    return;
+  }
+  switch (r.kind) {
+  case Kind::Position:
+  case Kind::EncoderMove:
+  case Kind::Jog:
+  case Kind::Registration:
+  case Kind::Blend:
+    move_complete_ = true;
+    return;
+  case Kind::Dwell: {
+    const std::size_t next = r.segment + 1;
+    const auto dwell = static_cast<std::uint32_t>(out_[9]);
+    if (next >= segments_.size()) {
+      if (!p_.dwell_after_last_segment) {
+        move_complete_ = true;
+        return;
+      }
+      pause_event_ = sched_.after(milliseconds(dwell), [this] {
+        pause_event_ = {};
+        move_complete_ = true;
+      });
+      return;
+    }
+    pause_event_ = sched_.after(milliseconds(dwell), [this, next, dwell] {
+      pause_event_ = {};
+      run_dwell_segment(next, dwell);
+    });
+    return;
+  }
+  case Kind::Home: {
+    const HomeStage next = r.home_stage == HomeStage::Search ? HomeStage::Pause1 : HomeStage::Pause2;
+    const int dir = r.home_dir;
+    const MoveSpec spec = r.spec;
+    pause_event_ = sched_.after(p_.homing_pause, [this, next, dir, spec] {
+      pause_event_ = {};
+      Run h;
+      h.kind = Kind::Home;
+      h.home_dir = dir;
+      h.spec = spec;
+      std::vector<Piece> pieces;
+      if (next == HomeStage::Pause1) {
+        h.home_stage = HomeStage::Back; // reverse at v_p until Home goes inactive
+        append_ramp(pieces, vs(), spec.vp, spec.a, spec.shape);
+        append_cruise(pieces, spec.vp, kInf);
+        start_motion(std::move(h), std::move(pieces), -dir);
+      } else {
+        h.home_stage = HomeStage::Creep; // creep at v_s to the Home edge
+        append_cruise(pieces, vs(), kInf);
+        start_motion(std::move(h), std::move(pieces), dir);
+      }
+    });
+    return;
+  }
+  }
+}
+
+void Smd23e::schedule_stall_check() {
+  sched_.cancel(stall_event_);
+  stall_event_ = {};
+  const bool enabled = encoder_enabled() && (cfg_.words[0] & ccw::kStallEnable) != 0;
+  if (!enabled || !run_ || !shaft_blocked_) {
+    return;
+  }
+  const double threshold = p_.stall_threshold_counts * steps_per_turn() / 1024.0;
+  const ShaftRun& r = runs_.back();
+  const double lag = std::abs(static_cast<double>(step_position(sched_.now()) - shaft_frozen_));
+  const double x = r.motion.progress(sched_.now()) + std::max(0.0, threshold - lag) + 1.0;
+  const Nanos t = r.motion.time_at_progress(x);
+  if (t == Nanos::max()) {
+    return;
+  }
+  stall_event_ = sched_.at(t, [this] {
+    stall_event_ = {};
+    immediate_stop(); // [A] a stall is an immediate stop
+    stall_ = true;
+    pos_invalid_ = true;
+  });
+}
+
+void Smd23e::schedule_registration_min() {
+  const double x = static_cast<double>(run_->reg_min) - runs_.back().base;
+  const Nanos t = runs_.back().motion.time_at_progress(x);
+  if (t == Nanos::max()) {
+    return;
+  }
+  aux_event_ = sched_.at(t, [this] {
+    aux_event_ = {};
+    if (!run_ || run_->kind != Kind::Registration || run_->stopping) {
+      return;
+    }
+    // Stop conditions are level-sensitive once M is travelled (L1058, L1068).
+    const bool bit_gone = (out_[0] & run_->command_bit) == 0;
+    const bool input = p_.stop_input_level_sensitive && function_active(InputFunction::StopJog);
+    if (run_->reg_hold_pending) {
+      controlled_stop(false);
+    } else if (bit_gone || input) {
+      registration_stop();
+    }
+  });
+}
+
+// ---- Moves -----------------------------------------------------------------------------------
+
+void Smd23e::start_position_move(bool absolute) {
+  const auto value = read_value(2, kMaxTarget);
+  const auto spec = read_spec(true);
+  if (!value || !spec || (absolute && pos_invalid_)) {
+    command_error(); // L840; absolute with Position Invalid [A]
+    return;
+  }
+  const std::int64_t here = motor_position();
+  const std::int64_t target = absolute ? *value : here + *value;
+  const int dir = target >= here ? 1 : -1;
+  if (!may_start(dir, false)) {
+    return;
+  }
+  begin_command();
+  last_jerk_ = spec->jerk;
+  Run r;
+  r.kind = Kind::Position;
+  r.spec = *spec;
+  r.target = target;
+  const auto n = static_cast<double>(target > here ? target - here : here - target);
+  start_motion(std::move(r), plan_move(n, vs(), spec->vp, spec->a, spec->d, spec->shape), dir);
+  if (n == 0.0) {
+    end_event_ = sched_.at(sched_.now(), [this] { on_motion_end(); }); // [A] zero length: done at once
+  }
+}
+
+void Smd23e::start_encoder_move(bool absolute) {
+  const auto value = read_value(2, kMaxTarget);
+  const auto spec = read_spec(true);
+  if (!value || !spec || !encoder_enabled() || (absolute && pos_invalid_)) {
+    command_error();
+    return;
+  }
+  const std::int64_t here = encoder_position();
+  const std::int64_t delta = absolute ? *value - here : *value;
+  const int dir = delta >= 0 ? 1 : -1;
+  if (!may_start(dir, false)) {
+    return;
+  }
+  begin_command();
+  last_jerk_ = spec->jerk;
+  // The encoder target marks where deceleration begins (L1086), converted to steps.
+  const double x = static_cast<double>(delta < 0 ? -delta : delta) * steps_per_turn() / 1024.0;
+  const double vp = std::min(spec->vp, std::sqrt(vs() * vs() + 2.0 * spec->shape.effective(spec->a) * x));
+  std::vector<Piece> pieces;
+  append_ramp(pieces, vs(), vp, spec->a, spec->shape);
+  append_cruise(pieces, vp, x - ramp_steps(vs(), vp, spec->a, spec->shape));
+  append_ramp(pieces, vp, vs(), spec->d, spec->shape);
+  Run r;
+  r.kind = Kind::EncoderMove;
+  r.spec = *spec;
+  const double total = x + ramp_steps(vp, vs(), spec->d, spec->shape);
+  r.target = motor_position() + dir * whole(total);
+  start_motion(std::move(r), std::move(pieces), dir);
+}
+
+void Smd23e::start_jog(int dir, bool registration, std::uint16_t bit) {
+  const auto spec = read_spec(!registration);
+  std::optional<std::int32_t> stop_distance;
+  std::optional<std::int32_t> min_distance;
+  if (registration) {
+    stop_distance = read_value(2, kMaxTarget);
+    min_distance = read_value(8, kMaxTarget);
+  }
+  if (!spec ||
+      (registration && (!stop_distance || *stop_distance < 0 || !min_distance || *min_distance < 0))) {
+    command_error();
+    move_complete_ = true; // out-of-range jog/registration parameters: CmdErr and MvCmp (L2860)
+    return;
+  }
+  if (!may_start(dir, true)) {
+    return;
+  }
+  begin_command();
+  last_jerk_ = spec->jerk;
+  Run r;
+  r.kind = registration ? Kind::Registration : Kind::Jog;
+  r.spec = *spec;
+  r.command_bit = bit;
+  r.reg_stop = registration ? *stop_distance : 0;
+  r.reg_min = registration ? *min_distance : 0;
+  std::vector<Piece> pieces;
+  append_ramp(pieces, vs(), spec->vp, spec->a, spec->shape);
+  append_cruise(pieces, spec->vp, kInf);
+  start_motion(std::move(r), std::move(pieces), dir);
+  if (registration) {
+    if (r.reg_min == 0 && p_.stop_input_level_sensitive && function_active(InputFunction::StopJog)) {
+      registration_stop();
+    } else {
+      schedule_registration_min();
+    }
+  }
+}
+
+void Smd23e::change_jog(const MoveSpec& spec) {
+  Run& r = *run_;
+  const double v = velocity();
+  r.spec.vp = spec.vp;
+  r.spec.a = spec.a;
+  r.spec.d = spec.d;
+  std::vector<Piece> pieces;
+  append_ramp(pieces, v, spec.vp, spec.vp > v ? spec.a : spec.d, r.spec.shape);
+  append_cruise(pieces, spec.vp, kInf);
+  continue_motion(std::move(pieces));
+}
+
+void Smd23e::resume() {
+  if (!held_ || run_) {
+    command_error(); // [A] Resume with nothing held
+    return;
+  }
+  const Held h = *held_;
+  const auto spec = read_spec(true);
+  if (!spec) {
+    command_error();
+    return;
+  }
+  const int dir = h.kind == Kind::Jog ? h.dir : (h.target >= motor_position() ? 1 : -1);
+  if (!may_start(dir, h.kind == Kind::Jog)) {
+    return;
+  }
+  begin_command();
+  last_jerk_ = spec->jerk;
+  Run r;
+  r.kind = h.kind;
+  r.spec = *spec;
+  r.target = h.target;
+  if (h.kind == Kind::Jog) {
+    r.command_bit = dir > 0 ? msw::kJogCw : msw::kJogCcw;
+    std::vector<Piece> pieces;
+    append_ramp(pieces, vs(), spec->vp, spec->a, spec->shape);
+    append_cruise(pieces, spec->vp, kInf);
+    start_motion(std::move(r), std::move(pieces), dir);
+    return;
+  }
+  // The target cannot change; v_p, A, D and J may (L969–974).
+  const std::int64_t here = motor_position();
+  const auto n = static_cast<double>(h.target > here ? h.target - here : here - h.target);
+  r.kind = Kind::Position;
+  start_motion(std::move(r), plan_move(n, vs(), spec->vp, spec->a, spec->d, spec->shape), dir);
+  if (n == 0.0) {
+    end_event_ = sched_.at(sched_.now(), [this] { on_motion_end(); });
+  }
+}
+
+void Smd23e::start_home(int dir) {
+  const auto spec = read_spec(true);
+  if (!spec || input_with(InputFunction::Home) < 0) {
+    command_error(); // no Home input configured [A]
+    return;
+  }
+  const bool limit_ahead = p_.fault != Fault::IgnoredLimit &&
+                           function_active(dir > 0 ? InputFunction::CwLimit : InputFunction::CcwLimit);
+  // Profile C starts at step 4 with the search-direction limit active: not refused.
+  if (run_ || pause_event_.valid()) {
+    command_error();
+    return;
+  }
+  if (!limit_ahead && !may_start(dir, false)) {
+    return;
+  }
+  if (limit_ahead && !may_start(-dir, false)) {
+    return;
+  }
+  begin_command();
+  last_jerk_ = spec->jerk;
+  Run r;
+  r.kind = Kind::Home;
+  r.home_dir = dir;
+  r.spec = *spec;
+  std::vector<Piece> pieces;
+  append_ramp(pieces, vs(), spec->vp, spec->a, spec->shape);
+  append_cruise(pieces, spec->vp, kInf);
+  const bool proximity = (cfg_.words[0] & ccw::kHomeProximityEnable) != 0;
+  if (!proximity && (limit_ahead || function_active(InputFunction::Home))) {
+    r.home_stage = HomeStage::Back; // profile A step 5 / profile C step 4
+    start_motion(std::move(r), std::move(pieces), -dir);
+    return;
+  }
+  r.home_stage = HomeStage::Search;
+  start_motion(std::move(r), std::move(pieces), dir);
+}
+
+void Smd23e::home_next(HomeStage stage) {
+  if (!run_ || run_->kind != Kind::Home || run_->home_stage != stage) {
+    return;
+  }
+  // The Home edge met at v_s in the requested direction: position := 0 (L1275, L1287).
+  immediate_stop();
+  reg_offset_ = -step_position(sched_.now());
+  if (encoder_enabled()) {
+    enc_offset_ -= encoder_position();
+  }
+  homed_ = true;
+  pos_invalid_ = false;
+}
+
+void Smd23e::start_assembled() {
+  if (segments_.empty()) {
+    command_error();
+    return;
+  }
+  const bool dwell = (out_[1] & lsw::kDwellType) != 0;
+  if (dwell) {
+    const int dir = segments_.front().offset >= 0 ? 1 : -1;
+    if (!may_start(dir, false)) {
+      return;
+    }
+    begin_command();
+    run_dwell_segment(0, out_[9]);
+    return;
+  }
+  const int dir = (out_[1] & lsw::kBlendCcw) != 0 ? -1 : 1;
+  // Blend: back to back; speed changes start at each boundary, up with the new segment's A,
+  // down with the old segment's D; the last segment ends at v_s (L1117–1118).
+  std::vector<Piece> pieces;
+  double v = vs();
+  for (std::size_t i = 0; i < segments_.size(); ++i) {
+    const Segment& s = segments_[i];
+    const double n = std::abs(static_cast<double>(s.offset));
+    const bool up = s.spec.vp > v;
+    const double rate = up ? s.spec.a : (i > 0 ? segments_[i - 1].spec.d : s.spec.d);
+    const RampShape shape = up || i == 0 ? s.spec.shape : segments_[i - 1].spec.shape;
+    const double ramp = ramp_steps(v, s.spec.vp, rate, shape);
+    const double tail = i + 1 == segments_.size() ? ramp_steps(s.spec.vp, vs(), s.spec.d, s.spec.shape) : 0.0;
+    if (ramp + tail > n) {
+      command_error(); // [A] a segment too short for its speed changes
+      return;
+    }
+    append_ramp(pieces, v, s.spec.vp, rate, shape);
+    append_cruise(pieces, s.spec.vp, n - ramp - tail);
+    v = s.spec.vp;
+    if (tail > 0.0) {
+      append_ramp(pieces, v, vs(), s.spec.d, s.spec.shape);
+    }
+  }
+  if (!may_start(dir, false)) {
+    return;
+  }
+  begin_command();
+  last_jerk_ = segments_.back().spec.jerk;
+  Run r;
+  r.kind = Kind::Blend;
+  r.spec = segments_.front().spec;
+  r.spec.d = segments_.back().spec.d;
+  start_motion(std::move(r), std::move(pieces), dir);
+}
+
+void Smd23e::run_dwell_segment(std::size_t index, std::uint32_t dwell_ms) {
+  (void)dwell_ms;
+  const Segment& s = segments_[index];
+  const int dir = s.offset >= 0 ? 1 : -1;
+  const bool limit = p_.fault != Fault::IgnoredLimit &&
+                     (function_active(dir > 0 ? InputFunction::CwLimit : InputFunction::CcwLimit) ||
+                      (dir > 0 ? lock_cw_ : lock_ccw_));
+  if (limit || function_active(InputFunction::EmergencyStop)) {
+    in_err_ = true;
+    return;
+  }
+  Run r;
+  r.kind = Kind::Dwell;
+  r.spec = s.spec;
+  r.segment = index;
+  last_jerk_ = s.spec.jerk;
+  const double n = std::abs(static_cast<double>(s.offset));
+  start_motion(std::move(r), plan_move(n, vs(), s.spec.vp, s.spec.a, s.spec.d, s.spec.shape), dir);
+}
+
+// ---- Inputs ----------------------------------------------------------------------------------
+
+void Smd23e::capture_encoder() {
+  if (encoder_enabled()) {
+    captured_ = encoder_position();
+  }
+}
+
+void Smd23e::on_input(int input, Level level) {
+  const bool before = input_active(input);
+  raw_[static_cast<std::size_t>(input)] = level;
+  const bool after = input_active(input);
+  if (before == after || !configured_ || config_mode_) {
+    return;
+  }
+  switch (function_of(input)) {
+  case InputFunction::GeneralPurpose:
+  case InputFunction::Invalid:
+    return;
+  case InputFunction::CwLimit:
+  case InputFunction::CcwLimit: {
+    const int dir = function_of(input) == InputFunction::CwLimit ? 1 : -1;
+    if (after) {
+      limit_active(dir);
+    } else if (!function_active(InputFunction::CwLimit) && !function_active(InputFunction::CcwLimit)) {
+      limit_cond_ = false; // cleared when the limit goes inactive (L2889)
+    }
+    return;
+  }
+  case InputFunction::StartIndexed:
+    if (after || p_.capture_on_any_transition) {
+      capture_encoder();
+    }
+    if (after && armed_ != 0 && !run_ && !pause_event_.valid()) {
+      dispatch(armed_, true); // every rising edge re-runs the armed move (§3.10)
+    }
+    return;
+  case InputFunction::StopJog:
+    if (!after || !run_ || (run_->kind != Kind::Jog && run_->kind != Kind::Registration) || run_->stopping) {
+      return;
+    }
+    capture_encoder();
+    act(
+        [this] {
+          if (!run_ || run_->stopping) {
+            return;
+          }
+          if (run_->kind == Kind::Jog) {
+            controlled_stop(false);
+          } else if (run_->kind == Kind::Registration &&
+                     progress() - run_->chain_start >= static_cast<double>(run_->reg_min)) {
+            registration_stop();
+          }
+        },
+        true);
+    return;
+  case InputFunction::EmergencyStop:
+    if (after) {
+      in_err_ = true; // L2833
+      if (run_ || pause_event_.valid()) {
+        act(
+            [this] {
+              if (run_ || pause_event_.valid()) {
+                immediate_stop();
+                pos_invalid_ = true;
+              }
+            },
+            true);
+      }
+    }
+    return;
+  case InputFunction::Home:
+    if (!run_ || run_->kind != Kind::Home || run_->stopping) {
+      return;
+    }
+    switch (run_->home_stage) {
+    case HomeStage::Search:
+      if (after && (cfg_.words[0] & ccw::kHomeProximityEnable) == 0) {
+        controlled_stop(false); // then wait 2 s and reverse (profile A step 3)
+      }
+      return;
+    case HomeStage::Back:
+      if (!after) {
+        controlled_stop(false); // profile A step 6
+      }
+      return;
+    case HomeStage::Creep:
+    case HomeStage::ProxCreep:
+      if (after) {
+        home_next(run_->home_stage);
+      }
+      return;
+    case HomeStage::Pause1:
+    case HomeStage::Pause2:
+      return;
+    }
+    return;
+  }
+}
+
+void Smd23e::limit_active(int dir) {
+  if (p_.fault == Fault::IgnoredLimit || !run_) {
+    return;
+  }
+  const Kind kind = run_->kind;
+  const int travel = run_->dir;
+  if (kind == Kind::Home) {
+    if (dir == run_->home_dir && run_->home_stage == HomeStage::Search) {
+      // Profile C: the search-direction limit is an immediate stop, then the reverse search.
+      act(
+          [this] {
+            if (!run_ || run_->kind != Kind::Home) {
+              return;
+            }
+            sched_.cancel(end_event_);
+            on_motion_end(); // stops the step train here, waits 2 s, then reverses
+          },
+          true);
+      return;
+    }
+    act(
+        [this] {
+          if (run_) {
+            immediate_stop();
+            in_err_ = true; // "Home Invalid" (L1365): Input Error
+            pos_invalid_ = true;
+          }
+        },
+        true);
+    return;
+  }
+  if ((kind == Kind::Jog || kind == Kind::Registration) && dir != travel) {
+    return; // the opposite limit is ignored while jogging (L1018, L1056)
+  }
+  act(
+      [this, dir, travel] {
+        if (!run_) {
+          return;
+        }
+        immediate_stop();
+        in_err_ = true;
+        limit_cond_ = true;
+        pos_invalid_ = true;
+        if (dir == travel) {
+          (dir > 0 ? lock_cw_ : lock_ccw_) = true; // that direction is refused until Reset Errors
+        }
+      },
+      true);
+}
+
+} // namespace hilrig::models::smd23e

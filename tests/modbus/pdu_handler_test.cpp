@@ -1,0 +1,136 @@
+// The Modbus server's protocol logic, byte for byte (Modbus Application Protocol v1.1b3),
+// against a plain register map: 10 input registers at 0, 10 holding registers at 1024.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <vector>
+
+#include "drivers/modbus/pdu_handler.hpp"
+
+namespace hilrig::drivers::modbus {
+namespace {
+
+class PlainMap final : public RegisterMap {
+public:
+  std::array<std::uint16_t, 10> input{};
+  std::array<std::uint16_t, 10> holding{};
+  int writes = 0;
+
+  RegisterStatus read_input_registers(std::uint16_t a, std::span<std::uint16_t> out) override {
+    if (a + out.size() > 10) {
+      return RegisterStatus::IllegalDataAddress;
+    }
+    std::copy_n(input.begin() + a, out.size(), out.begin());
+    return RegisterStatus::Ok;
+  }
+  RegisterStatus read_holding_registers(std::uint16_t a, std::span<std::uint16_t> out) override {
+    if (a < 1024 || a + out.size() > 1034) {
+      return RegisterStatus::IllegalDataAddress;
+    }
+    std::copy_n(holding.begin() + (a - 1024), out.size(), out.begin());
+    return RegisterStatus::Ok;
+  }
+  RegisterStatus write_holding_registers(std::uint16_t a, std::span<const std::uint16_t> v) override {
+    if (a < 1024 || a + v.size() > 1034) {
+      return RegisterStatus::IllegalDataAddress;
+    }
+    std::copy(v.begin(), v.end(), holding.begin() + (a - 1024));
+    ++writes;
+    return RegisterStatus::Ok;
+  }
+};
+
+using Bytes = std::vector<std::uint8_t>;
+
+PduResult ask(RegisterMap& m, const Bytes& req) { return handle_pdu(m, req); }
+
+TEST(ModbusPdu, ReadInputRegisters) {
+  PlainMap m;
+  m.input[0] = 0x6408;
+  m.input[1] = 0x0807;
+  const PduResult r = ask(m, {4, 0x00, 0x00, 0x00, 0x02});
+  ASSERT_EQ(r.status, RegisterStatus::Ok);
+  EXPECT_EQ(r.response, (Bytes{4, 4, 0x64, 0x08, 0x08, 0x07}));
+}
+
+TEST(ModbusPdu, WriteMultipleThenReadHolding) {
+  PlainMap m;
+  // FC16 at 1024 (0x0400), 2 registers, 4 bytes: 0x8000, 0x0001.
+  const PduResult w = ask(m, {16, 0x04, 0x00, 0x00, 0x02, 4, 0x80, 0x00, 0x00, 0x01});
+  ASSERT_EQ(w.status, RegisterStatus::Ok);
+  EXPECT_EQ(w.response, (Bytes{16, 0x04, 0x00, 0x00, 0x02}));
+  EXPECT_EQ(m.writes, 1); // one transaction
+  const PduResult r = ask(m, {3, 0x04, 0x00, 0x00, 0x02});
+  EXPECT_EQ(r.response, (Bytes{3, 4, 0x80, 0x00, 0x00, 0x01}));
+}
+
+TEST(ModbusPdu, WriteSingleRegisterEchoes) {
+  PlainMap m;
+  const Bytes req{6, 0x04, 0x01, 0x12, 0x34};
+  EXPECT_EQ(ask(m, req).response, req);
+  EXPECT_EQ(m.holding[1], 0x1234);
+}
+
+TEST(ModbusPdu, MaskWrite) {
+  PlainMap m;
+  m.holding[0] = 0x0012;
+  // Spec example: (0x12 AND 0xF2) OR (0x25 AND NOT 0xF2) = 0x17.
+  const Bytes req{22, 0x04, 0x00, 0x00, 0xF2, 0x00, 0x25};
+  EXPECT_EQ(ask(m, req).response, req);
+  EXPECT_EQ(m.holding[0], 0x0017);
+}
+
+TEST(ModbusPdu, ReadWriteMultipleReturnsThePreWriteState) {
+  PlainMap m;
+  m.holding[0] = 0x1111;
+  // Read 1024×1, write 1024×1 = 0x2222: the read half answers 0x1111 (SMD23E lag, L2076).
+  const PduResult r = ask(m, {23, 0x04, 0x00, 0x00, 0x01, 0x04, 0x00, 0x00, 0x01, 2, 0x22, 0x22});
+  ASSERT_EQ(r.status, RegisterStatus::Ok);
+  EXPECT_EQ(r.response, (Bytes{23, 2, 0x11, 0x11}));
+  EXPECT_EQ(m.holding[0], 0x2222);
+}
+
+TEST(ModbusPdu, CoilsAreBitsOfTheHoldingRegisters) {
+  PlainMap m;
+  // Coil 16,384 + 1 = register 1024 bit 1 (spec §6.1 [D]).
+  const Bytes on{5, 0x40, 0x01, 0xFF, 0x00};
+  EXPECT_EQ(ask(m, on).response, on);
+  EXPECT_EQ(m.holding[0], 0x0002);
+  // Write coils 16,384…16,399 as 0x8000 (only bit 15): bytes LSB first.
+  EXPECT_EQ(ask(m, {15, 0x40, 0x00, 0x00, 0x10, 2, 0x00, 0x80}).status, RegisterStatus::Ok);
+  EXPECT_EQ(m.holding[0], 0x8000);
+  EXPECT_EQ(ask(m, {1, 0x40, 0x0F, 0x00, 0x02}).response, (Bytes{1, 1, 0x01})); // bits 15, 16
+}
+
+TEST(ModbusPdu, DiscreteInputsAreBitsOfTheInputRegisters) {
+  PlainMap m;
+  m.input[1] = 0x0005; // input bits 16 and 18
+  EXPECT_EQ(ask(m, {2, 0x00, 0x10, 0x00, 0x03}).response, (Bytes{2, 1, 0x05}));
+}
+
+TEST(ModbusPdu, UnknownFunctionIsIllegalFunction) {
+  PlainMap m;
+  EXPECT_EQ(ask(m, {0x41}).status, RegisterStatus::IllegalFunction);
+  EXPECT_EQ(ask(m, {7}).status, RegisterStatus::IllegalFunction); // not in the SMD23E's list
+}
+
+TEST(ModbusPdu, AddressOutsideTheMapIsIllegalDataAddress) {
+  PlainMap m;
+  EXPECT_EQ(ask(m, {4, 0x00, 0x09, 0x00, 0x02}).status, RegisterStatus::IllegalDataAddress);
+  EXPECT_EQ(ask(m, {3, 0x00, 0x0A, 0x00, 0x01}).status, RegisterStatus::IllegalDataAddress);
+  EXPECT_EQ(ask(m, {6, 0x04, 0x0A, 0x00, 0x01}).status, RegisterStatus::IllegalDataAddress);
+  EXPECT_EQ(m.writes, 0);
+}
+
+TEST(ModbusPdu, WrongQuantityOrLengthIsIllegalDataValue) {
+  PlainMap m;
+  EXPECT_EQ(ask(m, {3, 0x04, 0x00, 0x00, 0x00}).status, RegisterStatus::IllegalDataValue); // 0 registers
+  EXPECT_EQ(ask(m, {4, 0x00, 0x00, 0x00, 0x7E}).status, RegisterStatus::IllegalDataValue); // 126
+  EXPECT_EQ(ask(m, {16, 0x04, 0x00, 0x00, 0x02, 2, 0, 1}).status, RegisterStatus::IllegalDataValue); // bytes
+  EXPECT_EQ(ask(m, {3, 0x04, 0x00}).status, RegisterStatus::IllegalDataValue);             // truncated
+  EXPECT_EQ(ask(m, {5, 0x40, 0x00, 0x12, 0x34}).status, RegisterStatus::IllegalDataValue); // coil value
+  EXPECT_EQ(m.writes, 0);
+}
+
+} // namespace
+} // namespace hilrig::drivers::modbus

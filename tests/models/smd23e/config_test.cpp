@@ -1,0 +1,211 @@
+// Power-up, Configuration Mode, status words, heartbeat and idle current (spec §6.2–§6.6).
+#include "tests/models/smd23e/smd23e_fixture.hpp"
+
+namespace hilrig::models::smd23e::test {
+namespace {
+
+using Smd23eConfig = Smd23eBench;
+
+TEST_F(Smd23eConfig, M05UnconfiguredUnitReads0x6408) {
+  // Controller OK, Configuration Error, Position Invalid, Axis Stopped; Command Mode.
+  EXPECT_EQ(dut.input_words()[0], 0x6408);
+  // Move commands are ignored: no motion, no error bit.
+  command(msw::kRelative, kDrive, MoveWords{.value = 100});
+  run_to(1_s);
+  EXPECT_EQ(dut.input_words()[0], 0x6408);
+  EXPECT_EQ(dut.step_position(sched.now()), 0);
+}
+
+TEST_F(Smd23eConfig, M06PowerUpInputWordsFollowTheText) {
+  // Unconfigured: all inputs NC (active-level bits 0), no current → all three active.
+  // The text never sets SW2 bit 13 nor NetLoss at power-up: 0x0007 plus the heartbeat.
+  const Words in = dut.input_words();
+  EXPECT_EQ(in[1] & ~sw2::kHeartbeat, 0x0007);
+  for (std::size_t i = 2; i < kWords; ++i) {
+    EXPECT_EQ(in[i], 0) << i;
+  }
+}
+
+class Smd23eConfigAsFigure : public Smd23eBench {
+protected:
+  Smd23eConfigAsFigure() : Smd23eBench(Params{.sw2_bit13_as_figure = true, .netloss_at_powerup = true}) {}
+};
+
+TEST_F(Smd23eConfigAsFigure, M06TheExampleDumpWithTheFigureSwitches) {
+  // Bytes 08 64 47 28: W0 = 0x6408, W1 = 0x2847 with the heartbeat high (500 ms … 1 s).
+  run_to(750_ms);
+  const Words in = dut.input_words();
+  EXPECT_EQ(in[0], 0x6408);
+  EXPECT_EQ(in[1], 0x2847);
+}
+
+TEST_F(Smd23eConfig, ValidConfigurationIsMirroredAndClearsConfigurationError) {
+  const Words w = config_block(ConfigWords{});
+  dut.write_outputs(w);
+  const Words in = dut.input_words();
+  EXPECT_EQ(in[0], w[0]); // a copy of the written control word
+  for (std::size_t i : {1U, 2U, 3U, 4U, 6U, 7U, 8U}) {
+    EXPECT_EQ(in[i], w[i]) << i;
+  }
+  EXPECT_EQ(in[5], 0);
+  EXPECT_EQ(in[9], 0);
+  dut.write_outputs(Words{0, kDrive});
+  // Command Mode: CtrlOK, Position Invalid (a configuration was written), Stopped.
+  EXPECT_EQ(sw1(), sw1::kControllerOk | sw1::kPositionInvalid | sw1::kStopped);
+  EXPECT_TRUE(bit2(sw2::kDriverEnabled));
+}
+
+TEST_F(Smd23eConfig, M18MotorCurrentEncoding) {
+  for (int c : {10, 25, 34}) {
+    const auto current = static_cast<std::uint16_t>(c);
+    dut.write_outputs(config_block(ConfigWords{.current10 = current}));
+    EXPECT_EQ(dut.input_words()[0] & sw1::kConfigError, 0) << current;
+    dut.write_outputs(Words{0, kDrive});
+    EXPECT_EQ(dut.input_words()[8], current); // 1.0, 2.5, 3.4 Arms while not idle
+    EXPECT_DOUBLE_EQ(dut.motor_current_amps(), current / 10.0);
+  }
+  for (int c : {35, 9}) {
+    const auto current = static_cast<std::uint16_t>(c);
+    dut.write_outputs(config_block(ConfigWords{.current10 = current}));
+    EXPECT_NE(dut.input_words()[0] & sw1::kConfigError, 0) << current;
+  }
+}
+
+TEST_F(Smd23eConfig, M25StartingSpeedLowerWordAbove999IsInvalid) {
+  Words w = config_block(ConfigWords{});
+  w[2] = 1;
+  w[3] = 1000; // numerically 2000, but the lower word is > 999
+  dut.write_outputs(w);
+  EXPECT_NE(dut.input_words()[0] & sw1::kConfigError, 0);
+}
+
+TEST_F(Smd23eConfig, InvalidConfigurationsSetConfigurationError) {
+  const auto invalid = [this](ConfigWords c, Words patch_mask = {}, Words patch = {}) {
+    Words w = config_block(c);
+    for (std::size_t i = 0; i < kWords; ++i) {
+      if (patch_mask[i] != 0) {
+        w[i] = patch[i];
+      }
+    }
+    dut.write_outputs(w);
+    // Status Word 1's flag: a mirrored control word may itself have bit 13 (stall enable).
+    return (dut.status1() & sw1::kConfigError) != 0;
+  };
+  EXPECT_TRUE(invalid({.control = 1U << 12}));          // reserved bit
+  EXPECT_TRUE(invalid({.word = 0x8000 | (1U << 5)}));   // reserved bit
+  EXPECT_TRUE(invalid({.control = 0b001'001}));         // two CW limits
+  EXPECT_TRUE(invalid({.control = 0b111}));             // code 111
+  EXPECT_TRUE(invalid({.control = ccw::kStallEnable})); // stall without encoder
+  EXPECT_TRUE(invalid({.steps_per_turn = 199}));
+  EXPECT_TRUE(invalid({.idle_percent = 101}));
+  EXPECT_TRUE(invalid({.vs = 0}));
+  EXPECT_TRUE(invalid({.vs = 2'000'000}));
+  EXPECT_TRUE(invalid({}, Words{0, 0, 0, 0, 0, 0, 1}, Words{0, 0, 0, 0, 0, 0, 1000})); // 1024 pulses only
+  EXPECT_FALSE(invalid({.control = 0})); // three general-purpose inputs
+  EXPECT_FALSE(invalid({.control = 0b110'010'001 | ccw::kEncoderEnable | ccw::kStallEnable}));
+}
+
+TEST_F(Smd23eConfig, CommandBitsSetWhileLeavingConfigurationModeDoNotTrigger) {
+  dut.write_outputs(config_block(ConfigWords{}));
+  // Straight to Command Mode with the Relative bit already set: no edge, no motion.
+  write(msw::kRelative, kDrive, MoveWords{.value = 100});
+  run_to(1_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 0);
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eConfig, M17SaveConfigurationReportsSuccessAndStopsAnswering) {
+  Words w = config_block(ConfigWords{});
+  dut.write_outputs(w);
+  w[1] = static_cast<std::uint16_t>(w[1] | cfgw::kSaveConfig);
+  dut.write_outputs(w);
+  EXPECT_EQ(dut.input_words()[9], 0xAAAA);
+  // The unit stops answering commands until power is cycled.
+  dut.write_outputs(Words{0, kDrive});
+  command(msw::kRelative, kDrive, MoveWords{.value = 100});
+  run_to(1_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 0);
+}
+
+TEST_F(Smd23eConfig, M17SaveWithInvalidDataIsIgnored) {
+  Words w = config_block(ConfigWords{.steps_per_turn = 100});
+  dut.write_outputs(w);
+  w[1] = static_cast<std::uint16_t>(w[1] | cfgw::kSaveConfig);
+  dut.write_outputs(w);
+  EXPECT_EQ(dut.input_words()[9], 0);
+}
+
+TEST_F(Smd23eConfig, HeartbeatTogglesEvery500msInCommandModeOnly) {
+  configure();
+  const auto hb = [this](Nanos t) {
+    run_to(t);
+    return bit2(sw2::kHeartbeat);
+  };
+  EXPECT_FALSE(hb(250_ms));
+  EXPECT_TRUE(hb(750_ms));
+  EXPECT_FALSE(hb(1250_ms));
+  EXPECT_TRUE(hb(1750_ms));
+  dut.write_outputs(config_block(ConfigWords{}));
+  EXPECT_EQ(dut.input_words()[1] & sw2::kHeartbeat, 0); // word 1 mirrors the config word
+  EXPECT_FALSE(bit2(sw2::kHeartbeat));
+}
+
+TEST_F(Smd23eConfig, M12IdleCurrentDropsTo25PercentAfter1500ms) {
+  configure(ConfigWords{.idle_percent = 25, .current10 = 20});
+  EXPECT_EQ(dut.input_words()[8], 20);
+  run_to(1499_ms);
+  EXPECT_EQ(dut.input_words()[8], 20);
+  run_to(1500_ms);
+  EXPECT_EQ(dut.input_words()[8], 5); // 2.0 A × 25 % = 0.5 A
+  EXPECT_DOUBLE_EQ(dut.motor_current_amps(), 0.5);
+  // Full current again while moving, and for 1.5 s after the move.
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000}); // ends at +1.0 s
+  EXPECT_EQ(dut.input_words()[8], 20);
+  run_to(2500_ms + 1499_ms);
+  EXPECT_EQ(dut.input_words()[8], 20);
+  run_to(2500_ms + 1501_ms);
+  EXPECT_EQ(dut.input_words()[8], 5);
+}
+
+TEST_F(Smd23eConfig, M19TenWordsEachWay) {
+  std::array<std::uint16_t, 10> buf{};
+  EXPECT_EQ(dut.read_input_registers(0, buf), RegisterStatus::Ok);
+  EXPECT_EQ(dut.read_input_registers(1, buf), RegisterStatus::IllegalDataAddress);
+  EXPECT_EQ(dut.read_holding_registers(1024, buf), RegisterStatus::Ok);
+  EXPECT_EQ(dut.read_holding_registers(0, buf), RegisterStatus::Ok); // FC 3 reads input words too
+  EXPECT_EQ(dut.write_holding_registers(1024, buf), RegisterStatus::Ok);
+  EXPECT_EQ(dut.write_holding_registers(1025, buf), RegisterStatus::IllegalDataAddress);
+  EXPECT_EQ(dut.write_holding_registers(0, std::span(buf.data(), 1)), RegisterStatus::IllegalDataAddress);
+}
+
+TEST_F(Smd23eConfig, M16CommandCodes) {
+  EXPECT_EQ(msw::kAbsolute, 0x0001);
+  EXPECT_EQ(msw::kRelative, 0x0002);
+  EXPECT_EQ(msw::kHold, 0x0004);
+  EXPECT_EQ(msw::kResume, 0x0008);
+  EXPECT_EQ(msw::kImmediateStop, 0x0010);
+  EXPECT_EQ(msw::kHomeCw, 0x0020);
+  EXPECT_EQ(msw::kHomeCcw, 0x0040);
+  EXPECT_EQ(msw::kJogCw, 0x0080);
+  EXPECT_EQ(msw::kJogCcw, 0x0100);
+  EXPECT_EQ(msw::kPresetPosition, 0x0200);
+  EXPECT_EQ(msw::kResetErrors, 0x0400);
+  EXPECT_EQ(msw::kProgramMove, 0x0800);
+  EXPECT_EQ(msw::kProgramMove | msw::kProgramSegment, 0x1800);
+  EXPECT_EQ(msw::kRunAssembled, 0x2000);
+  EXPECT_EQ(msw::kPresetEncoder, 0x4000);
+}
+
+TEST_F(Smd23eConfig, M13InvertedSinkingSensorIsCompensatedByTheActiveLevel) {
+  // A sinking sensor with a pull-up: sensor on → no current through the input (Low).
+  configure(ConfigWords{.word = 0x8000 | 0x6}); // input 1 NC, inputs 2–3 NO
+  in1.set(Level::Low);                          // sensor on
+  in2.set(Level::Low);
+  EXPECT_TRUE(bit2(sw2::kInput1));  // NC: active with no current — follows the sensor
+  EXPECT_FALSE(bit2(sw2::kInput2)); // NO: inverted — inactive while the sensor is on
+  in1.set(Level::High);
+  EXPECT_FALSE(bit2(sw2::kInput1));
+}
+
+} // namespace
+} // namespace hilrig::models::smd23e::test

@@ -1,0 +1,560 @@
+// Every move type, timed from the outside through the step train (spec §3). Common numbers:
+// v_s = 100 steps/s, A = D = 10 steps/ms/s (10,000 steps/s²), 2048 steps/turn; the ramp
+// 100 → 1100 steps/s takes 60 steps and 0.1 s (examples file, "handy P0 ramps").
+#include "tests/models/smd23e/smd23e_fixture.hpp"
+
+namespace hilrig::models::smd23e::test {
+namespace {
+
+using Smd23eMoves = Smd23eBench;
+
+TEST_F(Smd23eMoves, RelativeTrapezoidTimingFromTheStepTrain) {
+  configure();
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  // 60 steps in 0.1 s, 880 at 1100 steps/s (0.8 s), 60 in 0.1 s: done at 1.0 s.
+  EXPECT_EQ(dut.step_position(100_ms), 60);
+  EXPECT_EQ(dut.step_position(500_ms) - dut.step_position(400_ms), 110); // peak 1100 steps/s
+  run_to(50_ms);
+  EXPECT_EQ(sw1() & 0x7F, sw1::kAccelerating | sw1::kMovingCw);
+  run_to(500_ms);
+  EXPECT_EQ(sw1() & 0x7F, sw1::kMovingCw);
+  EXPECT_EQ(position_word(), 500);
+  run_to(950_ms);
+  EXPECT_EQ(sw1() & 0x7F, sw1::kDecelerating | sw1::kMovingCw);
+  run_to(999'999_us);
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  run_to(1'000'001_us);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_EQ(position_word(), 1000);
+  EXPECT_EQ(dut.shaft_steps(sched.now()), 1000);
+}
+
+TEST_F(Smd23eMoves, RelativeTriangleTimingAndPeak) {
+  configure();
+  command(msw::kRelative, kDrive, MoveWords{.value = 100, .vp = 5000});
+  // v_peak = √1,010,000 = 1004.99 steps/s; T = 2·(v_peak − 100)/10,000 = 0.1809975 s.
+  const double peak = std::sqrt(1'010'000.0);
+  const double t_end = 2.0 * (peak - 100.0) / 10'000.0;
+  EXPECT_NEAR(dut.runs().back().motion.velocity(Nanos::from_seconds(t_end / 2)), peak, 1e-3);
+  run_to_s(t_end - 1e-6);
+  EXPECT_FALSE(bit1(sw1::kStopped));
+  run_to_s(t_end + 1e-6);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 100);
+}
+
+TEST_F(Smd23eMoves, NegativeRelativeMovesCcw) {
+  configure();
+  command(msw::kRelative, kDrive, MoveWords{.value = -1000});
+  run_to(500_ms);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  EXPECT_EQ(position_word(), -500);
+  run_to(2_s);
+  EXPECT_EQ(position_word(), -1000);
+}
+
+TEST_F(Smd23eMoves, SCurveMovesTakeTheRampFactors) {
+  configure();
+  // J = 1: each ramp 0.2 s / 120 steps; cruise 760/1100 s. T = 0.4 + 0.690909 s.
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000, .word9 = 1});
+  const double t1 = 0.4 + 760.0 / 1100.0;
+  run_to_s(t1 - 1e-6);
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  run_to_s(t1 + 1e-6);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(dut.input_words()[9], 1); // input word 9 echoes the jerk value
+  // J = 2 (half linear): each ramp 0.1333 s / 80 steps; cruise 840/1100 s.
+  const double start = sched.now().seconds();
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000, .word9 = 2});
+  const double t2 = start + 2.0 * 0.4 / 3.0 + 840.0 / 1100.0;
+  run_to_s(t2 - 1e-6);
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  run_to_s(t2 + 1e-6);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 2000);
+}
+
+TEST_F(Smd23eMoves, M11RotaryTableRelativeAndAbsolute) {
+  // 3600 steps/turn: 10 steps per degree.
+  configure(ConfigWords{.steps_per_turn = 3600});
+  for (std::int64_t expected : {300, 600, 900}) {
+    command(msw::kRelative, kDrive, MoveWords{.value = 300}); // 30°
+    run_to(sched.now() + 2_s);
+    EXPECT_EQ(position_word(), expected);
+  }
+  preset(900);                                               // absolute moves need a valid position
+  command(msw::kAbsolute, kDrive, MoveWords{.value = 1800}); // 180°: +900 CW
+  run_to(sched.now() + 10_ms);
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  run_to(sched.now() + 2_s);
+  EXPECT_EQ(position_word(), 1800);
+  preset(2500);
+  command(msw::kAbsolute, kDrive, MoveWords{.value = 1800}); // −700 CCW
+  run_to(sched.now() + 10_ms);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  run_to(sched.now() + 2_s);
+  EXPECT_EQ(position_word(), 1800);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eMoves, AbsoluteMoveNeedsAValidPosition) {
+  configure();
+  command(msw::kAbsolute, kDrive, MoveWords{.value = 500});
+  run_to(1_s);
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  EXPECT_EQ(dut.step_position(sched.now()), 0);
+  command(msw::kResetErrors);
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid)); // Reset Errors does not validate the position
+  preset(0);
+  EXPECT_FALSE(bit1(sw1::kPositionInvalid));
+  command(msw::kAbsolute, kDrive, MoveWords{.value = 500});
+  run_to(3_s);
+  EXPECT_EQ(position_word(), 500);
+}
+
+TEST_F(Smd23eMoves, M10EncoderMoveDeceleratesFromTheEncoderTarget) {
+  configure(ConfigWords{.control = ccw::kEncoderEnable});
+  command(msw::kPresetEncoder, kDrive, MoveWords{.value = 5000});
+  EXPECT_EQ(encoder_word(), 5000);
+  // Relative encoder move of 11,000 counts = 22,000 steps at 2048 steps/turn.
+  command(msw::kRelative, kDrive | lsw::kEncoderMove, MoveWords{.value = 11'000});
+  const Nanos decel = when_at(22'000);
+  run_to(decel - 1_ms);
+  EXPECT_FALSE(bit1(sw1::kDecelerating));
+  run_to(decel);
+  EXPECT_EQ(encoder_word(), 16'000); // deceleration starts at encoder 16,000
+  run_to(decel + 1_ms);
+  EXPECT_TRUE(bit1(sw1::kDecelerating));
+  run_to(sched.now() + 1_s);
+  // The stop lies beyond 16,000: 60 decel steps = 30 counts.
+  EXPECT_EQ(position_word(), 22'060);
+  EXPECT_EQ(encoder_word(), 16'030);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eMoves, M10AbsoluteEncoderMoveToTheSameTargetGivesTheSameFigure) {
+  configure(ConfigWords{.control = ccw::kEncoderEnable});
+  preset(0);
+  command(msw::kPresetEncoder, kDrive, MoveWords{.value = 5000});
+  command(msw::kAbsolute, kDrive | lsw::kEncoderMove, MoveWords{.value = 16'000});
+  run_to(30_s);
+  EXPECT_EQ(position_word(), 22'060);
+  EXPECT_EQ(encoder_word(), 16'030);
+}
+
+TEST_F(Smd23eMoves, JogRunsUntilItsBitDrops) {
+  configure();
+  command(msw::kJogCw);
+  run_to(1_s);
+  EXPECT_EQ(position_word(), 60 + 990); // 60 ramp steps, then 0.9 s at 1100
+  write(0);                             // bit returns to 0: controlled stop, 60 steps in 0.1 s
+  run_to(1099_ms);
+  EXPECT_FALSE(bit1(sw1::kStopped));
+  run_to(1101_ms);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 1110);
+}
+
+TEST_F(Smd23eMoves, JogSpeedChangesOnTheFly) {
+  configure();
+  command(msw::kJogCcw);
+  run_to(1_s);                                        // at 1100 steps/s
+  write(msw::kJogCcw, kDrive, MoveWords{.vp = 2100}); // ramp 1100 → 2100 at A: 160 steps, 0.1 s
+  run_to(1100_ms);
+  run_to(1200_ms);
+  EXPECT_EQ(dut.step_position(1200_ms) - dut.step_position(1100_ms), -210); // now 2100 steps/s
+  write(msw::kJogCcw, kDrive, MoveWords{.vp = 2100, .accel = 0});           // invalid: keeps old values
+  EXPECT_TRUE(bit2(sw2::kInvalidJogChange));
+  run_to(1300_ms);
+  EXPECT_EQ(dut.step_position(1300_ms) - dut.step_position(1200_ms), -210);
+}
+
+TEST_F(Smd23eMoves, HoldAndResumeARelativeMove) {
+  configure();
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(500_ms); // at 500, 1100 steps/s
+  write(msw::kHold);
+  run_to(600_ms); // 60 decel steps in 0.1 s
+  EXPECT_TRUE(bit1(sw1::kHoldState));
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 560);
+  run_to(1_s);
+  command(msw::kResume, kDrive, MoveWords{.vp = 1100}); // target unchanged: 440 steps left
+  EXPECT_FALSE(bit1(sw1::kHoldState));
+  // 60 + 320 + 60 steps: 0.1 + 320/1100 + 0.1 s.
+  const double t_end = 1.0 + 0.2 + 320.0 / 1100.0;
+  run_to_s(t_end - 1e-6);
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  run_to_s(t_end + 1e-6);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 1000);
+}
+
+TEST_F(Smd23eMoves, HeldMoveIsCancelledByAnotherMove) {
+  configure();
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(500_ms);
+  write(msw::kHold);
+  run_to(1_s);
+  command(msw::kRelative, kDrive, MoveWords{.value = 100});
+  run_to(2_s);
+  EXPECT_EQ(position_word(), 660);
+  command(msw::kResume);
+  EXPECT_TRUE(bit1(sw1::kCommandError)); // nothing held any more
+}
+
+TEST_F(Smd23eMoves, HoldAndResumeAJog) {
+  configure();
+  command(msw::kJogCw);
+  run_to(1_s);
+  write(msw::kHold); // bit 2 rises while the jog bit drops: Hold (spec §9 #26)
+  run_to(1200_ms);
+  EXPECT_TRUE(bit1(sw1::kHoldState));
+  EXPECT_EQ(position_word(), 1110);
+  command(msw::kResume, kDrive, MoveWords{.vp = 2100});
+  run_to(2_s);
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  EXPECT_EQ(dut.step_position(2_s) - dut.step_position(1900_ms), 210);
+}
+
+class Smd23eRegistration : public Smd23eBench {
+protected:
+  void SetUp() override {
+    configure(ConfigWords{.control = 0b100}); // input 1: Stop Jog/Registration
+  }
+};
+
+TEST_F(Smd23eRegistration, M26StopInputAlreadyActiveGivesMinPlusStoppingDistance) {
+  in1.set(Level::High);
+  // S = 200 steps, M = 500 steps (words 8–9 = 0, 500).
+  command(msw::kJogCw, kDrive | lsw::kRegistration, MoveWords{.value = 200, .word8 = 0, .word9 = 500});
+  // M is reached at 0.1 + 440/1100 = 0.5 s; then S ≥ 60: cruise 140, decel 60.
+  const double t_end = 0.5 + 140.0 / 1100.0 + 0.1;
+  run_to_s(t_end - 1e-6);
+  EXPECT_FALSE(bit1(sw1::kStopped));
+  run_to_s(t_end + 1e-6);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 700);
+}
+
+TEST_F(Smd23eRegistration, ShortStoppingDistanceEndsAbruptly) {
+  command(msw::kJogCw, kDrive | lsw::kRegistration, MoveWords{.value = 30});
+  at(500_ms, in1, Level::High); // at 500 steps, 1100 steps/s
+  // 30 steps < 60 needed: decelerate at D for 30 steps, v_end = √(1100² − 2·10⁴·30) = 781.0.
+  const double t_end = 0.5 + (1100.0 - std::sqrt(610'000.0)) / 10'000.0;
+  run_to_s(t_end - 1e-6);
+  EXPECT_FALSE(bit1(sw1::kStopped));
+  run_to_s(t_end + 1e-6);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_EQ(position_word(), 530);
+}
+
+TEST_F(Smd23eRegistration, StopConditionsBeforeTheMinimumDistanceAreIgnored) {
+  command(msw::kJogCw, kDrive | lsw::kRegistration,
+          MoveWords{.value = 100, .word8 = 1, .word9 = 0}); // M = 1000
+  at(200_ms, in1, Level::High);
+  at(250_ms, in1, Level::Low); // pulse gone before M
+  run_to(2_s);
+  EXPECT_TRUE(bit1(sw1::kMovingCw)); // still running
+  write(0);                          // bit drops after M: S = 100 more steps
+  const std::int64_t trigger = position_word();
+  run_to(3_s);
+  EXPECT_EQ(position_word(), trigger + 100);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eRegistration, HoldStopsWithoutTailAndCannotResume) {
+  command(msw::kJogCw, kDrive | lsw::kRegistration, MoveWords{.value = 500});
+  run_to(500_ms);
+  write(msw::kHold);
+  run_to(1_s);
+  EXPECT_EQ(position_word(), 560); // decel only, no 500-step tail
+  EXPECT_FALSE(bit1(sw1::kHoldState));
+  command(msw::kResume);
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+}
+
+TEST_F(Smd23eRegistration, JogStopInputCapturesTheEncoder) {
+  configure(ConfigWords{.control = 0b100 | ccw::kEncoderEnable});
+  command(msw::kJogCw);
+  at(500_ms, in1, Level::High); // step 500 = 250 counts at 2048 steps/turn
+  run_to(1_s);
+  EXPECT_EQ(captured_word(), 250);
+  EXPECT_EQ(position_word(), 560);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+}
+
+class Smd23eEdgeOnlyStopInput : public Smd23eBench {
+protected:
+  Smd23eEdgeOnlyStopInput() : Smd23eBench(Params{.stop_input_level_sensitive = false}) {}
+};
+
+TEST_F(Smd23eEdgeOnlyStopInput, AStopInputAlreadyActiveDoesNotEndTheRegistrationMove) {
+  configure(ConfigWords{.control = 0b100});
+  in1.set(Level::High);
+  command(msw::kJogCw, kDrive | lsw::kRegistration, MoveWords{.value = 200, .word8 = 0, .word9 = 500});
+  run_to(2_s);
+  EXPECT_TRUE(bit1(sw1::kMovingCw)); // with edge-only sensing the M + S rule of L1068 does not apply
+}
+
+TEST_F(Smd23eMoves, BlendMoveRunsSegmentsBackToBack) {
+  configure();
+  command(msw::kProgramMove);
+  EXPECT_TRUE(bit1(sw1::kProgramMode));
+  EXPECT_TRUE(bit1(sw1::kTransmitSegment));
+  for (std::int32_t vp : {1100, 2100}) {
+    write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000, .vp = vp});
+    EXPECT_FALSE(bit1(sw1::kTransmitSegment));
+    write(msw::kProgramMove, kDrive, MoveWords{.value = 1000, .vp = vp});
+    EXPECT_TRUE(bit1(sw1::kTransmitSegment));
+  }
+  write(0);
+  EXPECT_FALSE(bit1(sw1::kProgramMode));
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+  command(msw::kRunAssembled);
+  // Segment 1: 60 ramp + 940 at 1100 (0.854545 s). Segment 2 starts at step 1000:
+  // 1100 → 2100 at A (160 steps, 0.1 s), cruise 620 at 2100, decel 2100 → 100 (220, 0.2 s).
+  const double t_boundary = 0.1 + 940.0 / 1100.0;
+  EXPECT_EQ(dut.step_position(Nanos::from_seconds(t_boundary + 1e-9)), 1000);
+  const double t_end = t_boundary + 0.1 + 620.0 / 2100.0 + 0.2;
+  run_to_s(t_boundary + 0.05);
+  EXPECT_TRUE(bit1(sw1::kAccelerating));
+  run_to_s(t_end - 1e-6);
+  EXPECT_FALSE(bit1(sw1::kStopped));
+  run_to_s(t_end + 1e-6);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 2000);
+}
+
+TEST_F(Smd23eMoves, HoldOnABlendUsesTheCurrentSegmentsDecelerationAndEndsTheMove) {
+  configure();
+  command(msw::kProgramMove);
+  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000, .vp = 1100});
+  write(msw::kProgramMove);
+  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000, .vp = 2100, .decel = 20});
+  write(msw::kProgramMove);
+  write(0);
+  command(msw::kRunAssembled);
+  // Segment 2 cruises at 2100 from 1160 steps at t = 0.1 + 940/1100 + 0.1 s.
+  const double t_cruise = 0.2 + 940.0 / 1100.0;
+  run_to(1200_ms);
+  write(msw::kHold);
+  // Segment 2's D = 20,000 steps/s²: (2100² − 100²)/40,000 = 110 steps in 0.1 s.
+  const double at_hold = 1160.0 + 2100.0 * (1.2 - t_cruise);
+  run_to(1'299_ms);
+  EXPECT_FALSE(bit1(sw1::kStopped));
+  run_to(1'301_ms);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_EQ(position_word(), static_cast<std::int64_t>(std::floor(at_hold + 110.0)));
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  command(msw::kResume, kDrive, MoveWords{.vp = 1100});
+  EXPECT_TRUE(bit1(sw1::kCommandError)); // a held assembled move cannot be resumed
+  command(msw::kResetErrors);
+  command(msw::kRunAssembled); // but it stays stored and runs again
+  run_to(5_s);
+  EXPECT_EQ(position_word(), static_cast<std::int64_t>(std::floor(at_hold + 110.0)) + 2000);
+}
+
+TEST_F(Smd23eMoves, BlendSegmentWithTheSameSpeedAsThePreviousIsRejected) {
+  configure();
+  command(msw::kProgramMove);
+  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000});
+  write(msw::kProgramMove);
+  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000}); // same v_p
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+}
+
+TEST_F(Smd23eMoves, AtMostSixteenSegments) {
+  configure();
+  command(msw::kProgramMove);
+  for (int i = 0; i < 17; ++i) {
+    write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000, .vp = 1100 + 100 * i});
+    write(msw::kProgramMove);
+    EXPECT_EQ(bit1(sw1::kCommandError), i == 16) << i; // the 17th is refused
+  }
+}
+
+TEST_F(Smd23eMoves, DwellMoveStopsAndWaitsBetweenSegments) {
+  configure();
+  command(msw::kProgramMove);
+  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 300, .vp = 1100});
+  write(msw::kProgramMove);
+  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = -300, .vp = 2100});
+  write(msw::kProgramMove);
+  write(0);
+  command(msw::kRunAssembled, kDrive | lsw::kDwellType, MoveWords{.word9 = 500});
+  // Segment 1: 60 + 180 + 60 steps, 0.2 + 180/1100 s. Dwell 0.5 s.
+  const double t1 = 0.2 + 180.0 / 1100.0;
+  run_to_s(t1 + 0.25);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 300);
+  // Segment 2: −300 steps, a triangle: v_pk = √(100² + 300·10⁴) = √3,010,000.
+  const double t2 = t1 + 0.5 + 2.0 * (std::sqrt(3'010'000.0) - 100.0) / 10'000.0;
+  run_to_s(t1 + 0.5 + 0.01);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  run_to_s(t2 - 1e-6);
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  run_to_s(t2 + 1e-6);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 0);
+}
+
+class Smd23eDwellAfterLast : public Smd23eBench {
+protected:
+  Smd23eDwellAfterLast() : Smd23eBench(Params{.dwell_after_last_segment = true}) {}
+};
+
+TEST_F(Smd23eDwellAfterLast, MoveCompleteComesOneDwellAfterTheLastSegment) {
+  configure();
+  command(msw::kProgramMove);
+  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 300, .vp = 1100});
+  write(msw::kProgramMove);
+  write(0);
+  command(msw::kRunAssembled, kDrive | lsw::kDwellType, MoveWords{.word9 = 500});
+  const double t1 = 0.2 + 180.0 / 1100.0; // as above
+  run_to_s(t1 + 0.5 - 1e-6);
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  run_to_s(t1 + 0.5 + 1e-6);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eMoves, IndexedMoveStartsOnEachStartInputEdge) {
+  configure(ConfigWords{.control = 0b011}); // input 1: Start Indexed Move
+  command(msw::kRelative, kDrive | lsw::kIndexed, MoveWords{.value = 100});
+  run_to(1_s);
+  EXPECT_EQ(position_word(), 0); // armed, not run
+  in1.set(Level::High);
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  in1.set(Level::Low); // the falling edge does not stop it
+  run_to(2_s);
+  EXPECT_EQ(position_word(), 100);
+  in1.set(Level::High); // data unchanged: the edge re-runs the move
+  run_to(3_s);
+  EXPECT_EQ(position_word(), 200);
+  in1.set(Level::Low);
+  write(0, kDrive | lsw::kIndexed); // command cleared: disarmed
+  in1.set(Level::High);
+  run_to(4_s);
+  EXPECT_EQ(position_word(), 200);
+}
+
+class Smd23eHoming : public Smd23eBench {
+protected:
+  void SetUp() override {
+    configure(ConfigWords{.control = 0b110 | ccw::kEncoderEnable}); // input 1: Home
+  }
+};
+
+TEST_F(Smd23eHoming, ProfileAHomeInputOnly) {
+  // The Home cam is active for shaft positions ≥ 1000.
+  command(msw::kHomeCw);
+  at(when_at(1000), in1, Level::High); // 0.954545 s
+  sched.run_until_idle();              // decel to 1060, 2 s pause, reverse: open-ended
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  EXPECT_EQ(dut.runs().back().motion.start(), Nanos::from_seconds(0.1 + 940.0 / 1100.0 + 0.1 + 2.0));
+  at(when_at(999), in1, Level::Low); // Home active → inactive going CCW
+  sched.run_until_idle();            // decel 60 steps to 939, 2 s pause, creep CW
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  at(when_at(1000), in1, Level::High); // 61 steps at v_s: 0.61 s
+  sched.run_until_idle();
+  EXPECT_EQ(dut.step_position(sched.now()), 1000);
+  EXPECT_EQ(position_word(), 0);
+  EXPECT_EQ(encoder_word(), 0);
+  EXPECT_TRUE(bit1(sw1::kHomed));
+  EXPECT_FALSE(bit1(sw1::kPositionInvalid));
+  EXPECT_FALSE(bit1(sw1::kMoveComplete)); // homing never sets Move Complete
+  const double t_reverse = 0.1 + 940.0 / 1100.0 + 0.1 + 2.0;
+  const double t_done = t_reverse + 0.1 + 1.0 / 1100.0 + 0.1 + 2.0 + 0.61;
+  EXPECT_NEAR(sched.now().seconds(), t_done, 2e-6);
+}
+
+TEST_F(Smd23eHoming, ProfileAMirroredForCcwFindHome) {
+  // The Home cam is active for shaft positions ≤ −1000.
+  command(msw::kHomeCcw);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  at(when_at(-1000), in1, Level::High);
+  sched.run_until_idle(); // stop at −1060, 2 s, reverse CW
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  at(when_at(-999), in1, Level::Low);
+  sched.run_until_idle(); // stop at −939, 2 s, creep CCW
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  at(when_at(-1000), in1, Level::High);
+  sched.run_until_idle();
+  EXPECT_EQ(dut.step_position(sched.now()), -1000);
+  EXPECT_EQ(position_word(), 0);
+  EXPECT_TRUE(bit1(sw1::kHomed));
+}
+
+TEST_F(Smd23eHoming, ProfileAStartsReversedWhenHomeIsAlreadyActive) {
+  in1.set(Level::High);
+  command(msw::kHomeCw);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+}
+
+TEST_F(Smd23eHoming, ProfileBProximityBit) {
+  configure(ConfigWords{.control = 0b110 | ccw::kHomeProximityEnable});
+  command(msw::kHomeCw);
+  in1.set(Level::High); // Home ignored before the proximity bit
+  in1.set(Level::Low);
+  run_to(500_ms);                                    // at 500
+  write(msw::kHomeCw, kDrive | lsw::kHomeProximity); // decel to v_s: 60 steps
+  run_to(700_ms);
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  at(when_at(600), in1, Level::High); // creeping at v_s since 560
+  sched.run_until_idle();
+  EXPECT_EQ(dut.step_position(sched.now()), 600);
+  EXPECT_EQ(position_word(), 0);
+  EXPECT_TRUE(bit1(sw1::kHomed));
+}
+
+TEST_F(Smd23eHoming, ProfileCLimitInTheSearchDirection) {
+  configure(ConfigWords{.control = 0b001'110}); // input 1 Home, input 2 CW limit
+  // A narrow Home switch, active between positions −200 and −100, behind the start.
+  command(msw::kHomeCw);
+  at(500_ms, in2, Level::High); // CW limit at 500: immediate stop, no error
+  run_to(600_ms);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_FALSE(bit1(sw1::kInputError));
+  EXPECT_EQ(dut.step_position(sched.now()), 500);
+  run_to(2'499_ms);
+  EXPECT_TRUE(bit1(sw1::kStopped)); // the 2 s pause
+  run_to(2'501_ms);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  in2.set(Level::Low);
+  at(when_at(-100), in1, Level::High); // entering the switch going CCW: not the step-5 edge
+  at(when_at(-201), in1, Level::Low);  // leaving it: active → inactive ends step 5
+  sched.run_until_idle();
+  EXPECT_TRUE(bit1(sw1::kMovingCw));         // step 7: creeping back after the second pause
+  EXPECT_EQ(dut.runs().back().origin, -261); // 60 decel steps past −201
+  at(when_at(-200), in1, Level::High);
+  sched.run_until_idle();
+  EXPECT_EQ(dut.step_position(sched.now()), -200);
+  EXPECT_EQ(position_word(), 0);
+  EXPECT_TRUE(bit1(sw1::kHomed));
+}
+
+TEST_F(Smd23eHoming, OppositeLimitDuringHomingIsAnInputError) {
+  configure(ConfigWords{.control = 0b010'110}); // input 2: CCW limit
+  command(msw::kHomeCw);
+  at(300_ms, in2, Level::High);
+  run_to(400_ms);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_TRUE(bit1(sw1::kInputError));
+  EXPECT_FALSE(bit1(sw1::kHomed));
+}
+
+TEST_F(Smd23eMoves, FindHomeWithoutAHomeInputIsACommandError) {
+  configure();
+  command(msw::kHomeCw);
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  EXPECT_TRUE(bit1(sw1::kStopped));
+}
+
+} // namespace
+} // namespace hilrig::models::smd23e::test

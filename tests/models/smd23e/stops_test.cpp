@@ -1,0 +1,289 @@
+// Stops, limits, E-Stop, stall, driver faults and invalid commands with their error bits
+// (spec §3.4, §3.7, §4, §6.7).
+#include "tests/models/smd23e/smd23e_fixture.hpp"
+
+namespace hilrig::models::smd23e::test {
+namespace {
+
+using Smd23eStops = Smd23eBench;
+
+// Inputs: 1 = CW limit (001), 2 = CCW limit (010), 3 = E-Stop (101); all active on current.
+constexpr std::uint16_t kLimitsAndEStop = 0b101'010'001;
+
+TEST_F(Smd23eStops, ImmediateStopDuringAMoveInvalidatesThePosition) {
+  configure();
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(500_ms);
+  command(msw::kImmediateStop);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 500);
+  run_to(2_s);
+  EXPECT_EQ(position_word(), 500); // no deceleration: the step train stopped at once
+}
+
+TEST_F(Smd23eStops, ImmediateStopWhileIdleKeepsThePositionValid) {
+  configure();
+  preset(0);
+  command(msw::kImmediateStop);
+  EXPECT_FALSE(bit1(sw1::kPositionInvalid));
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+}
+
+TEST_F(Smd23eStops, EStopStopsAtOnceAndBlocksMovesWhileActive) {
+  configure(ConfigWords{.control = kLimitsAndEStop});
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = -1000});
+  at(300_ms, in3, Level::High);
+  run_to(1_s);
+  EXPECT_EQ(position_word(), -(60 + 220)); // 0.1 s ramp + 0.2 s at 1100
+  EXPECT_TRUE(bit1(sw1::kInputError));
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  EXPECT_TRUE(bit2(sw2::kDriverEnabled)); // the motor stays powered
+  command(msw::kResetErrors);
+  command(msw::kJogCw); // refused while E-Stop is active
+  run_to(2_s);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_TRUE(bit1(sw1::kInputError));
+  in3.set(Level::Low);
+  command(msw::kResetErrors);
+  command(msw::kRelative, kDrive, MoveWords{.value = 100});
+  run_to(3_s);
+  EXPECT_EQ(position_word(), -180);
+}
+
+TEST_F(Smd23eStops, EStopWhileIdleSetsInputError) {
+  configure(ConfigWords{.control = kLimitsAndEStop});
+  in3.set(Level::High);
+  EXPECT_TRUE(bit1(sw1::kInputError));
+}
+
+TEST_F(Smd23eStops, LimitInTheDirectionOfTravelLocksThatDirection) {
+  configure(ConfigWords{.control = kLimitsAndEStop});
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  at(500_ms, in1, Level::High);
+  run_to(600_ms);
+  EXPECT_EQ(position_word(), 500);
+  EXPECT_TRUE(bit1(sw1::kInputError));
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  EXPECT_TRUE(bit2(sw2::kLimitCondition));
+  in1.set(Level::Low);
+  EXPECT_FALSE(bit2(sw2::kLimitCondition));                 // cleared when the limit goes inactive
+  command(msw::kRelative, kDrive, MoveWords{.value = 100}); // CW still locked out
+  run_to(1_s);
+  EXPECT_EQ(position_word(), 500);
+  command(msw::kRelative, kDrive, MoveWords{.value = -100}); // away from it: allowed
+  run_to(2_s);
+  EXPECT_EQ(position_word(), 400);
+  command(msw::kResetErrors);
+  command(msw::kRelative, kDrive, MoveWords{.value = 100});
+  run_to(3_s);
+  EXPECT_EQ(position_word(), 500);
+}
+
+TEST_F(Smd23eStops, OppositeLimitStopsANonJogMoveWithoutLockout) {
+  configure(ConfigWords{.control = kLimitsAndEStop});
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  at(500_ms, in2, Level::High); // CCW limit while moving CW
+  run_to(600_ms);
+  EXPECT_EQ(position_word(), 500);
+  EXPECT_TRUE(bit1(sw1::kInputError));
+  in2.set(Level::Low);
+  command(msw::kRelative, kDrive, MoveWords{.value = 100}); // no reset needed
+  run_to(2_s);
+  EXPECT_EQ(position_word(), 600);
+}
+
+TEST_F(Smd23eStops, JogIgnoresTheOppositeLimitAndRefusesAnActiveOne) {
+  configure(ConfigWords{.control = kLimitsAndEStop});
+  in1.set(Level::High); // CW limit active
+  command(msw::kJogCw);
+  EXPECT_TRUE(bit1(sw1::kInputError)); // starting toward an active limit (L1043)
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  command(msw::kResetErrors);
+  command(msw::kJogCcw); // jogging off the limit
+  run_to(500_ms);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  EXPECT_FALSE(bit1(sw1::kInputError));
+  in2.set(Level::High); // the limit ahead stops it
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_TRUE(bit1(sw1::kInputError));
+}
+
+TEST_F(Smd23eStops, StallStopsTheMoveAndInvalidatesThePosition) {
+  configure(ConfigWords{.control = ccw::kEncoderEnable | ccw::kStallEnable});
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(500_ms);
+  dut.block_shaft(true);
+  // Threshold 16 counts = 32 steps at 2048 steps/turn; detected on the 33rd step.
+  run_to(600_ms);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_TRUE(bit2(sw2::kStall));
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  EXPECT_EQ(position_word(), 533);
+  EXPECT_EQ(dut.shaft_steps(sched.now()), 500);
+  command(msw::kResetErrors);
+  EXPECT_FALSE(bit2(sw2::kStall));
+}
+
+TEST_F(Smd23eStops, M15ResetDriverFault) {
+  configure();
+  dut.over_temperature();
+  EXPECT_TRUE(bit2(sw2::kDriverFault));
+  write(0, 0x0400);
+  write(msw::kResetErrors, 0x0400); // Reset Errors + Clear Driver Fault, DriveEn = 0
+  EXPECT_FALSE(bit2(sw2::kDriverFault));
+  EXPECT_FALSE(bit2(sw2::kDriverEnabled));
+  EXPECT_DOUBLE_EQ(dut.motor_current_amps(), 0.0);
+  write(0, 0x8000);
+  EXPECT_TRUE(bit2(sw2::kDriverEnabled));
+}
+
+TEST_F(Smd23eStops, DriverFaultIsNotClearedWhileTheDriverIsEnabled) {
+  configure();
+  dut.over_temperature();
+  command(msw::kResetErrors, kDrive | lsw::kClearDriverFault);
+  EXPECT_TRUE(bit2(sw2::kDriverFault));
+}
+
+TEST_F(Smd23eStops, NetworkLossStopsAndItsReturnSetsTheErrorBits) {
+  configure();
+  preset(0);
+  command(msw::kJogCw);
+  run_to(500_ms);
+  dut.network_link(false); // [A] motion stops at once on link loss
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_EQ(position_word(), 500);
+  dut.network_link(true); // L2849, L2893
+  EXPECT_TRUE(bit2(sw2::kNetworkLost));
+  EXPECT_TRUE(bit1(sw1::kInputError));
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  command(msw::kResetErrors);
+  EXPECT_FALSE(bit2(sw2::kNetworkLost));
+  EXPECT_FALSE(bit1(sw1::kInputError));
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid)); // only a preset or homing validates it
+}
+
+TEST_F(Smd23eStops, TemperatureWarningIsReported) {
+  configure();
+  dut.set_temperature_warning(true);
+  EXPECT_TRUE(bit2(sw2::kTempWarning));
+  dut.set_temperature_warning(false);
+  EXPECT_FALSE(bit2(sw2::kTempWarning));
+}
+
+TEST_F(Smd23eStops, StartIndexedInputCapturesTheEncoderOnEveryTransition) {
+  configure(ConfigWords{.control = 0b011 | ccw::kEncoderEnable});
+  command(msw::kJogCw);
+  at(500_ms, in1, Level::High); // step 500 = 250 counts
+  at(700_ms, in1, Level::Low);  // step 720 = 360 counts
+  run_to(600_ms);
+  EXPECT_EQ(captured_word(), 250);
+  run_to(800_ms);
+  EXPECT_EQ(captured_word(), 360);
+}
+
+using Smd23eInvalid = Smd23eBench;
+
+TEST_F(Smd23eInvalid, OutOfRangeMoveParametersSetCommandErrorWithoutMotion) {
+  configure();
+  const auto refused = [this](MoveWords m) {
+    command(msw::kResetErrors);
+    command(msw::kRelative, kDrive, m);
+    run_to(sched.now() + 1_s);
+    return bit1(sw1::kCommandError) && !bit1(sw1::kMoveComplete) && dut.step_position(sched.now()) == 0;
+  };
+  EXPECT_TRUE(refused({.value = 8'388'608}));     // (8388, 608): beyond ±8,388,607
+  EXPECT_TRUE(refused({.value = 100, .vp = 99})); // below v_s
+  EXPECT_TRUE(refused({.value = 100, .vp = 3'000'000}));
+  EXPECT_TRUE(refused({.value = 100, .accel = 0}));
+  EXPECT_TRUE(refused({.value = 100, .decel = 5001}));
+  EXPECT_TRUE(refused({.value = 100, .word9 = 5001})); // jerk
+}
+
+TEST_F(Smd23eInvalid, MixedSignMultiWordIsRejected) {
+  configure();
+  Words w = block(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  w[3] = as_word(-5); // (1, −5)
+  dut.write_outputs(block(0, kDrive));
+  dut.write_outputs(w);
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+}
+
+TEST_F(Smd23eInvalid, OutOfRangeJogSetsCommandErrorAndMoveComplete) {
+  configure();
+  command(msw::kJogCw, kDrive, MoveWords{.accel = 0});
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  EXPECT_TRUE(bit1(sw1::kMoveComplete)); // L2860
+  EXPECT_TRUE(bit1(sw1::kStopped));
+}
+
+TEST_F(Smd23eInvalid, SeveralCommandBitsAtOnce) {
+  configure();
+  command(msw::kRelative | msw::kJogCw, kDrive, MoveWords{.value = 100});
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  EXPECT_TRUE(bit1(sw1::kStopped));
+}
+
+TEST_F(Smd23eInvalid, ResetErrorsWithAMoveRunsTheMove) {
+  configure();
+  command(msw::kJogCw, kDrive, MoveWords{.accel = 0});
+  command(msw::kResetErrors | msw::kRelative, kDrive, MoveWords{.value = 100});
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+}
+
+TEST_F(Smd23eInvalid, ReservedCommandWordBits) {
+  configure();
+  command(msw::kRelative, kDrive | 0x0040, MoveWords{.value = 100});
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  EXPECT_TRUE(bit1(sw1::kStopped));
+}
+
+TEST_F(Smd23eInvalid, NewMoveWhileMovingIsRefused) {
+  configure();
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(500_ms);
+  command(msw::kRelative, kDrive, MoveWords{.value = 50});
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  run_to(2_s);
+  EXPECT_EQ(position_word(), 1000);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eInvalid, ResumeWithNothingHeld) {
+  configure();
+  command(msw::kResume);
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+}
+
+TEST_F(Smd23eInvalid, MovesNeedTheDriverEnabled) {
+  configure();
+  command(msw::kRelative, 0, MoveWords{.value = 100});
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  EXPECT_TRUE(bit1(sw1::kStopped));
+}
+
+class Smd23eNoEncoder : public Smd23eBench {
+protected:
+  Smd23eNoEncoder() : Smd23eBench(Params{.has_encoder = false}) {}
+};
+
+TEST_F(Smd23eNoEncoder, EncoderCommandsAreCommandErrors) {
+  configure();
+  command(msw::kRelative, kDrive | lsw::kEncoderMove, MoveWords{.value = 100});
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  command(msw::kResetErrors);
+  command(msw::kPresetEncoder, kDrive, MoveWords{.value = 100});
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  // And the encoder cannot be enabled in the configuration.
+  dut.write_outputs(config_block(ConfigWords{.control = ccw::kEncoderEnable}));
+  EXPECT_NE(dut.input_words()[0] & sw1::kConfigError, 0);
+}
+
+} // namespace
+} // namespace hilrig::models::smd23e::test
