@@ -1,0 +1,445 @@
+#include "models/ans1/ans1.hpp"
+
+#include <stdexcept>
+
+#include "models/ans1/position.hpp"
+#include "signals/quadrature_decoder.hpp"
+
+namespace hilrig::models::ans1 {
+
+// The encoder decoder is fed from edge handlers the bus keeps; sharing it keeps those
+// handlers safe should the bus outlive the device.
+struct Ans1::QuadState {
+  signals::QuadratureDecoder decoder{signals::CountMode::X4};
+  LineInput* a = nullptr;
+  LineInput* b = nullptr;
+  void edge() { decoder.update(a != nullptr && is_high(a->level()), b != nullptr && is_high(b->level())); }
+};
+
+namespace {
+
+Params effective_params(Params params, Variant variant) {
+  if (variant == Variant::LateOutputs) {
+    params.output_delay = microseconds(kLateOutputDelayUs);
+  }
+  return params;
+}
+
+MonitorFaults monitor_faults(Variant variant) {
+  MonitorFaults f;
+  f.brake_never_faults = variant == Variant::BrakeNeverFaults;
+  f.die_check_never_counts = variant == Variant::DieProtectionNeverCounts;
+  return f;
+}
+
+// Outputs with setpoints or a timer (an overflow output with an LS program follows it, L1226).
+std::uint16_t ls_programmed(const std::array<OutputChannel, kOutputCount>& channels) {
+  std::uint16_t mask = 0;
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    const OutputSetup& o = channels[i].setup();
+    bool programmed = o.timer_ms != 0;
+    for (const auto& p : o.pairs) {
+      programmed = programmed || p.used();
+    }
+    if (programmed) {
+      mask = static_cast<std::uint16_t>(mask | (1U << i));
+    }
+  }
+  return mask;
+}
+
+std::uint16_t bit(int point) { return static_cast<std::uint16_t>(1U << static_cast<unsigned>(point - 1)); }
+
+} // namespace
+
+Ans1::Ans1(Scheduler& scheduler, const Params& params, Variant variant)
+    : scheduler_(scheduler), params_(effective_params(params, variant)), variant_(variant),
+      excitation_(params.excitation_hz, params.excitation_amplitude), quad_(std::make_shared<QuadState>()),
+      monitors_(monitor_faults(variant)) {
+  monitors_.configure(MonitorSetup{}, position_.full_scale_count);
+  schedule_scan(scheduler_.now());
+  speed_event_ = scheduler_.at(scheduler_.now() + params_.speed_update_period, [this] { speed_update(); });
+}
+
+Ans1::Ans1(Scheduler& scheduler, const Ans1Pins& pins, const Params& params, Variant variant)
+    : Ans1(scheduler, params, variant) {
+  attach(pins);
+}
+
+Ans1::~Ans1() {
+  scheduler_.cancel(scan_event_);
+  scheduler_.cancel(speed_event_);
+  scheduler_.cancel(write_event_);
+}
+
+std::size_t Ans1::index(int point) {
+  if (point < 1 || point > kOutputCount) {
+    throw std::out_of_range("ANS1 points are numbered 1..16");
+  }
+  return static_cast<std::size_t>(point - 1);
+}
+
+void Ans1::attach(const Ans1Pins& pins) {
+  pins_ = pins;
+  quad_->a = pins.quad_a;
+  quad_->b = pins.quad_b;
+  // The decoder starts from the lines' present state: power-up is not a count.
+  quad_->decoder = signals::QuadratureDecoder(signals::CountMode::X4,
+                                              pins.quad_a != nullptr && is_high(pins.quad_a->level()),
+                                              pins.quad_b != nullptr && is_high(pins.quad_b->level()));
+  std::weak_ptr<QuadState> weak = quad_;
+  const auto handler = [weak](const Edge&) {
+    if (auto q = weak.lock()) {
+      q->edge();
+    }
+  };
+  if (pins.quad_a != nullptr) {
+    pins.quad_a->on_edge(handler);
+  }
+  if (pins.quad_b != nullptr) {
+    pins.quad_b->on_edge(handler);
+  }
+  // Z is ignored (L455).
+  for (int n = 1; n <= kOutputCount; ++n) {
+    if (LineOutput* out = pins_.outputs[index(n)]) {
+      out->set(level_of((pin_levels_ & bit(n)) != 0));
+    }
+  }
+}
+
+// ---------------------------------------------------------------- programming
+
+void Ans1::configure_position(const PositionSetup& setup) {
+  const bool period_changes = setup.slave_mode != position_.slave_mode;
+  const bool fsc_changes = setup.full_scale_count != position_.full_scale_count;
+  const bool source_changes = setup.sensor != position_.sensor || period_changes;
+  position_ = setup;
+  if (source_changes) {
+    // A new transducer is not motion: restart resolver tracking and the speed reference.
+    resolver_seen_ = false;
+    last_peak_ = Nanos::min();
+    speed_reference_count_ = transducer_count();
+  }
+  update_advances();
+  if (fsc_changes) {
+    monitors_.configure(monitors_.setup(), position_.full_scale_count);
+  }
+  if (period_changes && !in_scan_) { // from inside a scan (the host), the scan reschedules itself
+    scheduler_.cancel(scan_event_);
+    schedule_scan(scheduler_.now() + scan_period());
+  }
+}
+
+void Ans1::configure_output(int output, const OutputSetup& setup) {
+  channels_[index(output)].configure(setup);
+  update_advances();
+}
+
+void Ans1::configure_shift_register(const ShiftRegisterSetup& setup) {
+  if (setup.input == 0) {
+    shift_register_.clear(); // disabled or deleted
+  }
+  sr_setup_ = setup;
+}
+
+void Ans1::configure_monitors(const MonitorSetup& setup) {
+  monitors_.configure(setup, position_.full_scale_count);
+}
+
+void Ans1::configure(const Ans1Setup& setup) {
+  configure_position(setup.position);
+  for (int n = 1; n <= kOutputCount; ++n) {
+    configure_output(n, setup.output(n));
+  }
+  configure_shift_register(setup.shift_register);
+  configure_monitors(setup.monitors);
+}
+
+Ans1Setup Ans1::setup() const {
+  Ans1Setup s;
+  s.position = position_;
+  for (int n = 1; n <= kOutputCount; ++n) {
+    s.output(n) = channels_[index(n)].setup();
+  }
+  s.shift_register = sr_setup_;
+  s.monitors = monitors_.setup();
+  return s;
+}
+
+std::uint16_t Ans1::user_defined_enabled() const { return ans1::user_defined_enabled(monitors_.claims()); }
+
+const OutputSetup& Ans1::output_setup(int output) const { return channels_[index(output)].setup(); }
+
+void Ans1::preset_machine(std::optional<std::uint16_t> value) {
+  if (value) {
+    position_.preset_value = *value;
+  }
+  position_.scaled_offset = preset_offset(position_.preset_value, scaled());
+  gmp_ = global_position(scaled(), position_.scaled_offset, position_.full_scale_count);
+}
+
+void Ans1::preset_output(int output, std::optional<std::uint16_t> value) {
+  channels_[index(output)].preset(gmp_, value);
+}
+
+void Ans1::force_outputs(std::uint16_t enable, std::uint16_t state) {
+  output_force_enable_ = enable;
+  output_force_state_ = state;
+}
+
+void Ans1::force_inputs(std::uint16_t enable, std::uint16_t state) {
+  input_force_enable_ = enable;
+  input_force_state_ = state;
+}
+
+void Ans1::clear_errors() {
+  if (!resolver_fault_active_) {
+    resolver_fault_latched_ = false;
+  }
+  monitors_.clear_errors();
+}
+
+// ---------------------------------------------------------------- status
+
+std::uint16_t Ans1::ls_position(int output) const {
+  return channels_[index(output)].ls_position(gmp_, position_.full_scale_count);
+}
+
+const AdvanceCounts& Ans1::advances(int output) const { return channels_[index(output)].advances(); }
+
+bool Ans1::heartbeat() const { return (scheduler_.now() / milliseconds(500)) % 2 == 1; }
+
+std::int64_t Ans1::transducer_count() const {
+  if (position_.slave_mode) {
+    return slave_count_;
+  }
+  if (position_.sensor == SensorType::Quadrature) {
+    return quad_->decoder.count();
+  }
+  return resolver_count_;
+}
+
+Nanos Ans1::scan_period() const {
+  return position_.slave_mode ? params_.slave_scan_period : params_.master_scan_period;
+}
+
+std::int32_t Ans1::scaled() const {
+  return scaled_count(transducer_count(), position_.counts_per_cycle, position_.full_scale_count);
+}
+
+// ---------------------------------------------------------------- the scan
+
+void Ans1::schedule_scan(Nanos at) {
+  scan_event_ = scheduler_.at(at, [this] {
+    in_scan_ = true;
+    scan();
+    in_scan_ = false;
+    schedule_scan(scheduler_.now() + scan_period()); // the period may have changed in the scan
+  });
+}
+
+void Ans1::sample_resolver(Nanos now) {
+  const Nanos peak = excitation_.latest_peak(now);
+  if (peak > now || peak == last_peak_) {
+    return;
+  }
+  last_peak_ = peak;
+  const double s = pins_.stator_sin != nullptr ? pins_.stator_sin->sample(peak) : 0.0;
+  const double c = pins_.stator_cos != nullptr ? pins_.stator_cos->sample(peak) : 0.0;
+  const ResolverReading r =
+      decode_resolver(s, c, excitation_.value(peak), params_.resolver_min_ratio, params_.resolver_max_ratio);
+  if (!r.valid) {
+    resolver_fault_active_ = true;
+    resolver_fault_latched_ = true;
+    return; // position holds its last valid value
+  }
+  resolver_fault_active_ = false;
+  if (position_.fault_auto_clear) {
+    resolver_fault_latched_ = false;
+  }
+  // CntDir = 1: GMP increases counter-clockwise (L1840).
+  const auto angle = position_.count_ccw
+                         ? static_cast<std::uint16_t>((kResolverCounts - r.angle) % kResolverCounts)
+                         : r.angle;
+  if (!resolver_seen_) {
+    resolver_count_ = angle; // absolute within a turn at power-up
+    resolver_seen_ = true;
+    speed_reference_count_ = resolver_count_; // the first reading is not motion
+  } else {
+    resolver_count_ += angle_step(resolver_angle_, angle);
+  }
+  resolver_angle_ = angle;
+}
+
+void Ans1::read_inputs() {
+  std::uint16_t electrical = 0;
+  for (int n = 1; n <= kInputCount; ++n) {
+    const LineInput* in = pins_.inputs[index(n)];
+    if (in != nullptr && is_high(in->level())) {
+      electrical = static_cast<std::uint16_t>(electrical | bit(n));
+    }
+  }
+  electrical_inputs_ = electrical;
+  // Input Active State bit 1: active when no current flows (L1805). Forces feed all logic.
+  const auto logical = static_cast<std::uint16_t>(electrical ^ position_.input_active_state);
+  active_inputs_ = static_cast<std::uint16_t>((logical & ~input_force_enable_) |
+                                              (input_force_state_ & input_force_enable_));
+}
+
+void Ans1::scan() {
+  const Nanos now = scheduler_.now();
+  ++scans_;
+  const bool resolver = !position_.slave_mode && position_.sensor == SensorType::Resolver;
+  if (resolver) {
+    sample_resolver(now);
+  } else {
+    resolver_fault_active_ = false; // resolver inputs are ignored (L1485)
+  }
+  read_inputs();
+  const auto rising = static_cast<std::uint16_t>(active_inputs_ & ~previous_active_inputs_);
+  const std::uint16_t fsc = position_.full_scale_count;
+
+  gmp_ = global_position(scaled(), position_.scaled_offset, fsc);
+  if (!first_scan_ && position_.preset_input != 0 && (rising & bit(position_.preset_input)) != 0) {
+    preset_machine();
+  }
+  if (first_scan_) {
+    previous_gmp_ = gmp_;
+  }
+  for (int n = 1; n <= kOutputCount; ++n) {
+    OutputChannel& channel = channels_[index(n)];
+    const std::uint8_t input = channel.setup().ls_preset_input;
+    if (!first_scan_ && input != 0 && (rising & bit(input)) != 0) {
+      channel.preset(gmp_);
+    }
+  }
+
+  shift_register_.step(previous_gmp_, gmp_,
+                       sr_setup_.input != 0 && (active_inputs_ & bit(sr_setup_.input)) != 0, sr_setup_, fsc);
+
+  // Time of Rotation: between two forward roll-overs of GMP (L794), in 0.1 ms.
+  if (!first_scan_ && crossed_forward(previous_gmp_, gmp_, 0, fsc)) {
+    if (last_wrap_ != Nanos::min()) {
+      const std::int64_t tenths = (now - last_wrap_) / microseconds(100);
+      time_of_rotation_ = static_cast<std::uint16_t>(tenths > 0xFFFF ? 0xFFFF : tenths);
+    }
+    last_wrap_ = now;
+  }
+
+  ScanState state;
+  state.now = now;
+  state.gmp = gmp_;
+  state.fsc = fsc;
+  state.speed = speed_.value();
+  state.speed_reported = speed_.reported();
+  state.active_inputs = active_inputs_;
+  state.shift_register = &shift_register_;
+  state.shift_register_enabled = sr_setup_.input != 0;
+  state.advance_wrong_sign = variant_ == Variant::AdvanceWrongSign;
+  state.late_wrap_to = variant_ == Variant::SetpointOffByOneAtWrap;
+
+  OutputStatusMasks masks{0, 0, 0, 0, 0, 0, 0};
+  std::uint16_t ls = 0;
+  for (int n = 1; n <= kOutputCount; ++n) {
+    const OutputState s = channels_[index(n)].scan(state, params_.time_only_retrigger_restarts);
+    const std::uint16_t b = bit(n);
+    const auto set = [b](std::uint16_t& mask, bool on) {
+      if (on) {
+        mask = static_cast<std::uint16_t>(mask | b);
+      }
+    };
+    set(masks.calc, s.calc);
+    set(masks.simple, s.simple);
+    set(masks.pulse, s.pulse);
+    set(masks.window, s.window);
+    set(masks.shift_register, s.sr);
+    set(masks.rpm, s.rpm);
+    set(masks.timer, s.timer_ok);
+    set(ls, s.ls);
+  }
+  masks_ = masks;
+  ls_ = ls;
+
+  // Arbitration ([MODEL] §4.13): transducer fault, then force, then the monitors' fault and
+  // overflow outputs, then the LS function.
+  monitors_.scan(now, MonitorInputs{gmp_, transducer_count(), active_inputs_});
+  std::uint16_t out = apply_claims(monitors_.claims(), ls, ls_programmed(channels_));
+  out = static_cast<std::uint16_t>((out & ~output_force_enable_) |
+                                   (output_force_state_ & output_force_enable_));
+  if (resolver && resolver_fault()) {
+    out = position_.hold_outputs_on_fault ? outputs_ : 0;
+  }
+  if (variant_ == Variant::OutputStuckOn) {
+    out = static_cast<std::uint16_t>(out | bit(1));
+  }
+  outputs_ = out;
+  queue_outputs(now, out);
+
+  previous_active_inputs_ = active_inputs_;
+  previous_gmp_ = gmp_;
+  first_scan_ = false;
+  host_.scan(); // acts on a Transmit edge; its programming takes effect from the next scan
+}
+
+// ---------------------------------------------------------------- speed
+
+void Ans1::speed_update() {
+  const std::int64_t count = transducer_count();
+  const std::int64_t delta = count - speed_reference_count_;
+  speed_reference_count_ = count;
+  if (variant_ != Variant::SpeedFilterStuck) {
+    speed_.update(delta, position_.counts_per_cycle, params_.speed_update_period, position_.rpm_filter);
+  }
+  update_advances();
+  speed_event_ = scheduler_.at(scheduler_.now() + params_.speed_update_period, [this] { speed_update(); });
+}
+
+void Ans1::update_advances() {
+  const double scale = variant_ == Variant::AdvanceWrongScale ? 2.0 : 1.0;
+  bool clamped = false;
+  for (auto& channel : channels_) {
+    channel.update_advances(speed_.value(), position_.full_scale_count, scale);
+    clamped = clamped || channel.advances().clamped;
+  }
+  rpm_clamped_ = clamped;
+}
+
+// ---------------------------------------------------------------- output pins
+
+void Ans1::queue_outputs(Nanos now, std::uint16_t levels) {
+  if (levels == queued_levels_) {
+    return;
+  }
+  queued_levels_ = levels;
+  if (write_count_ == kWriteQueue) { // cannot happen with sane delays; keep order anyway
+    write_event_ = EventId{};
+    write_due_outputs();
+  }
+  writes_[(write_head_ + write_count_) % kWriteQueue] = PendingWrite{now + params_.output_delay, levels};
+  ++write_count_;
+  if (write_count_ == 1) {
+    write_event_ = scheduler_.at(now + params_.output_delay, [this] { write_due_outputs(); });
+  }
+}
+
+void Ans1::write_due_outputs() {
+  const PendingWrite w = writes_[write_head_];
+  write_head_ = (write_head_ + 1) % kWriteQueue;
+  --write_count_;
+  const auto changed = static_cast<std::uint16_t>(w.levels ^ pin_levels_);
+  pin_levels_ = w.levels;
+  for (int n = 1; n <= kOutputCount; ++n) {
+    if ((changed & bit(n)) != 0) {
+      if (LineOutput* out = pins_.outputs[index(n)]) {
+        out->set(level_of((w.levels & bit(n)) != 0));
+      }
+    }
+  }
+  if (write_count_ > 0) {
+    const Nanos next = writes_[write_head_].time;
+    write_event_ =
+        scheduler_.at(next < scheduler_.now() ? scheduler_.now() : next, [this] { write_due_outputs(); });
+  }
+}
+
+} // namespace hilrig::models::ans1

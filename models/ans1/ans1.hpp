@@ -1,0 +1,211 @@
+#pragma once
+// The virtual ANS1 programmable limit switch (spec/ans1.md). A deterministic state machine
+// with the device's own timing: a position-and-output scan every Params::master_scan_period
+// (10 us; 40 us as a slave) whose outputs reach the pins Params::output_delay later, a speed
+// update every 14.6 ms, fed by timestamped edges and analog samples on its pins. It knows
+// nothing of backends: it is built on a Scheduler and core line/analog interfaces.
+//
+// On the virtual bus:
+//   virt::VirtualBus bus(scheduler);
+//   Ans1 ans1(scheduler, wire_pins(bus, "ans1."), Params{}, *variant_from_name("nominal"));
+//   // the rig drives ans1.A/B/Z and ans1.IN1..IN16 and sets the waveforms of the analog
+//   // channels ans1.SIN/ans1.COS = TR * ans1.excitation().value(t) * sin/cos(theta(t));
+//   // it reads ans1.OUT1..OUT16 (High = on) and the host words: ans1.host().write(k, v),
+//   // ans1.host().read(k).
+// Or construct without pins and attach(pins) once before running. The scan runs from
+// construction on; keep the device alive while the scheduler runs.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "core/scheduler.hpp"
+#include "models/ans1/ans1_pins.hpp"
+#include "models/ans1/host_interface.hpp"
+#include "models/ans1/monitors.hpp"
+#include "models/ans1/output_channel.hpp"
+#include "models/ans1/output_setup.hpp"
+#include "models/ans1/params.hpp"
+#include "models/ans1/position_resolver.hpp"
+#include "models/ans1/position_setup.hpp"
+#include "models/ans1/setup.hpp"
+#include "models/ans1/shift_register.hpp"
+#include "models/ans1/speed.hpp"
+#include "models/ans1/variants.hpp"
+
+namespace hilrig::models::ans1 {
+
+// DA16 words 10..16 (bit n-1 = output n; a 0 bit means that condition blocks the output).
+struct OutputStatusMasks {
+  std::uint16_t calc = 0;
+  std::uint16_t simple = 0xFFFF;
+  std::uint16_t pulse = 0xFFFF;
+  std::uint16_t window = 0xFFFF;
+  std::uint16_t shift_register = 0xFFFF;
+  std::uint16_t rpm = 0xFFFF;
+  std::uint16_t timer = 0xFFFF;
+};
+
+class Ans1 {
+public:
+  // Starts scanning at scheduler.now(). Pins may be attached now or later with attach().
+  explicit Ans1(Scheduler& scheduler, const Params& params = {}, Variant variant = Variant::Correct);
+  Ans1(Scheduler& scheduler, const Ans1Pins& pins, const Params& params = {},
+       Variant variant = Variant::Correct);
+  ~Ans1();
+  Ans1(const Ans1&) = delete;
+  Ans1& operator=(const Ans1&) = delete;
+
+  void attach(const Ans1Pins& pins);
+
+  // ---- Programming (what the host interface applies from command blocks) ----
+  void configure_position(const PositionSetup& setup);            // CB2 (everything but the preset action)
+  void configure_output(int output, const OutputSetup& setup);    // CB3/CB5/CB6; output 1..16
+  void configure_shift_register(const ShiftRegisterSetup& setup); // CB9
+  void configure_monitors(const MonitorSetup& setup);             // CB7, CB8, CB10, CB11
+  // Everything at once (a loaded program, factory defaults). The preset actions are not part
+  // of a setup.
+  void configure(const Ans1Setup& setup);
+  // CB11 bit 12: preset a production counter.
+  void preset_counter(CounterId id, std::uint32_t value) { monitors_.preset_counter(id, value); }
+  // CB2 bit 14 (Transmit edge): GMP becomes MPV; with a value, MPV is loaded first (bit 11).
+  void preset_machine(std::optional<std::uint16_t> value = std::nullopt);
+  // CB3 bit 14: LSO = LSPV - GMP; with a value, LSPV is loaded first (bit 9).
+  void preset_output(int output, std::optional<std::uint16_t> value = std::nullopt);
+  // CB1 words 4/5 and 6/7: bit n-1 = point n.
+  void force_outputs(std::uint16_t enable, std::uint16_t state);
+  void force_inputs(std::uint16_t enable, std::uint16_t state);
+  // Clear Errors: drops a latched resolver fault whose signals are valid again, and the
+  // brake overrun faults.
+  void clear_errors();
+  // Slave mode: the position a master ANS1 sends, in transducer counts (mod CPC).
+  void set_slave_position(std::int64_t count) { slave_count_ = count; }
+
+  [[nodiscard]] const PositionSetup& position_setup() const { return position_; }
+  [[nodiscard]] const OutputSetup& output_setup(int output) const;
+  [[nodiscard]] const ShiftRegisterSetup& shift_register_setup() const { return sr_setup_; }
+  [[nodiscard]] const Params& params() const { return params_; }
+  [[nodiscard]] Variant variant() const { return variant_; }
+
+  // ---- The resolver reference the rig must lock its stator signals to ----
+  [[nodiscard]] const ResolverExcitation& excitation() const { return excitation_; }
+
+  // ---- Status (what the data attribute blocks report) ----
+  [[nodiscard]] std::uint16_t gmp() const { return gmp_; }                           // DA16 w1
+  [[nodiscard]] std::int16_t speed_rpm() const { return speed_.reported(); }         // DA16 w2
+  [[nodiscard]] double speed() const { return speed_.value(); }                      // unrounded S
+  [[nodiscard]] std::uint16_t time_of_rotation() const { return time_of_rotation_; } // DA16 w4, 0.1 ms
+  [[nodiscard]] std::uint16_t input_states() const {
+    return active_inputs_;
+  } // logical, after polarity and force
+  [[nodiscard]] std::uint16_t electrical_inputs() const { return electrical_inputs_; }
+  [[nodiscard]] std::uint16_t output_states() const { return outputs_; } // logical output states (DA16 w9)
+  [[nodiscard]] std::uint16_t ls_states() const { return ls_; } // LS function only, before arbitration
+  [[nodiscard]] std::uint16_t user_defined_enabled() const;     // DA16 w17
+  [[nodiscard]] const OutputStatusMasks& status_masks() const { return masks_; }
+  [[nodiscard]] std::uint16_t ls_position(int output) const;                      // DA16 w19
+  [[nodiscard]] const AdvanceCounts& advances(int output) const;                  // DA19 w9/w10
+  [[nodiscard]] bool rpm_clamped() const { return rpm_clamped_; }                 // status bit 7
+  [[nodiscard]] bool outputs_forced() const { return output_force_enable_ != 0; } // status bit 6
+  [[nodiscard]] bool resolver_fault() const {
+    return resolver_fault_active_ || resolver_fault_latched_;
+  }                                     // bit 12
+  [[nodiscard]] bool heartbeat() const; // status bit 14: toggles every 500 ms
+  [[nodiscard]] std::uint16_t output_force_enable() const { return output_force_enable_; }
+  [[nodiscard]] std::uint16_t output_force_state() const { return output_force_state_; }
+  [[nodiscard]] std::uint16_t input_force_enable() const { return input_force_enable_; }
+  [[nodiscard]] std::uint16_t input_force_state() const { return input_force_state_; }
+  [[nodiscard]] const ShiftRegister& shift_register() const { return shift_register_; }
+  // Brake monitor, die protection, production counters, input edge positions (DA5-8, 16-19).
+  [[nodiscard]] const Monitors& monitors() const { return monitors_; }
+  // The host's 20 command / 20 status words (spec §5), served at every scan.
+  [[nodiscard]] HostInterface& host() { return host_; }
+  [[nodiscard]] const HostInterface& host() const { return host_; }
+  // The whole programmed setup as the device holds it (offsets include presets).
+  [[nodiscard]] Ans1Setup setup() const;
+  // The transducer count the position is scaled from: resolver 4,096/turn unwrapped,
+  // encoder 4X count, or the slave value. The brake monitor's pos4096 for a resolver.
+  [[nodiscard]] std::int64_t transducer_count() const;
+  [[nodiscard]] std::uint64_t scans() const { return scans_; }
+  [[nodiscard]] Nanos scan_period() const;
+
+private:
+  struct QuadState;
+
+  void schedule_scan(Nanos at);
+  void scan();
+  void speed_update();
+  void sample_resolver(Nanos now);
+  void read_inputs();
+  void queue_outputs(Nanos now, std::uint16_t levels);
+  void write_due_outputs();
+  void update_advances();
+  [[nodiscard]] std::int32_t scaled() const;
+  [[nodiscard]] static std::size_t index(int point);
+
+  Scheduler& scheduler_;
+  Params params_;
+  Variant variant_;
+  Ans1Pins pins_{};
+  ResolverExcitation excitation_;
+  std::shared_ptr<QuadState> quad_;
+
+  PositionSetup position_{};
+  ShiftRegisterSetup sr_setup_{};
+  std::array<OutputChannel, kOutputCount> channels_{};
+  Monitors monitors_;
+
+  // Transducer
+  std::int64_t resolver_count_ = 0;
+  std::uint16_t resolver_angle_ = 0;
+  bool resolver_seen_ = false;
+  Nanos last_peak_ = Nanos::min();
+  bool resolver_fault_active_ = false;
+  bool resolver_fault_latched_ = false;
+  std::int64_t slave_count_ = 0;
+
+  // Scan state
+  std::uint16_t gmp_ = 0;
+  std::uint16_t previous_gmp_ = 0;
+  bool first_scan_ = true;
+  std::uint16_t electrical_inputs_ = 0;
+  std::uint16_t active_inputs_ = 0;
+  std::uint16_t previous_active_inputs_ = 0;
+  std::uint16_t ls_ = 0;
+  std::uint16_t outputs_ = 0;
+  OutputStatusMasks masks_{};
+  ShiftRegister shift_register_{};
+  std::uint16_t output_force_enable_ = 0;
+  std::uint16_t output_force_state_ = 0;
+  std::uint16_t input_force_enable_ = 0;
+  std::uint16_t input_force_state_ = 0;
+  std::uint64_t scans_ = 0;
+  bool in_scan_ = false;
+
+  // Speed
+  SpeedFilter speed_{};
+  std::int64_t speed_reference_count_ = 0;
+  bool rpm_clamped_ = false;
+  Nanos last_wrap_ = Nanos::min();
+  std::uint16_t time_of_rotation_ = 0;
+
+  // Output pins lag the scan by output_delay: a queue of (time, levels), one event pending.
+  struct PendingWrite {
+    Nanos time;
+    std::uint16_t levels;
+  };
+  static constexpr std::size_t kWriteQueue = 64;
+  std::array<PendingWrite, kWriteQueue> writes_{};
+  std::size_t write_head_ = 0;
+  std::size_t write_count_ = 0;
+  std::uint16_t queued_levels_ = 0;
+  std::uint16_t pin_levels_ = 0;
+
+  HostInterface host_{*this}; // last: it reads the device through its public API
+
+  EventId scan_event_{};
+  EventId speed_event_{};
+  EventId write_event_{};
+};
+
+} // namespace hilrig::models::ans1

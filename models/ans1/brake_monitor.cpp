@@ -1,0 +1,135 @@
+#include "models/ans1/brake_monitor.hpp"
+
+#include <cstdlib>
+
+namespace hilrig::models::ans1 {
+
+namespace {
+[[nodiscard]] std::int64_t whole_ms(Nanos d) { return d / milliseconds(1); }
+} // namespace
+
+void BrakeMonitor::configure(const BrakeSetup& setup) {
+  setup_ = setup;
+  phase_ = Phase::Idle;
+  primed_ = false;
+  if (setup.input == 0) {
+    status_ = BrakeStatus{};
+    start_fault_ = false;
+    stop_fault_ = false;
+  }
+}
+
+void BrakeMonitor::clear_errors() {
+  start_fault_ = false;
+  stop_fault_ = false;
+}
+
+std::int64_t BrakeMonitor::position_ms_ago(std::int64_t ms) const {
+  // history_ holds one position per tick; the newest is at index (ticks_ - 1).
+  const auto index = (ticks_ - 1 - static_cast<std::uint64_t>(ms)) % kHistory;
+  return history_[static_cast<std::size_t>(index)];
+}
+
+void BrakeMonitor::tick(Nanos now, bool released, std::int64_t pos4096, std::uint16_t gmp) {
+  history_[static_cast<std::size_t>(ticks_ % kHistory)] = pos4096;
+  ++ticks_;
+  if (setup_.input == 0) return;
+  if (!primed_) {
+    primed_ = true;
+    released_ = released;
+    return;
+  }
+  const bool was_released = released_;
+  released_ = released;
+  const bool release_edge = !was_released && released;
+  const bool apply_edge = was_released && !released;
+
+  switch (phase_) {
+  case Phase::Idle:
+    if (release_edge) {
+      phase_ = Phase::Starting;
+      t0_ = now;
+      start_pos_ = pos4096;
+      status_.released_position = gmp;
+    } else if (apply_edge) {
+      begin_debounce(now, gmp);
+    }
+    break;
+  case Phase::Starting:
+    if (apply_edge) {
+      // Applied again before the press moved: that start is abandoned [MODEL].
+      begin_debounce(now, gmp);
+    } else if (std::llabs(pos4096 - start_pos_) > 2 * static_cast<std::int64_t>(setup_.complete_stop_count)) {
+      finish_start(whole_ms(now - t0_));
+    }
+    break;
+  case Phase::Debouncing:
+    debounce(now, released, gmp);
+    break;
+  case Phase::Stopping: {
+    // The input is ignored until the cycle ends (L1041). Sliding 125 ms window, evaluated
+    // every tick once a whole window lies after the application [MODEL A10].
+    const std::int64_t elapsed = whole_ms(now - t0_);
+    if (elapsed >= kStopWindowMs &&
+        std::llabs(pos4096 - position_ms_ago(kStopWindowMs)) < setup_.complete_stop_count) {
+      finish_stop(elapsed);
+    }
+    break;
+  }
+  }
+}
+
+void BrakeMonitor::begin_debounce(Nanos now, std::uint16_t gmp) {
+  phase_ = Phase::Debouncing;
+  t0_ = now;
+  pending_applied_position_ = gmp;
+  active_samples_ = 0;
+  inactive_samples_ = 0;
+}
+
+void BrakeMonitor::debounce(Nanos now, bool released, std::uint16_t gmp) {
+  const std::int64_t elapsed = whole_ms(now - t0_);
+  bool noise = false;
+  if (elapsed >= kSampleStartMs && elapsed < kDecisionMs) {
+    // 16 samples at 16..31 ms after the edge; "8 of 16" counted cumulatively [MODEL A9].
+    if (released) {
+      noise = ++active_samples_ >= kNoiseActiveSamples;
+    } else {
+      ++inactive_samples_;
+    }
+  } else if (elapsed >= kDecisionMs) {
+    if (inactive_samples_ >= kQualifyInactiveSamples) {
+      phase_ = Phase::Stopping;
+      return;
+    }
+    noise = true;
+  }
+  if (!noise) return;
+  ++status_.noise_rejections;
+  if (!released) {
+    begin_debounce(now, gmp); // still applied: restart at once, re-timing t0 [MODEL A9]
+  } else {
+    phase_ = Phase::Idle; // wait for the next 1->0 edge
+  }
+}
+
+void BrakeMonitor::finish_start(std::int64_t elapsed_ms) {
+  phase_ = Phase::Idle;
+  status_.start_time_ms = elapsed_ms > 32767 ? kStartTimeOverflow : static_cast<std::uint16_t>(elapsed_ms);
+  ++status_.completed_starts;
+  // A limit of 0 disables the check [MODEL A44]; a start within limit clears the fault [MODEL A44].
+  const bool over = setup_.start_time_limit_ms != 0 && elapsed_ms > setup_.start_time_limit_ms;
+  start_fault_ = over && !never_faults_;
+}
+
+void BrakeMonitor::finish_stop(std::int64_t elapsed_ms) {
+  phase_ = Phase::Idle;
+  const std::int64_t net = elapsed_ms - kStopWindowMs; // L1052; limit compared with net [MODEL A44]
+  status_.stop_time_ms = net > 32767 ? kStartTimeOverflow : static_cast<std::uint16_t>(net);
+  status_.applied_position = pending_applied_position_;
+  ++status_.completed_stops;
+  const bool over = setup_.stop_time_limit_ms != 0 && net > setup_.stop_time_limit_ms;
+  stop_fault_ = over && !never_faults_;
+}
+
+} // namespace hilrig::models::ans1

@@ -1,0 +1,121 @@
+#include "models/ans1/host_interface.hpp"
+
+#include "models/ans1/ans1.hpp"
+#include "models/ans1/data_block.hpp"
+
+namespace hilrig::models::ans1 {
+
+HostInterface::HostInterface(Ans1& device) : device_(device) {}
+
+void HostInterface::write(int word, std::uint16_t value) {
+  commands_[static_cast<std::size_t>(word)] = value;
+}
+
+void HostInterface::write_block(const HostWords& words) { commands_ = words; }
+
+HostWords HostInterface::status() const {
+  HostWords w{};
+  compose_data_block(selection_, device_, active_program_, w);
+  unsigned s = selection_.attribute & 0x1FU;
+  if (ack_) s |= kAcknowledgeBit;
+  if (device_.heartbeat()) s |= 1U << 14;
+  if (hardware_fault_) s |= 1U << 13;
+  if (device_.resolver_fault()) s |= 1U << 12;
+  s |= error_bits(error_);
+  if (device_.rpm_clamped()) s |= 1U << 7;
+  if (device_.outputs_forced()) s |= 1U << 6;
+  w[0] = static_cast<std::uint16_t>(s);
+  return w;
+}
+
+void HostInterface::scan() {
+  const bool transmit = (commands_[0] & kTransmitBit) != 0;
+  if (transmit && !transmit_seen_) {
+    execute(commands_);
+    ack_ = true; // also for a rejected block [MODEL A43]
+  } else if (!transmit) {
+    ack_ = false;
+  }
+  transmit_seen_ = transmit;
+}
+
+void HostInterface::corrupt_program(int slot) {
+  auto& p = programs_[static_cast<std::size_t>(slot)];
+  if (p) p->checksum_ok = false;
+}
+
+void HostInterface::execute(const HostWords& words) {
+  const Ans1Setup current = device_.setup();
+  HostContext context;
+  context.active_program = active_program_;
+  for (std::size_t k = 1; k < programs_.size(); ++k) context.stored[k] = programs_[k].has_value();
+  const DecodedBlock d = decode_command_block(words, current, context);
+
+  if (d.actions.clear_errors) { // L1711: programming and hardware errors
+    error_ = ErrorCode::None;
+    hardware_fault_ = false;
+    device_.clear_errors(); // latched resolver fault, brake overrun faults
+  }
+  if (d.error != ErrorCode::None) {
+    error_ = d.error; // nothing applied
+    return;
+  }
+  if (error_ == ErrorCode::CommandWord) error_ = ErrorCode::None; // cleared by a valid command word (L2305)
+
+  Ans1Setup next = d.setup;
+  const BlockActions& a = d.actions;
+  if (a.factory_defaults) { // CB2 bit 5 also erases the stored programs (§5.3)
+    programs_ = {};
+    active_program_ = 0;
+    device_.force_outputs(0, 0);
+    device_.force_inputs(0, 0);
+  }
+  run_program_command(a.program, current, next);
+  apply_setup(next, current);
+
+  if (a.selection) selection_ = *a.selection;
+  if (a.output_forces) device_.force_outputs(a.output_forces->enable, a.output_forces->state);
+  if (a.input_forces) device_.force_inputs(a.input_forces->enable, a.input_forces->state);
+  if (a.machine_preset) device_.preset_machine();
+  if (a.ls_preset_output != 0) device_.preset_output(a.ls_preset_output);
+  if (a.counter_preset) device_.preset_counter(a.counter_preset->counter, a.counter_preset->value);
+}
+
+void HostInterface::run_program_command(const ProgramCommand& cmd, const Ans1Setup& current,
+                                        Ans1Setup& next) {
+  if (cmd.delete_stored) programs_ = {};
+  if (cmd.save_global) saved_global_ = current; // only its position and brake parts count
+  if (cmd.save_program) {
+    const std::uint8_t slot = cmd.slot == 0 ? active_program_ : cmd.slot;
+    programs_[slot] = StoredProgram{current, true};
+    active_program_ = slot;
+  }
+  if (!cmd.load_program || cmd.slot == 0) return; // slot 0: the active program, nothing to do
+  if (cmd.slot == kFactoryProgram) {
+    next = Ans1Setup{}; // factory defaults in RAM; stored programs stay (L2245)
+    active_program_ = 0;
+    return;
+  }
+  const StoredProgram& p = *programs_[cmd.slot];
+  if (!p.checksum_ok) {
+    hardware_fault_ = true; // checksum error in the program read from memory (L2298)
+    return;
+  }
+  // A program is everything but the global parameters (CB2, CB8), which Save Global keeps.
+  next.outputs = p.setup.outputs;
+  next.shift_register = p.setup.shift_register;
+  next.monitors.die = p.setup.monitors.die;
+  next.monitors.production = p.setup.monitors.production;
+  active_program_ = cmd.slot;
+}
+
+void HostInterface::apply_setup(const Ans1Setup& next, const Ans1Setup& current) {
+  if (!(next.position == current.position)) device_.configure_position(next.position);
+  for (int n = 1; n <= kOutputCount; ++n) {
+    if (!(next.output(n) == current.output(n))) device_.configure_output(n, next.output(n));
+  }
+  if (!(next.shift_register == current.shift_register)) device_.configure_shift_register(next.shift_register);
+  if (!(next.monitors == current.monitors)) device_.configure_monitors(next.monitors);
+}
+
+} // namespace hilrig::models::ans1

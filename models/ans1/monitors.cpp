@@ -1,0 +1,69 @@
+#include "models/ans1/monitors.hpp"
+
+namespace hilrig::models::ans1 {
+
+namespace {
+[[nodiscard]] std::uint16_t bit(int point) { return static_cast<std::uint16_t>(1U << (point - 1)); }
+} // namespace
+
+Monitors::Monitors(MonitorFaults faults)
+    : brake_(faults.brake_never_faults), die_(faults.die_check_never_counts) {}
+
+void Monitors::configure(const MonitorSetup& setup, std::uint16_t full_scale_count) {
+  setup_ = setup;
+  if (!(setup.brake == brake_.setup())) brake_.configure(setup.brake);
+  die_.configure(setup.die, full_scale_count);
+  counters_.configure(setup.production, full_scale_count);
+}
+
+void Monitors::scan(Nanos now, const MonitorInputs& in) {
+  if (started_) {
+    const auto changed = static_cast<std::uint16_t>(in.inputs ^ inputs_);
+    for (int input = 1; input <= 16; ++input) {
+      if ((changed & bit(input)) == 0) continue;
+      ((in.inputs & bit(input)) != 0 ? rising_ : falling_)[static_cast<std::size_t>(input - 1)] = in.gmp;
+    }
+  }
+  inputs_ = in.inputs;
+  gmp_ = in.gmp;
+
+  die_.update(now, in.gmp, in.inputs);
+  // The part-cycle event closes the production cycle: its DP faults decide Good Part and
+  // mode-1 batch counting, then a new DP cycle begins.
+  if (counters_.update(in.gmp, die_.fault_in_cycle())) die_.begin_production_cycle();
+
+  // Brake monitor on the 1 ms timer tick (spec §4.0).
+  if (!started_) next_tick_ = Nanos{((now.count() + 999'999) / 1'000'000) * 1'000'000};
+  started_ = true;
+  const int brake_input = brake_.setup().input;
+  const bool released = brake_input != 0 && (in.inputs & bit(brake_input)) != 0;
+  while (next_tick_ <= now) {
+    brake_.tick(next_tick_, released, in.pos4096, in.gmp);
+    next_tick_ += BrakeMonitor::kTick;
+  }
+}
+
+OutputClaims Monitors::claims() const {
+  const BrakeSetup& b = brake_.setup();
+  std::uint16_t brake_mask = 0;
+  std::uint16_t brake_levels = 0;
+  // Overrun outputs are ON while healthy and OFF on a fault [MODEL A5, chapter 3].
+  if (b.input != 0 && b.start_overrun_output != 0) {
+    brake_mask = static_cast<std::uint16_t>(brake_mask | bit(b.start_overrun_output));
+    if (!brake_.start_fault())
+      brake_levels = static_cast<std::uint16_t>(brake_levels | bit(b.start_overrun_output));
+  }
+  if (b.input != 0 && b.stop_overrun_output != 0) {
+    brake_mask = static_cast<std::uint16_t>(brake_mask | bit(b.stop_overrun_output));
+    if (!brake_.stop_fault()) {
+      if (b.stop_overrun_output != b.start_overrun_output || !brake_.start_fault())
+        brake_levels = static_cast<std::uint16_t>(brake_levels | bit(b.stop_overrun_output));
+    } else {
+      brake_levels = static_cast<std::uint16_t>(brake_levels & ~bit(b.stop_overrun_output));
+    }
+  }
+  return make_claims(die_.fault_output_mask(), die_.fault_output_levels(), brake_mask, brake_levels,
+                     counters_.overflow_output_mask(), counters_.overflow_output_levels());
+}
+
+} // namespace hilrig::models::ans1

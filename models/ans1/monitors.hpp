@@ -1,0 +1,71 @@
+#pragma once
+// The ANS1's monitors as one unit: brake monitor, die protection, production counters, the
+// fault outputs they claim, and the last rising/falling GMP of each input (DA16 w7/w8, DA18
+// w8/w9). The device (ans1-core's Ans1) owns one Monitors and wires it like this:
+//
+//   Monitors monitors{faults};                       // faults: MonitorFaults (variants)
+//   monitors.configure(setup.monitors, fsc);         // after reset and after every host block
+//                                                    //  that changed the setup (or the FSC)
+//   monitors.scan(now, {gmp, pos4096, inputs});      // every position scan, in time order
+//   out = apply_claims(monitors.claims(), ls, ls_programmed);   // see fault_outputs.hpp
+//   monitors.clear_errors();                         // on Clear Errors (any block's bit 4)
+//   monitors.preset_counter(id, value);              // CB11 bit 12 (counter preset)
+//
+// scan() runs die protection and counters on every call and the brake monitor once per
+// whole millisecond of `now` (call scan at least every 1 ms; a 10 us scan is exact).
+#include <array>
+#include <cstdint>
+
+#include "core/time.hpp"
+#include "models/ans1/brake_monitor.hpp"
+#include "models/ans1/die_protection.hpp"
+#include "models/ans1/fault_outputs.hpp"
+#include "models/ans1/monitor_setup.hpp"
+#include "models/ans1/monitor_variants.hpp"
+#include "models/ans1/production_counters.hpp"
+
+namespace hilrig::models::ans1 {
+
+struct MonitorInputs {
+  std::uint16_t gmp = 0;    // Global Machine Position 0..FSC-1
+  std::int64_t pos4096 = 0; // transducer position, 4096 counts/turn base, unwrapped
+  std::uint16_t inputs = 0; // logical input states (after polarity and forces), bit n-1 = input n
+};
+
+class Monitors {
+public:
+  explicit Monitors(MonitorFaults faults = {});
+
+  void configure(const MonitorSetup& setup, std::uint16_t full_scale_count);
+  void scan(Nanos now, const MonitorInputs& in);
+  void clear_errors() { brake_.clear_errors(); }
+  void preset_counter(CounterId id, std::uint32_t value) { counters_.preset(id, value); }
+
+  [[nodiscard]] OutputClaims claims() const;
+  [[nodiscard]] const MonitorSetup& setup() const { return setup_; }
+  [[nodiscard]] const BrakeMonitor& brake() const { return brake_; }
+  [[nodiscard]] const DieProtection& die() const { return die_; }
+  [[nodiscard]] const ProductionCounters& counters() const { return counters_; }
+  [[nodiscard]] std::uint16_t inputs() const { return inputs_; }
+  [[nodiscard]] std::uint16_t gmp() const { return gmp_; }
+  [[nodiscard]] std::uint16_t rising_position(int input) const {
+    return rising_[static_cast<std::size_t>(input - 1)];
+  }
+  [[nodiscard]] std::uint16_t falling_position(int input) const {
+    return falling_[static_cast<std::size_t>(input - 1)];
+  }
+
+private:
+  MonitorSetup setup_{};
+  BrakeMonitor brake_;
+  DieProtection die_;
+  ProductionCounters counters_;
+  bool started_ = false;
+  Nanos next_tick_{};
+  std::uint16_t inputs_ = 0;
+  std::uint16_t gmp_ = 0;
+  std::array<std::uint16_t, 16> rising_{};
+  std::array<std::uint16_t, 16> falling_{};
+};
+
+} // namespace hilrig::models::ans1

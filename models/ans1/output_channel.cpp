@@ -1,0 +1,86 @@
+#include "models/ans1/output_channel.hpp"
+
+#include "models/ans1/position.hpp"
+#include "models/ans1/setpoint.hpp"
+#include "models/ans1/shift_register.hpp"
+
+namespace hilrig::models::ans1 {
+
+void OutputChannel::configure(const OutputSetup& setup) {
+  setup_ = setup;
+  simple_inputs_ = anding_mask(setup, AndingMode::Simple);
+  pulse_inputs_ = anding_mask(setup, AndingMode::Pulse);
+  const std::uint16_t window = anding_mask(setup, AndingMode::Window);
+  window_input_ = -1;
+  for (int i = 0; i < kInputCount; ++i) {
+    if ((window & (1U << static_cast<unsigned>(i))) != 0) {
+      window_input_ = i; // at most one per output (L983)
+      break;
+    }
+  }
+  timer_.reset();
+  pulse_.reset();
+  window_.reset();
+}
+
+void OutputChannel::update_advances(double speed, std::uint16_t fsc, double scale) {
+  advances_ = advance_counts(setup_, speed, fsc, scale);
+}
+
+std::uint16_t OutputChannel::ls_position(std::uint16_t gmp, std::uint16_t fsc) const {
+  return ans1::ls_position(gmp, setup_.ls_offset, fsc);
+}
+
+void OutputChannel::preset(std::uint16_t gmp, std::optional<std::uint16_t> value) {
+  if (value) {
+    setup_.ls_preset_value = *value;
+  }
+  // Kept within -(FSC-1)..+(FSC-1) like a programmed offset.
+  setup_.ls_offset = static_cast<std::int32_t>(setup_.ls_preset_value) - gmp;
+}
+
+OutputState OutputChannel::scan(const ScanState& scan, bool retrigger_restarts) {
+  const std::uint16_t p = ls_position(scan.gmp, scan.fsc);
+
+  // Edges move against the direction of travel, so they fire early whichever way it turns.
+  int direction = scan.speed > 0.0 ? 1 : (scan.speed < 0.0 ? -1 : 0);
+  if (scan.advance_wrong_sign) {
+    direction = -direction;
+  }
+  const EdgeShift shift{direction * advances_.lead, direction * advances_.trail};
+
+  OutputState s;
+  int inside_pair = -1;
+  for (int k = 0; k < kPairsPerOutput; ++k) {
+    const SetpointPair& pair = setup_.pairs[static_cast<std::size_t>(k)];
+    if (!pair.used()) {
+      continue;
+    }
+    if (pair_on(p, pair, scan.fsc, shift, scan.late_wrap_to)) {
+      s.calc = true;
+    }
+    const SetpointPair span{pair.from, pair.to, 0, 0};
+    if (inside_pair < 0 && pair_on(p, span, scan.fsc, shift, scan.late_wrap_to)) {
+      inside_pair = k;
+    }
+  }
+
+  const bool timed = timer_.step(s.calc, p, scan.now, setup_.timer_type, setup_.timer_ms, retrigger_restarts);
+  s.timer_ok = !timer_.expired();
+  s.rpm = speed_enabled(setup_.rpm_low, setup_.rpm_high, scan.speed_reported);
+  s.simple = (scan.active_inputs & simple_inputs_) == simple_inputs_;
+  s.pulse = pulse_.step(inside_pair, scan.active_inputs, pulse_inputs_);
+  if (window_input_ >= 0) {
+    const bool inside = in_window(scan.gmp, setup_.window_low, setup_.window_high);
+    s.window = window_.step(inside, (scan.active_inputs & (1U << static_cast<unsigned>(window_input_))) != 0);
+  }
+  if (setup_.sr_bit != 0) {
+    s.sr = scan.shift_register_enabled && scan.shift_register != nullptr &&
+           scan.shift_register->bit(setup_.sr_bit);
+  }
+  s.ls = timed && s.rpm && s.simple && s.pulse && s.window && s.sr;
+  state_ = s;
+  return s;
+}
+
+} // namespace hilrig::models::ans1

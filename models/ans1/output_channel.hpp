@@ -1,0 +1,73 @@
+#pragma once
+// One limit-switch output's logic (spec §4.3-§4.9): its position, setpoint pairs with
+// advances, timed limit and enabling conditions, evaluated once per scan.
+// final = calc_adv & timer_ok & en_rpm & en_simple & en_pulse & en_window & en_sr.
+#include <cstdint>
+#include <optional>
+
+#include "core/time.hpp"
+#include "models/ans1/advance.hpp"
+#include "models/ans1/enable.hpp"
+#include "models/ans1/output_setup.hpp"
+#include "models/ans1/timed_limit.hpp"
+
+namespace hilrig::models::ans1 {
+
+class ShiftRegister;
+
+// What a scan knows that every output shares.
+struct ScanState {
+  Nanos now{};
+  std::uint16_t gmp = 0;
+  std::uint16_t fsc = 360;
+  double speed = 0.0;              // S, signed machine cycles per minute
+  std::int16_t speed_reported = 0; // S as DA16 w2 shows it
+  std::uint16_t active_inputs = 0; // logical input states, bit n-1 = input n
+  const ShiftRegister* shift_register = nullptr;
+  bool shift_register_enabled = false;
+  // Fault variants.
+  bool advance_wrong_sign = false;
+  bool late_wrap_to = false;
+};
+
+// Each condition as DA16 words 10..16 show it (1 = not blocking).
+struct OutputState {
+  bool calc = false;    // pairs with advances, before timer and enabling (w10)
+  bool simple = true;   // w11
+  bool pulse = true;    // w12
+  bool window = true;   // w13
+  bool sr = true;       // w14
+  bool rpm = true;      // w15
+  bool timer_ok = true; // w16
+  bool ls = false;      // the output's LS function
+};
+
+class OutputChannel {
+public:
+  void configure(const OutputSetup& setup);
+  [[nodiscard]] const OutputSetup& setup() const { return setup_; }
+  // Recomputes the advance counts for a new speed (every speed update and on programming).
+  void update_advances(double speed, std::uint16_t fsc, double scale);
+  [[nodiscard]] const AdvanceCounts& advances() const { return advances_; }
+
+  [[nodiscard]] std::uint16_t ls_position(std::uint16_t gmp, std::uint16_t fsc) const;
+  // LS preset (§4.3): LSO = LSPV - GMP, with the value first replaced when given.
+  void preset(std::uint16_t gmp, std::optional<std::uint16_t> value = std::nullopt);
+  void set_offset(std::int32_t offset) { setup_.ls_offset = offset; }
+
+  OutputState scan(const ScanState& scan, bool retrigger_restarts);
+  [[nodiscard]] const OutputState& state() const { return state_; }
+
+private:
+  OutputSetup setup_{};
+  AdvanceCounts advances_{};
+  TimedLimit timer_{};
+  PulseLatch pulse_{};
+  WindowLatch window_{};
+  OutputState state_{};
+  std::uint16_t simple_inputs_ = 0;
+  std::uint16_t pulse_inputs_ = 0;
+  int window_input_ = -1;
+};
+
+} // namespace hilrig::models::ans1

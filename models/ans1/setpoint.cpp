@@ -1,0 +1,89 @@
+#include "models/ans1/setpoint.hpp"
+
+#include <vector>
+
+#include "models/ans1/position.hpp"
+
+namespace hilrig::models::ans1 {
+
+std::int32_t pair_length(const SetpointPair& pair, std::uint16_t fsc) {
+  if (!pair.used()) {
+    return 0;
+  }
+  if (pair.from == pair.to) {
+    return fsc;
+  }
+  return static_cast<std::int32_t>(wrap(static_cast<std::int64_t>(pair.to) - pair.from, fsc));
+}
+
+bool in_pair(std::uint16_t p, const SetpointPair& pair, std::uint16_t fsc) {
+  return pair_on(p, pair, fsc, EdgeShift{});
+}
+
+bool stitch_fits(const SetpointPair& pair, std::uint16_t fsc) {
+  if (!pair.stitched()) {
+    return true;
+  }
+  return pair_length(pair, fsc) >= 2 * pair.on_stitch + pair.off_stitch;
+}
+
+bool stitch_on(std::int32_t d, std::int32_t length, std::int32_t on, std::int32_t off) {
+  const std::int32_t period = on + off;
+  const std::int32_t whole = (length / period) * period;
+  if (d < whole) {
+    return d % period < on;
+  }
+  const std::int32_t remainder = length - whole;
+  if (remainder >= on) {
+    return d - whole < on; // a full On fits; the rest is Off
+  }
+  return 2 * remainder >= on; // at least half an On: on to the end (L872), else off (L873)
+}
+
+bool pair_on(std::uint16_t p, const SetpointPair& pair, std::uint16_t fsc, EdgeShift shift,
+             bool late_wrap_to) {
+  if (!pair.used()) {
+    return false;
+  }
+  std::int32_t length = pair_length(pair, fsc);
+  if (pair.stitched()) {
+    const auto d =
+        static_cast<std::int32_t>(wrap(static_cast<std::int64_t>(p) - pair.from + shift.lead, fsc));
+    return d < length && stitch_on(d, length, pair.on_stitch, pair.off_stitch);
+  }
+  if (pair.from == pair.to) {
+    return true; // on at every position (L1897)
+  }
+  if (late_wrap_to && pair.from > pair.to) {
+    ++length;
+  }
+  const std::int32_t advanced_length = length + shift.lead - shift.trail;
+  if (advanced_length <= 0) {
+    return false;
+  }
+  if (advanced_length >= fsc) {
+    return true;
+  }
+  const auto d = wrap(static_cast<std::int64_t>(p) - pair.from + shift.lead, fsc);
+  return d < advanced_length;
+}
+
+bool pairs_overlap(const std::array<SetpointPair, kPairsPerOutput>& pairs, std::uint16_t fsc) {
+  std::vector<bool> taken(fsc, false);
+  for (const auto& pair : pairs) {
+    if (!pair.used()) {
+      continue;
+    }
+    const std::int32_t length = pair_length(pair, fsc);
+    for (std::int32_t d = 0; d < length; ++d) {
+      const auto p = static_cast<std::size_t>(wrap(static_cast<std::int64_t>(pair.from) + d, fsc));
+      if (taken[p]) {
+        return true;
+      }
+      taken[p] = true;
+    }
+  }
+  return false;
+}
+
+} // namespace hilrig::models::ans1

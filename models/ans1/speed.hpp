@@ -1,0 +1,44 @@
+#pragma once
+// Global Machine Speed (spec §4.2): every 14.6 ms the measured speed X is folded into the
+// exponential filter S = k S + (1 - k) X with k = RPMFilter / 65536. S is signed machine
+// cycles per minute ([MODEL] for A13: CPC counts make one cycle, the only definition that
+// works for an encoder). X is the change in transducer counts over the update period ([MODEL]
+// for A14).
+#include <cstdint>
+
+#include "core/time.hpp"
+
+namespace hilrig::models::ans1 {
+
+// k = RPMFilter / 65536 (L822): 40960 -> 0.625.
+[[nodiscard]] constexpr double filter_coefficient(std::uint16_t rpm_filter) {
+  return static_cast<double>(rpm_filter) / 65536.0;
+}
+
+// Machine cycles per minute from a count change over a period.
+[[nodiscard]] double measured_rpm(std::int64_t delta_counts, std::uint16_t counts_per_cycle, Nanos period);
+
+[[nodiscard]] constexpr double filter_step(double previous, double measured, std::uint16_t rpm_filter) {
+  const double k = filter_coefficient(rpm_filter);
+  return k * previous + (1.0 - k) * measured;
+}
+
+// DA16 word 2: rounded to the nearest RPM ([MODEL], rounding not stated) and held within
+// the 16-bit signed range.
+[[nodiscard]] std::int16_t reported_rpm(double speed);
+
+class SpeedFilter {
+public:
+  // Folds one measurement period into S.
+  void update(std::int64_t delta_counts, std::uint16_t counts_per_cycle, Nanos period,
+              std::uint16_t rpm_filter);
+  [[nodiscard]] double value() const { return value_; }
+  [[nodiscard]] double last_measured() const { return measured_; }
+  [[nodiscard]] std::int16_t reported() const { return reported_rpm(value_); }
+
+private:
+  double value_ = 0.0;
+  double measured_ = 0.0;
+};
+
+} // namespace hilrig::models::ans1

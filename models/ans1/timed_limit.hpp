@@ -1,0 +1,32 @@
+#pragma once
+// Timed limit switches (spec §4.7). The timer starts on the advanced From edge (the rising
+// edge of the pair state). Time-or-Position turns off at the first of expiry and To;
+// Time-Only ignores To and turns off at expiry. A Time-Only From edge that comes again
+// before expiry turns the output off for one count, then on again with the timer restarted
+// ([MODEL], A39). Expiry is evaluated at each scan against the exact start time.
+#include <cstdint>
+
+#include "core/time.hpp"
+#include "models/ans1/output_setup.hpp"
+
+namespace hilrig::models::ans1 {
+
+class TimedLimit {
+public:
+  // The output for this scan, given the pair state `calc` at limit-switch position p.
+  bool step(bool calc, std::uint16_t p, Nanos now, TimerType type, std::uint16_t timer_ms,
+            bool retrigger_restarts = true);
+  // True while the output is held off because its timer expired (DA16 w16 bit reads 0).
+  [[nodiscard]] bool expired() const { return expired_; }
+  void reset() { *this = TimedLimit{}; }
+
+private:
+  Nanos start_{};
+  bool previous_calc_ = false;
+  bool running_ = false;
+  bool expired_ = false;
+  bool hold_ = false; // Time-Only re-trigger: off until the position moves one count
+  std::uint16_t hold_position_ = 0;
+};
+
+} // namespace hilrig::models::ans1

@@ -1,0 +1,144 @@
+// Global Machine Position scaling, offset and preset (spec §4.1) with the manual's worked
+// examples (ans1-examples.md W-01..W-11).
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "models/ans1/position.hpp"
+
+namespace hilrig::models::ans1 {
+namespace {
+
+PositionSetup scaling(std::uint16_t cpc, std::uint16_t fsc) {
+  PositionSetup s;
+  s.counts_per_cycle = cpc;
+  s.full_scale_count = fsc;
+  return s;
+}
+
+TEST(Ans1Position, W01CircularOffset) {
+  // Scaled position 10 with SMO -20 on FSC 360: (10 - 20) mod 360 = 350 (L780).
+  EXPECT_EQ(global_position(10, -20, 360), 350);
+}
+
+TEST(Ans1Position, W02QuarterTurnOfDefaultScaling) {
+  const PositionSetup s; // CPC 4096, FSC 360 by default
+  EXPECT_EQ(s.counts_per_cycle, 4096);
+  EXPECT_EQ(s.full_scale_count, 360);
+  EXPECT_EQ(global_position(1024, s), 90); // 1024 * 360 / 4096
+  EXPECT_EQ(global_position(0, s), 0);
+  EXPECT_EQ(global_position(4095, s), 359);
+}
+
+struct RangeCase {
+  const char* id;
+  std::uint16_t cpc;
+  std::uint16_t fsc;
+};
+
+class Ans1PositionRange : public ::testing::TestWithParam<RangeCase> {};
+
+// Tables 2.1 and 2.2 (W-03..W-10): over one cycle of CPC counts GMP covers exactly
+// 0..FSC-1, each value at least once, rising by 0 or 1 per count, then rolls back to 0.
+TEST_P(Ans1PositionRange, CoversZeroToFscMinusOneOverOneCycle) {
+  const RangeCase c = GetParam();
+  const PositionSetup s = scaling(c.cpc, c.fsc);
+  std::vector<int> seen(c.fsc, 0);
+  int previous = -1;
+  for (std::int64_t raw = 0; raw < c.cpc; ++raw) {
+    const int g = global_position(raw, s);
+    ASSERT_GE(g, 0);
+    ASSERT_LT(g, c.fsc);
+    if (previous >= 0) {
+      ASSERT_TRUE(g == previous || g == previous + 1) << c.id << " raw " << raw;
+    }
+    ++seen[static_cast<std::size_t>(g)];
+    previous = g;
+  }
+  EXPECT_EQ(global_position(std::int64_t{0}, s), 0);
+  EXPECT_EQ(global_position(std::int64_t{c.cpc} - 1, s), c.fsc - 1) << c.id;
+  EXPECT_EQ(global_position(std::int64_t{c.cpc}, s), 0) << c.id << ": the next count rolls over";
+  for (int v = 0; v < c.fsc; ++v) {
+    EXPECT_GT(seen[static_cast<std::size_t>(v)], 0) << c.id << " never shows " << v;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(ManualTables, Ans1PositionRange,
+                         ::testing::Values(RangeCase{"W03", 4096, 360}, RangeCase{"W04", 3072, 2700},
+                                           RangeCase{"W05", 2048, 360}, RangeCase{"W06", 1024, 90},
+                                           RangeCase{"W07", 2000, 1440}, RangeCase{"W08", 1500, 810},
+                                           RangeCase{"W09", 1000, 360}, RangeCase{"W10", 500, 90}));
+
+TEST(Ans1Position, W05HalfTurnCycleRollsOverAtRaw2048) {
+  const PositionSetup s = scaling(2048, 360);
+  EXPECT_EQ(global_position(2047, s), 359);
+  EXPECT_EQ(global_position(2048, s), 0);
+  EXPECT_EQ(global_position(4095, s), 359); // second half-turn repeats the cycle
+}
+
+TEST(Ans1Position, W04ThreeQuarterTurnScale) {
+  // 2700 counts over 3072 transducer counts (3/4 turn): raw 3071 -> 2699 (not "3699", A2).
+  const PositionSetup s = scaling(3072, 2700);
+  EXPECT_EQ(global_position(3071, s), 2699);
+  EXPECT_EQ(global_position(1536, s), 1350); // half the cycle
+}
+
+TEST(Ans1Position, W11MaximumEncoderResolutionIs1024Lines) {
+  // 4X decoding and CPC <= 4096 for one turn per cycle: 4096 / 4 = 1024 lines.
+  constexpr int kMaxCpc = 4096;
+  EXPECT_EQ(kMaxCpc / 4, 1024);
+  const PositionSetup s = scaling(4096, 4096);
+  EXPECT_EQ(global_position(4 * 1024 - 1, s), 4095);
+}
+
+TEST(Ans1Position, NegativeEncoderCountsWrapIntoTheCycle) {
+  // An encoder turning backwards from power-up counts below zero; q = raw mod CPC >= 0.
+  const PositionSetup s = scaling(2000, 1440);
+  EXPECT_EQ(global_position(-1, s), 1439); // 1999 * 1440 / 2000 = 1439.28 -> 1439
+  EXPECT_EQ(global_position(-2000, s), 0);
+  EXPECT_EQ(global_position(-1000, s), 720);
+}
+
+TEST(Ans1Position, LargeCountsDoNotOverflow) {
+  const PositionSetup s = scaling(4096, 360);
+  const std::int64_t many_turns = std::int64_t{1} << 40;
+  EXPECT_EQ(global_position(many_turns * 4096 + 1024, s), 90);
+  EXPECT_EQ(global_position(-many_turns * 4096 + 1024, s), 90);
+}
+
+TEST(Ans1Position, PresetMakesGmpTheTargetForAnyScaledPosition) {
+  // Property (seeded): after SMO = target - s, GMP == target and SMO is within +-(FSC-1).
+  std::mt19937 rng(1234);
+  for (int i = 0; i < 2000; ++i) {
+    const auto fsc = static_cast<std::uint16_t>(1 + rng() % 4096);
+    const auto s = static_cast<std::int32_t>(rng() % fsc);
+    const auto target = static_cast<std::uint16_t>(rng() % fsc);
+    const std::int32_t smo = preset_offset(target, s);
+    EXPECT_LE(smo, fsc - 1);
+    EXPECT_GE(smo, -(fsc - 1));
+    EXPECT_EQ(global_position(s, smo, fsc), target);
+  }
+}
+
+TEST(Ans1Position, LimitSwitchPositionAddsItsOffsetCircularly) {
+  EXPECT_EQ(ls_position(350, 20, 360), 10);
+  EXPECT_EQ(ls_position(10, -20, 360), 350);
+  EXPECT_EQ(ls_position(100, 0, 360), 100);
+}
+
+TEST(Ans1Position, BitParametersRoundTrip) {
+  for (std::uint16_t w = 0; w < 32; ++w) {
+    PositionSetup s;
+    set_bit_parameters(s, w);
+    EXPECT_EQ(bit_parameters(s), w);
+  }
+  PositionSetup s;
+  set_bit_parameters(s, 0x08);
+  EXPECT_EQ(s.sensor, SensorType::Quadrature);
+  set_bit_parameters(s, 0x04);
+  EXPECT_TRUE(s.slave_mode);
+  EXPECT_EQ(s.sensor, SensorType::Resolver);
+}
+
+} // namespace
+} // namespace hilrig::models::ans1
