@@ -13,14 +13,14 @@
 namespace hilrig::signals {
 
 struct Segment {
-  Nanos start;        // absolute start time
-  Nanos duration;     // > 0, or Nanos::max() for "forever" (last segment only)
-  double position;    // at start
-  double velocity;    // at start, units/s
-  double acceleration;// units/s², constant through the segment
+  Nanos start;         // absolute start time
+  Nanos duration;      // > 0, or Nanos::max() for "forever" (last segment only)
+  double position;     // at start
+  double velocity;     // at start, units/s
+  double acceleration; // units/s², constant through the segment
 
   [[nodiscard]] Nanos end() const;
-  [[nodiscard]] double position_at(Nanos t) const;  // t measured absolutely
+  [[nodiscard]] double position_at(Nanos t) const; // t measured absolutely
   [[nodiscard]] double velocity_at(Nanos t) const;
   [[nodiscard]] double end_position() const;
   [[nodiscard]] double end_velocity() const;
@@ -34,8 +34,8 @@ public:
   // Appends a segment that starts where and when the last one ended (continuous position
   // and velocity).
   MotionProfile& accelerate(double acceleration, Nanos duration);
-  MotionProfile& cruise(Nanos duration);    // constant velocity (acceleration 0)
-  MotionProfile& dwell(Nanos duration);     // velocity must be 0 (throws otherwise)
+  MotionProfile& cruise(Nanos duration); // constant velocity (acceleration 0)
+  MotionProfile& dwell(Nanos duration);  // velocity must be 0 (throws otherwise)
   // Appends an arbitrary segment; its start must equal the current end time.
   MotionProfile& append(const Segment& s);
 
@@ -45,16 +45,25 @@ public:
   [[nodiscard]] double end_position() const;
   [[nodiscard]] double end_velocity() const;
 
-  // Closed form at any time; before the start: start state; after the end: the last
-  // segment's end position held (velocity 0) unless the last segment is open-ended.
+  // Closed form at any time; before the start: the start position held (velocity and
+  // acceleration 0); after the end: the last segment's end position held (velocity 0)
+  // unless the last segment is open-ended.
   [[nodiscard]] double position(Nanos t) const;
   [[nodiscard]] double velocity(Nanos t) const;
   [[nodiscard]] double acceleration(Nanos t) const;
   // The segment index containing t (binary search).
   [[nodiscard]] std::size_t segment_index(Nanos t) const;
 
+  // True when the profile ends at rest: |end velocity| within a relative 1e-9 of the
+  // fastest speed seen (builders round durations to the nanosecond, so a stop leaves a
+  // residue of a few ulps rather than an exact 0).
+  [[nodiscard]] bool at_rest() const;
+  // The largest |velocity| reached so far (velocity is linear in a segment, so at an end).
+  [[nodiscard]] double peak_speed() const { return peak_speed_; }
+
 private:
   double start_position_ = 0.0;
+  double peak_speed_ = 0.0;
   Nanos start_time_{0};
   std::vector<Segment> segments_;
 };

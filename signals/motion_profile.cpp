@@ -1,0 +1,106 @@
+#include "signals/motion_profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hilrig::signals {
+
+namespace {
+constexpr double kRestTolerance = 1e-9; // relative to the peak speed; see at_rest()
+
+bool open_ended(const Segment& s) { return s.duration == Nanos::max(); }
+} // namespace
+
+Nanos Segment::end() const { return duration == Nanos::max() ? Nanos::max() : start + duration; }
+
+double Segment::position_at(Nanos t) const {
+  const double dt = (t - start).seconds();
+  return position + (velocity + 0.5 * acceleration * dt) * dt;
+}
+
+double Segment::velocity_at(Nanos t) const { return velocity + acceleration * (t - start).seconds(); }
+
+double Segment::end_position() const { return position_at(end()); }
+double Segment::end_velocity() const { return velocity_at(end()); }
+
+MotionProfile::MotionProfile(double start_position, Nanos start_time)
+    : start_position_(start_position), start_time_(start_time) {}
+
+MotionProfile& MotionProfile::accelerate(double acceleration, Nanos duration) {
+  return append(Segment{end_time(), duration, end_position(), end_velocity(), acceleration});
+}
+
+MotionProfile& MotionProfile::cruise(Nanos duration) { return accelerate(0.0, duration); }
+
+MotionProfile& MotionProfile::dwell(Nanos duration) {
+  if (!at_rest()) throw std::logic_error("MotionProfile::dwell: the profile is still moving");
+  return append(Segment{end_time(), duration, end_position(), 0.0, 0.0});
+}
+
+MotionProfile& MotionProfile::append(const Segment& s) {
+  if (!segments_.empty() && open_ended(segments_.back()))
+    throw std::logic_error("MotionProfile::append: the last segment is open-ended");
+  if (s.start != end_time())
+    throw std::invalid_argument("MotionProfile::append: segment does not start at the end time");
+  if (s.duration <= Nanos::zero()) throw std::invalid_argument("MotionProfile::append: duration must be > 0");
+  // Position must be continuous (velocity may step: an ideal shaft "already spinning").
+  const double p0 = end_position();
+  if (std::abs(s.position - p0) > 1e-9 * (1.0 + std::abs(p0)))
+    throw std::invalid_argument("MotionProfile::append: position is not continuous");
+  Segment copy = s;
+  copy.position = p0; // exact continuity, so edge solvers see no jump at the boundary
+  segments_.push_back(copy);
+  peak_speed_ = std::max(peak_speed_, std::abs(copy.velocity));
+  if (!open_ended(copy)) peak_speed_ = std::max(peak_speed_, std::abs(copy.end_velocity()));
+  return *this;
+}
+
+Nanos MotionProfile::start_time() const { return segments_.empty() ? start_time_ : segments_.front().start; }
+
+Nanos MotionProfile::end_time() const { return segments_.empty() ? start_time_ : segments_.back().end(); }
+
+double MotionProfile::end_position() const {
+  return segments_.empty() ? start_position_ : segments_.back().end_position();
+}
+
+double MotionProfile::end_velocity() const {
+  return segments_.empty() ? 0.0 : segments_.back().end_velocity();
+}
+
+bool MotionProfile::at_rest() const {
+  return std::abs(end_velocity()) <= kRestTolerance * std::max(1.0, peak_speed_);
+}
+
+std::size_t MotionProfile::segment_index(Nanos t) const {
+  if (segments_.empty()) return 0;
+  const auto it = std::upper_bound(segments_.begin(), segments_.end(), t,
+                                   [](Nanos time, const Segment& s) { return time < s.start; });
+  if (it == segments_.begin()) return 0;
+  return static_cast<std::size_t>(it - segments_.begin()) - 1;
+}
+
+// Outside the profile the shaft stands still: before the start at the start position,
+// after the end at the end position (unless the last segment runs forever).
+double MotionProfile::position(Nanos t) const {
+  if (segments_.empty() || t < start_time()) return start_position_;
+  const Segment& s = segments_[segment_index(t)];
+  if (t >= s.end()) return s.end_position();
+  return s.position_at(t);
+}
+
+double MotionProfile::velocity(Nanos t) const {
+  if (segments_.empty() || t < start_time()) return 0.0;
+  const Segment& s = segments_[segment_index(t)];
+  if (t >= s.end()) return 0.0;
+  return s.velocity_at(t);
+}
+
+double MotionProfile::acceleration(Nanos t) const {
+  if (segments_.empty() || t < start_time()) return 0.0;
+  const Segment& s = segments_[segment_index(t)];
+  if (t >= s.end()) return 0.0;
+  return s.acceleration;
+}
+
+} // namespace hilrig::signals

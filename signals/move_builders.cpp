@@ -1,0 +1,186 @@
+#include "signals/move_builders.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace hilrig::signals {
+
+namespace {
+
+// One constant-acceleration piece of a move, before it is placed in the profile.
+struct Step {
+  double acceleration;
+  Nanos duration;
+};
+
+Nanos round_duration(double seconds) {
+  const Nanos d = Nanos::from_seconds(seconds);
+  return d < Nanos{1} ? Nanos{1} : d;
+}
+
+void require_positive(double value, const char* what) {
+  if (!(value > 0.0) || !std::isfinite(value)) throw std::invalid_argument(what);
+}
+
+// Distance covered from rest by the steps.
+double distance_from_rest(const std::vector<Step>& steps) {
+  double v = 0.0;
+  double d = 0.0;
+  for (const Step& s : steps) {
+    const double dt = s.duration.seconds();
+    d += (v + 0.5 * s.acceleration * dt) * dt;
+    v += s.acceleration * dt;
+  }
+  return d;
+}
+
+// Rescales the accelerations so the steps cover exactly `distance` (from rest, every
+// velocity and distance is linear in the accelerations), then appends them. Returns the
+// scale applied.
+double append_exact(MotionProfile& profile, std::vector<Step>& steps, double distance) {
+  const double covered = distance_from_rest(steps);
+  const double scale = distance / covered;
+  for (Step& s : steps) {
+    if (s.duration <= Nanos::zero()) continue;
+    profile.accelerate(s.acceleration * scale, s.duration);
+  }
+  return scale;
+}
+
+void require_rest(const MotionProfile& profile, const char* who) {
+  if (!profile.at_rest()) throw std::logic_error(std::string(who) + ": the profile must be at rest");
+}
+
+} // namespace
+
+TrapezoidPlan plan_trapezoid(double distance, const MoveLimits& limits) {
+  require_positive(limits.max_speed, "plan_trapezoid: max_speed must be > 0");
+  require_positive(limits.acceleration, "plan_trapezoid: acceleration must be > 0");
+  require_positive(limits.deceleration, "plan_trapezoid: deceleration must be > 0");
+  TrapezoidPlan plan;
+  const double d = std::abs(distance);
+  if (d == 0.0) return plan;
+  const double a = limits.acceleration;
+  const double b = limits.deceleration;
+  double v = limits.max_speed;
+  // Distance to reach v and to stop from it: v²/2a + v²/2b.
+  double ramps = v * v / (2.0 * a) + v * v / (2.0 * b);
+  double cruise = 0.0;
+  if (ramps >= d) {
+    plan.triangle = true;
+    v = std::sqrt(2.0 * d * a * b / (a + b)); // v²/2a + v²/2b = d
+  } else {
+    cruise = (d - ramps) / v;
+  }
+  plan.accel_time = round_duration(v / a);
+  plan.decel_time = round_duration(v / b);
+  plan.cruise_time = plan.triangle ? Nanos::zero() : Nanos::from_seconds(cruise);
+  // Peak velocity that covers d exactly with the rounded times: d = v·(ta/2 + tc + td/2).
+  const double peak =
+      d / (0.5 * plan.accel_time.seconds() + plan.cruise_time.seconds() + 0.5 * plan.decel_time.seconds());
+  plan.peak_velocity = distance < 0 ? -peak : peak;
+  plan.acceleration = peak / plan.accel_time.seconds();
+  plan.deceleration = peak / plan.decel_time.seconds();
+  return plan;
+}
+
+MotionProfile& constant_speed(MotionProfile& profile, double velocity, Nanos duration) {
+  return profile.append(Segment{profile.end_time(), duration, profile.end_position(), velocity, 0.0});
+}
+
+TrapezoidPlan trapezoid_move(MotionProfile& profile, double distance, const MoveLimits& limits) {
+  require_rest(profile, "trapezoid_move");
+  TrapezoidPlan plan = plan_trapezoid(distance, limits);
+  if (distance == 0.0) return plan;
+  const double sign = distance < 0 ? -1.0 : 1.0;
+  std::vector<Step> steps{{sign * plan.acceleration, plan.accel_time},
+                          {0.0, plan.cruise_time},
+                          {-sign * plan.deceleration, plan.decel_time}};
+  const double scale = append_exact(profile, steps, distance);
+  plan.peak_velocity *= scale;
+  plan.acceleration *= scale;
+  plan.deceleration *= scale;
+  return plan;
+}
+
+MotionProfile& ramp_to(MotionProfile& profile, double velocity, double acceleration) {
+  require_positive(acceleration, "ramp_to: acceleration must be > 0");
+  const double dv = velocity - profile.end_velocity();
+  if (dv == 0.0) return profile;
+  const Nanos dt = round_duration(std::abs(dv) / acceleration);
+  return profile.accelerate(dv / dt.seconds(), dt);
+}
+
+MotionProfile& reversal(MotionProfile& profile, double acceleration) {
+  return ramp_to(profile, -profile.end_velocity(), acceleration);
+}
+
+SCurvePlan s_curve_move(MotionProfile& profile, double distance, const SCurveLimits& limits) {
+  require_positive(limits.max_speed, "s_curve_move: max_speed must be > 0");
+  require_positive(limits.acceleration, "s_curve_move: acceleration must be > 0");
+  require_positive(limits.jerk, "s_curve_move: jerk must be > 0");
+  if (limits.steps_per_ramp < 1) throw std::invalid_argument("s_curve_move: steps_per_ramp must be >= 1");
+  require_rest(profile, "s_curve_move");
+  SCurvePlan plan;
+  const double d = std::abs(distance);
+  if (d == 0.0) return plan;
+  const double j = limits.jerk;
+  double v = limits.max_speed;
+  double a = limits.acceleration;
+  if (v * j < a * a) a = std::sqrt(v * j); // max_speed is reached before full acceleration
+  double tj = a / j;
+  double ta = v / a - tj;
+  // Both acceleration phases together cover v·(v/a + tj).
+  double tv = (d - v * (v / a + tj)) / v;
+  if (tv < 0.0) {
+    tv = 0.0;
+    v = a * (-tj + std::sqrt(tj * tj + 4.0 * d / a)) / 2.0; // v²/a + v·tj = d
+    ta = v / a - tj;
+    if (ta < 0.0) { // too short to reach full acceleration: 2·j·tj³ = d
+      ta = 0.0;
+      tj = std::cbrt(d / (2.0 * j));
+      a = j * tj;
+    }
+  }
+  const auto n = static_cast<std::int64_t>(limits.steps_per_ramp);
+  const Nanos step = round_duration(tj / static_cast<double>(n));
+  plan.jerk_time = step * n;
+  plan.accel_time = Nanos::from_seconds(ta);
+  plan.cruise_time = Nanos::from_seconds(tv);
+
+  const double sign = distance < 0 ? -1.0 : 1.0;
+  std::vector<Step> accel_phase;
+  for (std::int64_t k = 0; k < n; ++k)
+    accel_phase.push_back({sign * a * (static_cast<double>(k) + 0.5) / static_cast<double>(n), step});
+  accel_phase.push_back({sign * a, plan.accel_time});
+  for (std::int64_t k = n - 1; k >= 0; --k)
+    accel_phase.push_back({sign * a * (static_cast<double>(k) + 0.5) / static_cast<double>(n), step});
+  // The deceleration phase mirrors the acceleration phase, so the move ends at rest.
+  std::vector<Step> steps = accel_phase;
+  steps.push_back({0.0, plan.cruise_time});
+  for (auto it = accel_phase.rbegin(); it != accel_phase.rend(); ++it)
+    steps.push_back({-it->acceleration, it->duration});
+  const double scale = append_exact(profile, steps, distance);
+  double peak = 0.0;
+  for (const Step& s : accel_phase) peak += s.acceleration * s.duration.seconds();
+  plan.peak_velocity = peak * scale;
+  plan.peak_acceleration = a * scale;
+  return plan;
+}
+
+PressStroke press_stroke(MotionProfile& profile, double speed, Nanos run_time, double brake_deceleration) {
+  require_positive(brake_deceleration, "press_stroke: brake_deceleration must be > 0");
+  if (speed == 0.0) throw std::invalid_argument("press_stroke: speed must not be 0");
+  constant_speed(profile, speed, run_time);
+  PressStroke stroke{};
+  stroke.brake_applied = profile.end_time();
+  const Nanos stop = round_duration(std::abs(speed) / brake_deceleration);
+  profile.accelerate(-speed / stop.seconds(), stop);
+  stroke.standstill = profile.end_time();
+  stroke.stop_distance = 0.5 * speed * stop.seconds();
+  return stroke;
+}
+
+} // namespace hilrig::signals

@@ -1,0 +1,176 @@
+#include "signals/quadrature_edges.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hilrig::signals {
+
+namespace {
+int sign_of(double x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
+} // namespace
+
+QuadratureEdgeSolver::QuadratureEdgeSolver(const MotionProfile& profile, const QuadratureEncoder& encoder,
+                                           Nanos until)
+    : segments_(&profile.segments()), encoder_(encoder), counts_per_unit_(encoder.counts_per_unit()),
+      until_(until), counts_per_turn_(encoder.counts_per_turn()) {
+  if (encoder.lines_per_turn == 0)
+    throw std::invalid_argument("QuadratureEncoder: lines_per_turn must be > 0");
+  initial_count_ = encoder.count_at(profile.position(profile.start_time()));
+  count_ = initial_count_;
+  index_phase_ = (count_ - encoder.index_count) % counts_per_turn_;
+  if (index_phase_ < 0) index_phase_ += counts_per_turn_;
+}
+
+bool QuadratureEdgeSolver::load_segment(std::size_t i) {
+  const Segment& s = (*segments_)[i];
+  if (s.start >= until_) {
+    next_segment_ = segments_->size();
+    return false;
+  }
+  Nanos end = s.duration == Nanos::max() ? until_ : std::min(s.end(), until_);
+  if (end == Nanos::max())
+    throw std::invalid_argument("QuadratureEdgeSolver: an open-ended profile needs a finite 'until'");
+  // Work in counts and nanoseconds: per-edge arithmetic then needs no unit conversion.
+  seg_start_ns_ = s.start.count();
+  seg_end_ = static_cast<double>((end - s.start).count());
+  seg_c0_ = counts_per_unit_ * s.position;
+  seg_v_ = counts_per_unit_ * s.velocity * 1e-9;
+  seg_a_ = counts_per_unit_ * s.acceleration * 1e-18;
+  if (seg_v_ == 0.0 && seg_a_ == 0.0) return false;
+  pieces_ = 1;
+  if (seg_a_ != 0.0) {
+    const double tv = -seg_v_ / seg_a_;
+    if (tv > 0.0 && tv < seg_end_) { // the velocity crosses zero: split at the turning point
+      pieces_ = 2;
+      vertex_t_ = tv;
+      vertex_c_ = seg_c0_ + 0.5 * seg_v_ * tv; // c0 + v·tv + a·tv²/2 with a·tv = -v
+    }
+  }
+  return true;
+}
+
+void QuadratureEdgeSolver::start_piece(int piece) {
+  piece_ = piece;
+  piece_active_ = true;
+  p_linear_ = seg_a_ == 0.0;
+  if (pieces_ == 1) {
+    p_t0_ = 0.0;
+    p_c0_ = seg_c0_;
+    p_v0_ = seg_v_;
+    p_end_ = seg_end_;
+    p_dir_ = seg_v_ != 0.0 ? sign_of(seg_v_) : sign_of(seg_a_);
+    p_cend_ = seg_c0_ + (seg_v_ + 0.5 * seg_a_ * seg_end_) * seg_end_;
+  } else if (piece == 0) {
+    p_t0_ = 0.0;
+    p_c0_ = seg_c0_;
+    p_v0_ = seg_v_;
+    p_end_ = vertex_t_;
+    p_dir_ = sign_of(seg_v_);
+    p_cend_ = vertex_c_;
+  } else {
+    const double rest = seg_end_ - vertex_t_;
+    p_t0_ = vertex_t_;
+    p_c0_ = vertex_c_;
+    p_v0_ = 0.0;
+    p_end_ = seg_end_;
+    p_dir_ = sign_of(seg_a_);
+    p_cend_ = vertex_c_ + 0.5 * seg_a_ * rest * rest;
+  }
+  p_inv_v_ = p_linear_ ? 1.0 / p_v0_ : 0.0;
+}
+
+bool QuadratureEdgeSolver::advance() {
+  if (piece_active_) return true;
+  if (piece_ + 1 < pieces_) {
+    start_piece(piece_ + 1);
+    return true;
+  }
+  while (next_segment_ < segments_->size()) {
+    const std::size_t i = next_segment_++;
+    if (load_segment(i)) {
+      start_piece(0);
+      return true;
+    }
+  }
+  pieces_ = 0;
+  done_ = true;
+  return false;
+}
+
+std::size_t QuadratureEdgeSolver::fill(std::span<QuadEdge> out) {
+  if (out.size() < 2) throw std::invalid_argument("QuadratureEdgeSolver::fill: buffer must hold 2 edges");
+  std::size_t written = 0;
+  const std::size_t limit = out.size() - 1; // room for an A/B edge and its Z edge
+  const bool has_index = encoder_.index_width > 0;
+  const std::int64_t index_width = encoder_.index_width;
+  while (written < limit) {
+    if (!piece_active_ && !advance()) return written;
+    const int dir = p_dir_;
+    const double step = dir;
+    // Edge from n to n+dir sits at n + dir/2 counts.
+    double h = static_cast<double>(count_) + 0.5 * step;
+    while (written < limit && (dir > 0 ? h < p_cend_ : h > p_cend_)) {
+      const double d = h - p_c0_;
+      double t;
+      if (p_linear_) {
+        t = p_t0_ + d * p_inv_v_;
+      } else {
+        // Numerically stable root of c0 + v0·t + a·t²/2 = h (no cancellation near v0).
+        const double root = std::sqrt(std::max(0.0, p_v0_ * p_v0_ + 2.0 * seg_a_ * d));
+        const double denom = p_v0_ + step * root;
+        t = denom != 0.0 ? p_t0_ + 2.0 * d / denom : p_t0_;
+      }
+      t = std::min(std::max(t, p_t0_), p_end_);
+      const Nanos time{seg_start_ns_ + static_cast<std::int64_t>(t + 0.5)};
+      const std::int64_t old = count_;
+      count_ += dir;
+      // A changes between states 0-1 and 2-3, B between 1-2 and 3-0: A iff the higher
+      // of the two states is odd.
+      const bool a_edge = (std::max(old, count_) & 1) != 0;
+      QuadEdge& e = out[written++];
+      e.time = time;
+      e.count = count_;
+      e.channel = a_edge ? QuadChannel::A : QuadChannel::B;
+      e.level = level_of(a_edge ? channel_a(count_) : channel_b(count_));
+      if (has_index) {
+        const bool z_before = index_phase_ < index_width;
+        index_phase_ += dir;
+        if (index_phase_ == counts_per_turn_) index_phase_ = 0;
+        if (index_phase_ < 0) index_phase_ = counts_per_turn_ - 1;
+        const bool z_after = index_phase_ < index_width;
+        if (z_before != z_after) out[written++] = QuadEdge{time, count_, QuadChannel::Z, level_of(z_after)};
+      }
+      h += step;
+    }
+    if (written >= limit) return written;
+    piece_active_ = false;
+  }
+  return written;
+}
+
+bool QuadratureTrace::initial_level(QuadChannel ch) const {
+  switch (ch) {
+  case QuadChannel::A:
+    return channel_a(initial_count);
+  case QuadChannel::B:
+    return channel_b(initial_count);
+  case QuadChannel::Z:
+    return initial_z;
+  }
+  return false;
+}
+
+QuadratureTrace solve_quadrature(const MotionProfile& profile, const QuadratureEncoder& encoder,
+                                 Nanos until) {
+  QuadratureEdgeSolver solver(profile, encoder, until);
+  QuadratureTrace trace;
+  trace.initial_count = solver.initial_count();
+  trace.initial_z = encoder.index_high(trace.initial_count);
+  std::array<QuadEdge, 1024> buffer;
+  for (std::size_t n = solver.fill(buffer); n != 0; n = solver.fill(buffer))
+    trace.edges.insert(trace.edges.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
+  return trace;
+}
+
+} // namespace hilrig::signals

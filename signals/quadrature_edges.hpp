@@ -1,0 +1,88 @@
+#pragma once
+// Quadrature edge solver: the time of every A/B (and Z) edge, solved in closed form from
+// each segment's quadratic and rounded to the nanosecond; no sampling. A segment whose
+// velocity crosses zero is split at the turning point, so reversals inside a segment give
+// the right edges in the right order.
+//
+// The solver streams: fill() writes into a caller's buffer and resumes where it stopped,
+// and for_each_quadrature_edge() hands edges to a callback through a stack buffer. Neither
+// allocates per edge.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "signals/motion_profile.hpp"
+#include "signals/quadrature_encoder.hpp"
+
+namespace hilrig::signals {
+
+class QuadratureEdgeSolver {
+public:
+  // Solves edges of `profile` (which must outlive the solver) before `until`; an
+  // open-ended last segment needs a finite `until`.
+  QuadratureEdgeSolver(const MotionProfile& profile, const QuadratureEncoder& encoder,
+                       Nanos until = Nanos::max());
+
+  // Writes up to out.size() edges (out.size() >= 2: an A/B edge and its Z edge go
+  // together) in time order; returns how many were written, 0 once every edge is out.
+  std::size_t fill(std::span<QuadEdge> out);
+
+  [[nodiscard]] std::int64_t initial_count() const { return initial_count_; }
+  [[nodiscard]] std::int64_t count() const { return count_; } // after the last edge written
+  [[nodiscard]] bool done() const { return done_; }
+
+private:
+  bool advance();                   // sets up the next monotonic piece; false when none is left
+  bool load_segment(std::size_t i); // false when segment i does not move
+  void start_piece(int piece);
+
+  const std::vector<Segment>* segments_;
+  QuadratureEncoder encoder_;
+  double counts_per_unit_ = 0;
+  Nanos until_;
+  std::size_t next_segment_ = 0;
+  bool done_ = false;
+  bool piece_active_ = false;
+  std::int64_t initial_count_ = 0;
+  std::int64_t count_ = 0;
+  // Index phase: (count - index_count) mod counts_per_turn, tracked incrementally.
+  std::int64_t index_phase_ = 0;
+  std::int64_t counts_per_turn_ = 0;
+
+  // The current segment, in counts and nanoseconds relative to its start.
+  std::int64_t seg_start_ns_ = 0;
+  double seg_c0_ = 0, seg_v_ = 0, seg_a_ = 0, seg_end_ = 0;
+  double vertex_t_ = 0, vertex_c_ = 0; // turning point inside the segment
+  int pieces_ = 0, piece_ = 0;
+  // The current monotonic piece: origin time/count/velocity, its end and direction.
+  double p_t0_ = 0, p_c0_ = 0, p_v0_ = 0, p_end_ = 0, p_cend_ = 0, p_inv_v_ = 0;
+  int p_dir_ = 0;
+  bool p_linear_ = false;
+};
+
+// Calls f(const QuadEdge&) for every edge, in time order. Returns the final count.
+template <class F>
+std::int64_t for_each_quadrature_edge(const MotionProfile& profile, const QuadratureEncoder& encoder, F&& f,
+                                      Nanos until = Nanos::max()) {
+  QuadratureEdgeSolver solver(profile, encoder, until);
+  std::array<QuadEdge, 512> buffer;
+  for (std::size_t n = solver.fill(buffer); n != 0; n = solver.fill(buffer))
+    for (std::size_t i = 0; i < n; ++i) f(buffer[i]);
+  return solver.count();
+}
+
+// The whole edge list with the initial levels: what faults and recorders work on.
+struct QuadratureTrace {
+  std::int64_t initial_count = 0;
+  bool initial_z = false;
+  std::vector<QuadEdge> edges; // time order
+  [[nodiscard]] bool initial_level(QuadChannel ch) const;
+};
+
+[[nodiscard]] QuadratureTrace solve_quadrature(const MotionProfile& profile, const QuadratureEncoder& encoder,
+                                               Nanos until = Nanos::max());
+
+} // namespace hilrig::signals

@@ -1,0 +1,58 @@
+#pragma once
+// An incremental quadrature encoder: lines per turn, X4 counts (4 per line), A leading B
+// for forward motion, and an index pulse Z once per turn.
+//
+// Count n is the encoder state: (A, B) = 00, 10, 11, 01 for n mod 4 = 0, 1, 2, 3. The
+// edge from n to n+1 sits half a count past n (at n + 0.5 counts), so a shaft that stops
+// exactly on a count rests in the middle of a state, not balanced on an edge.
+
+#include <cstdint>
+
+#include "core/line.hpp"
+#include "core/time.hpp"
+
+namespace hilrig::signals {
+
+enum class QuadChannel : std::uint8_t { A, B, Z };
+
+// Channel levels of encoder state n (n may be negative).
+[[nodiscard]] constexpr bool channel_a(std::int64_t n) { return ((n & 3) == 1) || ((n & 3) == 2); }
+[[nodiscard]] constexpr bool channel_b(std::int64_t n) { return (n & 3) >= 2; }
+
+struct QuadratureEncoder {
+  std::uint32_t lines_per_turn = 1024;
+  // Profile position units per shaft turn: 1 when the profile is in turns, or
+  // counts_per_turn() when the profile is already in counts.
+  double units_per_turn = 1.0;
+  // Direction: false = A leads B for increasing position; true = B leads A.
+  bool reversed = false;
+  // Index Z: high while (count - index_count) mod counts_per_turn < index_width.
+  // index_width 0 means no index channel.
+  std::int64_t index_count = 0;
+  std::int64_t index_width = 0;
+
+  [[nodiscard]] std::int64_t counts_per_turn() const { return 4 * static_cast<std::int64_t>(lines_per_turn); }
+  // Signed (negative when reversed).
+  [[nodiscard]] double counts_per_unit() const;
+  // Continuous count at a profile position; the encoder state there is count_at().
+  [[nodiscard]] double counts(double position) const { return position * counts_per_unit(); }
+  [[nodiscard]] std::int64_t count_at(double position) const;
+  [[nodiscard]] bool index_high(std::int64_t count) const;
+  // Z gated to A·B high on line `line`: one count wide, on the state where A = B = 1.
+  void gate_index_to_line(std::int64_t line) {
+    index_count = 4 * line + 2;
+    index_width = 1;
+  }
+};
+
+// One edge of one channel. For A and B, `count` is the encoder state after the edge; for
+// Z it is the state the Z edge coincides with.
+struct QuadEdge {
+  Nanos time;
+  std::int64_t count = 0;
+  QuadChannel channel = QuadChannel::A;
+  Level level = Level::Low; // after the edge
+  friend bool operator==(const QuadEdge&, const QuadEdge&) = default;
+};
+
+} // namespace hilrig::signals

@@ -1,0 +1,153 @@
+// Motion profiles and move builders: closed-form position/velocity and the classic move
+// shapes, with expected values worked out by hand from the kinematics.
+
+#include "signals/motion_profile.hpp"
+#include "signals/move_builders.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+using namespace hilrig;
+using namespace hilrig::literals;
+using namespace hilrig::signals;
+
+TEST(MotionProfile, ClosedFormInsideASegment) {
+  // p = 10 + 2·t + 1.5·t² (a = 3): at t = 2 s, p = 10 + 4 + 6 = 20, v = 2 + 6 = 8.
+  MotionProfile p(10.0, 1_s);
+  p.append(Segment{1_s, 5_s, 10.0, 2.0, 3.0});
+  EXPECT_DOUBLE_EQ(p.position(3_s), 20.0);
+  EXPECT_DOUBLE_EQ(p.velocity(3_s), 8.0);
+  EXPECT_DOUBLE_EQ(p.acceleration(3_s), 3.0);
+  EXPECT_EQ(p.end_time(), 6_s);
+}
+
+TEST(MotionProfile, HoldsStartAndEndPositionsOutside) {
+  MotionProfile p(5.0, 1_s);
+  p.accelerate(2.0, 1_s).cruise(1_s); // ends at 5 + 1 + 2 = 8 units, velocity 2
+  EXPECT_DOUBLE_EQ(p.position(0_s), 5.0);
+  EXPECT_DOUBLE_EQ(p.velocity(0_s), 0.0);
+  EXPECT_DOUBLE_EQ(p.position(10_s), 8.0);
+  EXPECT_DOUBLE_EQ(p.velocity(10_s), 0.0);
+  EXPECT_DOUBLE_EQ(p.end_velocity(), 2.0);
+}
+
+TEST(MotionProfile, SegmentIndexFindsTheSegmentContainingT) {
+  MotionProfile p;
+  p.accelerate(1.0, 1_s).cruise(2_s).accelerate(-1.0, 1_s);
+  EXPECT_EQ(p.segment_index(500_ms), 0U);
+  EXPECT_EQ(p.segment_index(1_s), 1U); // a boundary belongs to the later segment
+  EXPECT_EQ(p.segment_index(2999_ms), 1U);
+  EXPECT_EQ(p.segment_index(3500_ms), 2U);
+}
+
+TEST(MotionProfile, RejectsDwellWhileMovingAndBrokenSegments) {
+  MotionProfile p;
+  p.accelerate(1.0, 1_s);
+  EXPECT_THROW(p.dwell(1_s), std::logic_error);
+  EXPECT_THROW(p.append(Segment{2_s, 1_s, p.end_position(), 0.0, 0.0}), std::invalid_argument); // gap in time
+  EXPECT_THROW(p.append(Segment{1_s, 1_s, 99.0, 0.0, 0.0}), std::invalid_argument); // position jump
+  EXPECT_THROW(p.accelerate(1.0, 0_s), std::invalid_argument);
+}
+
+TEST(MoveBuilders, TrapezoidDurationFromItsFormula) {
+  // D = 20,000 counts, v = 100,000 counts/s, a = 1e6, b = 5e5 counts/s²:
+  // ta = v/a = 0.1 s (5,000 counts), td = v/b = 0.2 s (10,000 counts),
+  // tc = (20,000 - 15,000) / 100,000 = 0.05 s; total 0.35 s.
+  MotionProfile p;
+  const TrapezoidPlan plan = trapezoid_move(p, 20'000.0, MoveLimits{100'000.0, 1e6, 5e5});
+  EXPECT_FALSE(plan.triangle);
+  EXPECT_EQ(plan.accel_time, 100_ms);
+  EXPECT_EQ(plan.cruise_time, 50_ms);
+  EXPECT_EQ(plan.decel_time, 200_ms);
+  EXPECT_EQ(p.end_time(), 350_ms);
+  EXPECT_NEAR(p.position(100_ms), 5'000.0, 1e-6);
+  EXPECT_NEAR(p.position(150_ms), 10'000.0, 1e-6);
+  EXPECT_NEAR(p.velocity(120_ms), 100'000.0, 1e-6);
+  EXPECT_DOUBLE_EQ(p.end_position(), 20'000.0);
+  EXPECT_TRUE(p.at_rest());
+}
+
+TEST(MoveBuilders, ShortMoveIsATriangle) {
+  // D = 2,000, a = b = 1e6: v² / a = D, so v = sqrt(2e9) = 44,721.36 counts/s and each
+  // ramp lasts v/a = 44.72136 ms; total 2·sqrt(D/a) = 89.4427191 ms.
+  MotionProfile p;
+  const TrapezoidPlan plan = trapezoid_move(p, 2'000.0, MoveLimits{100'000.0, 1e6, 1e6});
+  EXPECT_TRUE(plan.triangle);
+  EXPECT_EQ(plan.cruise_time, 0_ns);
+  EXPECT_NEAR(static_cast<double>(plan.duration().count()), 89'442'719.1, 1.0);
+  EXPECT_NEAR(plan.peak_velocity, 44'721.36, 0.01);
+  EXPECT_NEAR(p.position(plan.accel_time), 1'000.0, 1e-6);
+  EXPECT_DOUBLE_EQ(p.end_position(), 2'000.0);
+}
+
+TEST(MoveBuilders, NegativeDistanceMovesBackwards) {
+  MotionProfile p(100.0);
+  trapezoid_move(p, -40.0, MoveLimits{10.0, 100.0, 100.0});
+  EXPECT_DOUBLE_EQ(p.end_position(), 60.0);
+  EXPECT_LT(p.velocity(p.end_time() / 2), 0.0);
+}
+
+TEST(MoveBuilders, SCurveKeepsItsPhaseDurationsAndEndsExactly) {
+  // v = 1,000, a = 10,000, j = 1e6: Tj = a/j = 10 ms, Ta = v/a - Tj = 90 ms; the two
+  // acceleration phases cover v·(v/a + Tj) = 110 units, so 500 units cruise
+  // 390 / 1,000 = 390 ms. Total 4·10 + 2·90 + 390 = 610 ms.
+  MotionProfile p;
+  const SCurvePlan plan = s_curve_move(p, 500.0, SCurveLimits{1'000.0, 10'000.0, 1e6, 8});
+  EXPECT_EQ(plan.jerk_time, 10_ms);
+  EXPECT_EQ(plan.accel_time, 90_ms);
+  EXPECT_EQ(plan.cruise_time, 390_ms);
+  EXPECT_EQ(p.end_time(), 610_ms);
+  EXPECT_NEAR(p.end_position(), 500.0, 1e-9);
+  EXPECT_TRUE(p.at_rest());
+  // 8 steps per ramp: 4 ramps x 8 + 2 constant-acceleration phases + cruise.
+  EXPECT_EQ(p.segments().size(), 35U);
+  // At the end of the first ramp v = j·Tj²/2 = 50 (the midpoint staircase keeps it exact
+  // up to the final distance rescale, which is tiny).
+  EXPECT_NEAR(p.velocity(10_ms), 50.0, 0.5);
+  EXPECT_NEAR(p.velocity(300_ms), 1'000.0, 10.0);
+  // The acceleration never jumps by more than a/N = 1,250 between steps.
+  double previous = 0.0;
+  for (const Segment& s : p.segments()) {
+    EXPECT_LE(std::abs(s.acceleration - previous), 10'000.0 / 8.0 + 1.0);
+    previous = s.acceleration;
+  }
+}
+
+TEST(MoveBuilders, ShortSCurveNeverReachesFullAcceleration) {
+  // 2·j·Tj³ = D with j = 1e6, D = 0.25: Tj = cbrt(0.125e-6) = 5 ms; four ramps = 20 ms.
+  MotionProfile p;
+  const SCurvePlan plan = s_curve_move(p, 0.25, SCurveLimits{1'000.0, 10'000.0, 1e6, 5});
+  EXPECT_EQ(plan.jerk_time, 5_ms);
+  EXPECT_EQ(plan.accel_time, 0_ns);
+  EXPECT_EQ(plan.cruise_time, 0_ns);
+  EXPECT_NEAR(p.end_position(), 0.25, 1e-12);
+}
+
+TEST(MoveBuilders, ReversalPassesThroughZeroInsideOneSegment) {
+  // From +500 units/s at 1,000 units/s²: 1 s to -500; zero at 0.5 s; back where it began.
+  MotionProfile p;
+  constant_speed(p, 500.0, 1_s);
+  reversal(p, 1'000.0);
+  EXPECT_EQ(p.segments().size(), 2U);
+  EXPECT_EQ(p.end_time(), 2_s);
+  EXPECT_NEAR(p.velocity(1500_ms), 0.0, 1e-9);
+  EXPECT_NEAR(p.end_velocity(), -500.0, 1e-9);
+  EXPECT_NEAR(p.end_position(), 500.0, 1e-9);
+  EXPECT_NEAR(p.position(1500_ms), 625.0, 1e-9); // 500 + 500·0.5 - 500·0.25
+}
+
+TEST(MoveBuilders, PressStrokeBrakesToStandstill) {
+  // 100 units/s for 50 ms, brake at 1,000 units/s²: stops 100 ms later after
+  // v²/2b = 5 units.
+  MotionProfile p;
+  const PressStroke stroke = press_stroke(p, 100.0, 50_ms, 1'000.0);
+  EXPECT_EQ(stroke.brake_applied, 50_ms);
+  EXPECT_EQ(stroke.standstill, 150_ms);
+  EXPECT_DOUBLE_EQ(stroke.stop_distance, 5.0);
+  EXPECT_NEAR(p.end_position(), 10.0, 1e-9);
+  EXPECT_TRUE(p.at_rest());
+  p.dwell(10_ms); // standing still: a dwell is allowed
+  EXPECT_EQ(p.end_time(), 160_ms);
+}
