@@ -30,6 +30,17 @@ struct Measurement {
   Outcome outcome = Outcome::Error;
   std::string detail; // one human sentence: what was compared, why it failed
   std::optional<TraceWindow> window;
+  // The instant the measured event happened (the captured edge), when there is one; with
+  // window it draws the report's timing diagram: expected window against captured edge.
+  std::optional<Nanos> at;
+};
+
+// A sample series behind a distribution (e.g. every latency of a throughput check), kept so
+// reports can draw histograms and merged shards keep the raw figures.
+struct Series {
+  std::string name; // e.g. "latency"
+  std::string unit; // e.g. "us"
+  std::vector<double> values;
 };
 
 // An observation: a value read from the DUT (a status or data word) recorded by name.
@@ -52,6 +63,7 @@ struct CheckResult {
   std::string check; // the check's name in the campaign
   std::string kind;  // "throughput", "debounce", ...
   std::vector<Measurement> measurements;
+  std::vector<Series> series;
   [[nodiscard]] Outcome outcome() const {
     Outcome o = Outcome::Pass;
     for (const auto& m : measurements) {

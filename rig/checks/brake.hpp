@@ -1,0 +1,45 @@
+#pragma once
+// Brake stop time: from brake applied to standstill, against the limit; and the board's
+// reported stop time and stop-time fault output checked against the measured time.
+
+#include <optional>
+#include <span>
+#include <string>
+
+#include "core/line.hpp"
+#include "rig/checks/support.hpp"
+
+namespace hilrig::checks {
+
+// One point of the motion trace (e.g. every count change of the shaft, or a sampled profile).
+struct PositionSample {
+  Nanos time;
+  double position;
+};
+
+// Standstill after `from`: the first instant at which the position stops changing for good
+// (the time of the last change, or `from` when nothing moves after it). nullopt when the
+// trace has no sample after that instant, so it cannot prove the shaft stayed still.
+[[nodiscard]] std::optional<Nanos> standstill_after(std::span<const PositionSample> motion, Nanos from,
+                                                    Nanos trace_end);
+
+struct BrakeSpec {
+  std::string name = "brake";
+  Nanos limit{0};                      // Stop Time Limit: measured stop time must be <= limit
+  std::optional<double> reported_ms{}; // the board's reported Stop Time (e.g. ANS1 DA19 w6)
+  double report_tolerance_ms = 2.0;    // |reported - measured| allowed
+  bool check_fault = false;            // judge the stop-time fault output
+  Level fault_level = Level::Low;      // [MODEL] ANS1 ch. 3: outputs normally on, off = fault
+  bool fault_from_reported = false;    // expect the fault from the reported time, not the measured one
+};
+
+// Measurements: "<name>.stop_time" (ms, upper limit, window applied..standstill),
+// "<name>.reported" (when reported_ms: ms, within measured ± tolerance),
+// "<name>.fault_output" (when check_fault: 1 when an edge to fault_level happened after
+// `applied`, expected 1 exactly when the stop time exceeds the limit).
+// trace_end: when the capture ended (standstill must be followed by trace to be proven).
+[[nodiscard]] CheckResult check_brake_stop(Nanos applied, std::span<const PositionSample> motion,
+                                           Nanos trace_end, std::span<const Edge> fault_output,
+                                           const BrakeSpec& spec);
+
+} // namespace hilrig::checks

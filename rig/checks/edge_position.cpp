@@ -1,0 +1,82 @@
+#include "rig/checks/edge_position.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <utility>
+
+namespace hilrig::checks {
+namespace {
+
+// The representative of `p` modulo m nearest to `ref`, so a window across the wrap still
+// compares as a small difference.
+double nearest_wrap(double p, double ref, double m) {
+  if (m <= 0.0) return p;
+  return ref + std::remainder(p - ref, m);
+}
+
+struct Common {
+  std::string name;
+  Level level;
+  double tolerance;
+  double modulus;
+  std::size_t min_edges;
+};
+
+// `expected(edge, speed)` gives the expected position and a sentence saying how.
+template <class Expected>
+CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position, const PositionFn& speed,
+                        const Common& c, const char* kind, Expected expected) {
+  CheckResult r;
+  r.kind = kind;
+  std::size_t n = 0;
+  for (const Edge& e : output) {
+    if (e.level != c.level) continue;
+    const double s = speed ? speed(e.time) : 0.0;
+    auto [want, how] = expected(s);
+    const double fired = nearest_wrap(position(e.time), want, c.modulus);
+    std::optional<TraceWindow> window;
+    if (s != 0.0) {
+      // Position is inside the tolerance from t(want - tol) to t(want + tol); linear at speed s.
+      const auto at = [&](double pos) { return e.time + Nanos::from_seconds((pos - fired) / s); };
+      Nanos a = at(want - c.tolerance);
+      Nanos b = at(want + c.tolerance);
+      if (b < a) std::swap(a, b);
+      window = TraceWindow{a, b};
+    }
+    r.measurements.push_back(
+        measure(fmt::format("{}.edge{}", c.name, n), fired, "counts", want - c.tolerance, want + c.tolerance,
+                fmt::format("{} edge at {} ns fired at {:.3f} counts; expected {} ± {}", level_name(c.level),
+                            e.time.count(), fired, how, c.tolerance),
+                window, e.time));
+    ++n;
+  }
+  r.measurements.insert(
+      r.measurements.begin(),
+      measure(c.name + ".edges", static_cast<double>(n), "", static_cast<double>(c.min_edges), std::nullopt,
+              n == 0 ? fmt::format("missing edge: no {} edge on the output", level_name(c.level))
+                     : fmt::format("{} {} edges", n, level_name(c.level))));
+  return r;
+}
+
+} // namespace
+
+CheckResult check_advance(std::span<const Edge> output, const PositionFn& position, const PositionFn& speed,
+                          const AdvanceSpec& spec) {
+  const Common c{spec.name, spec.level, spec.tolerance, spec.modulus, spec.min_edges};
+  return judge_edges(output, position, speed, c, "advance_counts", [&](double s) {
+    const double adv =
+        spec.advance_counts ? *spec.advance_counts : s * static_cast<double>(spec.advance.count()) / 1e9;
+    return std::pair{spec.setpoint - adv, fmt::format("{} - {:.3f} (speed {:.3f} counts/s) = {:.3f}",
+                                                      spec.setpoint, adv, s, spec.setpoint - adv)};
+  });
+}
+
+CheckResult check_edge_at_position(std::span<const Edge> output, const PositionFn& position,
+                                   const PositionFn& speed, const EdgeAtPositionSpec& spec) {
+  const Common c{spec.name, spec.level, spec.tolerance, spec.modulus, spec.min_edges};
+  return judge_edges(output, position, speed, c, "edge_at_position", [&](double) {
+    return std::pair{spec.position, fmt::format("{}", spec.position)};
+  });
+}
+
+} // namespace hilrig::checks

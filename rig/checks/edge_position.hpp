@@ -1,0 +1,48 @@
+#pragma once
+// Where output edges fired, in counts: advance counts (speed-compensated edges) and the
+// generic "edge at position" check.
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "core/line.hpp"
+#include "rig/checks/support.hpp"
+
+namespace hilrig::checks {
+
+struct AdvanceSpec {
+  std::string name = "advance";
+  Level level = Level::High;              // which edges: High = the output turning on (the "from" setpoint)
+  double setpoint = 0.0;                  // counts
+  Nanos advance{0};                       // advance time T: the edge is expected at setpoint - S*T
+  std::optional<double> advance_counts{}; // when set, used instead of S*T (e.g. the board's reported advance)
+  double tolerance = 1.0;                 // counts, either side
+  double modulus = 0.0;                   // full-scale count (positions wrap); 0 = absolute positions
+  std::size_t min_edges = 1;              // fewer edges of `level` than this fails "<name>.edges"
+};
+
+// For each edge of spec.level: "<name>.edge<i>" = position(edge.time) in counts against
+// expected ± tolerance, where expected = setpoint - speed(edge.time) * advance (speed in
+// counts/s, signed, so reverse motion advances the other way). The window is the time span in
+// which the position lies inside the tolerance (linear at the edge's speed), `at` the edge.
+// Plus "<name>.edges" (count, lower min_edges).
+[[nodiscard]] CheckResult check_advance(std::span<const Edge> output, const PositionFn& position,
+                                        const PositionFn& speed, const AdvanceSpec& spec);
+
+struct EdgeAtPositionSpec {
+  std::string name = "edge";
+  Level level = Level::High;
+  double position = 0.0; // counts
+  double tolerance = 1.0;
+  double modulus = 0.0;
+  std::size_t min_edges = 1;
+};
+
+// Every edge of spec.level fired within position ± tolerance. `speed` may be empty; it only
+// gives the expected window in time for the report.
+[[nodiscard]] CheckResult check_edge_at_position(std::span<const Edge> output, const PositionFn& position,
+                                                 const PositionFn& speed, const EdgeAtPositionSpec& spec);
+
+} // namespace hilrig::checks

@@ -1,0 +1,77 @@
+#include "rig/checks/throughput.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <vector>
+
+namespace hilrig::checks {
+namespace {
+
+struct Sample {
+  Nanos latency;
+  Nanos crossing;
+};
+
+} // namespace
+
+CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const Edge> output,
+                             const ThroughputSpec& spec) {
+  CheckResult r;
+  r.kind = "throughput";
+  std::vector<Sample> samples;
+  samples.reserve(crossings.size());
+  std::size_t missing = 0;
+  std::optional<TraceWindow> first_missing;
+  for (std::size_t i = 0; i < crossings.size(); ++i) {
+    const Nanos c = crossings[i];
+    Nanos until = spec.timeout == Nanos::max() ? Nanos::max() : c + spec.timeout;
+    if (i + 1 < crossings.size()) until = std::min(until, crossings[i + 1]);
+    if (const auto e = next_edge(output, c, until, spec.expected)) {
+      samples.push_back({e->time - c, c});
+    } else {
+      if (!first_missing) first_missing = TraceWindow{c, until};
+      ++missing;
+    }
+  }
+  std::string missing_detail = "every crossing produced an output edge";
+  if (first_missing) {
+    missing_detail = fmt::format("missing edge: no {} edge after the crossing at {} ns (first of {})",
+                                 level_name(spec.expected), first_missing->begin.count(), missing);
+  }
+  r.measurements.push_back(measure(
+      spec.name + ".count", static_cast<double>(samples.size()), "", static_cast<double>(spec.min_count),
+      std::nullopt, fmt::format("{} latencies from {} crossings", samples.size(), crossings.size())));
+  r.measurements.push_back(measure(spec.name + ".missing", static_cast<double>(missing), "", std::nullopt,
+                                   0.0, missing_detail, first_missing));
+  if (!samples.empty()) {
+    std::stable_sort(samples.begin(), samples.end(),
+                     [](const Sample& a, const Sample& b) { return a.latency < b.latency; });
+    const auto stat = [&](const std::string& what, std::size_t idx, std::optional<Nanos> upper) {
+      const Sample& s = samples[idx];
+      std::optional<double> up;
+      if (upper) up = to_us(*upper);
+      r.measurements.push_back(
+          measure(spec.name + "." + what, to_us(s.latency), "us", std::nullopt, up,
+                  fmt::format("{} latency: crossing at {} ns to {} edge at {} ns", what, s.crossing.count(),
+                              level_name(spec.expected), (s.crossing + s.latency).count()),
+                  TraceWindow{s.crossing, s.crossing + s.latency}, s.crossing + s.latency));
+    };
+    const std::size_t n = samples.size();
+    stat("min", 0, std::nullopt);
+    stat("median", nearest_rank_index(n, 50.0), std::nullopt);
+    stat("p99", nearest_rank_index(n, 99.0),
+         spec.p99_limit ? spec.p99_limit : std::optional<Nanos>{spec.limit});
+    stat("max", n - 1, spec.limit);
+    rig::Series lat{"latency", "us", {}};
+    lat.values.reserve(n);
+    // In crossing order, not sorted: the series is the raw record.
+    std::vector<Sample> by_time = samples;
+    std::stable_sort(by_time.begin(), by_time.end(),
+                     [](const Sample& a, const Sample& b) { return a.crossing < b.crossing; });
+    for (const auto& s : by_time) lat.values.push_back(to_us(s.latency));
+    r.series.push_back(std::move(lat));
+  }
+  return r;
+}
+
+} // namespace hilrig::checks

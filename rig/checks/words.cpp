@@ -1,0 +1,36 @@
+#include "rig/checks/words.hpp"
+
+#include <fmt/format.h>
+
+namespace hilrig::checks {
+
+CheckResult check_word_within(std::span<const Observation> observations, const WordSpec& spec) {
+  CheckResult r;
+  r.kind = "word_within";
+  const Observation* chosen = nullptr;
+  for (const auto& o : observations) {
+    if (o.name != spec.observation) continue;
+    if (spec.at && o.time > *spec.at) continue;
+    if (!chosen || o.time >= chosen->time) chosen = &o;
+  }
+  if (!chosen) {
+    r.measurements.push_back(failure(
+        spec.name, fmt::format("missing word: no observation named '{}'{}", spec.observation,
+                               spec.at ? fmt::format(" by {} ns", spec.at->count()) : std::string())));
+    return r;
+  }
+  r.measurements.push_back(measure(spec.name, chosen->value, chosen->unit, spec.lower, spec.upper,
+                                   fmt::format("'{}' read at {} ns", spec.observation, chosen->time.count()),
+                                   TraceWindow{chosen->time, chosen->time}, chosen->time));
+  return r;
+}
+
+CheckResult check_word_equals(std::span<const Observation> observations, WordSpec spec, double expected) {
+  spec.lower = expected;
+  spec.upper = expected;
+  CheckResult r = check_word_within(observations, spec);
+  r.kind = "word_equals";
+  return r;
+}
+
+} // namespace hilrig::checks

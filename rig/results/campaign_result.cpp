@@ -1,0 +1,101 @@
+#include "rig/results/campaign_result.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace hilrig::rig {
+namespace {
+
+bool is_must_catch(const RunResult& run, const std::string& check) {
+  return std::find(run.must_catch.begin(), run.must_catch.end(), check) != run.must_catch.end();
+}
+
+} // namespace
+
+bool caught(const RunResult& run) {
+  return std::any_of(run.checks.begin(), run.checks.end(), [&](const CheckResult& c) {
+    return is_must_catch(run, c.check) && c.outcome() == Outcome::Fail;
+  });
+}
+
+Outcome run_outcome(const RunResult& run) {
+  if (!run.error.empty()) return Outcome::Error;
+  if (!run.fault.empty()) {
+    if (caught(run)) return Outcome::Pass;
+    const bool erred = std::any_of(run.checks.begin(), run.checks.end(), [&](const CheckResult& c) {
+      return is_must_catch(run, c.check) && c.outcome() == Outcome::Error;
+    });
+    return erred ? Outcome::Error : Outcome::Fail;
+  }
+  Outcome o = Outcome::Pass;
+  for (const auto& c : run.checks) {
+    const Outcome co = c.outcome();
+    if (co == Outcome::Error) return Outcome::Error;
+    if (co == Outcome::Fail) o = Outcome::Fail;
+  }
+  return o;
+}
+
+void finalize(CampaignResult& r) {
+  std::stable_sort(r.runs.begin(), r.runs.end(),
+                   [](const RunResult& a, const RunResult& b) { return a.index < b.index; });
+  std::map<std::string, FaultRow> rows;
+  Totals t;
+  for (const auto& run : r.runs) {
+    ++t.runs;
+    switch (run_outcome(run)) {
+    case Outcome::Pass:
+      ++t.runs_passed;
+      break;
+    case Outcome::Fail:
+      ++t.runs_failed;
+      break;
+    case Outcome::Error:
+      ++t.runs_errored;
+      break;
+    }
+    for (const auto& c : run.checks) {
+      ++t.checks;
+      t.measurements += c.measurements.size();
+      switch (c.outcome()) {
+      case Outcome::Pass:
+        ++t.checks_passed;
+        break;
+      case Outcome::Fail:
+        ++t.checks_failed;
+        break;
+      case Outcome::Error:
+        ++t.checks_errored;
+        break;
+      }
+    }
+    if (!run.fault.empty()) {
+      FaultRow& row = rows[run.fault];
+      row.fault = run.fault;
+      for (const auto& m : run.must_catch) {
+        if (std::find(row.must_catch.begin(), row.must_catch.end(), m) == row.must_catch.end()) {
+          row.must_catch.push_back(m);
+        }
+      }
+      row.runs.push_back(run.index);
+      if (caught(run)) ++row.caught_runs;
+    }
+  }
+  r.faults.clear();
+  for (auto& [name, row] : rows) {
+    ++t.faults;
+    if (row.caught()) ++t.faults_caught;
+    r.faults.push_back(std::move(row));
+  }
+  r.totals = t;
+  r.complete = r.runs.size() == r.planned_runs;
+  if (t.runs_errored > 0 || !r.complete) {
+    r.verdict = Outcome::Error;
+  } else if (t.runs_failed > 0 || t.faults_caught < t.faults) {
+    r.verdict = Outcome::Fail;
+  } else {
+    r.verdict = Outcome::Pass;
+  }
+}
+
+} // namespace hilrig::rig

@@ -1,0 +1,78 @@
+#pragma once
+// A campaign's results as data: every run with its checks and observations, the fault
+// detection matrix, totals and the verdict. The executive fills runs; finalize() derives the
+// rest, so a shard, a merged set of shards and an unsharded run compute them the same way.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rig/results/measurement.hpp"
+
+namespace hilrig::rig {
+
+struct RunResult {
+  std::uint64_t index = 0;             // position of the run in the whole (unsharded) campaign
+  std::string name;                    // e.g. "ls1-throughput/600rpm"
+  std::uint64_t seed = 0;              // the run's own seed
+  std::string fault;                   // the fault injected in this run; "" for a nominal run
+  std::vector<std::string> must_catch; // checks that must fail when `fault` is injected
+  std::string error;                   // a rig fault that stopped the run ("" when none)
+  std::vector<CheckResult> checks;
+  std::vector<Observation> observations;
+};
+
+// Nominal run: passes when every check passes. Fault run: passes when a must_catch check
+// failed (the fault was caught); its other checks are not judged. Error when the run has a
+// rig error, or (nominal) a check could not be measured, or (fault) a must_catch check erred.
+[[nodiscard]] Outcome run_outcome(const RunResult& run);
+// Whether a fault run's fault was caught: a must_catch check has outcome Fail.
+[[nodiscard]] bool caught(const RunResult& run);
+
+// One row of the fault detection matrix: fault -> the checks that must catch it -> caught?
+struct FaultRow {
+  std::string fault;
+  std::vector<std::string> must_catch;
+  std::vector<std::uint64_t> runs; // indices of the runs that injected it
+  std::size_t caught_runs = 0;
+  [[nodiscard]] bool caught() const { return !runs.empty() && caught_runs == runs.size(); }
+};
+
+struct Totals {
+  std::size_t runs = 0, runs_passed = 0, runs_failed = 0, runs_errored = 0;
+  std::size_t checks = 0, checks_passed = 0, checks_failed = 0, checks_errored = 0;
+  std::size_t measurements = 0;
+  std::size_t faults = 0, faults_caught = 0;
+  friend bool operator==(const Totals&, const Totals&) = default;
+};
+
+struct Shard {
+  std::uint32_t index = 0;
+  std::uint32_t count = 1;
+};
+
+struct CampaignResult {
+  std::string campaign; // the campaign's name
+  std::string device;   // "ans1", "pls2700", ...
+  std::uint64_t seed = 0;
+  Shard shard;
+  std::size_t planned_runs = 0; // runs this result should hold when complete
+  std::vector<RunResult> runs;  // in run-index order
+  // Derived by finalize():
+  std::vector<FaultRow> faults; // sorted by fault name
+  Totals totals;
+  Outcome verdict = Outcome::Error;
+  bool complete = false; // runs.size() == planned_runs
+  // Wall-clock facts (start time, host). Never compared or merged; written under "wall_clock".
+  std::optional<std::string> started_at;
+  std::optional<std::string> host;
+};
+
+// Sorts runs by index and derives faults, totals, verdict and complete. The verdict is Pass
+// when the result is complete, every run passes and every fault is caught; Error when any
+// run erred (or the result is incomplete); Fail otherwise.
+void finalize(CampaignResult& result);
+
+} // namespace hilrig::rig

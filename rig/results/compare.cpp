@@ -1,0 +1,183 @@
+#include "rig/results/compare.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+#include <stdexcept>
+
+namespace hilrig::rig {
+namespace {
+
+struct Entry {
+  const Measurement* m;
+  bool matched = false;
+};
+
+using Key = std::pair<std::string, std::string>; // run name, measurement name
+
+std::map<Key, Entry> index_of(const CampaignResult& r, std::vector<Key>* order) {
+  std::map<Key, Entry> out;
+  std::map<std::string, std::size_t> seen; // a repeated run name is told apart as "name#2", "name#3"
+  for (const auto& run : r.runs) {
+    const std::size_t n = ++seen[run.name];
+    const std::string label = n == 1 ? run.name : fmt::format("{}#{}", run.name, n);
+    for (const auto& c : run.checks) {
+      for (const auto& m : c.measurements) {
+        Key k{label, m.name};
+        if (out.emplace(k, Entry{&m}).second && order) order->push_back(std::move(k));
+      }
+    }
+  }
+  return out;
+}
+
+bool matches(const std::string& pattern, const std::string& name) {
+  if (pattern == name) return true;
+  return name.size() > pattern.size() && name.ends_with(pattern) &&
+         name[name.size() - pattern.size() - 1] == '.';
+}
+
+Threshold threshold_for(const CompareOptions& o, const std::string& name) {
+  const Threshold* best = nullptr;
+  for (const auto& t : o.thresholds) {
+    if (matches(t.name, name) && (!best || t.name.size() > best->name.size())) best = &t;
+  }
+  return best ? *best : Threshold{"", o.default_rel, true};
+}
+
+bool beyond(const Threshold& t, double base, double now) {
+  const double delta = std::fabs(now - base);
+  if (!t.relative) return delta > t.value;
+  if (base == 0.0) return delta > 0.0;
+  return delta / std::fabs(base) > t.value;
+}
+
+int rank(Outcome o) { return o == Outcome::Pass ? 0 : o == Outcome::Fail ? 1 : 2; }
+
+} // namespace
+
+Threshold parse_threshold(std::string_view text) {
+  const auto eq = text.find('=');
+  if (eq == std::string_view::npos || eq == 0 || eq + 1 == text.size()) {
+    throw std::invalid_argument(fmt::format("threshold '{}': expected NAME=VALUE or NAME=VALUE%", text));
+  }
+  Threshold t;
+  t.name = std::string(text.substr(0, eq));
+  std::string_view v = text.substr(eq + 1);
+  if (v.ends_with('%')) {
+    t.relative = true;
+    v.remove_suffix(1);
+  }
+  double value = 0.0;
+  const auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), value);
+  if (ec != std::errc{} || p != v.data() + v.size() || value < 0.0) {
+    throw std::invalid_argument(fmt::format("threshold '{}': '{}' is not a non-negative number", text, v));
+  }
+  t.value = t.relative ? value / 100.0 : value;
+  return t;
+}
+
+const char* to_string(Drift d) {
+  switch (d) {
+  case Drift::Same:
+    return "same";
+  case Drift::Within:
+    return "within";
+  case Drift::Beyond:
+    return "DRIFT";
+  case Drift::Missing:
+    return "MISSING";
+  case Drift::Added:
+    return "added";
+  case Drift::NewlyFails:
+    return "NEWLY FAILS";
+  }
+  return "?";
+}
+
+std::size_t Comparison::regressions() const {
+  return static_cast<std::size_t>(
+      std::count_if(rows.begin(), rows.end(), [](const DriftRow& r) { return r.regression(); }));
+}
+
+bool Comparison::regression() const { return regressions() > 0 || rank(now_verdict) > rank(base_verdict); }
+
+Comparison compare_results(const CampaignResult& base, const CampaignResult& now,
+                           const CompareOptions& options) {
+  Comparison c;
+  c.base_verdict = base.verdict;
+  c.now_verdict = now.verdict;
+  std::vector<Key> base_order;
+  std::vector<Key> now_order;
+  auto b = index_of(base, &base_order);
+  auto n = index_of(now, &now_order);
+  for (const auto& k : base_order) {
+    const Measurement& bm = *b.at(k).m;
+    DriftRow row;
+    row.run = k.first;
+    row.measurement = k.second;
+    row.unit = bm.unit;
+    row.base = bm.value;
+    row.base_outcome = bm.outcome;
+    row.threshold = threshold_for(options, k.second);
+    const auto it = n.find(k);
+    if (it == n.end()) {
+      row.drift = Drift::Missing;
+    } else {
+      it->second.matched = true;
+      const Measurement& nm = *it->second.m;
+      row.now = nm.value;
+      row.now_outcome = nm.outcome;
+      if (bm.outcome == Outcome::Pass && nm.outcome != Outcome::Pass) {
+        row.drift = Drift::NewlyFails;
+      } else if (bm.value == nm.value) {
+        row.drift = Drift::Same;
+      } else {
+        row.drift = beyond(row.threshold, bm.value, nm.value) ? Drift::Beyond : Drift::Within;
+      }
+    }
+    c.rows.push_back(std::move(row));
+  }
+  for (const auto& k : now_order) {
+    const Entry& e = n.at(k);
+    if (e.matched) continue;
+    DriftRow row;
+    row.run = k.first;
+    row.measurement = k.second;
+    row.unit = e.m->unit;
+    row.now = e.m->value;
+    row.now_outcome = e.m->outcome;
+    row.drift = Drift::Added;
+    c.rows.push_back(std::move(row));
+  }
+  return c;
+}
+
+std::string format_comparison(const Comparison& c, bool all) {
+  const auto num = [](const std::optional<double>& v) {
+    return v ? fmt::format("{:.6g}", *v) : std::string("-");
+  };
+  std::string out = fmt::format("{:<40} {:<32} {:>12} {:>12} {:>12} {:>10}  {}\n", "run", "measurement",
+                                "base", "new", "delta", "threshold", "status");
+  std::size_t shown = 0;
+  for (const auto& r : c.rows) {
+    if (!all && (r.drift == Drift::Same || r.drift == Drift::Within)) continue;
+    ++shown;
+    const std::string delta = r.base && r.now ? fmt::format("{:+.6g}", *r.now - *r.base) : std::string("-");
+    const std::string thr = r.drift == Drift::Added ? std::string("-")
+                            : r.threshold.relative  ? fmt::format("{:g}%", r.threshold.value * 100.0)
+                                                    : fmt::format("{:g}", r.threshold.value);
+    out += fmt::format("{:<40} {:<32} {:>12} {:>12} {:>12} {:>10}  {}{}\n", r.run, r.measurement, num(r.base),
+                       num(r.now), delta, thr, to_string(r.drift),
+                       r.unit.empty() ? std::string() : fmt::format(" ({})", r.unit));
+  }
+  if (shown == 0) out += "(no measurement drifted)\n";
+  out += fmt::format("{} measurements compared, {} regressions; verdict {} -> {}{}\n", c.rows.size(),
+                     c.regressions(), to_string(c.base_verdict), to_string(c.now_verdict),
+                     rank(c.now_verdict) > rank(c.base_verdict) ? " (worse)" : "");
+  return out;
+}
+
+} // namespace hilrig::rig

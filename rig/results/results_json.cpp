@@ -1,0 +1,266 @@
+#include "rig/results/results_json.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace hilrig::rig {
+namespace {
+
+using nlohmann::json;
+
+json opt(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+json opt_str(const std::string& s) { return s.empty() ? json(nullptr) : json(s); }
+
+Outcome outcome_from(const std::string& s) {
+  if (s == "pass") return Outcome::Pass;
+  if (s == "fail") return Outcome::Fail;
+  if (s == "error") return Outcome::Error;
+  throw std::runtime_error(fmt::format("results: unknown outcome '{}'", s));
+}
+
+const json& field(const json& j, const char* key, const char* where) {
+  if (!j.is_object() || !j.contains(key))
+    throw std::runtime_error(fmt::format("results: {} has no '{}'", where, key));
+  return j.at(key);
+}
+
+template <class T> T get(const json& j, const char* key, const char* where) {
+  try {
+    return field(j, key, where).get<T>();
+  } catch (const json::exception& e) {
+    throw std::runtime_error(fmt::format("results: {}.{}: {}", where, key, e.what()));
+  }
+}
+
+std::optional<double> get_opt(const json& j, const char* key, const char* where) {
+  const json& v = field(j, key, where);
+  if (v.is_null()) return std::nullopt;
+  return get<double>(j, key, where);
+}
+
+json measurement_json(const Measurement& m) {
+  json w = nullptr;
+  if (m.window) w = json{{"begin_ns", m.window->begin.count()}, {"end_ns", m.window->end.count()}};
+  // A value that is not a number (a broken position function) is written as null, not as an
+  // invalid JSON token; the reader gives it back as NaN.
+  const json value = std::isfinite(m.value) ? json(m.value) : json(nullptr);
+  return json{{"name", m.name},
+              {"value", value},
+              {"unit", m.unit},
+              {"lower", opt(m.lower)},
+              {"upper", opt(m.upper)},
+              {"outcome", to_string(m.outcome)},
+              {"detail", m.detail},
+              {"window", w},
+              {"at_ns", m.at ? json(m.at->count()) : json(nullptr)}};
+}
+
+Measurement measurement_from(const json& j) {
+  const char* w = "measurement";
+  Measurement m;
+  m.name = get<std::string>(j, "name", w);
+  m.value =
+      field(j, "value", w).is_null() ? std::numeric_limits<double>::quiet_NaN() : get<double>(j, "value", w);
+  m.unit = get<std::string>(j, "unit", w);
+  m.lower = get_opt(j, "lower", w);
+  m.upper = get_opt(j, "upper", w);
+  m.outcome = outcome_from(get<std::string>(j, "outcome", w));
+  m.detail = get<std::string>(j, "detail", w);
+  const json& win = field(j, "window", w);
+  if (!win.is_null()) {
+    m.window = TraceWindow{Nanos{get<std::int64_t>(win, "begin_ns", "window")},
+                           Nanos{get<std::int64_t>(win, "end_ns", "window")}};
+  }
+  const json& at = field(j, "at_ns", w);
+  if (!at.is_null()) m.at = Nanos{get<std::int64_t>(j, "at_ns", w)};
+  return m;
+}
+
+json check_json(const CheckResult& c) {
+  json ms = json::array();
+  for (const auto& m : c.measurements) ms.push_back(measurement_json(m));
+  json ss = json::array();
+  for (const auto& s : c.series) ss.push_back(json{{"name", s.name}, {"unit", s.unit}, {"values", s.values}});
+  return json{{"check", c.check},
+              {"kind", c.kind},
+              {"outcome", to_string(c.outcome())},
+              {"measurements", ms},
+              {"series", ss}};
+}
+
+CheckResult check_from(const json& j) {
+  const char* w = "check";
+  CheckResult c;
+  c.check = get<std::string>(j, "check", w);
+  c.kind = get<std::string>(j, "kind", w);
+  for (const auto& m : field(j, "measurements", w)) c.measurements.push_back(measurement_from(m));
+  for (const auto& s : field(j, "series", w)) {
+    c.series.push_back(Series{get<std::string>(s, "name", "series"), get<std::string>(s, "unit", "series"),
+                              get<std::vector<double>>(s, "values", "series")});
+  }
+  return c;
+}
+
+json run_json(const RunResult& r) {
+  json checks = json::array();
+  for (const auto& c : r.checks) checks.push_back(check_json(c));
+  json obs = json::array();
+  for (const auto& o : r.observations) {
+    obs.push_back(json{{"name", o.name}, {"value", o.value}, {"unit", o.unit}, {"time_ns", o.time.count()}});
+  }
+  return json{{"index", r.index},
+              {"name", r.name},
+              {"seed", r.seed},
+              {"fault", opt_str(r.fault)},
+              {"must_catch", r.must_catch},
+              {"error", opt_str(r.error)},
+              {"outcome", to_string(run_outcome(r))},
+              {"caught", r.fault.empty() ? json(nullptr) : json(caught(r))},
+              {"checks", checks},
+              {"observations", obs}};
+}
+
+std::string str_or_empty(const json& j, const char* key, const char* where) {
+  const json& v = field(j, key, where);
+  return v.is_null() ? std::string() : get<std::string>(j, key, where);
+}
+
+RunResult run_from(const json& j) {
+  const char* w = "run";
+  RunResult r;
+  r.index = get<std::uint64_t>(j, "index", w);
+  r.name = get<std::string>(j, "name", w);
+  r.seed = get<std::uint64_t>(j, "seed", w);
+  r.fault = str_or_empty(j, "fault", w);
+  r.must_catch = get<std::vector<std::string>>(j, "must_catch", w);
+  r.error = str_or_empty(j, "error", w);
+  for (const auto& c : field(j, "checks", w)) r.checks.push_back(check_from(c));
+  for (const auto& o : field(j, "observations", w)) {
+    r.observations.push_back(Observation{
+        get<std::string>(o, "name", "observation"), get<double>(o, "value", "observation"),
+        get<std::string>(o, "unit", "observation"), Nanos{get<std::int64_t>(o, "time_ns", "observation")}});
+  }
+  return r;
+}
+
+} // namespace
+
+json to_json(const CampaignResult& r) {
+  json runs = json::array();
+  for (const auto& run : r.runs) runs.push_back(run_json(run));
+  json faults = json::array();
+  for (const auto& f : r.faults) {
+    faults.push_back(json{{"fault", f.fault},
+                          {"must_catch", f.must_catch},
+                          {"runs", f.runs},
+                          {"caught_runs", f.caught_runs},
+                          {"caught", f.caught()}});
+  }
+  const Totals& t = r.totals;
+  json j{{"format", kResultsFormat},
+         {"version", kResultsVersion},
+         {"campaign", r.campaign},
+         {"device", r.device},
+         {"seed", r.seed},
+         {"shard", json{{"index", r.shard.index}, {"count", r.shard.count}}},
+         {"planned_runs", r.planned_runs},
+         {"complete", r.complete},
+         {"runs", runs},
+         {"faults", faults},
+         {"totals", json{{"runs", t.runs},
+                         {"runs_passed", t.runs_passed},
+                         {"runs_failed", t.runs_failed},
+                         {"runs_errored", t.runs_errored},
+                         {"checks", t.checks},
+                         {"checks_passed", t.checks_passed},
+                         {"checks_failed", t.checks_failed},
+                         {"checks_errored", t.checks_errored},
+                         {"measurements", t.measurements},
+                         {"faults", t.faults},
+                         {"faults_caught", t.faults_caught}}},
+         {"verdict", to_string(r.verdict)}};
+  if (r.started_at || r.host) {
+    json wc = json::object();
+    if (r.started_at) wc["started_at"] = *r.started_at;
+    if (r.host) wc["host"] = *r.host;
+    j["wall_clock"] = wc;
+  }
+  return j;
+}
+
+CampaignResult campaign_from_json(const json& j) {
+  const char* w = "results";
+  if (get<std::string>(j, "format", w) != kResultsFormat)
+    throw std::runtime_error("results: not a hilrig results file");
+  if (get<int>(j, "version", w) != kResultsVersion) throw std::runtime_error("results: unsupported version");
+  CampaignResult r;
+  r.campaign = get<std::string>(j, "campaign", w);
+  r.device = get<std::string>(j, "device", w);
+  r.seed = get<std::uint64_t>(j, "seed", w);
+  const json& shard = field(j, "shard", w);
+  r.shard = Shard{get<std::uint32_t>(shard, "index", "shard"), get<std::uint32_t>(shard, "count", "shard")};
+  r.planned_runs = get<std::size_t>(j, "planned_runs", w);
+  for (const auto& run : field(j, "runs", w)) r.runs.push_back(run_from(run));
+  if (j.contains("wall_clock")) {
+    const json& wc = j.at("wall_clock");
+    if (wc.contains("started_at")) r.started_at = wc.at("started_at").get<std::string>();
+    if (wc.contains("host")) r.host = wc.at("host").get<std::string>();
+  }
+  finalize(r);
+  return r;
+}
+
+std::string to_json_text(const CampaignResult& r) { return to_json(r).dump(2) + "\n"; }
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
+  const std::filesystem::path tmp = path.string() + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0)
+    throw std::runtime_error(fmt::format("cannot write {}: {}", tmp.string(), std::strerror(errno)));
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int err = errno;
+      ::close(fd);
+      throw std::runtime_error(fmt::format("cannot write {}: {}", tmp.string(), std::strerror(err)));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    throw std::runtime_error(fmt::format("cannot flush {}: {}", tmp.string(), std::strerror(errno)));
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+void write_results_file(const std::filesystem::path& path, const CampaignResult& result) {
+  write_file_atomically(path, to_json_text(result));
+}
+
+CampaignResult read_results_file(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(fmt::format("cannot read {}", path.string()));
+  json j;
+  try {
+    in >> j;
+  } catch (const json::exception& e) {
+    throw std::runtime_error(fmt::format("{}: not JSON: {}", path.string(), e.what()));
+  }
+  try {
+    return campaign_from_json(j);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(fmt::format("{}: {}", path.string(), e.what()));
+  }
+}
+
+} // namespace hilrig::rig

@@ -1,0 +1,34 @@
+#pragma once
+// results.json: the campaign's results as JSON (schema: docs/results.schema.json).
+// Deterministic: object keys sorted, runs in index order, absent limits written as null, no
+// wall-clock time outside the "wall_clock" object (which compare and merge ignore).
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "rig/results/campaign_result.hpp"
+
+namespace hilrig::rig {
+
+inline constexpr const char* kResultsFormat = "hilrig-results";
+inline constexpr int kResultsVersion = 1;
+
+[[nodiscard]] nlohmann::json to_json(const CampaignResult& result);
+// Throws std::runtime_error naming the first missing or mistyped field. Derived fields
+// (faults, totals, verdict, complete) are recomputed with finalize(), not trusted.
+[[nodiscard]] CampaignResult campaign_from_json(const nlohmann::json& j);
+
+[[nodiscard]] std::string to_json_text(const CampaignResult& result); // 2-space indent, trailing newline
+
+// Writes to "<path>.tmp", fsyncs, then renames over path: a crash leaves either the previous
+// complete file or the new one, never half a file. Call it again as runs finish to keep a
+// readable partial-progress file (complete = false until the last run).
+void write_results_file(const std::filesystem::path& path, const CampaignResult& result);
+// Same atomic write for any text (used by the junit and html writers too).
+void write_file_atomically(const std::filesystem::path& path, const std::string& text);
+// Throws std::runtime_error when the file cannot be read or is not a results file.
+[[nodiscard]] CampaignResult read_results_file(const std::filesystem::path& path);
+
+} // namespace hilrig::rig

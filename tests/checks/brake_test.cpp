@@ -1,0 +1,87 @@
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "check_test_support.hpp"
+#include "rig/checks/brake.hpp"
+
+namespace hilrig::checks {
+namespace {
+
+using namespace hilrig::literals;
+using test::find;
+
+// The shaft counts every 10 ms until `stop`, then stays at its last count; the capture ends
+// at 600 ms. Brake applied at 100 ms.
+std::vector<PositionSample> shaft_stopping_at(Nanos stop) {
+  std::vector<PositionSample> s;
+  double count = 0.0;
+  for (Nanos t = 0_ms; t < stop; t += 10_ms) s.push_back({t, count++});
+  s.push_back({stop, count});
+  return s;
+}
+
+TEST(BrakeStop, StandstillIsTheLastCountChange) {
+  const auto s = shaft_stopping_at(300_ms);
+  EXPECT_EQ(standstill_after(s, 100_ms, 600_ms), 300_ms);
+  // Nothing after the last change proves it stayed: no standstill.
+  EXPECT_EQ(standstill_after(s, 100_ms, 300_ms), std::nullopt);
+  // Already still before the brake: standstill at the brake instant.
+  EXPECT_EQ(standstill_after(s, 400_ms, 600_ms), 400_ms);
+}
+
+TEST(BrakeStop, PassesAtTheLimitAndFailsOneMillisecondOrOneNanosecondOver) {
+  // Applied 100 ms, standstill 300 ms: 200 ms stop time.
+  const BrakeSpec spec{.name = "brake", .limit = 200_ms};
+  auto r = check_brake_stop(100_ms, shaft_stopping_at(300_ms), 600_ms, {}, spec);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  EXPECT_EQ(find(r, "brake.stop_time").value, 200.0);
+  EXPECT_EQ(find(r, "brake.stop_time").unit, "ms");
+  ASSERT_TRUE(find(r, "brake.stop_time").window);
+  EXPECT_EQ(find(r, "brake.stop_time").window->end, 300_ms);
+  for (const Nanos stop : {301_ms, 300_ms + 1_ns}) {
+    r = check_brake_stop(100_ms, shaft_stopping_at(stop), 600_ms, {}, spec);
+    EXPECT_EQ(r.outcome(), rig::Outcome::Fail) << stop.count();
+  }
+}
+
+TEST(BrakeStop, StillMovingAtTheEndOfTheTraceIsANamedFailure) {
+  const auto r = check_brake_stop(100_ms, shaft_stopping_at(600_ms), 600_ms, {}, {.name = "b", .limit = 1_s});
+  EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
+  EXPECT_NE(find(r, "b.stop_time").detail.find("no standstill"), std::string::npos);
+}
+
+TEST(BrakeStop, ReportedStopTimeAgainstMeasured) {
+  // ANS1 W-17: the stop timer reads 275 ms at detection; reported = 275 - 125 = 150 ms. The
+  // shaft stopped 150 ms after the brake: agrees. Tolerance 2 ms: 148 passes, 147.9 fails.
+  BrakeSpec spec{.name = "b", .limit = 200_ms, .reported_ms = 275.0 - 125.0};
+  const auto motion = shaft_stopping_at(250_ms);
+  EXPECT_EQ(check_brake_stop(100_ms, motion, 600_ms, {}, spec).outcome(), rig::Outcome::Pass);
+  spec.reported_ms = 148.0;
+  EXPECT_EQ(check_brake_stop(100_ms, motion, 600_ms, {}, spec).outcome(), rig::Outcome::Pass);
+  spec.reported_ms = 147.9;
+  const auto r = check_brake_stop(100_ms, motion, 600_ms, {}, spec);
+  EXPECT_EQ(find(r, "b.reported").outcome, rig::Outcome::Fail);
+}
+
+TEST(BrakeStop, FaultOutputMustAssertExactlyWhenTheLimitIsExceeded) {
+  // Fault output normally high, low = fault ([MODEL], ANS1 chapter 3). Stop time 200 ms.
+  const auto motion = shaft_stopping_at(300_ms);
+  const std::vector<Edge> fault{{300_ms + 125_ms, Level::Low}};
+  const std::vector<Edge> none;
+  BrakeSpec spec{.name = "b", .limit = 150_ms, .check_fault = true};
+  // Over the limit: the fault must assert.
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, 600_ms, fault, spec), "b.fault_output").outcome,
+            rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, 600_ms, none, spec), "b.fault_output").outcome,
+            rig::Outcome::Fail);
+  // Exactly at the limit: no fault expected; one asserted is a failure.
+  spec.limit = 200_ms;
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, 600_ms, none, spec), "b.fault_output").outcome,
+            rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, 600_ms, fault, spec), "b.fault_output").outcome,
+            rig::Outcome::Fail);
+}
+
+} // namespace
+} // namespace hilrig::checks

@@ -1,0 +1,109 @@
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "check_test_support.hpp"
+#include "rig/checks/edge_position.hpp"
+
+namespace hilrig::checks {
+namespace {
+
+using namespace hilrig::literals;
+using test::find;
+
+// v counts/s from 0 at t = 0.
+PositionFn ramp(double v) {
+  return [v](Nanos t) { return v * static_cast<double>(t.count()) / 1e9; };
+}
+PositionFn constant(double v) {
+  return [v](Nanos) { return v; };
+}
+
+TEST(Advance, AnsOneLeadAdvanceWorkedExample) {
+  // ANS1 W-13: lead advance 10 ms, FSC 360: 100 RPM = 600 counts/s -> 6 counts, 150 RPM =
+  // 900 counts/s -> 9 counts. Setpoint 100: expected edges at 94 and 91 counts (± 1).
+  const AdvanceSpec spec{.name = "ls1", .setpoint = 100.0, .advance = 10_ms, .modulus = 360.0};
+  // At 600 counts/s position 94 is reached at 94/600 s = 156.666667 ms.
+  const std::vector<Edge> at100{{Nanos{156'666'667}, Level::High}};
+  auto r = check_advance(at100, ramp(600.0), constant(600.0), spec);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  EXPECT_EQ(find(r, "ls1.edge0").lower, 93.0);
+  EXPECT_EQ(find(r, "ls1.edge0").upper, 95.0);
+  EXPECT_NEAR(find(r, "ls1.edge0").value, 94.0, 1e-6);
+  const std::vector<Edge> at150{{Nanos{101'111'111}, Level::High}}; // 91/900 s
+  r = check_advance(at150, ramp(900.0), constant(900.0), spec);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  EXPECT_EQ(find(r, "ls1.edge0").lower, 90.0);
+  EXPECT_EQ(find(r, "ls1.edge0").upper, 92.0);
+}
+
+TEST(Advance, PassesAtExactlyOneCountAndFailsAtTwo) {
+  // 1000 counts/s (1 count per ms), advance 10 ms -> 10 counts; setpoint 100 -> expected 90.
+  const AdvanceSpec spec{.name = "ls1", .setpoint = 100.0, .advance = 10_ms};
+  const auto judge = [&](Nanos t) {
+    const std::vector<Edge> e{{t, Level::High}};
+    return check_advance(e, ramp(1000.0), constant(1000.0), spec).outcome();
+  };
+  EXPECT_EQ(judge(90_ms), rig::Outcome::Pass);
+  EXPECT_EQ(judge(89_ms), rig::Outcome::Pass); // 89 counts: exactly -1
+  EXPECT_EQ(judge(91_ms), rig::Outcome::Pass); // exactly +1
+  EXPECT_EQ(judge(88_ms), rig::Outcome::Fail); // one count beyond
+  EXPECT_EQ(judge(92_ms), rig::Outcome::Fail);
+}
+
+TEST(Advance, WindowIsTheTimeThePositionIsInsideTheToleranceAndAtIsTheEdge) {
+  // Expected 90 ± 1 counts at 1 count/ms: inside from 89 ms to 91 ms.
+  const std::vector<Edge> e{{90_ms + 300_us, Level::High}};
+  const auto r =
+      check_advance(e, ramp(1000.0), constant(1000.0), {.name = "a", .setpoint = 100.0, .advance = 10_ms});
+  const auto& m = find(r, "a.edge0");
+  ASSERT_TRUE(m.window);
+  EXPECT_EQ(m.window->begin, 89_ms);
+  EXPECT_EQ(m.window->end, 91_ms);
+  EXPECT_EQ(m.at, 90_ms + 300_us);
+}
+
+TEST(Advance, ReverseMotionAdvancesTheOtherWay) {
+  // -1000 counts/s from 200: expected 100 - (-1000 * 0.01) = 110; reached at 90 ms.
+  const auto pos = [](Nanos t) { return 200.0 - static_cast<double>(t.count()) / 1e6; };
+  const std::vector<Edge> e{{90_ms, Level::High}};
+  const auto r = check_advance(e, pos, constant(-1000.0), {.name = "a", .setpoint = 100.0, .advance = 10_ms});
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  EXPECT_EQ(find(r, "a.edge0").lower, 109.0);
+}
+
+TEST(Advance, WrapsModuloFullScale) {
+  // FSC 360, setpoint 5, fixed advance 10 counts: expected -5 = 355. Fired at absolute 715.5
+  // (= 355.5 on the second turn) compares as -4.5: inside [-6, -4].
+  const std::vector<Edge> e{{1_ms, Level::High}};
+  const auto r = check_advance(e, constant(715.5), constant(600.0),
+                               {.name = "a", .setpoint = 5.0, .advance_counts = 10.0, .modulus = 360.0});
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  EXPECT_DOUBLE_EQ(find(r, "a.edge0").value, -4.5);
+}
+
+TEST(Advance, NoEdgeIsAMissingEdgeFailure) {
+  const std::vector<Edge> e{{1_ms, Level::Low}};
+  const auto r = check_advance(e, ramp(1000.0), constant(1000.0), {.name = "a", .setpoint = 100.0});
+  EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
+  EXPECT_NE(find(r, "a.edges").detail.find("missing edge"), std::string::npos);
+}
+
+TEST(EdgeAtPosition, EveryEdgeOfTheLevelWithinTolerance) {
+  // Low edges (output off) expected at 250 ± 1 counts: 250 and 251 pass, 252 and 301 fail.
+  const EdgeAtPositionSpec spec{.name = "off", .level = Level::Low, .position = 250.0, .tolerance = 1.0};
+  // At 1 count/ms the low edges at 250 ms and 301 ms fired at 250 and 301 counts.
+  const std::vector<Edge> e{
+      {100_ms, Level::High}, {250_ms, Level::Low}, {300_ms, Level::High}, {301_ms, Level::Low}};
+  const auto r = check_edge_at_position(e, ramp(1000.0), {}, spec);
+  EXPECT_EQ(find(r, "off.edges").value, 2.0);
+  EXPECT_EQ(find(r, "off.edge0").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(find(r, "off.edge1").outcome, rig::Outcome::Fail);
+  const std::vector<Edge> ok{{251_ms, Level::Low}};
+  EXPECT_EQ(check_edge_at_position(ok, ramp(1000.0), {}, spec).outcome(), rig::Outcome::Pass);
+  const std::vector<Edge> over{{252_ms, Level::Low}};
+  EXPECT_EQ(check_edge_at_position(over, ramp(1000.0), {}, spec).outcome(), rig::Outcome::Fail);
+}
+
+} // namespace
+} // namespace hilrig::checks

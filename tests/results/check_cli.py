@@ -1,0 +1,49 @@
+#!/usr/bin/env python3
+"""`hilrig compare` and `hilrig merge` exit codes on the sample results (written by
+write_sample_results): merge of the one shard equals the input, compare against itself
+passes (0), a drift beyond 5 % is a regression (1), unreadable input is bad input (2)."""
+import json
+import os
+import subprocess
+import sys
+
+hilrig, sample = sys.argv[1], sys.argv[2]
+base = os.path.join(sample, "results.json")
+merged = os.path.join(sample, "merged.json")
+drifted = os.path.join(sample, "drifted.json")
+problems = []
+
+
+def run(*args):
+    return subprocess.run([hilrig, *args], capture_output=True, text=True)
+
+
+def expect(code, *args):
+    r = run(*args)
+    if r.returncode != code:
+        problems.append(f"hilrig {' '.join(args)}: exit {r.returncode}, expected {code}\n{r.stdout}{r.stderr}")
+    return r
+
+
+expect(0, "merge", merged, base)
+with open(base) as f:
+    doc = json.load(f)
+with open(merged) as f:
+    if json.load(f) != doc:
+        problems.append("merging the only shard changed the content")
+expect(0, "compare", base, merged)
+
+# 10 us -> 10.6 us is a 6 % drift: beyond the default 5 %, within an absolute 1 us threshold.
+doc["runs"][0]["checks"][0]["measurements"][1]["value"] = 10.6
+with open(drifted, "w") as f:
+    json.dump(doc, f)
+r = expect(1, "compare", base, drifted)
+if "DRIFT" not in r.stdout:
+    problems.append("the drift is not in the table:\n" + r.stdout)
+expect(0, "compare", base, drifted, "--threshold", "max=1")
+expect(2, "compare", base, os.path.join(sample, "absent.json"))
+expect(2, "compare", base, drifted, "--threshold", "max")
+
+for p in problems:
+    print(p)
+sys.exit(1 if problems else 0)

@@ -1,0 +1,108 @@
+#include <gtest/gtest.h>
+
+#include "rig/results/compare.hpp"
+#include "sample_campaign.hpp"
+
+namespace hilrig::rig {
+namespace {
+
+// One nominal run with throughput max `max_us` (limit 20 us).
+CampaignResult one_run(double max_us) {
+  CampaignResult c;
+  c.campaign = "nightly";
+  c.planned_runs = 1;
+  c.runs = {test::nominal_run(0, max_us)};
+  finalize(c);
+  return c;
+}
+
+const DriftRow& row(const Comparison& c, const std::string& measurement) {
+  for (const auto& r : c.rows) {
+    if (r.measurement == measurement) return r;
+  }
+  ADD_FAILURE() << "no row " << measurement;
+  static const DriftRow none;
+  return none;
+}
+
+TEST(Compare, RelativeDefaultFlagsDriftBeyondAndNotWithin) {
+  // Default 5%: 10 -> 10.5 us is exactly 5% (within), 10 -> 10.6 us is 6% (beyond).
+  const CampaignResult base = one_run(10.0);
+  auto c = compare_results(base, one_run(10.5), {});
+  EXPECT_EQ(row(c, "ls1-throughput.max").drift, Drift::Within);
+  EXPECT_FALSE(c.regression());
+  c = compare_results(base, one_run(10.6), {});
+  EXPECT_EQ(row(c, "ls1-throughput.max").drift, Drift::Beyond);
+  EXPECT_TRUE(c.regression());
+  EXPECT_EQ(c.regressions(), 1U);
+  EXPECT_EQ(row(c, "ls1-advance.edge0").drift, Drift::Same);
+}
+
+TEST(Compare, NamedAbsoluteThresholdBySuffixLongestMatchWins) {
+  // "max=1" (absolute 1 us) accepts 10 -> 11; "ls1-throughput.max=0.5" is longer and wins.
+  CompareOptions o;
+  o.thresholds = {parse_threshold("max=1")};
+  EXPECT_FALSE(compare_results(one_run(10.0), one_run(11.0), o).regression());
+  o.thresholds.push_back(parse_threshold("ls1-throughput.max=0.5"));
+  EXPECT_TRUE(compare_results(one_run(10.0), one_run(11.0), o).regression());
+  EXPECT_EQ(row(compare_results(one_run(10.0), one_run(11.0), o), "ls1-throughput.max").threshold.name,
+            "ls1-throughput.max");
+  // Relative with %: 20% of 10 = 2.
+  o.thresholds = {parse_threshold("max=20%")};
+  EXPECT_FALSE(compare_results(one_run(10.0), one_run(12.0), o).regression());
+  EXPECT_TRUE(compare_results(one_run(10.0), one_run(12.5), o).regression());
+}
+
+TEST(Compare, NewlyFailingAndDisappearedMeasurementsAreRegressions) {
+  CompareOptions loose;
+  loose.default_rel = 10.0; // no drift can trip it
+  auto c = compare_results(one_run(19.0), one_run(21.0), loose);
+  EXPECT_EQ(row(c, "ls1-throughput.max").drift, Drift::NewlyFails);
+  EXPECT_TRUE(c.regression());
+  CampaignResult gone = one_run(10.0);
+  gone.runs[0].checks.pop_back(); // the advance check vanished
+  finalize(gone);
+  c = compare_results(one_run(10.0), gone, loose);
+  EXPECT_EQ(row(c, "ls1-advance.edge0").drift, Drift::Missing);
+  EXPECT_TRUE(c.regression());
+  // The reverse (a measurement added) is reported but not a regression.
+  c = compare_results(gone, one_run(10.0), loose);
+  EXPECT_EQ(row(c, "ls1-advance.edge0").drift, Drift::Added);
+  EXPECT_FALSE(c.regression());
+  const std::string table = format_comparison(compare_results(one_run(19.0), one_run(21.0), loose));
+  EXPECT_NE(table.find("NEWLY FAILS"), std::string::npos);
+  EXPECT_NE(table.find("verdict pass -> fail (worse)"), std::string::npos);
+}
+
+TEST(Compare, RepeatedRunNamesAreComparedOccurrenceByOccurrence) {
+  // Two runs both named "ls1/run0" (a repeated point); only the second drifts (10 -> 12 us).
+  const auto two = [](double second_max) {
+    CampaignResult c;
+    c.planned_runs = 2;
+    c.runs = {test::nominal_run(0, 10.0), test::nominal_run(1, second_max)};
+    c.runs[1].name = c.runs[0].name;
+    finalize(c);
+    return c;
+  };
+  const auto c = compare_results(two(10.0), two(12.0), {});
+  ASSERT_EQ(c.regressions(), 1U);
+  for (const auto& r : c.rows) {
+    if (r.regression()) {
+      EXPECT_EQ(r.run, "ls1/run0#2");
+    }
+  }
+}
+
+TEST(Compare, MalformedThresholdsAreRejected) {
+  EXPECT_THROW((void)parse_threshold("max"), std::invalid_argument);
+  EXPECT_THROW((void)parse_threshold("=3"), std::invalid_argument);
+  EXPECT_THROW((void)parse_threshold("max=abc"), std::invalid_argument);
+  EXPECT_THROW((void)parse_threshold("max=-1"), std::invalid_argument);
+  const Threshold t = parse_threshold("p99=2.5%");
+  EXPECT_EQ(t.name, "p99");
+  EXPECT_TRUE(t.relative);
+  EXPECT_DOUBLE_EQ(t.value, 0.025);
+}
+
+} // namespace
+} // namespace hilrig::rig

@@ -1,0 +1,112 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "json_schema_subset.hpp"
+#include "rig/results/merge.hpp"
+#include "rig/results/results_json.hpp"
+#include "sample_campaign.hpp"
+
+namespace hilrig::rig {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+json load_schema() {
+  std::ifstream in(HILRIG_SOURCE_DIR "/docs/results.schema.json");
+  EXPECT_TRUE(in.good());
+  return json::parse(in);
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(HILRIG_BINARY_DIR) / "tests" / "results" / "scratch";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+TEST(ResultsJson, ValidatesAgainstTheDocumentedSchema) {
+  CampaignResult c = test::sample_campaign(6);
+  c.runs[0].error = "bus-off"; // a null-able string present
+  c.started_at = "2026-11-22T05:00:00";
+  finalize(c);
+  const auto errors = test::validate_json_schema(load_schema(), to_json(c));
+  EXPECT_TRUE(errors.empty()) << errors.front();
+}
+
+TEST(ResultsJson, TheSchemaCheckerRejectsABrokenFile) {
+  // The checker is only worth something if it says no: drop a required field, retype another.
+  json j = to_json(test::sample_campaign(3));
+  j["runs"][0]["checks"][0]["measurements"][0].erase("unit");
+  j["totals"]["runs"] = "three";
+  j["extra"] = 1;
+  const auto errors = test::validate_json_schema(load_schema(), j);
+  EXPECT_EQ(errors.size(), 3U);
+}
+
+TEST(ResultsJson, RoundTripKeepsEverything) {
+  CampaignResult c = test::sample_campaign(5);
+  c.host = "rig-7";
+  const CampaignResult back = campaign_from_json(json::parse(to_json_text(c)));
+  EXPECT_EQ(to_json(back), to_json(c));
+  ASSERT_TRUE(back.runs[0].checks[1].measurements[0].at);
+  EXPECT_EQ(back.runs[0].checks[1].measurements[0].at->count(), 156'666'667);
+  EXPECT_EQ(back.runs[0].checks[0].series[0].values, (std::vector<double>{12.0, 15.0, 10.0}));
+}
+
+TEST(ResultsJson, ANotANumberValueIsWrittenAsNullAndReadBackAsNaN) {
+  CampaignResult c = test::sample_campaign(1);
+  c.runs[0].checks[0].measurements[1].value = std::numeric_limits<double>::quiet_NaN();
+  c.runs[0].checks[0].measurements[1].outcome = Outcome::Error;
+  finalize(c);
+  const json j = json::parse(to_json_text(c));
+  EXPECT_TRUE(j["runs"][0]["checks"][0]["measurements"][1]["value"].is_null());
+  EXPECT_TRUE(test::validate_json_schema(load_schema(), j).empty());
+  EXPECT_TRUE(std::isnan(campaign_from_json(j).runs[0].checks[0].measurements[1].value));
+}
+
+TEST(ResultsJson, DeterministicTextWhateverOrderRunsArrive) {
+  CampaignResult a = test::sample_campaign(6);
+  CampaignResult b = a;
+  std::reverse(b.runs.begin(), b.runs.end());
+  finalize(b);
+  EXPECT_EQ(to_json_text(a), to_json_text(b));
+  // Keys sorted: "campaign" comes before "complete" before "device".
+  const std::string text = to_json_text(a);
+  EXPECT_LT(text.find("\"campaign\""), text.find("\"complete\""));
+  EXPECT_LT(text.find("\"complete\""), text.find("\"device\""));
+}
+
+TEST(ResultsJson, AtomicWriteLeavesNoTempAndPartialProgressIsReadable) {
+  const fs::path path = scratch("progress.json");
+  CampaignResult c = test::sample_campaign(6);
+  CampaignResult partial = c;
+  partial.runs.resize(2);
+  finalize(partial);
+  write_results_file(path, partial);
+  EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
+  CampaignResult read = read_results_file(path);
+  EXPECT_FALSE(read.complete);
+  EXPECT_EQ(read.verdict, Outcome::Error);
+  EXPECT_EQ(read.runs.size(), 2U);
+  write_results_file(path, c); // rewritten as runs finish
+  read = read_results_file(path);
+  EXPECT_TRUE(read.complete);
+  EXPECT_TRUE(same_content(read, c));
+}
+
+TEST(ResultsJson, ReadingRejectsWhatIsNotAResultsFile) {
+  const fs::path path = scratch("bad.json");
+  std::ofstream(path) << "{\"format\": \"something-else\", \"version\": 1}";
+  EXPECT_THROW((void)read_results_file(path), std::runtime_error);
+  std::ofstream(path) << "{ not json";
+  EXPECT_THROW((void)read_results_file(path), std::runtime_error);
+  EXPECT_THROW((void)read_results_file(scratch("does-not-exist.json")), std::runtime_error);
+}
+
+} // namespace
+} // namespace hilrig::rig
