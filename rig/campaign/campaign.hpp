@@ -1,0 +1,191 @@
+#pragma once
+// A campaign, as read from its TOML file: the DUT and its wiring, the motion and the
+// encoder, stimuli and host actions in time, the checks with their limits, the fault
+// entries, and how many runs (repetitions, sweeps). Every entry keeps where it was
+// written so a later error can point at it. docs/campaigns.md describes every key.
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/line.hpp"
+#include "core/time.hpp"
+#include "rig/campaign/campaign_error.hpp"
+#include "rig/duts/dut.hpp"
+
+namespace hilrig::campaign {
+
+using duts::ParamValue;
+
+// A parameter as written: its value (of the declared kind) and where.
+struct Param {
+  ParamValue value;
+  SourcePos where;
+};
+using ParamMap = std::map<std::string, Param, std::less<>>;
+
+struct DutSpec {
+  std::string model; // a registry name, or "external" (a real board)
+  std::string variant = "nominal";
+  std::string backend = "virtual";
+  ParamMap params; // every declared parameter (defaults filled in)
+  std::map<std::string, duts::PinDirection, std::less<>> external_pins; // "external" only
+  SourcePos where;
+};
+
+// One wire: a rig line <-> a board pin. Rig line names are the bus line names and the
+// names checks and stimuli use ("enc.A", "ls1").
+struct Wire {
+  std::string rig;
+  std::string board;
+  duts::PinDirection direction = duts::PinDirection::Input; // the board pin's direction
+  bool analog = false;                                      // an analog pin (resolver stator)
+  SourcePos where;
+};
+
+struct EncoderSpec {
+  std::int64_t lines = 1000; // lines per turn; X4 quadrature gives 4 counts per line
+  SourcePos where;
+  [[nodiscard]] double counts_per_turn() const { return 4.0 * static_cast<double>(lines); }
+};
+
+enum class MoveKind : std::uint8_t { Constant, Accelerate, Dwell, Trapezoid, PressStroke };
+
+// A move of the motion profile. Speeds in rpm, accelerations in rpm/s, distances in turns.
+struct Move {
+  MoveKind kind = MoveKind::Constant;
+  Nanos duration{0};         // constant, accelerate, dwell
+  double speed_rpm = 0.0;    // constant, trapezoid (cruise), press_stroke (running)
+  double to_rpm = 0.0;       // accelerate: speed at the end
+  double accel_rpm_s = 0.0;  // trapezoid: acceleration and deceleration
+  double turns = 0.0;        // trapezoid: distance
+  std::int64_t strokes = 0;  // press_stroke: full strokes before the braking one
+  double brake_at_deg = 0.0; // press_stroke: crank angle at which the brake is applied
+  double decel_rpm_s = 0.0;  // press_stroke: brake deceleration
+  std::string brake_line;    // press_stroke: rig line driven to brake_level when the brake is applied
+  Level brake_level = Level::Low;
+  SourcePos where;
+};
+
+struct MotionSpec {
+  double start_turns = 0.0;
+  std::vector<Move> moves;
+  SourcePos where;
+};
+
+enum class StimulusKind : std::uint8_t {
+  Level,        // line to a level
+  Pulse,        // line to level for width, then back
+  Bounce,       // contact bounce: `edges` toggles `period` apart, then settle at level
+  Glitch,       // (signal fault) the line inverted for width
+  Stuck,        // (signal fault) the line held at level from `at` until `until`
+  MissingEdges, // (signal fault) every `every`-th edge of an encoder line lost in [at, until)
+};
+
+struct Stimulus {
+  StimulusKind kind = StimulusKind::Level;
+  Nanos at{0};
+  std::string line;
+  Level level = Level::High;
+  Nanos width{0};
+  Nanos period{0};
+  std::int64_t edges = 0;
+  std::int64_t every = 1;
+  Nanos until = Nanos::max();
+  SourcePos where;
+};
+
+// A host action: write command words (with the handshake) or read one input word.
+struct HostAction {
+  enum class Kind : std::uint8_t { Write, Read };
+  Kind kind = Kind::Write;
+  Nanos at{0};
+  std::vector<std::uint16_t> words; // write: output words 0.. (the rig drives Transmit)
+  std::size_t word = 0;             // read: input word index
+  std::string name;                 // read: the observation's name; write: optional label
+  std::string unit;
+  bool is_signed = false;     // read: the word is two's complement
+  Nanos timeout{100'000'000}; // write: how long to wait for Acknowledge
+  SourcePos where;
+};
+
+// A check: its kind and name, and its parameters as written (the TOML table converted to
+// JSON, as rig/checks/registry.hpp takes them), with where each parameter was written.
+struct CheckSpec {
+  std::string kind;
+  std::string name;
+  nlohmann::json params = nlohmann::json::object();
+  std::map<std::string, SourcePos, std::less<>> param_where;
+  Nanos probe_at{0}; // bisection checks (debounce): when each probe pulse starts
+  SourcePos where;
+};
+
+// A fault-injection entry: a device variant and/or a signal fault, and the checks of
+// which at least one must fail (catch it). A fault nobody catches fails the campaign.
+struct FaultSpec {
+  std::string name;
+  std::optional<std::string> variant;
+  std::optional<Stimulus> signal;
+  std::vector<std::string> caught_by;
+  SourcePos where;
+};
+
+// One point of the scenario: everything a single run needs.
+struct Scenario {
+  DutSpec dut;
+  std::vector<Wire> wiring;
+  EncoderSpec encoder;
+  MotionSpec motion;
+  std::vector<Stimulus> stimuli;
+  std::vector<HostAction> host;
+  std::vector<CheckSpec> checks;
+  Nanos end{0};
+  Nanos host_poll{1'000'000}; // how often the host polls Acknowledge
+
+  [[nodiscard]] const Wire* wire_for_rig(std::string_view rig_line) const;
+  [[nodiscard]] const CheckSpec* check(std::string_view name) const;
+};
+
+struct SweepAxis {
+  std::string key; // dotted path into the file, e.g. "dut.params.delay"
+  std::size_t values = 0;
+  SourcePos where;
+};
+
+// One run: which scenario point, which repetition, which seed, which fault.
+struct RunSpec {
+  std::size_t index = 0;
+  std::size_t point = 0;
+  std::size_t repetition = 0;
+  std::uint64_t seed = 0;
+  std::optional<std::size_t> fault; // index into Campaign::faults
+  std::string label;                // "point 2 rep 0", "fault late", with the sweep values
+};
+
+struct Campaign {
+  std::string file;
+  std::string name;
+  std::string description;
+  std::uint64_t seed = 1;
+  std::int64_t repeat = 1;
+  std::vector<SweepAxis> sweep;
+  std::vector<Scenario> points; // one per sweep point (one when there is no sweep)
+  std::vector<std::string> point_labels;
+  std::vector<FaultSpec> faults;
+  std::vector<RunSpec> runs;
+};
+
+// Seed of run `index` for a base seed: splitmix64, so neighbouring runs differ widely.
+[[nodiscard]] std::uint64_t run_seed(std::uint64_t base, std::size_t index);
+// The campaign's runs for a base seed: nominal runs (each point x repeat) then one run
+// per fault at each point. Index order is the file's order.
+[[nodiscard]] std::vector<RunSpec> plan_runs(const Campaign& campaign, std::uint64_t base_seed);
+// Shard k of n (0-based k): the runs whose index mod n is k.
+[[nodiscard]] std::vector<RunSpec> shard(const std::vector<RunSpec>& runs, std::size_t k, std::size_t n);
+
+} // namespace hilrig::campaign

@@ -1,0 +1,18 @@
+#include "rig/campaign/campaign_error.hpp"
+
+#include <fmt/format.h>
+
+namespace hilrig::campaign {
+
+namespace {
+std::string describe(const std::string& file, SourcePos where, const std::string& key,
+                     const std::string& expected) {
+  return fmt::format("{}:{}:{}: {}: {}", file, where.line, where.column, key, expected);
+}
+} // namespace
+
+CampaignError::CampaignError(std::string file, SourcePos where, std::string key, std::string expected)
+    : std::runtime_error(describe(file, where, key, expected)), file_(std::move(file)), where_(where),
+      key_(std::move(key)), expected_(std::move(expected)) {}
+
+} // namespace hilrig::campaign

@@ -1,0 +1,109 @@
+#include "rig/campaign/executive.hpp"
+
+#include <exception>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "rig/campaign/virtual_run.hpp"
+#include "rig/checks/debounce.hpp"
+#include "rig/checks/registry.hpp"
+
+namespace hilrig::campaign {
+
+namespace {
+
+checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
+  checks::Capture c;
+  for (const Wire& w : s.wiring) c.lines[w.rig] = v.trace->edges_of(w.rig);
+  const signals::MotionProfile* profile = &v.profile;
+  c.position = [profile](Nanos t) { return profile->position(t); };
+  c.speed = [profile](Nanos t) { return profile->velocity(t); };
+  c.motion = v.motion;
+  c.observations = v.observations;
+  c.begin = Nanos{0};
+  c.end = s.end;
+  return c;
+}
+
+} // namespace
+
+RunOutput Executive::run(const RunSpec& spec) const {
+  RunOutput out;
+  rig::RunResult& r = out.result;
+  r.index = spec.index;
+  r.name = spec.label;
+  r.seed = spec.seed;
+  const Scenario& s = campaign_.points.at(spec.point);
+
+  RunInputs in;
+  in.scenario = &s;
+  in.variant = s.dut.variant;
+  in.seed = spec.seed;
+  in.record_motion = false;
+  for (const CheckSpec& c : s.checks) in.record_motion = in.record_motion || c.kind == "brake_stop_time";
+  if (spec.fault) {
+    const FaultSpec& f = campaign_.faults.at(*spec.fault);
+    r.fault = f.name;
+    r.must_catch = f.caught_by;
+    if (f.variant) in.variant = *f.variant;
+    if (f.signal) in.faults.push_back(*f.signal);
+  }
+
+  try {
+    VirtualRun v = run_virtual(in);
+    checks::Capture capture = capture_of(s, v);
+    for (const CheckSpec& c : s.checks) {
+      const checks::CheckKind* kind = checks::find_check_kind(c.kind);
+      if (kind != nullptr && kind->needs_bisection) {
+        // Each probe is a fresh run of the same scenario with one more pulse on the input.
+        const checks::BisectionPlan plan = checks::debounce_plan(c.params);
+        const checks::PulseProbe probe = [&](Nanos width) {
+          RunInputs p = in;
+          p.probe = Stimulus{StimulusKind::Pulse, c.probe_at, plan.input, plan.level, width, Nanos{0}, 0, 1,
+                             Nanos::max(),        c.where};
+          const VirtualRun pv = run_virtual(p);
+          for (const Edge& e : pv.trace->edges_of(plan.output))
+            if (e.time >= c.probe_at) return true;
+          return false;
+        };
+        capture.bisection = checks::bisect_boundary(probe, plan.narrow, plan.wide, plan.resolution);
+      } else {
+        capture.bisection.reset();
+      }
+      r.checks.push_back(checks::run_check(c.name, c.kind, capture, c.params));
+    }
+    if (!v.handshakes.empty()) {
+      rig::CheckResult host;
+      host.check = "host";
+      host.kind = "handshake";
+      host.measurements = v.handshakes;
+      r.checks.push_back(std::move(host));
+    }
+    r.observations = v.observations;
+    out.trace = v.trace;
+  } catch (const std::exception& e) {
+    r.error = e.what();
+  }
+  return out;
+}
+
+rig::CampaignResult Executive::run_all(const std::vector<RunSpec>& runs, std::uint64_t seed, rig::Shard shard,
+                                       const Progress& progress, const TraceSink& sink) const {
+  rig::CampaignResult result;
+  result.campaign = campaign_.name;
+  result.device = campaign_.points.empty() ? std::string() : campaign_.points.front().dut.model;
+  result.seed = seed;
+  result.shard = shard;
+  result.planned_runs = runs.size();
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (progress) progress(i, runs.size(), runs[i]);
+    RunOutput out = run(runs[i]);
+    if (sink) sink(runs[i], out);
+    result.runs.push_back(std::move(out.result));
+  }
+  rig::finalize(result);
+  return result;
+}
+
+} // namespace hilrig::campaign

@@ -1,0 +1,542 @@
+#include "rig/campaign/scenario_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "rig/campaign/motion.hpp"
+#include "rig/campaign/stimulus_kinds.hpp"
+#include "rig/campaign/toml_reader.hpp"
+#include "rig/checks/registry.hpp"
+
+namespace hilrig::campaign {
+
+namespace {
+
+using duts::ParamKind;
+using duts::PinDirection;
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+class Reader {
+public:
+  Reader(const std::string& file, const toml::table& root) : file_(file), root_(file, root, "") {}
+
+  ScenarioFile read() {
+    ScenarioFile out;
+    read_campaign(out);
+    read_dut(out.scenario.dut);
+    read_wiring(out.scenario);
+    read_encoder(out.scenario.encoder);
+    read_motion(out.scenario);
+    (void)build_motion(file_, out.scenario.motion,
+                       out.scenario.encoder); // a move that cannot follow is bad input
+    read_stimuli(out.scenario);
+    read_host(out.scenario);
+    read_checks(out.scenario);
+    read_faults(out);
+    (void)root_.node("sweep"); // read by the campaign parser
+    root_.finish();
+    return out;
+  }
+
+private:
+  [[noreturn]] void fail(SourcePos at, const std::string& key, const std::string& expected) const {
+    throw CampaignError(file_, at, key, expected);
+  }
+
+  void read_campaign(ScenarioFile& out) {
+    const toml::table* t = root_.opt_table("campaign");
+    if (t == nullptr) fail(root_.where(), "campaign", "missing: a [campaign] table with name and end");
+    TableReader r(file_, *t, "campaign");
+    out.name = r.string("name");
+    out.description = r.opt_string("description").value_or("");
+    out.scenario.end = r.duration("end");
+    if (out.scenario.end <= Nanos{0}) r.fail("end", "a duration > 0");
+    if (auto s = r.opt_integer("seed")) {
+      if (*s < 0) r.fail("seed", "a seed >= 0");
+      out.seed = static_cast<std::uint64_t>(*s);
+    }
+    out.repeat = r.opt_integer("repeat").value_or(1);
+    if (out.repeat < 1) r.fail("repeat", "a repetition count >= 1");
+    if (auto p = r.opt_duration("host_poll")) {
+      if (*p <= Nanos{0}) r.fail("host_poll", "a duration > 0");
+      out.scenario.host_poll = *p;
+    }
+    r.finish();
+  }
+
+  ParamValue dut_param(TableReader& r, const duts::ParamInfo& info) {
+    switch (info.kind) {
+    case ParamKind::Integer:
+      return r.integer(info.name);
+    case ParamKind::Number:
+      return r.number(info.name);
+    case ParamKind::Duration:
+      return r.duration(info.name);
+    case ParamKind::Boolean:
+      return r.boolean(info.name);
+    case ParamKind::Text:
+      return r.string(info.name);
+    }
+    return std::int64_t{0};
+  }
+
+  void read_dut(DutSpec& dut) {
+    const toml::table* t = root_.opt_table("dut");
+    if (t == nullptr) fail(root_.where(), "dut", "missing: a [dut] table naming the model");
+    TableReader r(file_, *t, "dut");
+    dut.where = r.where();
+    dut.model = r.string("model");
+    dut.backend = r.opt_string("backend").value_or("virtual");
+    if (dut.backend != "virtual" && dut.backend != "gpiod") r.fail("backend", "\"virtual\" or \"gpiod\"");
+    if (dut.model == "external") {
+      if (dut.backend == "virtual") r.fail("backend", "a hardware backend (\"gpiod\") for an external board");
+      const toml::table* pins = r.opt_table("pins");
+      if (pins == nullptr)
+        r.fail("pins", "missing: an external board declares its pins, e.g. pins = { A = \"input\" }");
+      for (const auto& [k, v] : *pins) {
+        const auto* s = v.as_string();
+        if (s == nullptr || (s->get() != "input" && s->get() != "output"))
+          fail(pos_of(v), fmt::format("dut.pins.{}", k.str()), "\"input\" or \"output\"");
+        dut.external_pins[std::string(k.str())] =
+            s->get() == "input" ? PinDirection::Input : PinDirection::Output;
+      }
+      r.finish();
+      info_ = nullptr;
+      return;
+    }
+    info_ = duts::find_dut(dut.model);
+    if (info_ == nullptr) {
+      std::vector<std::string> names;
+      for (const auto& d : duts::dut_registry()) names.push_back(d.name);
+      names.emplace_back("external");
+      r.fail("model", fmt::format("a device model: one of {}", join(names)));
+    }
+    dut.variant = r.opt_string("variant").value_or("nominal");
+    if (!info_->has_variant(dut.variant)) r.fail("variant", variant_expected());
+    std::map<std::string, ParamValue, std::less<>> given;
+    if (const toml::table* p = r.opt_table("params")) {
+      TableReader pr(file_, *p, "dut.params");
+      for (const auto& info : info_->params) {
+        if (!pr.has(info.name)) {
+          (void)pr.node(info.name);
+          continue;
+        }
+        given[info.name] = dut_param(pr, info);
+        dut.params[info.name] = Param{given[info.name], pr.pos(info.name)};
+      }
+      pr.finish();
+    }
+    for (const auto& info : info_->params)
+      if (!dut.params.contains(info.name)) dut.params[info.name] = Param{info.default_value, dut.where};
+    r.finish();
+  }
+
+  std::string variant_expected() const {
+    std::vector<std::string> names;
+    for (const auto& v : info_->variants) names.push_back(v.name);
+    return fmt::format("a variant of {}: one of {}", info_->name, join(names));
+  }
+
+  std::optional<PinDirection> pin_direction(const DutSpec& dut, std::string_view pin) const {
+    if (info_ == nullptr) {
+      const auto it = dut.external_pins.find(pin);
+      if (it == dut.external_pins.end()) return std::nullopt;
+      return it->second;
+    }
+    const duts::PinInfo* p = info_->pin(pin);
+    if (p == nullptr) return std::nullopt;
+    return p->direction;
+  }
+
+  std::string pin_names(const DutSpec& dut) const {
+    std::vector<std::string> names;
+    if (info_ == nullptr)
+      for (const auto& [n, d] : dut.external_pins) names.push_back(n);
+    else
+      for (const auto& p : info_->pins) names.push_back(p.name);
+    return join(names);
+  }
+
+  void read_wiring(Scenario& s) {
+    std::size_t i = 0;
+    for (const toml::table* t : root_.tables("wiring")) {
+      TableReader r(file_, *t, fmt::format("wiring[{}]", i++));
+      Wire w;
+      w.where = r.where();
+      w.rig = r.string("rig");
+      w.board = r.string("board");
+      const auto dir = pin_direction(s.dut, w.board);
+      if (!dir) r.fail("board", fmt::format("a pin of {}: one of {}", s.dut.model, pin_names(s.dut)));
+      w.direction = *dir;
+      w.analog = info_ != nullptr && info_->pin(w.board)->analog;
+      if (w.rig.starts_with("enc.") && !is_encoder_line(w.rig))
+        r.fail("rig", "encoder lines are named enc.A and enc.B");
+      if (is_encoder_line(w.rig) && w.direction != PinDirection::Input)
+        r.fail("board",
+               fmt::format("the encoder drives {}: a board input pin ({} is an output)", w.rig, w.board));
+      for (const Wire& other : s.wiring) {
+        if (other.rig == w.rig)
+          r.fail("rig", fmt::format("each rig line wired once; \"{}\" is already wired", w.rig));
+        if (other.board == w.board)
+          r.fail("board", fmt::format("each board pin wired once; \"{}\" is already wired", w.board));
+      }
+      r.finish();
+      s.wiring.push_back(std::move(w));
+    }
+  }
+
+  void read_encoder(EncoderSpec& e) {
+    const toml::table* t = root_.opt_table("encoder");
+    if (t == nullptr) return;
+    TableReader r(file_, *t, "encoder");
+    e.where = r.where();
+    e.lines = r.opt_integer("lines").value_or(e.lines);
+    if (e.lines < 1 || e.lines > 1'000'000) r.fail("lines", "lines per turn in 1..1000000");
+    r.finish();
+  }
+
+  const Wire* driven_line(const Scenario& s, TableReader& r, std::string_view key) {
+    const std::string line = r.string(key);
+    const Wire* w = s.wire_for_rig(line);
+    if (w == nullptr) r.fail(key, fmt::format("a wired rig line (\"{}\" is not in [[wiring]])", line));
+    if (w->analog)
+      r.fail(key, fmt::format("a digital line; \"{}\" is wired to analog pin {}", line, w->board));
+    if (w->direction != PinDirection::Input)
+      r.fail(key, fmt::format("a line the rig drives (board input); \"{}\" is wired to output {}", line,
+                              w->board));
+    return w;
+  }
+
+  void read_motion(Scenario& s) {
+    const toml::table* t = root_.opt_table("motion");
+    if (t == nullptr) return;
+    TableReader r(file_, *t, "motion");
+    s.motion.where = r.where();
+    s.motion.start_turns = r.opt_number("start_turns").value_or(0.0);
+    std::size_t i = 0;
+    for (const toml::table* mt : r.tables("move")) {
+      TableReader m(file_, *mt, fmt::format("motion.move[{}]", i++));
+      Move mv;
+      mv.where = m.where();
+      const std::string kind = m.string("kind");
+      auto positive_duration = [&](std::string_view key) {
+        const Nanos d = m.duration(key);
+        if (d <= Nanos{0}) m.fail(key, "a duration > 0");
+        return d;
+      };
+      auto positive = [&](std::string_view key) {
+        const double v = m.number(key);
+        if (!(v > 0.0) || !std::isfinite(v)) m.fail(key, "a number > 0");
+        return v;
+      };
+      if (kind == "constant") {
+        mv.kind = MoveKind::Constant;
+        mv.speed_rpm = m.number("speed_rpm");
+        mv.duration = positive_duration("duration");
+      } else if (kind == "accelerate") {
+        mv.kind = MoveKind::Accelerate;
+        mv.to_rpm = m.number("to_rpm");
+        mv.duration = positive_duration("duration");
+      } else if (kind == "dwell") {
+        mv.kind = MoveKind::Dwell;
+        mv.duration = positive_duration("duration");
+      } else if (kind == "trapezoid") {
+        mv.kind = MoveKind::Trapezoid;
+        mv.speed_rpm = positive("speed_rpm");
+        mv.accel_rpm_s = positive("accel_rpm_s");
+        mv.turns = m.number("turns");
+        if (mv.turns == 0.0) m.fail("turns", "a distance in turns, not 0 (negative runs backwards)");
+      } else if (kind == "press_stroke") {
+        mv.kind = MoveKind::PressStroke;
+        mv.speed_rpm = positive("speed_rpm");
+        mv.decel_rpm_s = positive("decel_rpm_s");
+        mv.strokes = m.opt_integer("strokes").value_or(0);
+        if (mv.strokes < 0) m.fail("strokes", "a number of strokes >= 0");
+        mv.brake_at_deg = m.opt_number("brake_at_deg").value_or(0.0);
+        if (mv.brake_at_deg < 0.0 || mv.brake_at_deg >= 360.0)
+          m.fail("brake_at_deg", "a crank angle in [0, 360)");
+        if (m.has("brake_line"))
+          mv.brake_line = driven_line(s, m, "brake_line")->rig;
+        else
+          (void)m.node("brake_line");
+        mv.brake_level = m.opt_level("brake_level").value_or(Level::Low);
+      } else {
+        m.fail("kind", "a move kind: constant, accelerate, dwell, trapezoid or press_stroke");
+      }
+      m.finish();
+      s.motion.moves.push_back(std::move(mv));
+    }
+    r.finish();
+  }
+
+  Stimulus read_stimulus(const Scenario& s, TableReader& r, bool fault_only) {
+    Stimulus st;
+    st.where = r.where();
+    const std::string kind = r.string("kind");
+    st.at = r.duration("at");
+    if (st.at < Nanos{0}) r.fail("at", "a time >= 0");
+    if (st.at > s.end)
+      r.fail("at", fmt::format("a time within the run (campaign.end is {} ns)", s.end.count()));
+    const Wire* w = driven_line(s, r, "line");
+    st.line = w->rig;
+    const bool encoder = is_encoder_line(st.line);
+    auto positive_duration = [&](std::string_view key) {
+      const Nanos d = r.duration(key);
+      if (d <= Nanos{0}) r.fail(key, "a duration > 0");
+      return d;
+    };
+    auto until = [&] {
+      st.until = r.opt_duration("until").value_or(Nanos::max());
+      if (st.until <= st.at) r.fail("until", "a time after `at`");
+    };
+    const StimulusKindInfo* info = find_stimulus_kind(kind);
+    if (info == nullptr || (fault_only && !info->signal_fault)) {
+      std::string names;
+      for (const auto& k : stimulus_kinds())
+        if (!fault_only || k.signal_fault) names += (names.empty() ? "" : ", ") + std::string(k.name);
+      r.fail("kind", fmt::format("{}: one of {}", fault_only ? "a signal fault" : "a stimulus kind", names));
+    }
+    st.kind = info->kind;
+    if (!info->signal_fault && encoder)
+      r.fail("line",
+             fmt::format("a discrete input line; {} is driven by the encoder (use a signal fault)", st.line));
+    switch (st.kind) {
+    case StimulusKind::Level:
+      st.level = r.level("level");
+      break;
+    case StimulusKind::Pulse:
+      st.level = r.opt_level("level").value_or(Level::High);
+      st.width = positive_duration("width");
+      break;
+    case StimulusKind::Bounce:
+      st.level = r.opt_level("level").value_or(Level::High);
+      st.edges = r.integer("edges");
+      if (st.edges < 1) r.fail("edges", "a number of bounce edges >= 1");
+      st.period = positive_duration("period");
+      break;
+    case StimulusKind::Glitch:
+      st.width = positive_duration("width");
+      break;
+    case StimulusKind::Stuck:
+      st.level = r.level("level");
+      until();
+      break;
+    case StimulusKind::MissingEdges:
+      if (!encoder) r.fail("line", "an encoder line (enc.A or enc.B)");
+      st.every = r.opt_integer("every").value_or(1);
+      if (st.every < 1) r.fail("every", "every n-th edge lost, n >= 1");
+      until();
+      break;
+    }
+    return st;
+  }
+
+  void read_stimuli(Scenario& s) {
+    std::size_t i = 0;
+    for (const toml::table* t : root_.tables("stimulus")) {
+      TableReader r(file_, *t, fmt::format("stimulus[{}]", i++));
+      Stimulus st = read_stimulus(s, r, false);
+      if (!s.stimuli.empty() && st.at < s.stimuli.back().at)
+        r.fail("at", fmt::format("times in order: this stimulus ({} ns) is before the one above ({} ns)",
+                                 st.at.count(), s.stimuli.back().at.count()));
+      r.finish();
+      s.stimuli.push_back(std::move(st));
+    }
+  }
+
+  void read_host(Scenario& s) {
+    std::size_t i = 0;
+    std::set<std::string, std::less<>> names;
+    const duts::HostInterface* host = info_ != nullptr ? &info_->host : nullptr;
+    for (const toml::table* t : root_.tables("host")) {
+      TableReader r(file_, *t, fmt::format("host[{}]", i++));
+      HostAction h;
+      h.where = r.where();
+      h.at = r.duration("at");
+      if (h.at < Nanos{0} || h.at > s.end) r.fail("at", "a time within the run (0 .. campaign.end)");
+      if (!s.host.empty() && h.at < s.host.back().at)
+        r.fail("at", fmt::format("times in order: this action ({} ns) is before the one above ({} ns)",
+                                 h.at.count(), s.host.back().at.count()));
+      const bool write = r.has("write");
+      const bool read = r.has("read");
+      if (write == read) r.fail(write ? "read" : "write", "exactly one of write = [words] or read = word");
+      if (write) {
+        h.kind = HostAction::Kind::Write;
+        const toml::node* n = r.node("write");
+        const auto* arr = n->as_array();
+        if (arr == nullptr || arr->empty()) r.fail("write", "an array of output words, word 0 first");
+        for (const toml::node& e : *arr) {
+          const auto* v = e.as_integer();
+          if (v == nullptr || v->get() < 0 || v->get() > 0xFFFF)
+            fail(pos_of(e), r.key("write"), "16-bit words (0 .. 0xFFFF)");
+          h.words.push_back(static_cast<std::uint16_t>(v->get()));
+        }
+        if (host != nullptr && h.words.size() > host->output_words)
+          r.fail("write", fmt::format("at most {} output words for {}", host->output_words, info_->name));
+        if (host != nullptr && host->handshake && ((h.words[0] >> host->transmit_bit) & 1U) != 0U)
+          r.fail("write",
+                 fmt::format("word 0 with Transmit (bit {}) clear: the rig drives the handshake itself",
+                             host->transmit_bit));
+        h.name = r.opt_string("name").value_or("");
+        if (auto to = r.opt_duration("timeout")) {
+          if (*to <= Nanos{0}) r.fail("timeout", "a duration > 0");
+          h.timeout = *to;
+        }
+      } else {
+        h.kind = HostAction::Kind::Read;
+        const std::int64_t word = r.integer("read");
+        if (word < 0 || (host != nullptr && static_cast<std::size_t>(word) >= host->input_words))
+          r.fail("read", host != nullptr ? fmt::format("an input word 0 .. {}", host->input_words - 1)
+                                         : std::string("an input word >= 0"));
+        h.word = static_cast<std::size_t>(word);
+        h.name = r.string("name");
+        if (names.contains(h.name))
+          r.fail("name", fmt::format("a new observation name (\"{}\" is used above)", h.name));
+        names.insert(h.name);
+        h.unit = r.opt_string("unit").value_or("");
+        h.is_signed = r.opt_boolean("signed").value_or(false);
+      }
+      r.finish();
+      s.host.push_back(std::move(h));
+    }
+  }
+
+  static nlohmann::json to_json(const toml::node& n) {
+    if (const auto* i = n.as_integer()) return i->get();
+    if (const auto* f = n.as_floating_point()) return f->get();
+    if (const auto* b = n.as_boolean()) return b->get();
+    if (const auto* s = n.as_string()) return s->get();
+    if (const auto* a = n.as_array()) {
+      nlohmann::json out = nlohmann::json::array();
+      for (const toml::node& e : *a) out.push_back(to_json(e));
+      return out;
+    }
+    if (const auto* t = n.as_table()) {
+      nlohmann::json out = nlohmann::json::object();
+      for (const auto& [k, v] : *t) out[std::string(k.str())] = to_json(v);
+      return out;
+    }
+    return nullptr; // dates and times: refused by the check's schema
+  }
+
+  static bool is_line_param(std::string_view key) {
+    return key == "line" || key == "input" || key == "output" || key == "fault_output" ||
+           key.ends_with("_line");
+  }
+
+  void read_checks(Scenario& s) {
+    std::size_t i = 0;
+    for (const toml::table* t : root_.tables("check")) {
+      const std::string path = fmt::format("check[{}]", i++);
+      TableReader r(file_, *t, path);
+      CheckSpec c;
+      c.where = r.where();
+      c.kind = r.string("kind");
+      c.name = r.string("name");
+      if (s.check(c.name) != nullptr)
+        r.fail("name", fmt::format("a new check name (\"{}\" is used above)", c.name));
+      const checks::CheckKind* kind = checks::find_check_kind(c.kind);
+      if (kind == nullptr) {
+        std::vector<std::string> names;
+        for (const auto& k : checks::check_kinds()) names.push_back(k.name);
+        r.fail("kind", fmt::format("a check kind: one of {}", join(names)));
+      }
+      if (kind->needs_bisection) {
+        c.probe_at = r.opt_duration("probe_at").value_or(Nanos{0});
+        if (c.probe_at < Nanos{0} || c.probe_at >= s.end) r.fail("probe_at", "a time within the run");
+      }
+      for (const auto& [k, v] : *t) {
+        const std::string key(k.str());
+        if (key == "kind" || key == "name" || (kind->needs_bisection && key == "probe_at")) continue;
+        (void)r.node(key);
+        c.params[key] = to_json(v);
+        c.param_where[key] = pos_of(v);
+        if (is_line_param(key)) {
+          const auto* line = v.as_string();
+          if (line != nullptr && s.wire_for_rig(line->get()) == nullptr)
+            r.fail(key, fmt::format("a wired rig line (\"{}\" is not in [[wiring]])", line->get()));
+        }
+      }
+      const std::vector<std::string> problems = checks::validate_check_params(*kind, c.params);
+      if (!problems.empty()) {
+        // Point at the parameter the sentence names ('name'), if any.
+        const std::string& why = problems.front();
+        SourcePos at = c.where;
+        std::string key = path;
+        const std::size_t open = why.find('\'');
+        const std::size_t close = open == std::string::npos ? open : why.find('\'', open + 1);
+        if (close != std::string::npos) {
+          const std::string named = why.substr(open + 1, close - open - 1);
+          key = r.key(named);
+          if (const auto it = c.param_where.find(named); it != c.param_where.end()) at = it->second;
+        }
+        fail(at, key, why);
+      }
+      r.finish();
+      s.checks.push_back(std::move(c));
+    }
+  }
+
+  void read_faults(ScenarioFile& out) {
+    const Scenario& s = out.scenario;
+    std::size_t i = 0;
+    for (const toml::table* t : root_.tables("fault")) {
+      TableReader r(file_, *t, fmt::format("fault[{}]", i++));
+      FaultSpec f;
+      f.where = r.where();
+      f.name = r.string("name");
+      for (const FaultSpec& other : out.faults)
+        if (other.name == f.name)
+          r.fail("name", fmt::format("a new fault name (\"{}\" is used above)", f.name));
+      if (auto v = r.opt_string("variant")) {
+        if (info_ == nullptr) r.fail("variant", "device variants exist only for virtual models");
+        if (!info_->has_variant(*v)) r.fail("variant", variant_expected());
+        f.variant = *v;
+      }
+      if (const toml::table* sig = r.opt_table("signal")) {
+        TableReader sr(file_, *sig, r.key("signal"));
+        f.signal = read_stimulus(s, sr, true);
+        sr.finish();
+      }
+      if (!f.variant && !f.signal) r.fail("variant", "a device variant or a signal = { kind = ... } fault");
+      const toml::node* by = r.node("caught_by");
+      if (by == nullptr) r.fail("caught_by", "missing: the check (or checks) that must catch this fault");
+      auto add = [&](const toml::node& n) {
+        const auto* name = n.as_string();
+        if (name == nullptr) fail(pos_of(n), r.key("caught_by"), "a check name or an array of check names");
+        if (s.check(name->get()) == nullptr)
+          fail(pos_of(n), r.key("caught_by"),
+               fmt::format("a check of this campaign (\"{}\" is not)", name->get()));
+        f.caught_by.push_back(name->get());
+      };
+      if (const auto* arr = by->as_array()) {
+        if (arr->empty()) r.fail("caught_by", "at least one check name");
+        for (const toml::node& n : *arr) add(n);
+      } else {
+        add(*by);
+      }
+      r.finish();
+      out.faults.push_back(std::move(f));
+    }
+  }
+
+  const std::string& file_;
+  TableReader root_;
+  const duts::DutInfo* info_ = nullptr;
+};
+
+} // namespace
+
+ScenarioFile read_scenario_file(const std::string& file, const toml::table& root) {
+  return Reader(file, root).read();
+}
+
+} // namespace hilrig::campaign

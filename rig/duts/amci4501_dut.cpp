@@ -1,0 +1,127 @@
+#include "rig/duts/amci4501_dut.hpp"
+
+#include <array>
+#include <memory>
+#include <stdexcept>
+
+#include "drivers/virtual/virtual_bus.hpp"
+#include "models/amci4501/amci4501.hpp"
+
+namespace hilrig::duts {
+
+namespace {
+
+namespace m = hilrig::models::amci4501;
+
+// Pin names, in the order of Pins' fields.
+constexpr std::array<const char*, 6> kPinNames{"A", "B", "Z", "START", "LATCH", "CYCLE_OUT"};
+
+class Amci4501Dut final : public Dut {
+public:
+  Amci4501Dut(Scheduler& scheduler, const m::Params& params) : scheduler_(scheduler), params_(params) {}
+
+  // Unwired inputs get a private idle line ("amci4501.<pin>"); Z stays unconnected.
+  void attach(virt::VirtualBus& bus,
+              const std::map<std::string, std::string, std::less<>>& pin_to_line) override {
+    std::array<std::string, kPinNames.size()> lines;
+    for (std::size_t i = 0; i < kPinNames.size(); ++i) lines[i] = std::string("amci4501.") + kPinNames[i];
+    bool z_wired = false;
+    for (const auto& [pin, line] : pin_to_line) {
+      std::size_t i = 0;
+      while (i < kPinNames.size() && pin != kPinNames[i]) ++i;
+      if (i == kPinNames.size()) throw std::invalid_argument("amci4501 has no pin " + pin);
+      lines[i] = line;
+      if (i == 2) z_wired = true;
+    }
+    const m::Pins pins{bus.line(lines[0]).reader(), bus.line(lines[1]).reader(),
+                       bus.line(lines[3]).reader(), bus.line(lines[4]).reader(),
+                       bus.line(lines[5]).driver(), z_wired ? &bus.line(lines[2]).reader() : nullptr};
+    module_ = std::make_unique<m::Amci4501>(scheduler_, pins, params_);
+  }
+
+  void host_write(std::size_t word, std::uint16_t value) override {
+    if (!module_) throw std::logic_error("amci4501: host write before attach");
+    module_->write_output(word, value);
+  }
+  [[nodiscard]] std::uint16_t host_read(std::size_t word) const override {
+    if (!module_) throw std::logic_error("amci4501: host read before attach");
+    return module_->input_words().at(word);
+  }
+
+private:
+  Scheduler& scheduler_;
+  m::Params params_;
+  std::unique_ptr<m::Amci4501> module_;
+};
+
+m::Jumper jumper(const std::string& text, const char* which) {
+  if (text == "rising") return m::Jumper::Rising;
+  if (text == "falling") return m::Jumper::Falling;
+  throw std::invalid_argument(std::string("amci4501 ") + which + " is rising or falling, not " + text);
+}
+
+} // namespace
+
+DutInfo amci4501_info() {
+  DutInfo info;
+  info.name = "amci4501";
+  info.description = "AMCI 4501 registration module, six modes (virtual model, spec/amci4501.md)";
+  info.pins = {
+      {"A", PinDirection::Input, "encoder channel A (+A/-A, 5 V differential)", false},
+      {"B", PinDirection::Input, "encoder channel B", false},
+      {"Z", PinDirection::Input, "encoder index Z (resets the count in mode 2)", false},
+      {"START", PinDirection::Input, "Start input (pin 6)", false},
+      {"LATCH", PinDirection::Input, "Latch input (pin 7)", false},
+      {"CYCLE_OUT", PinDirection::Output, "Cycle Output (pins 5/4), high while sinking", false},
+  };
+  const m::Params d{};
+  info.params = {
+      {"throughput", ParamKind::Duration, d.throughput, "input edge to response (L281)"},
+      {"mode5_throughput", ParamKind::Duration, d.mode5_throughput, "the same in mode 5 (L49, A1)"},
+      {"late_throughput", ParamKind::Duration, d.late_throughput, "response delay of variant late_outputs"},
+      {"timer_resolution", ParamKind::Duration, d.timer_resolution, "time measurement tick (L26)"},
+      {"velocity_window", ParamKind::Duration, d.velocity_window, "velocity counts per window (L114)"},
+      {"start_jumper", ParamKind::Text, std::string("rising"), "JP6: rising (pins 1-2) or falling (3-4)"},
+      {"latch_jumper", ParamKind::Text, std::string("rising"), "JP5: rising (pins 1-2) or falling (3-4)"},
+      {"no_response_missed", ParamKind::Integer, std::int64_t{d.no_response_missed},
+       "missed cycles before No Response (A4)"},
+      {"fw_version", ParamKind::Integer, std::int64_t{d.fw_version},
+       "firmware: 2 = mode 4 filters, 3 = timeout report"},
+      {"mode4_timeout_sets_new", ParamKind::Boolean, d.mode4_timeout_sets_new,
+       "bit 0 with the mode 4 timeout report"},
+      {"z_resets_in_all_modes", ParamKind::Boolean, d.z_resets_in_all_modes,
+       "Z zeroes the count outside mode 2"},
+      {"lower_word_over_999_is_error", ParamKind::Boolean, d.lower_word_over_999_is_error,
+       "setpoint lower word > 999 is a Parameter Error"},
+      {"saturate_latch_counts", ParamKind::Boolean, d.saturate_latch_counts, "mode 2 L values cap at 32,767"},
+  };
+  for (const auto& v : m::kVariantNames)
+    info.variants.push_back({std::string(v.name), v.variant == m::Variant::Correct
+                                                      ? "as specified"
+                                                      : "wrong on purpose (models/amci4501/variants.hpp)"});
+  info.host = HostInterface{m::kWords, m::kWords, true, 15, 15};
+  info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
+                 std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
+    m::Params p;
+    p.throughput = params.duration("throughput");
+    p.mode5_throughput = params.duration("mode5_throughput");
+    p.late_throughput = params.duration("late_throughput");
+    p.timer_resolution = params.duration("timer_resolution");
+    p.velocity_window = params.duration("velocity_window");
+    p.start_jumper = jumper(params.text("start_jumper"), "start_jumper");
+    p.latch_jumper = jumper(params.text("latch_jumper"), "latch_jumper");
+    p.no_response_missed = static_cast<unsigned>(params.integer("no_response_missed"));
+    p.fw_version = static_cast<unsigned>(params.integer("fw_version"));
+    p.mode4_timeout_sets_new = params.boolean("mode4_timeout_sets_new");
+    p.z_resets_in_all_modes = params.boolean("z_resets_in_all_modes");
+    p.lower_word_over_999_is_error = params.boolean("lower_word_over_999_is_error");
+    p.saturate_latch_counts = params.boolean("saturate_latch_counts");
+    const auto v = m::variant_from_string(variant);
+    if (!v) throw std::invalid_argument("amci4501 has no variant " + std::string(variant));
+    p.variant = *v;
+    return std::make_unique<Amci4501Dut>(scheduler, p);
+  };
+  return info;
+}
+
+} // namespace hilrig::duts

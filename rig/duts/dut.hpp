@@ -1,0 +1,121 @@
+#pragma once
+// A DUT adapter: what the rig needs of any board, real or virtual. Pins by name, attach
+// to the virtual bus by the campaign's wiring, the host's command/status words, and
+// variants (models that are wrong on purpose) by name. Narrow on purpose: a device's
+// own behaviour lives in its model, not here.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "core/scheduler.hpp"
+#include "core/time.hpp"
+
+namespace hilrig::virt {
+class VirtualBus;
+}
+
+namespace hilrig::duts {
+
+// Direction as the board sees it: the rig drives a board's Input, captures its Output.
+enum class PinDirection : std::uint8_t { Input, Output };
+
+struct PinInfo {
+  std::string name;
+  PinDirection direction = PinDirection::Input;
+  std::string description;
+  bool analog = false; // wired to an analog channel (resolver stators), not a digital line
+};
+
+enum class ParamKind : std::uint8_t { Integer, Number, Duration, Boolean, Text };
+[[nodiscard]] const char* to_string(ParamKind kind);
+
+// A parameter's value, already of its declared kind (Duration is Nanos).
+using ParamValue = std::variant<std::int64_t, double, Nanos, bool, std::string>;
+
+struct ParamInfo {
+  std::string name;
+  ParamKind kind = ParamKind::Integer;
+  ParamValue default_value;
+  std::string description;
+};
+
+struct VariantInfo {
+  std::string name;
+  std::string description;
+};
+
+// The host's word interface (EtherNet/IP or Modbus registers on a real board).
+struct HostInterface {
+  std::size_t output_words = 0; // host -> board (command words)
+  std::size_t input_words = 0;  // board -> host (status and data words)
+  // The AMCI handshake: the board acts on Transmit (output word 0, this bit) going 0->1
+  // and answers with Acknowledge (input word 0, this bit).
+  bool handshake = true;
+  unsigned transmit_bit = 15;
+  unsigned acknowledge_bit = 15;
+};
+
+// Every parameter of a DUT with its value (the campaign's, or the default).
+class DutParams {
+public:
+  DutParams() = default;
+  explicit DutParams(std::map<std::string, ParamValue, std::less<>> values) : values_(std::move(values)) {}
+  void set(std::string name, ParamValue value) { values_[std::move(name)] = std::move(value); }
+  [[nodiscard]] std::int64_t integer(std::string_view name) const;
+  [[nodiscard]] double number(std::string_view name) const;
+  [[nodiscard]] Nanos duration(std::string_view name) const;
+  [[nodiscard]] bool boolean(std::string_view name) const;
+  [[nodiscard]] const std::string& text(std::string_view name) const;
+  [[nodiscard]] const std::map<std::string, ParamValue, std::less<>>& values() const { return values_; }
+
+private:
+  [[nodiscard]] const ParamValue& at(std::string_view name) const;
+  std::map<std::string, ParamValue, std::less<>> values_;
+};
+
+class Dut {
+public:
+  virtual ~Dut() = default;
+  // Connects pins to bus lines: pin name -> bus line name, for the wired pins only.
+  // Inputs become readers of their line; outputs become its driver; analog pins read the
+  // bus's analog channel of that name.
+  virtual void attach(virt::VirtualBus& bus,
+                      const std::map<std::string, std::string, std::less<>>& pin_to_line) = 0;
+  // The host writes one output word / reads one input word, at the scheduler's now.
+  virtual void host_write(std::size_t word, std::uint16_t value) = 0;
+  [[nodiscard]] virtual std::uint16_t host_read(std::size_t word) const = 0;
+};
+
+// seed: the run's seed, for what a real board leaves to chance (e.g. its scan phase).
+using DutFactory = std::function<std::unique_ptr<Dut>(Scheduler&, const DutParams&, std::string_view variant,
+                                                      std::uint64_t seed)>;
+
+// What a campaign and `hilrig list` know of a device, and how to make its virtual model.
+struct DutInfo {
+  std::string name; // as a campaign names it: [dut] model = "reference_pls"
+  std::string description;
+  std::vector<PinInfo> pins;
+  std::vector<ParamInfo> params;
+  std::vector<VariantInfo> variants; // "nominal" first
+  HostInterface host;
+  DutFactory make;
+
+  [[nodiscard]] const PinInfo* pin(std::string_view pin_name) const;
+  [[nodiscard]] const ParamInfo* param(std::string_view param_name) const;
+  [[nodiscard]] bool has_variant(std::string_view variant) const;
+  // Defaults for every parameter, overridden by the given values.
+  [[nodiscard]] DutParams with_defaults(const std::map<std::string, ParamValue, std::less<>>& given) const;
+};
+
+// Every DUT this build can simulate, in name order.
+[[nodiscard]] const std::vector<DutInfo>& dut_registry();
+[[nodiscard]] const DutInfo* find_dut(std::string_view name);
+
+} // namespace hilrig::duts

@@ -1,0 +1,91 @@
+// The registry of DUTs this build can simulate. A new adapter adds one line to
+// dut_registry() below and its files to rig/duts/CMakeLists.txt.
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "rig/duts/dut.hpp"
+#include "rig/duts/reference_pls.hpp"
+#ifdef HILRIG_HAVE_ANS1_MODEL
+#include "rig/duts/ans1_adapter.hpp"
+#endif
+#ifdef HILRIG_HAVE_SSI7361_MODEL
+#include "rig/duts/ssi7361_dut.hpp"
+#endif
+
+namespace hilrig::duts {
+
+const char* to_string(ParamKind kind) {
+  switch (kind) {
+  case ParamKind::Integer:
+    return "integer";
+  case ParamKind::Number:
+    return "number";
+  case ParamKind::Duration:
+    return "duration";
+  case ParamKind::Boolean:
+    return "boolean";
+  case ParamKind::Text:
+    return "string";
+  }
+  return "?";
+}
+
+const ParamValue& DutParams::at(std::string_view name) const {
+  const auto it = values_.find(name);
+  if (it == values_.end()) throw std::out_of_range("no DUT parameter " + std::string(name));
+  return it->second;
+}
+std::int64_t DutParams::integer(std::string_view name) const { return std::get<std::int64_t>(at(name)); }
+double DutParams::number(std::string_view name) const { return std::get<double>(at(name)); }
+Nanos DutParams::duration(std::string_view name) const { return std::get<Nanos>(at(name)); }
+bool DutParams::boolean(std::string_view name) const { return std::get<bool>(at(name)); }
+const std::string& DutParams::text(std::string_view name) const { return std::get<std::string>(at(name)); }
+
+const PinInfo* DutInfo::pin(std::string_view pin_name) const {
+  const auto it =
+      std::find_if(pins.begin(), pins.end(), [&](const PinInfo& p) { return p.name == pin_name; });
+  return it == pins.end() ? nullptr : &*it;
+}
+
+const ParamInfo* DutInfo::param(std::string_view param_name) const {
+  const auto it =
+      std::find_if(params.begin(), params.end(), [&](const ParamInfo& p) { return p.name == param_name; });
+  return it == params.end() ? nullptr : &*it;
+}
+
+bool DutInfo::has_variant(std::string_view variant) const {
+  return std::any_of(variants.begin(), variants.end(),
+                     [&](const VariantInfo& v) { return v.name == variant; });
+}
+
+DutParams DutInfo::with_defaults(const std::map<std::string, ParamValue, std::less<>>& given) const {
+  DutParams out;
+  for (const ParamInfo& p : params) out.set(p.name, p.default_value);
+  for (const auto& [param_name, value] : given) out.set(param_name, value);
+  return out;
+}
+
+const std::vector<DutInfo>& dut_registry() {
+  static const std::vector<DutInfo> registry = [] {
+    std::vector<DutInfo> r;
+    r.push_back(reference_pls_info());
+#ifdef HILRIG_HAVE_ANS1_MODEL
+    r.push_back(ans1_info());
+#endif
+#ifdef HILRIG_HAVE_SSI7361_MODEL
+    r.push_back(ssi7361_info());
+#endif
+    std::sort(r.begin(), r.end(), [](const DutInfo& a, const DutInfo& b) { return a.name < b.name; });
+    return r;
+  }();
+  return registry;
+}
+
+const DutInfo* find_dut(std::string_view name) {
+  const auto& r = dut_registry();
+  const auto it = std::find_if(r.begin(), r.end(), [&](const DutInfo& d) { return d.name == name; });
+  return it == r.end() ? nullptr : &*it;
+}
+
+} // namespace hilrig::duts

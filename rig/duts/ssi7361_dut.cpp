@@ -1,0 +1,121 @@
+#include "rig/duts/ssi7361_dut.hpp"
+
+#include <memory>
+#include <stdexcept>
+
+#include "drivers/virtual/virtual_bus.hpp"
+#include "models/ssi7361/ssi7361.hpp"
+
+namespace hilrig::duts {
+
+namespace {
+
+namespace s = hilrig::models::ssi7361;
+
+constexpr const char* kPinClock = "CLK";
+constexpr const char* kPinData = "DATA";
+
+class Ssi7361Dut final : public Dut {
+public:
+  Ssi7361Dut(Scheduler& scheduler, const s::Params& params) : scheduler_(scheduler), params_(params) {}
+
+  // The module starts clocking when attached: its lines exist only then.
+  void attach(virt::VirtualBus& bus,
+              const std::map<std::string, std::string, std::less<>>& pin_to_line) override {
+    std::string clock = "ssi7361.CLK";
+    std::string data = "ssi7361.DATA";
+    for (const auto& [pin, line] : pin_to_line) {
+      if (pin == kPinClock)
+        clock = line;
+      else if (pin == kPinData)
+        data = line;
+      else
+        throw std::invalid_argument("ssi7361 has no pin " + pin);
+    }
+    virt::DigitalLine& clk = bus.line(clock, Level::High);
+    virt::DigitalLine& dat = bus.line(data, Level::High);
+    module_ = std::make_unique<s::Ssi7361>(scheduler_, clk.driver(), dat.reader(), params_);
+  }
+
+  void host_write(std::size_t word, std::uint16_t value) override { module().write_command(word, value); }
+  [[nodiscard]] std::uint16_t host_read(std::size_t word) const override {
+    if (!module_) throw std::logic_error("ssi7361: host read before attach");
+    return module_->status_words().at(word);
+  }
+
+private:
+  s::Ssi7361& module() {
+    if (!module_) throw std::logic_error("ssi7361: host write before attach");
+    return *module_;
+  }
+
+  Scheduler& scheduler_;
+  s::Params params_;
+  std::unique_ptr<s::Ssi7361> module_;
+};
+
+} // namespace
+
+DutInfo ssi7361_info() {
+  DutInfo info;
+  info.name = "ssi7361";
+  info.description = "AMCI 7361 SSI interface module, the SSI master (virtual model, spec/ssi7361.md)";
+  info.pins = {
+      {kPinClock, PinDirection::Output, "SSI clock CLK+/- (idles high; 25 clocks per frame)", false},
+      {kPinData, PinDirection::Input, "SSI data DATA+/- from the transducer (idle high)", false},
+  };
+  const s::Params d{};
+  info.params = {
+      {"first_frame", ParamKind::Duration, d.first_frame, "F1 of the first frame"},
+      {"sample_at_rising_edge", ParamKind::Boolean, false,
+       "sample bit k at R_k instead of half a period later"},
+      {"invert_before_gray", ParamKind::Boolean, d.invert_before_gray,
+       "Data Logic inversion before Gray (A14)"},
+      {"count_direction_wrap", ParamKind::Boolean, d.count_direction_wrap,
+       "negative direction maps 0 to 0 (A12)"},
+      {"rate_rounding", ParamKind::Text, std::string("truncate"), "rate of change: truncate or nearest (A9)"},
+      {"rate_overflow_limit", ParamKind::Integer, d.rate_overflow_limit, "ROVErr above this |RoC| (A3)"},
+      {"preset_restarts_rate_window", ParamKind::Boolean, d.preset_restarts_rate_window,
+       "an applied preset starts a new rate window"},
+      {"format_clears_offset", ParamKind::Text, std::string("when_changed"),
+       "Format clears LO: when_changed or always (A27)"},
+      {"preset_limit", ParamKind::Integer, std::int64_t{d.preset_limit}, "largest |Preset| accepted (A2)"},
+      {"multiplier_may_equal_divisor", ParamKind::Boolean, d.multiplier_may_equal_divisor, "MUL <= DIV (A4)"},
+      {"acknowledge_delay", ParamKind::Duration, d.acknowledge_delay, "TRMT edge to ACK"},
+  };
+  for (const auto& v : s::kVariantNames)
+    info.variants.push_back({std::string(v.name), v.variant == s::Variant::Correct
+                                                      ? "as specified"
+                                                      : "wrong on purpose (models/ssi7361/variants.hpp)"});
+  info.host = HostInterface{s::kCommandWords, s::kStatusWords, true, 15, 15};
+  info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
+                 std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
+    s::Params p;
+    p.first_frame = params.duration("first_frame");
+    p.sample_instant = params.boolean("sample_at_rising_edge") ? s::SampleInstant::AtRisingEdge
+                                                               : s::SampleInstant::HalfPeriodAfterRising;
+    p.invert_before_gray = params.boolean("invert_before_gray");
+    p.count_direction_wrap = params.boolean("count_direction_wrap");
+    const std::string& rounding = params.text("rate_rounding");
+    if (rounding != "truncate" && rounding != "nearest")
+      throw std::invalid_argument("ssi7361 rate_rounding is truncate or nearest, not " + rounding);
+    p.rate_rounding = rounding == "nearest" ? s::RateRounding::Nearest : s::RateRounding::Truncate;
+    p.rate_overflow_limit = params.integer("rate_overflow_limit");
+    p.preset_restarts_rate_window = params.boolean("preset_restarts_rate_window");
+    const std::string& clears = params.text("format_clears_offset");
+    if (clears != "when_changed" && clears != "always")
+      throw std::invalid_argument("ssi7361 format_clears_offset is when_changed or always, not " + clears);
+    p.format_clears_offset =
+        clears == "always" ? s::FormatClearsOffset::Always : s::FormatClearsOffset::WhenSetupChanges;
+    p.preset_limit = static_cast<std::int32_t>(params.integer("preset_limit"));
+    p.multiplier_may_equal_divisor = params.boolean("multiplier_may_equal_divisor");
+    p.acknowledge_delay = params.duration("acknowledge_delay");
+    const auto v = s::variant_from_string(variant);
+    if (!v) throw std::invalid_argument("ssi7361 has no variant " + std::string(variant));
+    p.variant = *v;
+    return std::make_unique<Ssi7361Dut>(scheduler, p);
+  };
+  return info;
+}
+
+} // namespace hilrig::duts

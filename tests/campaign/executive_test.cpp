@@ -1,0 +1,261 @@
+// The executive end to end on the reference PLS: the shipped campaigns' verdicts, faults
+// caught (and a fault nobody catches failing the campaign), determinism, shards, the
+// debounce bisection, the stimuli as they appear on the bus, and rig faults.
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "rig/campaign/campaign_parser.hpp"
+#include "rig/campaign/executive.hpp"
+#include "rig/results/merge.hpp"
+#include "rig/results/results_json.hpp"
+#include "test_support.hpp"
+
+namespace hilrig::campaign {
+namespace {
+
+using namespace hilrig::literals;
+using rig::Outcome;
+using test::find;
+using test::run_everything;
+
+TEST(Executive, ShippedPassingCampaignPasses) {
+  const Campaign c = load_campaign(test::shipped("reference_pls_pass.toml"));
+  ASSERT_EQ(c.runs.size(), 4U); // 2 sweep points (delay 50 us, 100 us) x repeat 2
+  const rig::CampaignResult r = run_everything(c);
+  EXPECT_EQ(r.verdict, Outcome::Pass);
+  for (const auto& run : r.runs) {
+    EXPECT_TRUE(run.error.empty()) << run.error;
+    // Latency is delay + (0 .. scan): [50, 250] us at delay 50, [100, 300] us at delay 100.
+    const bool slow = run.name.find("100us") != std::string::npos;
+    const double lo = slow ? 100.0 : 50.0;
+    const double hi = slow ? 300.0 : 250.0;
+    for (const char* check : {"on_forward", "off_forward", "on_backward"}) {
+      const auto* min = find(run, std::string(check) + ".min");
+      const auto* max = find(run, std::string(check) + ".max");
+      const auto* count = find(run, std::string(check) + ".count");
+      ASSERT_NE(min, nullptr);
+      EXPECT_GE(min->value, lo) << run.name << " " << check;
+      EXPECT_LE(max->value, hi) << run.name << " " << check;
+      // Three forward (or backward) swings cross each setpoint once each way.
+      EXPECT_EQ(count->value, 3.0) << run.name << " " << check;
+    }
+    // The host wrote the setpoints (100, 300) and read them back.
+    ASSERT_EQ(run.observations.size(), 2U);
+    EXPECT_EQ(run.observations[0].value, 100.0);
+    EXPECT_EQ(run.observations[1].value, 300.0);
+  }
+}
+
+TEST(Executive, ShippedFaultCampaignCatchesEveryFault) {
+  const Campaign c = load_campaign(test::shipped("reference_pls_faults.toml"));
+  ASSERT_EQ(c.faults.size(), 4U);
+  ASSERT_EQ(c.runs.size(), 5U); // one nominal run, one run per fault
+  const rig::CampaignResult r = run_everything(c);
+  EXPECT_EQ(r.verdict, Outcome::Pass);
+  EXPECT_EQ(r.totals.faults, 4U);
+  EXPECT_EQ(r.totals.faults_caught, 4U);
+  for (const auto& run : r.runs) {
+    if (run.fault == "late") {
+      // One extra scan: [250, 450] us, over the 250 us limit.
+      EXPECT_GE(find(run, "on_latency.min")->value, 250.0);
+      EXPECT_EQ(find(run, "on_latency.max")->outcome, Outcome::Fail);
+    }
+    if (run.fault == "off-by-one") {
+      // One count (250 us at 600 rpm) late: [300, 500] us.
+      EXPECT_GE(find(run, "on_latency.min")->value, 300.0);
+      EXPECT_LE(find(run, "on_latency.max")->value, 500.0);
+    }
+    if (run.fault == "stuck-off" || run.fault == "lost-A-edges") {
+      EXPECT_EQ(find(run, "on_latency.missing")->outcome, Outcome::Fail);
+    }
+  }
+}
+
+TEST(Executive, AFaultNoCheckCatchesFailsTheCampaign) {
+  // EN is not wired, so the no-filter variant behaves as the nominal board: uncaught.
+  const Campaign c = parse_campaign(
+      test::kPlsCampaign + "[[fault]]\nname = \"nf\"\nvariant = \"no-filter\"\ncaught_by = \"on_latency\"\n",
+      "t.toml");
+  const rig::CampaignResult r = run_everything(c);
+  EXPECT_EQ(r.totals.faults, 1U);
+  EXPECT_EQ(r.totals.faults_caught, 0U);
+  EXPECT_EQ(r.verdict, Outcome::Fail);
+}
+
+TEST(Executive, SameSeedGivesIdenticalResultsAndTraces) {
+  const Campaign c = load_campaign(test::shipped("reference_pls_faults.toml"));
+  const Executive e(c);
+  for (const RunSpec& run : c.runs) {
+    const RunOutput a = e.run(run);
+    const RunOutput b = e.run(run);
+    ASSERT_TRUE(a.trace && b.trace);
+    EXPECT_EQ(a.trace->content_hash(), b.trace->content_hash()) << run.label;
+  }
+  EXPECT_EQ(rig::to_json_text(run_everything(c)), rig::to_json_text(run_everything(c)));
+}
+
+TEST(Executive, TheSeedMovesTheScanPhase) {
+  // The reference PLS draws its scan phase from the run's seed: two seeds, two phases,
+  // different latencies for the same crossings.
+  Campaign c = parse_campaign(test::kPlsCampaign, "t.toml");
+  const auto r1 = Executive(c).run_all(plan_runs(c, 1), 1, rig::Shard{0, 1});
+  const auto r2 = Executive(c).run_all(plan_runs(c, 2), 2, rig::Shard{0, 1});
+  EXPECT_NE(find(r1.runs[0], "on_latency.min")->value, find(r2.runs[0], "on_latency.min")->value);
+}
+
+TEST(Executive, ShardsPartitionTheRunsByIndexModN) {
+  const Campaign c = load_campaign(test::shipped("reference_pls_pass.toml"));
+  std::set<std::size_t> seen;
+  std::vector<rig::CampaignResult> parts;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto runs = shard(c.runs, k, 3);
+    for (const RunSpec& r : runs) {
+      EXPECT_EQ(r.index % 3, k);
+      EXPECT_TRUE(seen.insert(r.index).second) << "run " << r.index << " in two shards";
+    }
+    parts.push_back(Executive(c).run_all(runs, c.seed, rig::Shard{static_cast<std::uint32_t>(k), 3}));
+  }
+  EXPECT_EQ(seen.size(), c.runs.size());
+  // Merged shards equal the unsharded campaign.
+  EXPECT_TRUE(rig::same_content(rig::merge_shards(parts), run_everything(c)));
+}
+
+TEST(Executive, RunSeedsDependOnIndexAndBaseSeed) {
+  EXPECT_NE(run_seed(1, 0), run_seed(1, 1));
+  EXPECT_NE(run_seed(1, 0), run_seed(2, 0));
+  EXPECT_EQ(run_seed(1, 3), run_seed(1, 3));
+}
+
+// EN wired and held by the shaft inside the window (count 150): a pulse on EN turns OUT
+// on only when EN is high at a scan at least `filter` (1 ms) after it rose. With scans
+// every 200 us the narrowest accepted pulse is in (1000, 1200] us; with no filter, (0, 200].
+const std::string kDebounce = R"([campaign]
+name = "debounce"
+end = "6ms"
+[dut]
+model = "reference_pls"
+[dut.params]
+preset = 150
+filter = "1ms"
+[[wiring]]
+rig = "en"
+board = "EN"
+[[wiring]]
+rig = "ls1"
+board = "OUT"
+[[check]]
+kind = "debounce"
+name = "en_filter"
+input = "en"
+output = "ls1"
+filter_us = 1000
+tolerance_us = 250
+narrow_us = 100
+wide_us = 3000
+resolution_us = 5
+probe_at = "1ms"
+)";
+
+TEST(Executive, DebounceBoundaryFoundByBisection) {
+  const Campaign c = parse_campaign(kDebounce, "t.toml");
+  const auto r = run_everything(c);
+  const auto* boundary = find(r.runs[0], "en_filter.boundary");
+  ASSERT_NE(boundary, nullptr);
+  EXPECT_GT(boundary->value, 1000.0);
+  EXPECT_LE(boundary->value, 1200.0 + 5.0);
+  EXPECT_EQ(r.verdict, Outcome::Pass);
+}
+
+TEST(Executive, DebounceCatchesAnUnfilteredInput) {
+  const Campaign c = parse_campaign(
+      kDebounce + "[[fault]]\nname = \"nf\"\nvariant = \"no-filter\"\ncaught_by = \"en_filter\"\n", "t.toml");
+  const auto r = run_everything(c);
+  ASSERT_EQ(r.runs.size(), 2U);
+  const auto* boundary = find(r.runs[1], "en_filter.boundary");
+  ASSERT_NE(boundary, nullptr);
+  EXPECT_LE(boundary->value, 200.0 + 5.0);
+  EXPECT_EQ(r.totals.faults_caught, 1U);
+}
+
+TEST(Executive, StimuliAppearOnTheBusAsWritten) {
+  // Bounce: closes at 2 ms, opens/closes every 100 us for 2 bounces, settles at 2.4 ms.
+  // Pulse: high at 3 ms for 250 us. Stuck low from 4 ms to 4.5 ms over a level-high at 4.2 ms.
+  const Campaign c = parse_campaign(R"([campaign]
+name = "stimuli"
+end = "6ms"
+[dut]
+model = "reference_pls"
+[[wiring]]
+rig = "en"
+board = "EN"
+[[stimulus]]
+kind = "bounce"
+line = "en"
+at = "2ms"
+edges = 2
+period = "100us"
+[[stimulus]]
+kind = "level"
+line = "en"
+at = "2.9ms"
+level = "low"
+[[stimulus]]
+kind = "pulse"
+line = "en"
+at = "3ms"
+width = "250us"
+[[stimulus]]
+kind = "stuck"
+line = "en"
+at = "4ms"
+until = "4.5ms"
+level = "high"
+[[stimulus]]
+kind = "glitch"
+line = "en"
+at = "5ms"
+width = "10us"
+)",
+                                    "t.toml");
+  const RunOutput out = Executive(c).run(c.runs[0]);
+  ASSERT_TRUE(out.result.error.empty()) << out.result.error;
+  const std::vector<Edge> expected = {
+      {2000_us, Level::High}, {2100_us, Level::Low}, {2200_us, Level::High}, {2300_us, Level::Low},
+      {2400_us, Level::High}, {2900_us, Level::Low}, {3000_us, Level::High}, {3250_us, Level::Low},
+      {4000_us, Level::High}, {4500_us, Level::Low}, {5000_us, Level::High}, {5010_us, Level::Low},
+  };
+  EXPECT_EQ(out.trace->edges_of("en"), expected);
+}
+
+TEST(Executive, MissingEdgesFaultDropsEveryNthEdge) {
+  // Every 2nd A edge lost from 0 ms to 50 ms; afterwards the line follows the encoder again.
+  const Campaign c =
+      parse_campaign(test::kPlsCampaign + "[[stimulus]]\nkind = \"missing_edges\"\nline = \"enc.A\"\nat = "
+                                          "\"0ms\"\nuntil = \"50ms\"\nevery = 2\n",
+                     "t.toml");
+  const Campaign nominal = parse_campaign(test::kPlsCampaign, "t.toml");
+  const auto faulty = Executive(c).run(c.runs[0]).trace->edges_of("enc.A");
+  const auto clean = Executive(nominal).run(nominal.runs[0]).trace->edges_of("enc.A");
+  // In 50 ms at 4000 counts/s there are 200 counts, 100 of them on A, alternating rise and
+  // fall. The 1st (a rise) is played; the 2nd (a fall) is lost, so the 3rd (a rise) changes
+  // nothing, the 4th is lost, and so on: only the first A edge of the window appears.
+  std::size_t clean_in = 0, faulty_in = 0;
+  for (const Edge& e : clean) clean_in += e.time < 50_ms ? 1U : 0U;
+  for (const Edge& e : faulty) faulty_in += e.time < 50_ms ? 1U : 0U;
+  EXPECT_EQ(clean_in, 100U);
+  EXPECT_EQ(faulty_in, 1U);
+  EXPECT_GT(faulty.size(), 0U);
+}
+
+TEST(Executive, UnavailableBackendIsARigFault) {
+  Campaign c = parse_campaign(test::kPlsCampaign, "t.toml");
+  c.points[0].dut.backend = "gpiod";
+  const RunOutput out = Executive(c).run(c.runs[0]);
+  EXPECT_NE(out.result.error.find("gpiod"), std::string::npos);
+  EXPECT_EQ(rig::run_outcome(out.result), Outcome::Error);
+}
+
+} // namespace
+} // namespace hilrig::campaign

@@ -1,0 +1,325 @@
+// A malformed or inconsistent campaign is rejected before anything runs, with
+// "file:line:column: key: what was expected". Line and column numbers below are counted by
+// hand in the text of each case (line 1 is the first line of the raw string).
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rig/campaign/campaign_parser.hpp"
+
+namespace hilrig::campaign {
+namespace {
+
+using namespace hilrig::literals;
+
+// A valid campaign, 30 lines; cases replace one line or append lines.
+const std::string kBase = R"([campaign]
+name = "t"
+end = "100ms"
+[dut]
+model = "reference_pls"
+[dut.params]
+on = 10
+off = 20
+[[wiring]]
+rig = "enc.A"
+board = "A"
+[[wiring]]
+rig = "enc.B"
+board = "B"
+[[wiring]]
+rig = "ls1"
+board = "OUT"
+[motion]
+[[motion.move]]
+kind = "constant"
+speed_rpm = 60
+duration = "100ms"
+[[check]]
+kind = "throughput"
+name = "on"
+output = "ls1"
+setpoint = 10
+limit_us = 250
+[encoder]
+lines = 100
+)";
+
+std::string replace_line(const std::string& text, int line, const std::string& with) {
+  std::size_t begin = 0;
+  for (int i = 1; i < line; ++i) begin = text.find('\n', begin) + 1;
+  const std::size_t end = text.find('\n', begin);
+  return text.substr(0, begin) + with + text.substr(end);
+}
+
+// The error's "file:line:column: key: " prefix, or "accepted" when the text parses.
+std::string error_of(const std::string& text) {
+  try {
+    (void)parse_campaign(text, "t.toml");
+    return "accepted";
+  } catch (const CampaignError& e) {
+    return e.what();
+  }
+}
+
+::testing::AssertionResult rejected_at(const std::string& text, const std::string& prefix) {
+  const std::string got = error_of(text);
+  if (got.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "expected prefix \"" << prefix << "\", got \"" << got << "\"";
+}
+
+TEST(CampaignParser, BaseCampaignIsAccepted) {
+  const Campaign c = parse_campaign(kBase, "t.toml");
+  EXPECT_EQ(c.name, "t");
+  ASSERT_EQ(c.points.size(), 1U);
+  EXPECT_EQ(c.points[0].end, 100_ms);
+  EXPECT_EQ(c.points[0].wiring.size(), 3U);
+  EXPECT_EQ(c.points[0].encoder.lines, 100);
+  EXPECT_EQ(std::get<std::int64_t>(c.points[0].dut.params.at("on").value), 10);
+  // Parameters not written take the model's defaults (reference_pls scan = 200 us).
+  EXPECT_EQ(std::get<Nanos>(c.points[0].dut.params.at("scan").value), 200_us);
+  ASSERT_EQ(c.runs.size(), 1U);
+}
+
+TEST(CampaignParser, TomlSyntaxErrorGivesItsPosition) {
+  // Line 7 "on = = 10": toml++ reports the second '=' at column 6.
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 7, "on = = 10"), "t.toml:7:"));
+}
+
+TEST(CampaignParser, UnknownTopLevelKeyIsAnError) {
+  EXPECT_TRUE(rejected_at(kBase + "[motoin]\n", "t.toml:31:2: motoin: unknown key"));
+}
+
+TEST(CampaignParser, UnknownKeyInATableIsAnError) {
+  // "lenes" instead of "lines" on line 30.
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 30, "lenes = 100"), "t.toml:30:1: encoder.lenes: unknown key"));
+}
+
+TEST(CampaignParser, UnknownDutParameterIsAnError) {
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 8, "of = 20"), "t.toml:8:1: dut.params.of: unknown key"));
+}
+
+TEST(CampaignParser, UnknownCheckParameterIsAnError) {
+  // The check registry rejects "limit" (it takes limit_us); the error points at the key's value.
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 28, "limit = 250"), "t.toml:28:9: check[0].limit:"));
+}
+
+TEST(CampaignParser, MissingRequiredCheckParameterNamesIt) {
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 28, ""), "t.toml:23:1: check[0].limit_us:"));
+}
+
+TEST(CampaignParser, WrongTypeIsAnError) {
+  EXPECT_TRUE(
+      rejected_at(replace_line(kBase, 7, "on = \"ten\""), "t.toml:7:6: dut.params.on: expected an integer"));
+}
+
+TEST(CampaignParser, DurationWithoutUnitIsAnError) {
+  EXPECT_TRUE(
+      rejected_at(replace_line(kBase, 3, "end = 100"), "t.toml:3:7: campaign.end: expected a duration"));
+  EXPECT_TRUE(
+      rejected_at(replace_line(kBase, 3, "end = \"100\""), "t.toml:3:7: campaign.end: expected a duration"));
+}
+
+TEST(CampaignParser, UnknownModelIsAnError) {
+  EXPECT_TRUE(
+      rejected_at(replace_line(kBase, 5, "model = \"pls9000\""), "t.toml:5:9: dut.model: a device model"));
+}
+
+TEST(CampaignParser, UnknownVariantIsAnError) {
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 5, "model = \"reference_pls\"\nvariant = \"early\""),
+                          "t.toml:6:11: dut.variant: a variant of reference_pls"));
+}
+
+TEST(CampaignParser, WiringToAPinTheDutLacksIsAnError) {
+  EXPECT_TRUE(
+      rejected_at(replace_line(kBase, 17, "board = \"OUT2\""), "t.toml:17:9: wiring[2].board: a pin of"));
+}
+
+TEST(CampaignParser, PinWiredTwiceIsAnError) {
+  EXPECT_TRUE(
+      rejected_at(replace_line(kBase, 17, "board = \"A\""), "t.toml:17:9: wiring[2].board: each board pin"));
+}
+
+TEST(CampaignParser, EncoderIntoABoardOutputIsAnError) {
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 11, "board = \"OUT\""), "t.toml:11:9: wiring[0].board:"));
+}
+
+TEST(CampaignParser, CheckNamingAnUnwiredLineIsAnError) {
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 26, "output = \"ls2\""),
+                          "t.toml:26:10: check[0].output: a wired rig line"));
+}
+
+TEST(CampaignParser, UnknownCheckKindIsAnError) {
+  EXPECT_TRUE(
+      rejected_at(replace_line(kBase, 24, "kind = \"thruput\""), "t.toml:24:8: check[0].kind: a check kind"));
+}
+
+TEST(CampaignParser, StimuliOutOfOrderAreAnError) {
+  const std::string text = kBase + R"([[wiring]]
+rig = "en"
+board = "EN"
+[[stimulus]]
+kind = "level"
+line = "en"
+at = "20ms"
+level = "high"
+[[stimulus]]
+kind = "level"
+line = "en"
+at = "10ms"
+level = "low"
+)";
+  EXPECT_TRUE(rejected_at(text, "t.toml:42:6: stimulus[1].at: times in order"));
+}
+
+TEST(CampaignParser, StimulusOnAnUnwiredLineIsAnError) {
+  const std::string text = kBase + R"([[stimulus]]
+kind = "pulse"
+line = "en"
+at = "20ms"
+width = "1ms"
+)";
+  EXPECT_TRUE(rejected_at(text, "t.toml:33:8: stimulus[0].line: a wired rig line"));
+}
+
+TEST(CampaignParser, StimulusOnABoardOutputIsAnError) {
+  const std::string text = kBase + R"([[stimulus]]
+kind = "pulse"
+line = "ls1"
+at = "20ms"
+width = "1ms"
+)";
+  EXPECT_TRUE(rejected_at(text, "t.toml:33:8: stimulus[0].line: a line the rig drives"));
+}
+
+TEST(CampaignParser, StimulusAfterTheEndIsAnError) {
+  const std::string text = kBase + R"([[wiring]]
+rig = "en"
+board = "EN"
+[[stimulus]]
+kind = "level"
+line = "en"
+at = "200ms"
+level = "high"
+)";
+  EXPECT_TRUE(rejected_at(text, "t.toml:37:6: stimulus[0].at: a time within the run"));
+}
+
+TEST(CampaignParser, KeyThatAStimulusKindDoesNotTakeIsAnError) {
+  // A level stimulus has no width: a leftover key from a pulse must not be ignored.
+  const std::string text = kBase + R"([[wiring]]
+rig = "en"
+board = "EN"
+[[stimulus]]
+kind = "level"
+line = "en"
+at = "20ms"
+level = "high"
+width = "1ms"
+)";
+  EXPECT_TRUE(rejected_at(text, "t.toml:39:1: stimulus[0].width: unknown key"));
+}
+
+TEST(CampaignParser, HostActionsOutOfOrderAreAnError) {
+  const std::string text = kBase + R"([[host]]
+at = "20ms"
+read = 1
+name = "count"
+[[host]]
+at = "5ms"
+read = 1
+name = "count2"
+)";
+  EXPECT_TRUE(rejected_at(text, "t.toml:36:6: host[1].at: times in order"));
+}
+
+TEST(CampaignParser, HostWriteWithTransmitSetIsAnError) {
+  // The rig drives Transmit (bit 15) itself.
+  const std::string text = kBase + "[[host]]\nat = \"1ms\"\nwrite = [0x8001, 5, 6]\n";
+  EXPECT_TRUE(rejected_at(text, "t.toml:33:9: host[0].write: word 0 with Transmit"));
+}
+
+TEST(CampaignParser, HostReadPastTheLastInputWordIsAnError) {
+  // reference_pls has 4 input words (0..3).
+  const std::string text = kBase + "[[host]]\nat = \"1ms\"\nread = 4\nname = \"x\"\n";
+  EXPECT_TRUE(rejected_at(text, "t.toml:33:8: host[0].read: an input word 0 .. 3"));
+}
+
+TEST(CampaignParser, FaultCaughtByAnUnknownCheckIsAnError) {
+  const std::string text = kBase + "[[fault]]\nname = \"f\"\nvariant = \"late\"\ncaught_by = \"of\"\n";
+  EXPECT_TRUE(rejected_at(text, "t.toml:34:13: fault[0].caught_by: a check of this campaign"));
+}
+
+TEST(CampaignParser, FaultWithAnUnknownVariantIsAnError) {
+  const std::string text = kBase + "[[fault]]\nname = \"f\"\nvariant = \"lat\"\ncaught_by = \"on\"\n";
+  EXPECT_TRUE(rejected_at(text, "t.toml:33:11: fault[0].variant: a variant of reference_pls"));
+}
+
+TEST(CampaignParser, DiscreteStimulusAsASignalFaultIsAnError) {
+  const std::string text = kBase +
+                           "[[fault]]\nname = \"f\"\ncaught_by = \"on\"\n"
+                           "signal = { kind = \"level\", line = \"enc.A\", at = \"1ms\", level = \"low\" }\n";
+  EXPECT_TRUE(rejected_at(text, "t.toml:34:19: fault[0].signal.kind: a signal fault"));
+}
+
+TEST(CampaignParser, MoveThatCannotFollowIsAnError) {
+  // A dwell while the shaft turns at 60 rpm.
+  const std::string text =
+      replace_line(kBase, 22, "duration = \"100ms\"\n[[motion.move]]\nkind = \"dwell\"\nduration = \"1ms\"");
+  EXPECT_TRUE(rejected_at(text, "t.toml:23:1: motion.move[1]: a move that can follow"));
+}
+
+TEST(CampaignParser, SweepOfAMissingTableIsAnError) {
+  const std::string text = kBase + "[[sweep]]\nkey = \"plant.mass\"\nvalues = [1, 2]\n";
+  EXPECT_TRUE(rejected_at(text, "t.toml:32:7: sweep[0].key: a key path in this file"));
+}
+
+TEST(CampaignParser, BadSweepValueIsCaughtBeforeAnyRun) {
+  // The second point sets delay to an integer: rejected at the value in the sweep array.
+  const std::string text = kBase + "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", 7]\n";
+  EXPECT_TRUE(rejected_at(text, "t.toml:33:19: dut.params.delay: expected a duration"));
+}
+
+TEST(CampaignParser, SweepsMakeTheCartesianProductLastAxisFastest) {
+  const std::string text = replace_line(kBase, 3, "end = \"100ms\"\nrepeat = 2") +
+                           "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", \"100us\"]\n"
+                           "[[sweep]]\nkey = \"motion.move[0].speed_rpm\"\nvalues = [30, 60, 90]\n"
+                           "[[fault]]\nname = \"f\"\nvariant = \"late\"\ncaught_by = \"on\"\n";
+  const Campaign c = parse_campaign(text, "t.toml");
+  ASSERT_EQ(c.points.size(), 6U);
+  // Point p = 3 * delay index + speed index.
+  EXPECT_EQ(std::get<Nanos>(c.points[0].dut.params.at("delay").value), 50_us);
+  EXPECT_EQ(std::get<Nanos>(c.points[3].dut.params.at("delay").value), 100_us);
+  EXPECT_EQ(c.points[1].motion.moves[0].speed_rpm, 60.0);
+  EXPECT_EQ(c.points[5].motion.moves[0].speed_rpm, 90.0);
+  // 6 points x 2 repetitions of nominal runs, then the fault once at each point.
+  ASSERT_EQ(c.runs.size(), 18U);
+  EXPECT_EQ(c.runs[1].point, 0U);
+  EXPECT_EQ(c.runs[1].repetition, 1U);
+  EXPECT_EQ(c.runs[2].point, 1U);
+  EXPECT_FALSE(c.runs[11].fault.has_value());
+  ASSERT_TRUE(c.runs[12].fault.has_value());
+  EXPECT_EQ(c.runs[12].point, 0U);
+  EXPECT_EQ(c.runs[17].point, 5U);
+  for (std::size_t i = 0; i < c.runs.size(); ++i) EXPECT_EQ(c.runs[i].index, i);
+}
+
+TEST(CampaignParser, ExternalBoardNeedsAHardwareBackendAndItsPins) {
+  // backend is not written (it defaults to virtual): the error points at the [dut] table.
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 5, "model = \"external\""), "t.toml:4:1: dut.backend:"));
+  EXPECT_TRUE(rejected_at(replace_line(kBase, 5, "model = \"external\"\nbackend = \"gpiod\""),
+                          "t.toml:4:1: dut.pins: missing"));
+}
+
+TEST(CampaignParser, MissingFileIsBadInput) {
+  try {
+    (void)load_campaign("/nonexistent/hilrig/campaign.toml");
+    FAIL() << "accepted a missing file";
+  } catch (const CampaignError& e) {
+    EXPECT_EQ(e.key(), "file");
+  }
+}
+
+} // namespace
+} // namespace hilrig::campaign
