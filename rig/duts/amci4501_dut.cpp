@@ -94,6 +94,12 @@ DutInfo amci4501_info() {
       {"lower_word_over_999_is_error", ParamKind::Boolean, d.lower_word_over_999_is_error,
        "setpoint lower word > 999 is a Parameter Error"},
       {"saturate_latch_counts", ParamKind::Boolean, d.saturate_latch_counts, "mode 2 L values cap at 32,767"},
+      {"acknowledge_on_rising_edge", ParamKind::Boolean, d.acknowledge_on_rising_edge,
+       "result acknowledge on control bit 0's rising edge (else any write with it set)"},
+      {"acknowledge_invalid_program", ParamKind::Boolean, d.acknowledge_invalid_program,
+       "an invalid programming cycle is still acknowledged"},
+      {"program_clears_results", ParamKind::Boolean, d.program_clears_results,
+       "a valid programming cycle clears the result words"},
   };
   for (const auto& v : m::kVariantNames)
     info.variants.push_back({std::string(v.name), v.variant == m::Variant::Correct
@@ -116,6 +122,9 @@ DutInfo amci4501_info() {
     p.z_resets_in_all_modes = params.boolean("z_resets_in_all_modes");
     p.lower_word_over_999_is_error = params.boolean("lower_word_over_999_is_error");
     p.saturate_latch_counts = params.boolean("saturate_latch_counts");
+    p.acknowledge_on_rising_edge = params.boolean("acknowledge_on_rising_edge");
+    p.acknowledge_invalid_program = params.boolean("acknowledge_invalid_program");
+    p.program_clears_results = params.boolean("program_clears_results");
     const auto v = m::variant_from_string(variant);
     if (!v) throw std::invalid_argument("amci4501 has no variant " + std::string(variant));
     p.variant = *v;

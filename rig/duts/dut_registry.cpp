@@ -12,6 +12,9 @@
 #ifdef HILRIG_HAVE_SSI7361_MODEL
 #include "rig/duts/ssi7361_dut.hpp"
 #endif
+#ifdef HILRIG_HAVE_AMCI4501_MODEL
+#include "rig/duts/amci4501_dut.hpp"
+#endif
 
 namespace hilrig::duts {
 
@@ -75,6 +78,9 @@ const std::vector<DutInfo>& dut_registry() {
 #endif
 #ifdef HILRIG_HAVE_SSI7361_MODEL
     r.push_back(ssi7361_info());
+#endif
+#ifdef HILRIG_HAVE_AMCI4501_MODEL
+    r.push_back(amci4501_info());
 #endif
     std::sort(r.begin(), r.end(), [](const DutInfo& a, const DutInfo& b) { return a.name < b.name; });
     return r;

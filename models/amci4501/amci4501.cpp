@@ -1,0 +1,264 @@
+// The module's frame: pins, host words, deferred responses, timers. The mode rules are in
+// measure.cpp.
+#include "models/amci4501/amci4501.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace hilrig::models::amci4501 {
+
+namespace {
+signals::CountMode count_mode(const Params& p) {
+  return p.variant == Variant::X2Counting ? signals::CountMode::X2 : signals::CountMode::X4;
+}
+} // namespace
+
+Amci4501::Amci4501(Scheduler& scheduler, const Pins& pins, Params params)
+    : scheduler_(scheduler), pins_(pins), params_(params),
+      decoder_(count_mode(params), is_high(pins.a.level()), is_high(pins.b.level())) {
+  if (params_.timer_resolution <= Nanos{0})
+    throw std::invalid_argument("amci4501: timer_resolution must be > 0");
+  if (params_.velocity_window <= Nanos{0})
+    throw std::invalid_argument("amci4501: velocity_window must be > 0");
+  deferred_.reserve(32);
+  start_active_ = start_mark_ = active(pins.start.level(), params_.start_jumper);
+  latch_active_ = latch_mark_ = active(pins.latch.level(), params_.latch_jumper);
+  set_cycle_output(false);
+  pins_.a.on_edge([this](const Edge& e) { on_encoder(e); });
+  pins_.b.on_edge([this](const Edge& e) { on_encoder(e); });
+  if (pins_.z != nullptr) pins_.z->on_edge([this](const Edge& e) { on_index(e); });
+  pins_.start.on_edge([this](const Edge& e) { on_start(e); });
+  pins_.latch.on_edge([this](const Edge& e) { on_latch(e); });
+  scheduler_.after(params_.velocity_window, [this] { on_velocity_window(); });
+}
+
+// ---------------------------------------------------------------- host words
+
+void Amci4501::write_output_words(std::size_t first, std::span<const std::uint16_t> words) {
+  if (first > kWords || words.size() > kWords - first)
+    throw std::out_of_range("amci4501: output word past 7");
+  const std::uint16_t old_control = outputs_[0];
+  std::copy(words.begin(), words.end(), outputs_.begin() + static_cast<std::ptrdiff_t>(first));
+  const std::uint16_t control_word = outputs_[0];
+  const auto rose = [&](std::uint16_t bit) { return (control_word & bit) != 0 && (old_control & bit) == 0; };
+  const auto fell = [&](std::uint16_t bit) { return (control_word & bit) == 0 && (old_control & bit) != 0; };
+
+  // Acted on immediately, no programming cycle (L167). The acknowledge is its rising edge
+  // (A10: a bit left high does not acknowledge the next result too).
+  const bool received = params_.acknowledge_on_rising_edge ? rose(control::kReceived)
+                                                           : (control_word & control::kReceived) != 0;
+  if (received) new_value_ = false;
+  if ((control_word & control::kClearError) != 0) {
+    no_response_ = false;
+    timeout_error_ = false;
+    missed_ = 0;
+  }
+  if (rose(control::kTransmit)) program();
+  if (fell(control::kTransmit)) acknowledge_ = false;
+}
+
+void Amci4501::read_input_words(std::size_t first, std::span<std::uint16_t> out) const {
+  if (first > kWords || out.size() > kWords - first) throw std::out_of_range("amci4501: input word past 7");
+  const InputWords all = input_words();
+  std::copy_n(all.begin() + static_cast<std::ptrdiff_t>(first), out.size(), out.begin());
+}
+
+InputWords Amci4501::input_words() const {
+  InputWords w = inputs_;
+  w[0] = status();
+  return w;
+}
+
+std::uint16_t Amci4501::status() const {
+  std::uint16_t s = mode_status_bit(config_.mode);
+  const auto set = [&](bool on, std::uint16_t bit) {
+    if (on) s = static_cast<std::uint16_t>(s | bit);
+  };
+  set(new_value_, status::kNewValue);
+  set(no_response_, status::kNoResponse);
+  set(start_mark_, status::kStartMark);
+  set(latch_mark_, status::kLatchMark);
+  set(command_error_, status::kCommandError);
+  set(parameter_error_, status::kParameterError);
+  set(timeout_error_, status::kTimeout);
+  set(acknowledge_, status::kAcknowledge);
+  return s;
+}
+
+// Programming cycle (L168): latch, validate, acknowledge. An invalid configuration is
+// acknowledged but not applied (A30: the previous one stays in force).
+void Amci4501::program() {
+  const ProgramResult r = validate_program(outputs_, params_);
+  command_error_ = r.command_error;
+  parameter_error_ = r.parameter_error;
+  acknowledge_ = r.valid() || params_.acknowledge_invalid_program;
+  if (!r.valid()) return;
+  const int old_mode = config_.mode;
+  config_ = r.config;
+  if (params_.program_clears_results || config_.mode != old_mode) reset_measurement();
+}
+
+// [MODEL] A valid programming cycle starts measuring afresh: cycles in progress and
+// responses not yet out are dropped, result words and the handshake are cleared (always on
+// a mode change; else per Params::program_clears_results). No Response and Time Out stay
+// until control bit 1 clears them (L154).
+void Amci4501::reset_measurement() {
+  ++generation_;
+  cancel_timeout();
+  set_cycle_output(false);
+  phase_ = Phase::Idle;
+  window_ = false;
+  in_pulse_ = false;
+  pulses_ = 0;
+  have_s2_ = false;
+  seen_active_ = {false, false};
+  new_value_ = false;
+  missed_ = 0;
+  std::fill(inputs_.begin(), inputs_.end(), std::uint16_t{0});
+}
+
+// ---------------------------------------------------------------- inputs
+
+bool Amci4501::active(Level level, Jumper jumper) const {
+  return jumper == Jumper::Rising ? is_high(level) : !is_high(level);
+}
+
+void Amci4501::on_encoder(const Edge& e) {
+  const int delta = decoder_.update(is_high(pins_.a.level()), is_high(pins_.b.level()));
+  if (delta != 0 && config_.mode == 2) mode2_position(delta, e.time);
+}
+
+void Amci4501::on_index(const Edge& e) {
+  decoder_.index(is_high(e.level));
+  if (is_high(e.level) && (config_.mode == 2 || params_.z_resets_in_all_modes)) decoder_.set_count(0);
+}
+
+void Amci4501::on_start(const Edge& e) {
+  const bool now_active = active(e.level, params_.start_jumper);
+  if (now_active == start_active_) return;
+  start_active_ = now_active;
+  defer(e.time, Op::StartMark, now_active);
+  start_edge(now_active, e.time);
+}
+
+void Amci4501::on_latch(const Edge& e) {
+  const bool now_active = active(e.level, params_.latch_jumper);
+  if (now_active == latch_active_) return;
+  latch_active_ = now_active;
+  defer(e.time, Op::LatchMark, now_active);
+  latch_edge(now_active, e.time);
+}
+
+std::uint64_t Amci4501::time_value(std::int64_t from, std::int64_t to) const {
+  std::int64_t ticks = to - from;
+  if (params_.variant == Variant::TimeOffByOne) ++ticks;
+  const std::int64_t tick_ns = params_.timer_resolution.count();
+  std::int64_t us = ticks * tick_ns / 1000;
+  if (params_.variant == Variant::TimeWrongUnit) us /= 10;
+  return static_cast<std::uint64_t>(std::max<std::int64_t>(us, 0));
+}
+
+// ---------------------------------------------------------------- responses
+
+Nanos Amci4501::response_delay() const {
+  if (params_.variant == Variant::LateOutputs) return params_.late_throughput;
+  return config_.mode == 5 ? params_.mode5_throughput : params_.throughput;
+}
+
+// A response to the input edge at t, visible one throughput later. The closure holds only
+// `this`; the data waits in deferred_ (no allocation once it has grown).
+void Amci4501::defer(Nanos t, Op op, bool on, std::uint8_t first, std::span<const std::uint16_t> words) {
+  Deferred d{t + response_delay(), generation_, op, on, first, static_cast<std::uint8_t>(words.size()), {}};
+  std::copy(words.begin(), words.end(), d.words.begin());
+  deferred_.push_back(d);
+  scheduler_.at(std::max(d.due, scheduler_.now()), [this] { fire(); });
+}
+
+void Amci4501::fire() {
+  const Nanos now = scheduler_.now();
+  // Apply in order of due time (equal: in order deferred); entries not yet due stay.
+  while (true) {
+    auto next = deferred_.end();
+    for (auto it = deferred_.begin(); it != deferred_.end(); ++it)
+      if (it->due <= now && (next == deferred_.end() || it->due < next->due)) next = it;
+    if (next == deferred_.end()) return;
+    const Deferred d = *next;
+    deferred_.erase(next);
+    apply(d);
+  }
+}
+
+void Amci4501::apply(const Deferred& d) {
+  switch (d.op) {
+  case Op::StartMark: // the inputs' own state: survives reprogramming
+    start_mark_ = d.on;
+    return;
+  case Op::LatchMark:
+    latch_mark_ = d.on;
+    return;
+  default:
+    break;
+  }
+  if (d.generation != generation_) return; // superseded by a programming cycle
+  const std::span<const std::uint16_t> words{d.words.data(), d.count};
+  switch (d.op) {
+  case Op::CycleOutput:
+    set_cycle_output(d.on);
+    break;
+  case Op::Publish:
+    publish(words, d.first);
+    break;
+  case Op::Write:
+    std::copy(words.begin(), words.end(), inputs_.begin() + d.first);
+    break;
+  default:
+    break;
+  }
+}
+
+// Publishing rule, modes 1-4 (L153, L223, L88): written only when the previous result was
+// acknowledged; otherwise the cycle is missed, and after no_response_missed misses No
+// Response is set. A missed result is discarded (A10).
+void Amci4501::publish(std::span<const std::uint16_t> words, std::uint8_t first) {
+  if (timeout_error_) return;
+  if (!new_value_) {
+    std::copy(words.begin(), words.end(), inputs_.begin() + first);
+    new_value_ = true;
+    missed_ = 0;
+    ++published_;
+    return;
+  }
+  ++missed_;
+  ++missed_total_;
+  if (missed_ >= params_.no_response_missed && params_.variant != Variant::NoResponseNeverRaised)
+    no_response_ = true;
+}
+
+void Amci4501::set_cycle_output(bool on) {
+  cycle_output_on_ = on;
+  pins_.cycle_output.set(on ? params_.cycle_output_on : !params_.cycle_output_on);
+}
+
+void Amci4501::arm_timeout(Nanos from) {
+  cancel_timeout();
+  timeout_event_ = scheduler_.at(from + timeout_of(config_, params_), [this] { on_timeout(); });
+}
+
+void Amci4501::cancel_timeout() {
+  if (timeout_event_.valid()) scheduler_.cancel(timeout_event_);
+  timeout_event_ = {};
+}
+
+// Velocity (L114): counts in the last window, every window; modes 1 (word 2, signed) and
+// 2 (word 5, 0 when B leads A). Not frozen by the handshake (A37). [MODEL] saturates at
+// the int16 limits (L114 gives no range).
+void Amci4501::on_velocity_window() {
+  const std::int64_t p = decoder_.count();
+  std::int64_t v = std::clamp<std::int64_t>(p - velocity_ref_, -32768, 32767);
+  velocity_ref_ = p;
+  if (config_.mode == 1) inputs_[2] = static_cast<std::uint16_t>(v);
+  if (config_.mode == 2) inputs_[5] = static_cast<std::uint16_t>(std::max<std::int64_t>(v, 0));
+  scheduler_.after(params_.velocity_window, [this] { on_velocity_window(); });
+}
+
+} // namespace hilrig::models::amci4501

@@ -1,0 +1,177 @@
+// Mode 2, registration in an enable window (digest §3.2): L1-L4 from the first two Latch
+// pulses inside Son <= P < Soff, the Cycle Output copying them, Z, velocity.
+#include "amci4501_rig.hpp"
+
+namespace hilrig::models::amci4501::test {
+namespace {
+
+// Son = 1,000, Soff = 3,000. The encoder moves in bursts at 10 us/edge with rests, and
+// every Latch edge falls in a rest (examples §0.4), so P at each edge is a sum of bursts:
+//   F(1200, 1000, 10): P = 1200 by 12,990 us; the window opens at edge 1,000 (10,990 us)
+//   Latch on 13,500 -> L1 = 1200 - 1000 = 200
+//   F(100, 14000, 10): P = 1300;   Latch off 15,500 -> L2 = 300
+//   F(200, 16000, 10): P = 1500;   Latch on 18,500  -> L3 = 500
+//   F(100, 19000, 10): P = 1600;   Latch off 20,500 -> L4 = 600
+//   third pulse 21,000-21,300: ignored (L12, L115)
+//   F(1500, 22000, 10): P reaches 3,000 at edge 1,400: 22,000 + 1,399·10 = 35,990 us
+//   -> window closes, words 1-4 published 125 us later (36,115 us).
+TEST(Amci4501Mode2, TwoPulsesInTheWindow) {
+  Bench b;
+  b.program_window(1000, 3000);
+  b.burst(1200, us(1000), us(10));
+  b.latch_at(us(13500), Level::High);
+  b.burst(100, us(14000), us(10));
+  b.latch_at(us(15500), Level::Low);
+  b.burst(200, us(16000), us(10));
+  b.latch_at(us(18500), Level::High);
+  b.burst(100, us(19000), us(10));
+  b.latch_at(us(20500), Level::Low);
+  b.latch_pulse(us(21000), us(300));
+  b.burst(1500, us(22000), us(10));
+  b.run_until(us(10990) - 1_ns);
+  EXPECT_FALSE(b.module->window_open());
+  b.run_until(us(10990));
+  EXPECT_TRUE(b.module->window_open());
+  b.run_until(us(36115) - 1_ns);
+  EXPECT_FALSE(b.bit(status::kNewValue));
+  b.run_until(us(36115));
+  EXPECT_FALSE(b.module->window_open());
+  EXPECT_TRUE(b.bit(status::kNewValue));
+  EXPECT_EQ(b.word(1), 200);
+  EXPECT_EQ(b.word(2), 300);
+  EXPECT_EQ(b.word(3), 500);
+  EXPECT_EQ(b.word(4), 600);
+  EXPECT_TRUE(b.bit(status::kMode2));
+  // L12: the output copies the first two pulses, each edge one throughput late (L281).
+  ASSERT_EQ(b.cycle_edges.size(), 4u);
+  EXPECT_EQ(b.cycle_edges[0].time, us(13625));
+  EXPECT_TRUE(b.cycle_edges[0].on);
+  EXPECT_EQ(b.cycle_edges[1].time, us(15625));
+  EXPECT_EQ(b.cycle_edges[2].time, us(18625));
+  EXPECT_EQ(b.cycle_edges[3].time, us(20625));
+  EXPECT_FALSE(b.cycle_edges[3].on);
+}
+
+// W9 (L226): one pulse in the window -> words 3 and 4 are 0. A pulse before the window
+// opens is not counted either.
+TEST(Amci4501Mode2, OnePulseLeavesWordsThreeAndFourZero) {
+  Bench b;
+  b.program_window(100, 500);
+  b.latch_pulse(us(500), us(200));   // P = 0: outside the window
+  b.burst(150, us(1000), us(10));    // P = 150 by 2,490 us (window open at edge 100)
+  b.latch_at(us(3000), Level::High); // L1 = 50
+  b.burst(100, us(3500), us(10));    // P = 250
+  b.latch_at(us(5000), Level::Low);  // L2 = 150
+  b.burst(300, us(5500), us(10));    // P reaches 500 at 5,500 + 249·10 = 7,990 us
+  b.run_until(10_ms);
+  EXPECT_EQ(b.word(1), 50);
+  EXPECT_EQ(b.word(2), 150);
+  EXPECT_EQ(b.word(3), 0);
+  EXPECT_EQ(b.word(4), 0);
+  EXPECT_EQ(b.cycle_edges.size(), 2u);
+}
+
+// L12, L330: the Cycle Output is forced off when the window ends, even with Latch still
+// active; the trailing edge never came, so L2 = 0 ([I] A14).
+TEST(Amci4501Mode2, WindowEndForcesTheOutputOff) {
+  Bench b;
+  b.program_window(100, 300);
+  b.burst(150, us(1000), us(10));    // window opens at edge 100 = 1,990 us
+  b.latch_at(us(3000), Level::High); // L1 = 50
+  b.burst(200, us(3500), us(10));    // P = 300 at edge 150: 3,500 + 149·10 = 4,990 us
+  b.latch_at(us(6000), Level::Low);  // after the window
+  b.run_until(10_ms);
+  ASSERT_EQ(b.cycle_edges.size(), 2u);
+  EXPECT_EQ(b.cycle_edges[0].time, us(3125));
+  EXPECT_EQ(b.cycle_edges[1].time, us(4990) + us(125));
+  EXPECT_FALSE(b.cycle_edges[1].on);
+  EXPECT_EQ(b.word(1), 50);
+  EXPECT_EQ(b.word(2), 0);
+}
+
+// A14 [I]: a Latch already active when the window opens has no leading edge inside it.
+TEST(Amci4501Mode2, LatchActiveAtWindowOpenIsNotCounted) {
+  Bench b;
+  b.program_window(100, 300);
+  b.latch_at(us(500), Level::High);
+  b.burst(150, us(1000), us(10));
+  b.latch_at(us(3000), Level::Low);  // trailing edge of an uncounted pulse
+  b.latch_at(us(3200), Level::High); // this is the first pulse: L1 = 50
+  b.latch_at(us(3400), Level::Low);  // L2 = 50
+  b.burst(200, us(3500), us(10));
+  b.run_until(10_ms);
+  EXPECT_EQ(b.word(1), 50);
+  EXPECT_EQ(b.word(2), 50);
+  EXPECT_EQ(b.word(3), 0);
+}
+
+// W16, L12: a Z pulse zeroes the position; the window then opens on the count from 0.
+// Son = 600: F(500) -> P = 500 (window still shut); Z at 7,000 us -> P = 0; F(650) -> the
+// window opens at the 600th edge after Z: 8,000 + 599·10 = 13,990 us, not at the 100th
+// (where P would have reached 600 without the Z reset: 8,990 us).
+TEST(Amci4501Mode2, IndexPulseZeroesThePosition) {
+  Bench b;
+  b.program_window(600, 4000);
+  b.burst(500, us(1000), us(10));
+  b.z_pulse(us(7000), us(10));
+  b.burst(650, us(8000), us(10));
+  b.run_until(us(7500));
+  EXPECT_EQ(b.module->position(), 0);
+  b.run_until(us(13990) - 1_ns);
+  EXPECT_FALSE(b.module->window_open());
+  b.run_until(us(13990));
+  EXPECT_TRUE(b.module->window_open());
+  EXPECT_EQ(b.module->position(), 600);
+}
+
+// [I] Z outside mode 2 is ignored (digest §2.1).
+TEST(Amci4501Mode2, IndexIgnoredInModeOne) {
+  Bench b;
+  b.burst(500, us(1000), us(10));
+  b.z_pulse(us(7000), us(10));
+  b.run_until(8_ms);
+  EXPECT_EQ(b.module->position(), 500);
+}
+
+// W18 (L114): mode 2 velocity is word 5, counts per 50 ms, and reads 0 when B leads A.
+// F(10000, 40,005 us, 10 us) covers (50, 100] ms fully: 5,000 edges. The reverse run
+// R(10000, 140,005 us, 10 us) covers (150, 200] ms: reads 0.
+TEST(Amci4501Mode2, VelocityIsZeroInReverse) {
+  Bench b;
+  b.program_window(60000, 65000);
+  b.burst(10000, us(40005), us(10));
+  b.run_until(100_ms);
+  EXPECT_EQ(b.word(5), 5000);
+  b.burst(-10000, us(140005), us(10));
+  b.run_until(200_ms);
+  EXPECT_EQ(b.word(5), 0);
+}
+
+// L93: the encoder stops inside the window -> Time Out after the timeout, no data.
+TEST(Amci4501Mode2, EncoderStopsInWindowTimesOut) {
+  Bench b;
+  b.program_window(100, 300, 50);
+  b.burst(150, us(1000), us(10)); // window opens at 1,990 us, timeout at 51,990 us
+  b.run_until(us(51990) - 1_ns);
+  EXPECT_FALSE(b.bit(status::kTimeout));
+  b.run_until(us(51990));
+  EXPECT_TRUE(b.bit(status::kTimeout));
+  EXPECT_FALSE(b.module->window_open());
+  EXPECT_FALSE(b.bit(status::kNewValue));
+}
+
+// L115 / A12: an L value above 32,767 counts saturates at 32,767 (MODEL) and is recorded.
+TEST(Amci4501Mode2, LatchCountsCapAt32767) {
+  Bench b;
+  b.program_window(1, 40000);
+  b.burst(33000, us(1000), us(4)); // P = 33,000 by 132,996 us
+  b.latch_pulse(us(134000), us(200));
+  b.run_until(140_ms);
+  b.burst(7000, us(141000), us(4)); // P reaches 40,000
+  b.run_until(200_ms);
+  EXPECT_EQ(b.word(1), 32767);
+  EXPECT_GE(b.module->count_overflows(), 1u);
+}
+
+} // namespace
+} // namespace hilrig::models::amci4501::test

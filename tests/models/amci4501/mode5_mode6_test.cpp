@@ -1,0 +1,105 @@
+// Modes 5 and 6: each input's active time (digest §3.5) and the counts while it is active
+// (§3.6); no cycle, no handshake, written as soon as measured.
+#include "amci4501_rig.hpp"
+
+namespace hilrig::models::amci4501::test {
+namespace {
+
+// §3.5: Start active 2,500 us -> words 1/2 = 2/500; Latch active 12,345 us (W3) -> words
+// 3/4 = 12/345 (A22: 1 = Start, 2 = Latch). Written at the inactive edge + 100 us (the
+// mode 5 throughput, L49); status bit 0 stays 0 (L87).
+TEST(Amci4501Mode5, ActiveTimeOfEachInput) {
+  Bench b;
+  b.program_mode(5);
+  b.start_pulse(us(1000), us(2500));
+  b.latch_pulse(us(2000), us(12345));
+  b.run_until(us(3500) + us(99));
+  EXPECT_EQ(b.word(2), 0);
+  b.run_until(us(3500) + us(100));
+  EXPECT_EQ(b.word(1), 2);
+  EXPECT_EQ(b.word(2), 500);
+  b.run_until(us(14345) + us(100));
+  EXPECT_EQ(b.word(3), 12);
+  EXPECT_EQ(b.word(4), 345);
+  EXPECT_FALSE(b.bit(status::kNewValue));
+  EXPECT_TRUE(b.bit(mode_status_bit(5)));
+}
+
+// L49, L120: each new value overwrites the old; when the inputs stop the last one stays.
+// W8: a 10 kHz train (100 us period, 50 us active) reads 0/50 after every pulse.
+TEST(Amci4501Mode5, PulseTrainAndLastValueStays) {
+  Bench b;
+  b.program_mode(5);
+  b.play_start(signals::DiscreteSignal{}.pulse_train(us(1000), us(100), us(50), 20));
+  b.latch_pulse(us(500), us(70));
+  b.run_until(us(3000));
+  EXPECT_EQ(b.word(1), 0);
+  EXPECT_EQ(b.word(2), 50);
+  EXPECT_EQ(b.word(4), 70);
+  b.run_until(1_s);
+  EXPECT_EQ(b.word(2), 50);
+  EXPECT_EQ(b.word(4), 70);
+}
+
+// W20 (L237): with JP6 on pins 3-4, active = de-energized: the Start line idles high and
+// a 400 us low pulse measures 400 us.
+TEST(Amci4501Mode5, FallingJumperMeasuresTheLowTime) {
+  Params p;
+  p.start_jumper = Jumper::Falling;
+  Bench b{p, Level::High, Level::Low};
+  b.program_mode(5);
+  b.play_start(signals::DiscreteSignal{Level::High}.pulse(us(1000), us(400), Level::Low));
+  b.run_until(5_ms);
+  EXPECT_EQ(b.word(1), 0);
+  EXPECT_EQ(b.word(2), 400);
+}
+
+// [I] §3.5: an input already active when the mode begins gives no measurement for that
+// pulse (its active edge was not seen).
+TEST(Amci4501Mode5, PulseActiveAtModeEntryIsNotMeasured) {
+  Bench b;
+  b.start_at(us(500), Level::High);
+  b.run_until(1_ms);
+  b.program_mode(5);
+  b.start_at(us(2000), Level::Low);
+  b.run_until(5_ms);
+  EXPECT_EQ(b.word(1), 0);
+  EXPECT_EQ(b.word(2), 0);
+}
+
+// §3.6: counts while each input is active, signed: Start on, F(300), off -> word 1 = 300;
+// Latch on, R(200), off -> word 2 = -200 (0xFF38) (L55, L121).
+TEST(Amci4501Mode6, SignedCountsWhileActive) {
+  Bench b;
+  b.program_mode(6);
+  b.start_at(us(1000), Level::High);
+  b.burst(300, us(1500), us(10)); // ends 4,490 us
+  b.start_at(us(5000), Level::Low);
+  b.latch_at(us(6000), Level::High);
+  b.burst(-200, us(6500), us(10)); // ends 8,490 us
+  b.latch_at(us(9000), Level::Low);
+  b.burst(50, us(10000), us(10)); // while neither is active: no effect
+  b.run_until(us(5125));
+  EXPECT_EQ(b.word(1), 300);
+  b.run_until(20_ms);
+  EXPECT_EQ(b.word(2), 0xFF38);
+  EXPECT_EQ(static_cast<std::int16_t>(b.word(2)), -200);
+  EXPECT_EQ(b.word(1), 300);
+  EXPECT_FALSE(b.bit(status::kNewValue));
+  EXPECT_TRUE(b.cycle_edges.empty());
+}
+
+// W19 (L117): mode 6 counts up to 32,767.
+TEST(Amci4501Mode6, MaximumCount) {
+  Bench b;
+  b.program_mode(6);
+  b.start_at(us(500), Level::High);
+  b.burst(32767, us(1000), us(4));
+  b.start_at(us(133000), Level::Low);
+  b.run_until(135_ms);
+  EXPECT_EQ(b.word(1), 32767);
+  EXPECT_EQ(b.module->count_overflows(), 0u);
+}
+
+} // namespace
+} // namespace hilrig::models::amci4501::test
