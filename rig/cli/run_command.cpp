@@ -83,7 +83,12 @@ int run_campaign(const RunOptions& o, std::ostream& err) {
       if (!out.trace->can_frames().empty()) {
         if (!can_used) can_log.open(o.out / "can.log", std::ios::binary);
         can_used = true;
-        write_candump(*out.trace, can_log);
+        // Virtual time starts at 0, and log2asc takes a frame at second 0 for the start of a new
+        // log: stamp frames as virtual time after a fixed epoch (2000-01-01T00:00:00Z), which
+        // keeps the log deterministic and readable by can-utils.
+        CandumpOptions options;
+        options.epoch = seconds(946'684'800);
+        write_candump(*out.trace, can_log, options);
       }
     };
     rig::CampaignResult result = exec.run_all(

@@ -15,6 +15,9 @@
 #ifdef HILRIG_HAVE_AMCI4501_MODEL
 #include "rig/duts/amci4501_dut.hpp"
 #endif
+#ifdef HILRIG_HAVE_PLS2700_MODEL
+#include "rig/duts/pls2700_dut.hpp"
+#endif
 
 namespace hilrig::duts {
 
@@ -81,6 +84,9 @@ const std::vector<DutInfo>& dut_registry() {
 #endif
 #ifdef HILRIG_HAVE_AMCI4501_MODEL
     r.push_back(amci4501_info());
+#endif
+#ifdef HILRIG_HAVE_PLS2700_MODEL
+    r.push_back(pls2700_info());
 #endif
     std::sort(r.begin(), r.end(), [](const DutInfo& a, const DutInfo& b) { return a.name < b.name; });
     return r;

@@ -1,0 +1,148 @@
+#pragma once
+// The virtual AMCI Series 2700 programmable limit switch (spec/pls2700.md), any of the seven
+// modules. A deterministic state machine on a Scheduler with the module's own update
+// period (200 us one channel, 400 us two channels, L377/L457): at each update it samples the
+// stator channels at the latest peak of its own reference, decodes 8,192 counts per turn,
+// applies Scale Factor and Circular Offset, runs the tachometer, the 2742-18 cycle logic and
+// the limit windows with advances, and drives the eight outputs.
+//
+// On the virtual bus:
+//   virt::VirtualBus bus(scheduler);
+//   Pls2700 pls(scheduler, wire_pins(bus, "pls."), ModelVariant::M2742);
+//   signals::Resolver r(pls.excitation().resolver_params(), angle);   // carrier-synchronous
+//   bus.analog("pls.SIN1").set_waveform(r.sin_waveform()); ...COS1 likewise
+//   pls.write_btw(words);  pls.btr_word(0);                             // host words
+#include <array>
+#include <bitset>
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "core/scheduler.hpp"
+#include "models/pls2700/cycle.hpp"
+#include "models/pls2700/faults.hpp"
+#include "models/pls2700/limits.hpp"
+#include "models/pls2700/model_variant.hpp"
+#include "models/pls2700/params.hpp"
+#include "models/pls2700/pls2700_pins.hpp"
+#include "models/pls2700/position.hpp"
+#include "models/pls2700/setup.hpp"
+#include "models/pls2700/tachometer.hpp"
+
+namespace hilrig::models::pls2700 {
+
+inline constexpr std::uint16_t kFaultWord = 0x8000; // position/tach word on a transducer fault
+inline constexpr std::size_t kMaxBtwWords = 64;
+
+class Pls2700 {
+public:
+  // Updates start at scheduler.now() + params.update_phase. Keep the device alive while
+  // the scheduler runs.
+  Pls2700(Scheduler& scheduler, ModelVariant model, const Params& params = {}, Fault fault = Fault::Nominal);
+  Pls2700(Scheduler& scheduler, const Pls2700Pins& pins, ModelVariant model, const Params& params = {},
+          Fault fault = Fault::Nominal);
+  ~Pls2700();
+  Pls2700(const Pls2700&) = delete;
+  Pls2700& operator=(const Pls2700&) = delete;
+
+  void attach(const Pls2700Pins& pins);
+
+  // ---- Host (block transfers, §5) ----
+  // One BTW of 1..64 words (§5.4). Returns the programming error byte afterwards.
+  std::uint8_t write_btw(std::span<const std::uint16_t> words);
+  // BTR words (3 or 5, §5.1): copies min(out.size(), btr_words) words; returns how many.
+  std::size_t read_btr(std::span<std::uint16_t> out) const;
+  // Word `index` (0-based) of the BTR; 0 beyond its length.
+  [[nodiscard]] std::uint16_t btr_word(std::size_t index) const;
+  [[nodiscard]] std::size_t btr_words() const { return static_cast<std::size_t>(model_.btr_words); }
+  // 2731-04 single-transfer input word (§5.2); the same word on other models.
+  [[nodiscard]] std::uint16_t single_transfer_word() const { return position_word(1); }
+  [[nodiscard]] std::uint16_t position_word(int channel) const; // channel 1 or 2
+  [[nodiscard]] std::uint16_t tach_word(int channel) const;
+  [[nodiscard]] std::uint16_t status_word() const {
+    return static_cast<std::uint16_t>((error_byte_ << 8) | output_states_);
+  }
+  [[nodiscard]] std::uint8_t error_byte() const { return error_byte_; }
+
+  // ---- Front panel (keyboard in Program Mode); false when the keyboard is disabled ----
+  bool autozero(int channel); // R-CO-3
+  // R-LS-7/R-LS-5: CLEAR on pair `pair` (1-based) of `output` deletes it; where another
+  // pair overlapped it the output stays off (W8) until that pair is re-entered or power cycles.
+  bool keyboard_delete_pair(int output, int pair);
+  // Power cycle: the position tables are rebuilt from the stored pairs; nvRAM is kept.
+  void power_cycle();
+
+  // ---- State ----
+  [[nodiscard]] int machine_position(int channel) const { return mp_[index(channel)]; }
+  [[nodiscard]] int raw_position(int channel) const { return raw_[index(channel)]; } // 0..8191
+  [[nodiscard]] std::uint16_t tach(int channel) const { return tach_[index(channel)].value(); }
+  [[nodiscard]] bool transducer_fault(int channel) const { return fault_latched_[index(channel)]; }
+  [[nodiscard]] std::uint8_t output_states() const { return output_states_; } // bit 0 = output 1
+  [[nodiscard]] bool input_energized(int channel) const;                      // 2742-18
+  [[nodiscard]] const CycleLogic& cycle(int channel) const { return cycles_[index(channel)]; }
+  [[nodiscard]] int owner(int output) const; // channel 1 or 2
+  [[nodiscard]] const Setup& setup() const { return setup_; }
+  [[nodiscard]] const ModelTraits& model() const { return model_; }
+  [[nodiscard]] Fault fault() const { return fault_; }
+  [[nodiscard]] const Params& params() const { return params_; }
+  [[nodiscard]] const Excitation& excitation() const { return excitation_; }
+  [[nodiscard]] Nanos update_period() const { return period_; }
+  [[nodiscard]] std::uint64_t updates() const { return updates_; }
+
+private:
+  struct InputEvent {
+    Nanos time;
+    Level level;
+  };
+  static constexpr std::size_t kInputQueue = 32;
+  struct InputQueue {
+    std::array<InputEvent, kInputQueue> events{};
+    std::size_t head = 0;
+    std::size_t count = 0;
+    Level level = Level::Low; // energized, as the last edge left it
+  };
+  // Shared with the line handlers, which may outlive the device.
+  using InputState = std::array<InputQueue, 2>;
+  using OutputPins = std::array<LineOutput*, kOutputCount>;
+
+  [[nodiscard]] static std::size_t index(int channel) { return static_cast<std::size_t>(channel - 1); }
+  [[nodiscard]] int channels() const { return model_.channels; }
+  void schedule_update(Nanos at);
+  void update();
+  void sample_channel(std::size_t ch, Nanos peak);
+  void run_cycles(Nanos now);
+  [[nodiscard]] std::uint8_t evaluate_outputs() const;
+  void drive_outputs(std::uint8_t levels);
+  void restart_tach(std::size_t ch);
+  void clear_errors();
+  void after_program(const Setup& before, int entered_output);
+  [[nodiscard]] bool any_fault_latched() const;
+  [[nodiscard]] double speed_counts_per_ms(std::size_t ch) const;
+
+  Scheduler& scheduler_;
+  const ModelTraits& model_;
+  Params params_;
+  Fault fault_;
+  Nanos period_;
+  Excitation excitation_;
+  Pls2700Pins pins_{};
+  Setup setup_{};
+
+  std::array<int, 2> raw_{};
+  std::array<int, 2> mp_{};
+  std::array<int, 2> raw_step_{}; // last update's motion, 8192 counts
+  std::array<bool, 2> have_raw_{};
+  std::array<bool, 2> fault_present_{};
+  std::array<bool, 2> fault_latched_{};
+  std::array<Tachometer, 2> tach_{};
+  std::array<CycleLogic, 2> cycles_{};
+  std::shared_ptr<InputState> inputs_;
+  std::shared_ptr<OutputPins> outputs_;
+  std::array<HoleTable, kOutputCount> holes_{};
+  std::uint8_t output_states_ = 0;
+  std::uint8_t error_byte_ = 0;
+  std::uint64_t updates_ = 0;
+  EventId update_event_{};
+};
+
+} // namespace hilrig::models::pls2700

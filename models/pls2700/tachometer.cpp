@@ -1,0 +1,49 @@
+#include "models/pls2700/tachometer.hpp"
+
+#include <algorithm>
+
+#include "models/pls2700/position.hpp"
+
+namespace hilrig::models::pls2700 {
+
+Nanos tach_interval(int code, bool thirty_two_ms) {
+  switch (code) {
+  case 0:
+    return thirty_two_ms ? milliseconds(32) : milliseconds(30);
+  case 1:
+    return milliseconds(60);
+  case 2:
+    return milliseconds(120);
+  default:
+    return milliseconds(240);
+  }
+}
+
+std::uint16_t tach_value(std::int64_t counts, Nanos interval, bool tenths) {
+  const std::int64_t magnitude = counts < 0 ? -counts : counts;
+  // rpm = counts * 60 / (8192 * T); in integers with T in ns.
+  const std::int64_t numerator = magnitude * 60'000'000'000LL * (tenths ? 10 : 1);
+  const std::int64_t value = numerator / (kInternalCounts * interval.count());
+  return static_cast<std::uint16_t>(std::min<std::int64_t>(value, kTachMask));
+}
+
+void Tachometer::restart(Nanos now, Nanos window, Nanos scale, bool tenths) {
+  end_ = now + window;
+  window_ = window;
+  scale_ = scale;
+  tenths_ = tenths;
+  sum_ = 0;
+}
+
+bool Tachometer::update(Nanos now) {
+  if (now < end_) {
+    return false;
+  }
+  const std::uint16_t before = value_;
+  value_ = tach_value(sum_, scale_, tenths_);
+  sum_ = 0;
+  end_ += window_;
+  return value_ != before;
+}
+
+} // namespace hilrig::models::pls2700

@@ -1,0 +1,143 @@
+#include "rig/duts/pls2700_dut.hpp"
+
+#include <array>
+#include <stdexcept>
+
+#include "drivers/virtual/virtual_bus.hpp"
+#include "models/pls2700/pls2700.hpp"
+
+namespace hilrig::duts {
+
+namespace {
+
+namespace p = hilrig::models::pls2700;
+
+class Pls2700Dut final : public Dut {
+public:
+  Pls2700Dut(Scheduler& scheduler, p::ModelVariant model, const p::Params& params, p::Fault fault)
+      : device_(scheduler, model, params, fault) {}
+
+  void attach(virt::VirtualBus& bus,
+              const std::map<std::string, std::string, std::less<>>& pin_to_line) override {
+    p::Pls2700Pins pins;
+    for (const auto& [pin, line] : pin_to_line) {
+      if (!wire(bus, pin, line, pins)) throw std::invalid_argument("pls2700 has no pin " + pin);
+    }
+    device_.attach(pins);
+  }
+
+  void host_write(std::size_t word, std::uint16_t value) override {
+    if (word < btw_.size()) {
+      btw_[word] = value;
+    } else if (word == kPls2700BtwSendWord && value >= 1 && value <= btw_.size()) {
+      device_.write_btw(std::span<const std::uint16_t>(btw_.data(), value));
+    }
+  }
+  [[nodiscard]] std::uint16_t host_read(std::size_t word) const override {
+    if (word < device_.btr_words()) return device_.btr_word(word);
+    if (word == kPls2700ErrorWord) return device_.error_byte();
+    if (word == kPls2700SingleTransferWord) return device_.single_transfer_word();
+    return 0;
+  }
+
+private:
+  static bool wire(virt::VirtualBus& bus, const std::string& pin, const std::string& line,
+                   p::Pls2700Pins& pins) {
+    for (int ch = 1; ch <= 2; ++ch) {
+      const auto i = static_cast<std::size_t>(ch - 1);
+      if (pin == p::sin_pin_name(ch)) {
+        pins.stator_sin[i] = &bus.analog(line);
+        return true;
+      }
+      if (pin == p::cos_pin_name(ch)) {
+        pins.stator_cos[i] = &bus.analog(line);
+        return true;
+      }
+      if (pin == p::input_pin_name(ch)) {
+        pins.inputs[i] = &bus.line(line).reader();
+        return true;
+      }
+    }
+    for (int n = 1; n <= p::kOutputCount; ++n) {
+      if (pin == p::output_pin_name(n)) {
+        pins.outputs[static_cast<std::size_t>(n - 1)] = &bus.line(line).driver();
+        return true;
+      }
+    }
+    return false;
+  }
+
+  p::Pls2700 device_;
+  std::array<std::uint16_t, p::kMaxBtwWords> btw_{};
+};
+
+} // namespace
+
+DutInfo pls2700_info() {
+  DutInfo info;
+  info.name = "pls2700";
+  info.description = "AMCI Series 2700 programmable limit switch, 7 models (virtual model, spec/pls2700.md)";
+  for (int ch = 1; ch <= 2; ++ch) {
+    const std::string c = std::to_string(ch);
+    info.pins.push_back(
+        {p::sin_pin_name(ch), PinDirection::Input, "resolver " + c + " SIN stator (S4)", true});
+    info.pins.push_back(
+        {p::cos_pin_name(ch), PinDirection::Input, "resolver " + c + " COS stator (S3)", true});
+  }
+  for (int ch = 1; ch <= 2; ++ch)
+    info.pins.push_back({p::input_pin_name(ch), PinDirection::Input,
+                         "2742-18 DC input " + std::to_string(ch) + " (High = energized)", false});
+  for (int n = 1; n <= p::kOutputCount; ++n)
+    info.pins.push_back(
+        {p::output_pin_name(n), PinDirection::Output, "limit output " + std::to_string(n), false});
+  const p::Params d{};
+  info.params = {
+      {"model", ParamKind::Text, std::string("2742"), "2731, 2731-04, 2732, 2732-04, 2741, 2742, 2742-18"},
+      {"excitation_hz", ParamKind::Number, d.excitation_hz, "resolver reference frequency [X]"},
+      {"excitation_amplitude", ParamKind::Number, d.excitation_amplitude, "reference peak [X]"},
+      {"min_stator_ratio", ParamKind::Number, d.min_stator_ratio, "transducer fault below this stator/ref"},
+      {"max_stator_ratio", ParamKind::Number, d.max_stator_ratio, "transducer fault above this stator/ref"},
+      {"tach_32ms", ParamKind::Boolean, d.tach_32ms_on_single_channel, "tach code 0 = 32 ms on 27x1"},
+      {"wrap_pairs", ParamKind::Boolean, d.wrap_pairs, "ON > OFF wraps through zero"},
+      {"equal_pair_full_turn", ParamKind::Boolean, d.equal_pair_full_turn, "ON == OFF always on"},
+      {"reverse_advance", ParamKind::Text, std::string("signed"), "signed | disabled (R-ADV-6)"},
+      {"fault_all_outputs", ParamKind::Boolean, d.fault_turns_off_all_outputs,
+       "a transducer fault turns off all outputs (else the channel's)"},
+      {"power_up_mask", ParamKind::Integer, static_cast<std::int64_t>(d.power_up_mask),
+       "output mask at power-up"},
+      {"output_delay", ParamKind::Duration, d.output_delay, "update to output pin"},
+      {"input_delay", ParamKind::Duration, d.input_delay, "2742-18 input T_ON/T_OFF"},
+      {"update_phase", ParamKind::Duration, d.update_phase, "first update after power-up"},
+  };
+  for (const auto& f : p::kFaultNames)
+    info.variants.push_back({std::string(f.name), std::string(f.description)});
+  info.host = HostInterface{kPls2700BtwSendWord + 1, kPls2700SingleTransferWord + 1, false, 15, 15};
+  info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
+                 std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
+    const auto model = p::model_from_name(params.text("model"));
+    if (!model) throw std::invalid_argument("pls2700 has no model " + params.text("model"));
+    const auto fault = p::fault_from_name(variant);
+    if (!fault) throw std::invalid_argument("pls2700 has no variant " + std::string(variant));
+    p::Params q;
+    q.excitation_hz = params.number("excitation_hz");
+    q.excitation_amplitude = params.number("excitation_amplitude");
+    q.min_stator_ratio = params.number("min_stator_ratio");
+    q.max_stator_ratio = params.number("max_stator_ratio");
+    q.tach_32ms_on_single_channel = params.boolean("tach_32ms");
+    q.wrap_pairs = params.boolean("wrap_pairs");
+    q.equal_pair_full_turn = params.boolean("equal_pair_full_turn");
+    const std::string& reverse = params.text("reverse_advance");
+    if (reverse != "signed" && reverse != "disabled")
+      throw std::invalid_argument("pls2700 reverse_advance must be signed or disabled");
+    q.reverse_advance = reverse == "signed" ? p::ReverseAdvance::Signed : p::ReverseAdvance::Disabled;
+    q.fault_turns_off_all_outputs = params.boolean("fault_all_outputs");
+    q.power_up_mask = static_cast<std::uint8_t>(params.integer("power_up_mask") & 0xFF);
+    q.output_delay = params.duration("output_delay");
+    q.input_delay = params.duration("input_delay");
+    q.update_phase = params.duration("update_phase");
+    return std::make_unique<Pls2700Dut>(scheduler, *model, q, *fault);
+  };
+  return info;
+}
+
+} // namespace hilrig::duts

@@ -1,0 +1,24 @@
+#pragma once
+// The Series 2700 adapter: the virtual 2700 (models/pls2700) as a campaign's DUT. Pins SIN1,
+// COS1, SIN2, COS2 (analog stators), IN1, IN2 (2742-18), OUT1..OUT8. Parameter "model" picks
+// one of the seven modules ("2731" ... "2742-18"); variants by the model's fault names.
+//
+// Host words (no handshake; a block transfer is a buffer plus a length):
+//   output words 0..63  the BTW being assembled
+//   output word  64     writing n (1..64) sends words 0..n-1 as one BTW
+//   input words  0..4   the BTR (1-channel modules: 0..2, then 0)
+//   input word   5      the programming error byte
+//   input word   6      the single-transfer position word (2731-04)
+
+#include "rig/duts/dut.hpp"
+
+namespace hilrig::duts {
+
+inline constexpr std::size_t kPls2700BtwSendWord = 64;
+inline constexpr std::size_t kPls2700ErrorWord = 5;
+inline constexpr std::size_t kPls2700SingleTransferWord = 6;
+
+// The registry entry (name "pls2700").
+[[nodiscard]] DutInfo pls2700_info();
+
+} // namespace hilrig::duts
