@@ -4,13 +4,16 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "core/clock.hpp"
 #include "core/scheduler.hpp"
+#include "drivers/modbus/pty.hpp"
+#include "drivers/modbus/rtu_server.hpp"
 #include "drivers/modbus/tcp_server.hpp"
-#include "models/smd23e/smd23e.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/serve_devices.hpp"
 
 namespace hilrig::cli {
 
@@ -24,19 +27,30 @@ bool is_loopback(const std::string& addr) { return addr.rfind("127.", 0) == 0 ||
 
 struct ServeArgs {
   ServeOptions options;
-  std::string endpoint;
+  std::string tcp_endpoint;
+  std::string rtu_device;
+  bool pty = false;
+  char parity = 'E';
+  unsigned baud = 19200;
+  unsigned data_bits = 8;
+  unsigned stop_bits = 1;
+  unsigned unit = 1;
   std::string bind;
   std::string port_file;
 };
 
-void serve_main(const ServeArgs& args) {
-  ServeOptions o = args.options;
-  // --modbus-tcp [ADDR:]PORT; an address beyond loopback needs an explicit --bind.
+[[noreturn]] void bad_input(const std::string& why) {
+  std::fprintf(stderr, "hilrig serve: %s\n", why.c_str());
+  exit_with(kBadInput);
+}
+
+// --modbus-tcp [ADDR:]PORT; an address beyond loopback needs an explicit --bind.
+void parse_tcp(const ServeArgs& args, ServeOptions& o) {
   std::string host;
-  std::string port = args.endpoint;
-  if (const auto colon = args.endpoint.rfind(':'); colon != std::string::npos) {
-    host = args.endpoint.substr(0, colon);
-    port = args.endpoint.substr(colon + 1);
+  std::string port = args.tcp_endpoint;
+  if (const auto colon = args.tcp_endpoint.rfind(':'); colon != std::string::npos) {
+    host = args.tcp_endpoint.substr(0, colon);
+    port = args.tcp_endpoint.substr(colon + 1);
   }
   try {
     const unsigned long p = std::stoul(port);
@@ -45,18 +59,66 @@ void serve_main(const ServeArgs& args) {
     }
     o.port = static_cast<std::uint16_t>(p);
   } catch (const std::exception&) {
-    std::fprintf(stderr, "hilrig serve: bad port in --modbus-tcp %s\n", args.endpoint.c_str());
-    exit_with(kBadInput);
+    bad_input("bad port in --modbus-tcp " + args.tcp_endpoint);
   }
   if (!args.bind.empty()) {
     o.bind = args.bind;
   } else if (!host.empty()) {
     if (!is_loopback(host)) {
-      std::fprintf(stderr, "hilrig serve: %s is not loopback; pass --bind %s to serve beyond this host\n",
-                   host.c_str(), host.c_str());
-      exit_with(kBadInput);
+      bad_input(host + " is not loopback; pass --bind " + host + " to serve beyond this host");
     }
     o.bind = host == "localhost" ? "127.0.0.1" : host;
+  }
+}
+
+void parse_rtu(const ServeArgs& args, ServeOptions& o) {
+  o.serial_device = args.rtu_device;
+  o.format.baud = args.baud;
+  o.format.data_bits = static_cast<std::uint8_t>(args.data_bits);
+  o.format.stop_bits = static_cast<std::uint8_t>(args.stop_bits);
+  o.format.parity = args.parity == 'N' ? Parity::None : args.parity == 'O' ? Parity::Odd : Parity::Even;
+  o.unit = static_cast<std::uint8_t>(args.unit);
+}
+
+const char* parity_name(Parity p) { return p == Parity::None ? "N" : p == Parity::Odd ? "O" : "E"; }
+
+void announce(const ServeOptions& o, const ServeEndpoint& e, const std::string& port_file) {
+  if (e.link == ServeLink::Tcp) {
+    std::printf("hilrig serve: %s listening on %s:%u (Modbus TCP)\n", o.device.c_str(), o.bind.c_str(),
+                static_cast<unsigned>(e.port));
+  } else {
+    std::printf("hilrig serve: %s on %s (Modbus RTU unit %u, %u %u%s%u)\n", o.device.c_str(),
+                e.serial_path.c_str(), static_cast<unsigned>(o.unit), static_cast<unsigned>(o.format.baud),
+                static_cast<unsigned>(o.format.data_bits), parity_name(o.format.parity),
+                static_cast<unsigned>(o.format.stop_bits));
+  }
+  if (!e.note.empty()) {
+    std::printf("hilrig serve: note: %s\n", e.note.c_str());
+  }
+  std::fflush(stdout);
+  if (!port_file.empty()) {
+    std::ofstream f(port_file);
+    if (e.link == ServeLink::Tcp) {
+      f << e.port << '\n';
+    } else {
+      f << e.serial_path << '\n';
+    }
+  }
+}
+
+void serve_main(const ServeArgs& args) {
+  ServeOptions o = args.options;
+  const int links =
+      (args.tcp_endpoint.empty() ? 0 : 1) + (args.rtu_device.empty() ? 0 : 1) + (args.pty ? 1 : 0);
+  if (links != 1) {
+    bad_input("give exactly one link: --modbus-tcp [ADDR:]PORT, --modbus-rtu DEVICE or --pty");
+  }
+  if (!args.tcp_endpoint.empty()) {
+    o.link = ServeLink::Tcp;
+    parse_tcp(args, o);
+  } else {
+    o.link = args.pty ? ServeLink::Pty : ServeLink::Rtu;
+    parse_rtu(args, o);
   }
   g_stop.store(false);
   struct sigaction sa {};
@@ -66,73 +128,119 @@ void serve_main(const ServeArgs& args) {
   struct sigaction old_term {};
   sigaction(SIGINT, &sa, &old_int);
   sigaction(SIGTERM, &sa, &old_term);
+  const auto restore = [&] {
+    sigaction(SIGINT, &old_int, nullptr);
+    sigaction(SIGTERM, &old_term, nullptr);
+  };
   try {
-    run_serve(o, g_stop, [&](std::uint16_t bound) {
-      std::printf("hilrig serve: %s listening on %s:%u (Modbus TCP)\n", o.device.c_str(), o.bind.c_str(),
-                  static_cast<unsigned>(bound));
-      std::fflush(stdout);
-      if (!args.port_file.empty()) {
-        std::ofstream(args.port_file) << bound << '\n';
-      }
-    });
+    serve_device(o, g_stop, [&](const ServeEndpoint& e) { announce(o, e, args.port_file); });
   } catch (const std::invalid_argument& e) {
-    sigaction(SIGINT, &old_int, nullptr);
-    sigaction(SIGTERM, &old_term, nullptr);
-    std::fprintf(stderr, "hilrig serve: %s\n", e.what());
-    exit_with(kBadInput);
+    restore();
+    bad_input(e.what());
   } catch (...) {
-    sigaction(SIGINT, &old_int, nullptr);
-    sigaction(SIGTERM, &old_term, nullptr);
+    restore();
     throw;
   }
-  sigaction(SIGINT, &old_int, nullptr);
-  sigaction(SIGTERM, &old_term, nullptr);
+  restore();
+}
+
+// Runs a server with the model in real time: virtual time is the monotonic time since start.
+template <typename Server>
+void serve_in_real_time(Server& server, Scheduler& scheduler, const std::atomic<bool>& stop) {
+  const MonotonicClock clock;
+  const Nanos t0 = clock.now();
+  server.on_tick([&] { scheduler.run_until(clock.now() - t0); });
+  server.run(stop);
 }
 
 } // namespace
 
+void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
+                  const std::function<void(const ServeEndpoint&)>& on_ready) {
+  const ServedDevice* device = find_served_device(options.device);
+  if (device == nullptr) {
+    throw std::invalid_argument("unknown device '" + options.device + "' (served: " + served_device_names() +
+                                ")");
+  }
+  Scheduler scheduler;
+  const ServedModel model = device->build(scheduler, {options.fault, options.m12, options.no_encoder});
+  ServeEndpoint endpoint;
+  endpoint.link = options.link;
+  if (options.link == ServeLink::Tcp) {
+    drivers::modbus::TcpServerOptions server_options;
+    server_options.bind = options.bind;
+    server_options.port = options.port;
+    drivers::modbus::TcpServer server(*model.registers, server_options);
+    endpoint.port = server.port();
+    if (on_ready) {
+      on_ready(endpoint);
+    }
+    serve_in_real_time(server, scheduler, stop);
+    return;
+  }
+  drivers::modbus::RtuServerOptions server_options;
+  server_options.device = options.serial_device;
+  server_options.format = options.format;
+  server_options.unit = options.unit;
+  server_options.rs485 = options.rs485;
+  std::optional<drivers::modbus::Pty> pty;
+  std::optional<drivers::modbus::RtuServer> server;
+  if (options.link == ServeLink::Pty) {
+    pty.emplace();
+    server.emplace(*model.registers, pty->master_fd(), server_options);
+    endpoint.serial_path = pty->slave_path();
+  } else {
+    server.emplace(*model.registers, server_options);
+    endpoint.serial_path = options.serial_device;
+  }
+  endpoint.note = server->rs485_note();
+  endpoint.rtu_stats = &server->stats();
+  if (on_ready) {
+    on_ready(endpoint);
+  }
+  serve_in_real_time(*server, scheduler, stop);
+}
+
 void run_serve(const ServeOptions& options, const std::atomic<bool>& stop,
                const std::function<void(std::uint16_t port)>& on_listening) {
-  if (options.device != "smd23e") {
-    throw std::invalid_argument("unknown device '" + options.device + "' (served: smd23e)");
-  }
-  const auto fault = models::smd23e::fault_from_name(options.fault);
-  if (!fault) {
-    throw std::invalid_argument("unknown fault variant '" + options.fault + "'");
-  }
-  models::smd23e::Params params;
-  params.fault = *fault;
-  params.m12 = options.m12;
-  params.has_encoder = !options.no_encoder;
-  Scheduler scheduler;
-  models::smd23e::Smd23e device(scheduler, params);
-  drivers::modbus::TcpServerOptions server_options;
-  server_options.bind = options.bind;
-  server_options.port = options.port;
-  drivers::modbus::TcpServer server(device, server_options);
-  // Real time: virtual time is the monotonic time since the server started.
-  const MonotonicClock clock;
-  const Nanos t0 = clock.now();
-  server.on_tick([&] { scheduler.run_until(clock.now() - t0); });
-  if (on_listening) {
-    on_listening(server.port());
-  }
-  server.run(stop);
+  ServeOptions tcp = options;
+  tcp.link = ServeLink::Tcp;
+  serve_device(tcp, stop, [&](const ServeEndpoint& e) {
+    if (on_listening) {
+      on_listening(e.port);
+    }
+  });
 }
 
 void add_serve_command(CLI::App& app) {
   auto args = std::make_shared<ServeArgs>();
-  CLI::App* cmd = app.add_subcommand("serve", "Run a virtual device as a Modbus TCP server in real time");
-  cmd->add_option("device", args->options.device, "Device model to serve (smd23e)")->required();
-  cmd->add_option("--modbus-tcp", args->endpoint, "[ADDR:]PORT to listen on (PORT 0 picks a free port)")
+  CLI::App* cmd =
+      app.add_subcommand("serve", "Run a virtual device in real time behind a Modbus TCP or RTU link");
+  cmd->add_option("device", args->options.device, "Device model to serve (" + served_device_names() + ")")
       ->required();
+  cmd->add_option("--modbus-tcp", args->tcp_endpoint, "[ADDR:]PORT to listen on (PORT 0 picks a free port)");
+  cmd->add_option("--modbus-rtu", args->rtu_device, "Serial device to serve Modbus RTU on");
+  cmd->add_flag("--pty", args->pty,
+                "Serve Modbus RTU on a new pty pair; prints the slave path for the client");
   cmd->add_option("--bind", args->bind, "Address to bind (default 127.0.0.1; needed for non-loopback)");
+  cmd->add_option("--baud", args->baud, "RTU baud rate (default 19200)");
+  cmd->add_option("--parity", args->parity, "RTU parity N, E or O (default E)")
+      ->check(CLI::IsMember({'N', 'E', 'O'}));
+  cmd->add_option("--data-bits", args->data_bits, "RTU data bits 7 or 8 (default 8)")
+      ->check(CLI::Range(7U, 8U));
+  cmd->add_option("--stop-bits", args->stop_bits, "RTU stop bits 1 or 2 (default 1)")
+      ->check(CLI::Range(1U, 2U));
+  cmd->add_option("--unit", args->unit, "RTU unit id 1..247 (default 1)")->check(CLI::Range(1U, 247U));
+  cmd->add_flag("--rs485", args->options.rs485,
+                "Put the serial port in RS-485 mode (reported when unsupported)");
   cmd->add_option("--fault", args->options.fault,
-                  "Fault variant: none, wrong-acceleration, lost-steps, "
-                  "ignored-limit, late-stop");
-  cmd->add_flag("--m12", args->options.m12, "Model an M12 unit (two inputs)");
-  cmd->add_flag("--no-encoder", args->options.no_encoder, "Model a unit without the internal encoder");
-  cmd->add_option("--port-file", args->port_file, "Write the bound port to this file once listening");
+                  "Fault variant (smd23e: none, wrong-acceleration, lost-steps, ignored-limit, late-stop; "
+                  "ans1: none or a variant name)");
+  cmd->add_flag("--m12", args->options.m12, "smd23e: model an M12 unit (two inputs)");
+  cmd->add_flag("--no-encoder", args->options.no_encoder,
+                "smd23e: model a unit without the internal encoder");
+  cmd->add_option("--port-file", args->port_file,
+                  "Write the bound TCP port (or the RTU device / pty slave path) to this file once serving");
   cmd->callback([args] { serve_main(*args); });
 }
 

@@ -1,9 +1,12 @@
 #pragma once
-// `hilrig serve smd23e --modbus-tcp [ADDR:]PORT [--bind ADDR] [--fault NAME]`: runs a virtual
-// device in real time as a Modbus TCP server (the SMD23E's map: input registers 0–9,
-// holding registers 1024–1033). Its scheduler is advanced to the monotonic clock before
-// each request and every poll period. Loopback only unless --bind says otherwise; stops
-// cleanly on SIGINT/SIGTERM.
+// `hilrig serve DEVICE` runs a virtual device (serve_devices.hpp) in real time behind one
+// Modbus link:
+//   --modbus-tcp [ADDR:]PORT [--bind ADDR]     Modbus TCP, loopback unless --bind says otherwise
+//   --modbus-rtu PATH [--baud B --parity N|E|O --data-bits 7|8 --stop-bits 1|2 --unit U --rs485]
+//   --pty [--unit U ...]                       Modbus RTU on a new pty pair; prints (and writes
+//                                              to --port-file) the slave path a client opens
+// The model's scheduler is advanced to the monotonic clock before each request is answered
+// and every poll period. Stops cleanly on SIGINT/SIGTERM.
 
 #include <CLI/CLI.hpp>
 
@@ -12,19 +15,46 @@
 #include <functional>
 #include <string>
 
+#include "core/serial.hpp"
+#include "drivers/modbus/rtu_server.hpp"
+
 namespace hilrig::cli {
+
+enum class ServeLink : std::uint8_t { Tcp, Rtu, Pty };
 
 struct ServeOptions {
   std::string device = "smd23e";
+  ServeLink link = ServeLink::Tcp;
+  // Modbus TCP
   std::string bind = "127.0.0.1";
-  std::uint16_t port = 502; // 0: a free port, reported through on_listening
+  std::uint16_t port = 502; // 0: a free port, reported through on_listening / on_ready
+  // Modbus RTU (Rtu: serial_device is opened; Pty: a new pty pair is made)
+  std::string serial_device;
+  SerialFormat format{19200, 8, Parity::Even, 1};
+  std::uint8_t unit = 1;
+  bool rs485 = false;
+  // The model
   std::string fault = "none";
   bool m12 = false;
   bool no_encoder = false;
 };
 
-// Serves until `stop` becomes true. on_listening gets the bound port once listening.
-// Throws std::runtime_error for an unknown device/fault or a port it cannot bind.
+// What a client needs to reach the served device; valid while serve_device runs.
+struct ServeEndpoint {
+  ServeLink link = ServeLink::Tcp;
+  std::uint16_t port = 0;  // Tcp: the bound port
+  std::string serial_path; // Rtu: the device; Pty: the slave path a client opens
+  std::string note;        // e.g. why RS-485 mode is off; empty when all is as asked
+  const drivers::modbus::RtuServerStats* rtu_stats = nullptr; // Rtu/Pty
+};
+
+// Serves until `stop` becomes true; on_ready is called once the link is up.
+// Throws std::invalid_argument for an unknown device or fault, std::runtime_error for a
+// link it cannot open.
+void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
+                  const std::function<void(const ServeEndpoint&)>& on_ready);
+
+// Modbus TCP only (the original interface): on_listening gets the bound port.
 void run_serve(const ServeOptions& options, const std::atomic<bool>& stop,
                const std::function<void(std::uint16_t port)>& on_listening = {});
 

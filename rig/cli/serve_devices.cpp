@@ -1,0 +1,164 @@
+#include "rig/cli/serve_devices.hpp"
+
+#include <stdexcept>
+
+#include "drivers/virtual/virtual_bus.hpp"
+#include "models/amci4501/amci4501.hpp"
+#include "models/amci4501/registers.hpp"
+#include "models/ans1/ans1.hpp"
+#include "models/ans1/ans1_register_map.hpp"
+#include "models/ans1/variants.hpp"
+#include "models/smd23e/smd23e.hpp"
+#include "models/ssi7361/registers.hpp"
+#include "models/ssi7361/ssi7361.hpp"
+
+namespace hilrig::cli {
+
+namespace {
+
+// "none" is every model's as-specified variant; the models call it "nominal".
+std::string_view nominal_if_none(const std::string& fault) {
+  return fault == "none" ? std::string_view("nominal") : std::string_view(fault);
+}
+
+[[noreturn]] void unknown_fault(std::string_view device, const std::string& fault) {
+  throw std::invalid_argument("unknown fault variant '" + fault + "' for " + std::string(device));
+}
+
+ServedModel build_smd23e(Scheduler& scheduler, const ServeModelOptions& o) {
+  const auto fault = models::smd23e::fault_from_name(o.fault);
+  if (!fault) {
+    unknown_fault("smd23e", o.fault);
+  }
+  models::smd23e::Params params;
+  params.fault = *fault;
+  params.m12 = o.m12;
+  params.has_encoder = !o.no_encoder;
+  auto device = std::make_shared<models::smd23e::Smd23e>(scheduler, params);
+  RegisterMap* map = device.get();
+  return {std::move(device), map};
+}
+
+// The ANS1 with no pins attached: no resolver signals (so Resolver Fault is set until a rig
+// drives them), inputs off. Its host words are fully served.
+ServedModel build_ans1(Scheduler& scheduler, const ServeModelOptions& o) {
+  const auto variant = models::ans1::variant_from_name(nominal_if_none(o.fault));
+  if (!variant) {
+    unknown_fault("ans1", o.fault);
+  }
+  struct Served {
+    Served(Scheduler& s, models::ans1::Variant v) : device(s, models::ans1::Params{}, v), map(device) {}
+    models::ans1::Ans1 device;
+    models::ans1::Ans1RegisterMap map;
+  };
+  auto served = std::make_shared<Served>(scheduler, *variant);
+  RegisterMap* map = &served->map;
+  return {std::move(served), map};
+}
+
+// The SSI 7361 with its clock and data lines on a private virtual bus and no encoder on them
+// (undriven DATA reads 1, L2178). The host words (%Q/%AQ, %I/%AI) are fully served.
+ServedModel build_ssi7361(Scheduler& scheduler, const ServeModelOptions& o) {
+  const auto variant = models::ssi7361::variant_from_string(nominal_if_none(o.fault));
+  if (!variant) {
+    unknown_fault("ssi7361", o.fault);
+  }
+  struct Served {
+    Served(Scheduler& s, const models::ssi7361::Params& p)
+        : bus(s), module(s, bus.line("ssi.clock", Level::High).driver(),
+                         bus.line("ssi.data", Level::High).reader(), p),
+          map(module) {}
+    virt::VirtualBus bus;
+    models::ssi7361::Ssi7361 module;
+    models::ssi7361::Ssi7361Registers map;
+  };
+  models::ssi7361::Params params;
+  params.variant = *variant;
+  auto served = std::make_shared<Served>(scheduler, params);
+  RegisterMap* map = &served->map;
+  return {std::move(served), map};
+}
+
+// The 4501 with its encoder, Start, Latch and Cycle Output lines on a private virtual bus,
+// all idle. The SLC words (O:s.0..7, I:s.0..7) are fully served.
+ServedModel build_amci4501(Scheduler& scheduler, const ServeModelOptions& o) {
+  const auto variant = models::amci4501::variant_from_string(nominal_if_none(o.fault));
+  if (!variant) {
+    unknown_fault("amci4501", o.fault);
+  }
+  struct Served {
+    Served(Scheduler& s, const models::amci4501::Params& p)
+        : bus(s),
+          module(s,
+                 {bus.line("4501.a").reader(), bus.line("4501.b").reader(), bus.line("4501.start").reader(),
+                  bus.line("4501.latch").reader(), bus.line("4501.cycle").driver()},
+                 p),
+          map(module) {}
+    virt::VirtualBus bus;
+    models::amci4501::Amci4501 module;
+    models::amci4501::Amci4501Registers map;
+  };
+  models::amci4501::Params params;
+  params.variant = *variant;
+  auto served = std::make_shared<Served>(scheduler, params);
+  RegisterMap* map = &served->map;
+  return {std::move(served), map};
+}
+
+template <typename Names> std::string names_of(const Names& variants) {
+  std::string names = "none";
+  for (const auto& v : variants) {
+    names += ", " + std::string(v.name);
+  }
+  return names;
+}
+
+} // namespace
+
+const std::vector<ServedDevice>& served_devices() {
+  static const std::string ans1_faults = names_of(models::ans1::kVariantNames);
+  static const std::string amci4501_faults = names_of(models::amci4501::kVariantNames);
+  static const std::string ssi7361_faults = names_of(models::ssi7361::kVariantNames);
+  static const std::vector<ServedDevice> devices{
+      {"amci4501",
+       "AMCI 4501 registration: input words I:s.0-7 at input registers 0-7, O:s.0-7 at holding 0-7",
+       amci4501_faults,
+       {0, 8, 0, 8},
+       build_amci4501},
+      {"ans1",
+       "ANS1 limit switch: status words at input registers 0-19, command words at holding 1024-1043",
+       ans1_faults,
+       {1024, 20, 0, 20},
+       build_ans1},
+      {"smd23e",
+       "SMD23E stepper: input registers 0-9, output words at holding registers 1024-1033",
+       "none, wrong-acceleration, lost-steps, ignored-limit, late-stop",
+       {1024, 10, 0, 10},
+       build_smd23e},
+      {"ssi7361",
+       "AMCI 7361 SSI interface: %I, %AI1-6 at input registers 0-6, %Q, %AQ1-6 at holding 0-6",
+       ssi7361_faults,
+       {0, 7, 0, 7},
+       build_ssi7361},
+  };
+  return devices;
+}
+
+const ServedDevice* find_served_device(std::string_view name) {
+  for (const ServedDevice& d : served_devices()) {
+    if (d.name == name) {
+      return &d;
+    }
+  }
+  return nullptr;
+}
+
+std::string served_device_names() {
+  std::string names;
+  for (const ServedDevice& d : served_devices()) {
+    names += (names.empty() ? "" : ", ") + std::string(d.name);
+  }
+  return names;
+}
+
+} // namespace hilrig::cli

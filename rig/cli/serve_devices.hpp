@@ -1,0 +1,54 @@
+#pragma once
+// The devices `hilrig serve` can run: name -> a factory that builds the virtual model on a
+// Scheduler and hands back the RegisterMap a Modbus server serves. To serve another model,
+// add one entry to the table in serve_devices.cpp (and its library to serve.cmake).
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/register_map.hpp"
+#include "core/scheduler.hpp"
+
+namespace hilrig::cli {
+
+// Device-specific knobs from the command line; a factory reads the ones it knows.
+struct ServeModelOptions {
+  std::string fault = "none"; // fault variant name; "none" (or the model's nominal name) = as specified
+  bool m12 = false;           // smd23e: an M12 unit
+  bool no_encoder = false;    // smd23e: no internal encoder
+};
+
+// A built model: `keep` owns the model (and whatever it needs); `registers` is its host map.
+struct ServedModel {
+  std::shared_ptr<void> keep;
+  RegisterMap* registers = nullptr;
+};
+
+// Where the device's host words sit: command (output) word k is holding register
+// command_base + k, status (input) word k is input register status_base + k. What a host
+// (e.g. the campaign executive driving a ModbusClient) needs to address the words.
+struct HostWordMap {
+  std::uint16_t command_base = 0;
+  std::uint16_t command_words = 0;
+  std::uint16_t status_base = 0;
+  std::uint16_t status_words = 0;
+};
+
+struct ServedDevice {
+  std::string_view name;
+  std::string_view description; // one line: what is served, where
+  std::string_view faults;      // the fault variant names it accepts, for help texts
+  HostWordMap words;
+  // Builds the model on the scheduler; throws std::invalid_argument for an unknown fault.
+  std::function<ServedModel(Scheduler&, const ServeModelOptions&)> build;
+};
+
+[[nodiscard]] const std::vector<ServedDevice>& served_devices();
+[[nodiscard]] const ServedDevice* find_served_device(std::string_view name); // nullptr: unknown
+[[nodiscard]] std::string served_device_names();                             // "ans1, smd23e"
+
+} // namespace hilrig::cli
