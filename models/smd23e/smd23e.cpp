@@ -207,7 +207,8 @@ InputFunction Smd23e::function_of(int input) const {
   if (!configured_) {
     return InputFunction::GeneralPurpose;
   }
-  return static_cast<InputFunction>((cfg_.words[0] >> (3 * input)) & 7U);
+  return static_cast<InputFunction>(
+      (static_cast<unsigned>(cfg_.words[0]) >> (3U * static_cast<unsigned>(input))) & 7U);
 }
 
 int Smd23e::input_with(InputFunction f) const {
