@@ -8,6 +8,8 @@
 #include "models/ans1/ans1.hpp"
 #include "models/ans1/ans1_register_map.hpp"
 #include "models/ans1/variants.hpp"
+#include "models/pls2700/pls2700.hpp"
+#include "models/pls2700/register_map.hpp"
 #include "models/smd23e/smd23e.hpp"
 #include "models/ssi7361/registers.hpp"
 #include "models/ssi7361/ssi7361.hpp"
@@ -105,6 +107,24 @@ ServedModel build_amci4501(Scheduler& scheduler, const ServeModelOptions& o) {
   return {std::move(served), map};
 }
 
+// A Series 2731 (the single-channel standard module) with no stators attached, so it reports
+// a transducer fault (8000h position words) until the host looks; its BTW/BTR words are served.
+ServedModel build_pls2700(Scheduler& scheduler, const ServeModelOptions& o) {
+  const auto fault = models::pls2700::fault_from_name(nominal_if_none(o.fault));
+  if (!fault) {
+    unknown_fault("pls2700", o.fault);
+  }
+  struct Served {
+    Served(Scheduler& s, models::pls2700::Fault f)
+        : module(s, models::pls2700::ModelVariant::M2731, {}, f), map(module) {}
+    models::pls2700::Pls2700 module;
+    models::pls2700::Pls2700Registers map;
+  };
+  auto served = std::make_shared<Served>(scheduler, *fault);
+  RegisterMap* map = &served->map;
+  return {std::move(served), map};
+}
+
 template <typename Names> std::string names_of(const Names& variants) {
   std::string names = "none";
   for (const auto& v : variants) {
@@ -119,6 +139,7 @@ const std::vector<ServedDevice>& served_devices() {
   static const std::string ans1_faults = names_of(models::ans1::kVariantNames);
   static const std::string amci4501_faults = names_of(models::amci4501::kVariantNames);
   static const std::string ssi7361_faults = names_of(models::ssi7361::kVariantNames);
+  static const std::string pls2700_faults = names_of(models::pls2700::kFaultNames);
   static const std::vector<ServedDevice> devices{
       {"amci4501",
        "AMCI 4501 registration: input words I:s.0-7 at input registers 0-7, O:s.0-7 at holding 0-7",
@@ -130,6 +151,12 @@ const std::vector<ServedDevice>& served_devices() {
        ans1_faults,
        {1024, 20, 0, 20},
        build_ans1},
+      {"pls2700",
+       "Series 2731 limit switch: BTR at input registers 0-2, BTW at holding 0-63 (FC16 at 0 = one BTW), "
+       "error byte at holding 64",
+       pls2700_faults,
+       {0, 65, 0, 3},
+       build_pls2700},
       {"smd23e",
        "SMD23E stepper: input registers 0-9, output words at holding registers 1024-1033",
        "none, wrong-acceleration, lost-steps, ignored-limit, late-stop",
