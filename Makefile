@@ -3,6 +3,7 @@
 SHELL := /bin/bash
 JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
+DEMO_CAMPAIGN ?= campaigns/reference/reference_pls_pass.toml
 
 .PHONY: all deps build build-asan demo test test-unit test-asan test-vm bench format format-check clean
 
@@ -19,9 +20,15 @@ build-asan: deps
 	@cmake --preset asan >/dev/null
 	@cmake --build --preset asan -j $(JOBS)
 
-# Runs the demo on the virtual bus and prints where its output is.
+# Runs a shipped campaign on the virtual bus and prints where its report is; exits with the
+# campaign's status (0 passed, 1 a check failed, 2 bad input, 3 rig fault).
 demo: build
-	@build/hilrig demo --out $(DEMO_OUT)
+	@status=0; build/hilrig run $(DEMO_CAMPAIGN) --out $(DEMO_OUT) || status=$$?; \
+	echo ""; \
+	echo "demo: $(DEMO_CAMPAIGN) -> exit $$status"; \
+	echo "demo: report   $(abspath $(DEMO_OUT))/report.html"; \
+	echo "demo: results  $(abspath $(DEMO_OUT))/results.json, junit.xml, trace.vcd"; \
+	exit $$status
 
 test-unit: build
 	@ctest --preset default -j $(JOBS)

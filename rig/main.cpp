@@ -6,9 +6,6 @@
 #include <cstdio>
 #include <exception>
 
-#ifdef HILRIG_HAVE_DEMO_COMMAND
-#include "rig/cli/demo_command.hpp"
-#endif
 #ifdef HILRIG_HAVE_SYNTH_COMMAND
 #include "rig/cli/synth_command.hpp"
 #endif
@@ -35,9 +32,6 @@ int main(int argc, char** argv) {
   CLI::App app{"hilrig: a real-time hardware-in-the-loop test rig for AMCI boards"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "hilrig 0.1.0");
-#ifdef HILRIG_HAVE_DEMO_COMMAND
-  hilrig::cli::add_demo_command(app);
-#endif
 #ifdef HILRIG_HAVE_SYNTH_COMMAND
   hilrig::cli::add_synth_command(app);
 #endif

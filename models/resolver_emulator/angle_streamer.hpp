@@ -1,0 +1,66 @@
+#pragma once
+// The rig side of the resolver-emulator link: sends a ResolverAngle frame (0x120,
+// signals/resolver_frames.hpp) every period with the profile's angle and speed, so the
+// node (resolver_emulator.hpp) can interpolate between frames.
+//
+// The frame sent at t carries the profile at t + lead. The node holds a frame's angle at
+// its end of frame, so a lead equal to the frame's time on the bus (start of frame to end
+// of frame, ~108..130 bits) cancels the transport delay; with lead 0 the node's angle lags
+// the profile by that time.
+
+#include <cstdint>
+
+#include "core/can_frame.hpp"
+#include "core/scheduler.hpp"
+#include "core/time.hpp"
+#include "signals/motion_profile.hpp"
+
+namespace hilrig::models::resolver_emulator {
+
+struct AngleStreamParams {
+  std::uint8_t channel = 0; // 0..15
+  Nanos period = milliseconds(1);
+  double units_per_turn = 1.0; // the profile's position unit (e.g. 4096 for ANS1 counts)
+  Nanos lead{0};               // the frame at t carries the profile at t + lead
+};
+
+class AngleStreamer {
+public:
+  // Throws std::invalid_argument for a period <= 0, units_per_turn <= 0 or a channel above 15.
+  // The scheduler and the port must outlive the streamer.
+  AngleStreamer(Scheduler& scheduler, CanPort& port, signals::MotionProfile profile,
+                AngleStreamParams params = {});
+  AngleStreamer(const AngleStreamer&) = delete;
+  AngleStreamer& operator=(const AngleStreamer&) = delete;
+  ~AngleStreamer();
+
+  // First frame at `first` (>= now), then one every period until stop().
+  void start(Nanos first);
+  void stop();
+  [[nodiscard]] bool running() const { return next_.valid(); }
+
+  // Flags carried by the frames sent from now on.
+  void set_valid(bool valid) { valid_ = valid; }
+  void set_open_windings(bool sin_open, bool cos_open) {
+    sin_open_ = sin_open;
+    cos_open_ = cos_open;
+  }
+
+  [[nodiscard]] std::uint64_t frames_sent() const { return sent_; }
+  [[nodiscard]] const AngleStreamParams& params() const { return params_; }
+
+private:
+  void send_at(Nanos t);
+
+  Scheduler& scheduler_;
+  CanPort& port_;
+  signals::MotionProfile profile_;
+  AngleStreamParams params_;
+  EventId next_{};
+  std::uint64_t sent_ = 0;
+  bool valid_ = true;
+  bool sin_open_ = false;
+  bool cos_open_ = false;
+};
+
+} // namespace hilrig::models::resolver_emulator
