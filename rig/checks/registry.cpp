@@ -8,7 +8,9 @@
 #include "rig/checks/crossings.hpp"
 #include "rig/checks/edge_position.hpp"
 #include "rig/checks/pulse_width.hpp"
+#include "rig/checks/shaft_move.hpp"
 #include "rig/checks/throughput.hpp"
+#include "rig/checks/word_bits.hpp"
 #include "rig/checks/words.hpp"
 
 namespace hilrig::checks {
@@ -197,6 +199,22 @@ CheckResult frames(std::string_view name, const Capture& c, const json& p) {
                              dec->second, s);
 }
 
+CheckResult shaft(std::string_view name, const Capture& c, const json& p) {
+  ShaftMoveSpec s;
+  s.name = name;
+  s.from = ms(p, "from_ms");
+  s.to = has(p, "to_ms") ? ms(p, "to_ms") : c.end;
+  s.dir_initial = level(p, "dir_initial", Level::Low);
+  s.steps = opt_num(p, "steps");
+  s.steps_tolerance = num(p, "steps_tolerance", 0.0);
+  s.duration_min_ms = opt_num(p, "duration_min_ms");
+  s.duration_max_ms = opt_num(p, "duration_max_ms");
+  s.peak_min = opt_num(p, "peak_min");
+  s.peak_max = opt_num(p, "peak_max");
+  s.reversals = opt_num(p, "reversals");
+  return check_shaft_move(line(c, str(p, "step_line")), line(c, str(p, "dir_line")), s);
+}
+
 std::vector<std::string> one_of(const json& p, const char* a, const char* b) {
   if (has(p, a) == has(p, b)) return {fmt::format("give exactly one of '{}' and '{}'", a, b)};
   return {};
@@ -312,6 +330,47 @@ std::vector<CheckKind> make_kinds() {
        bind(frames),
        false,
        nullptr});
+  k.push_back(
+      {"shaft_move",
+       "a stepper shaft seen by its step and direction lines: net steps, duration, peak speed, reversals",
+       {P("step_line", Str, true, "one edge per step"), P("dir_line", Str, true, "High = CW"),
+        P("dir_initial", Lvl, false, "dir_line before its first edge (low)"),
+        P("from_ms", Num, true, "window start: the command or the stop trigger; steps after it count"),
+        P("to_ms", Num, false, "window end (the run's end)"),
+        P("steps", Num, false, "expected net steps, CW +"),
+        P("steps_tolerance", Num, false, "either side (0)"),
+        P("duration_min_ms", Num, false, "from from_ms to the last step (0 with no step)"),
+        P("duration_max_ms", Num, false, "upper limit on that"),
+        P("peak_min", Num, false, "steps/s: 1 / shortest step interval, lower limit"),
+        P("peak_max", Num, false, "steps/s: upper limit"),
+        P("reversals", Int, false, "exact count of direction changes")},
+       bind(shaft),
+       false,
+       [](const json& p) {
+         for (const char* key :
+              {"steps", "duration_min_ms", "duration_max_ms", "peak_min", "peak_max", "reversals"})
+           if (has(p, key)) return std::vector<std::string>{};
+         return std::vector<std::string>{"give at least one of steps, duration_*, peak_*, reversals"};
+       }});
+  k.push_back(
+      {"word_bits",
+       "an observed word's bits under a mask equal a value",
+       {P("observation", Str, true, "the observation's name"), P("mask", Int, true, "bits judged (0..65535)"),
+        P("value", Int, true, "expected (word & mask)"),
+        P("at_ms", Num, false, "judge the latest observation by then (default: the last)")},
+       [](const Capture& c, const json& p) {
+         return check_word_bits(c.observations, word_spec(p.value("__name", std::string()), p),
+                                static_cast<std::uint16_t>(p.at("mask").get<std::uint64_t>() & 0xFFFFU),
+                                static_cast<std::uint16_t>(p.at("value").get<std::uint64_t>() & 0xFFFFU));
+       },
+       false,
+       [](const json& p) {
+         if (p.at("mask").get<std::uint64_t>() > 0xFFFFU || p.at("value").get<std::uint64_t>() > 0xFFFFU)
+           return std::vector<std::string>{"mask and value are 16-bit words (0..65535)"};
+         if ((p.at("value").get<std::uint64_t>() & ~p.at("mask").get<std::uint64_t>()) != 0U)
+           return std::vector<std::string>{"value has bits outside the mask"};
+         return std::vector<std::string>{};
+       }});
   return k;
 }
 

@@ -18,6 +18,9 @@
 #ifdef HILRIG_HAVE_PLS2700_MODEL
 #include "rig/duts/pls2700_dut.hpp"
 #endif
+#ifdef HILRIG_HAVE_SMD23E_MODEL
+#include "rig/duts/smd23e_dut.hpp"
+#endif
 
 namespace hilrig::duts {
 
@@ -87,6 +90,9 @@ const std::vector<DutInfo>& dut_registry() {
 #endif
 #ifdef HILRIG_HAVE_PLS2700_MODEL
     r.push_back(pls2700_info());
+#endif
+#ifdef HILRIG_HAVE_SMD23E_MODEL
+    r.push_back(smd23e_info());
 #endif
     std::sort(r.begin(), r.end(), [](const DutInfo& a, const DutInfo& b) { return a.name < b.name; });
     return r;

@@ -22,7 +22,7 @@ TEST(Registry, NamesEveryCheckKindTheCampaignsUse) {
   }
   EXPECT_EQ(names, (std::set<std::string>{"throughput", "debounce", "advance_counts", "brake_stop_time",
                                           "edge_at_position", "pulse_width", "word_equals", "word_within",
-                                          "frame_decodes"}));
+                                          "frame_decodes", "shaft_move", "word_bits"}));
   ASSERT_NE(find_check_kind("debounce"), nullptr);
   EXPECT_TRUE(find_check_kind("debounce")->needs_bisection);
   EXPECT_EQ(find_check_kind("nonsense"), nullptr);

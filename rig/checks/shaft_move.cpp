@@ -1,0 +1,85 @@
+#include "rig/checks/shaft_move.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+#include <fmt/format.h>
+
+namespace hilrig::checks {
+
+namespace {
+
+// The direction line's level at t (edges at t included: the sensor sets DIR before STEP).
+Level level_at(std::span<const Edge> dir, Nanos t, Level initial) {
+  Level l = initial;
+  for (const Edge& e : dir) {
+    if (e.time > t) break;
+    l = e.level;
+  }
+  return l;
+}
+
+} // namespace
+
+CheckResult check_shaft_move(std::span<const Edge> step, std::span<const Edge> dir,
+                             const ShaftMoveSpec& spec) {
+  CheckResult r;
+  r.kind = "shaft_move";
+  std::int64_t net = 0;
+  std::int64_t count = 0;
+  std::int64_t reversals = 0;
+  Nanos last = spec.from;
+  std::optional<Nanos> prev;
+  int prev_dir = 0;
+  Nanos shortest = Nanos::max();
+  Nanos shortest_at{0};
+  for (const Edge& e : step) {
+    if (e.time <= spec.from) continue;
+    if (e.time > spec.to) break;
+    const int d = level_at(dir, e.time, spec.dir_initial) == Level::High ? 1 : -1;
+    net += d;
+    ++count;
+    if (prev_dir != 0 && d != prev_dir) {
+      ++reversals;
+    } else if (prev && e.time - *prev < shortest) {
+      shortest = e.time - *prev;
+      shortest_at = e.time;
+    }
+    prev = e.time;
+    prev_dir = d;
+    last = e.time;
+  }
+  const TraceWindow window{spec.from, last};
+  if (spec.steps) {
+    r.measurements.push_back(measure(
+        spec.name + ".steps", static_cast<double>(net), "steps", *spec.steps - spec.steps_tolerance,
+        *spec.steps + spec.steps_tolerance,
+        fmt::format("net steps (CW +) after {} ns: {} steps counted", spec.from.count(), count), window));
+  }
+  if (spec.duration_min_ms || spec.duration_max_ms) {
+    r.measurements.push_back(measure(
+        spec.name + ".duration", to_ms(last - spec.from), "ms", spec.duration_min_ms, spec.duration_max_ms,
+        count == 0 ? std::string("no step in the window")
+                   : fmt::format("from {} ns to the last step", spec.from.count()),
+        window, last));
+  }
+  if (spec.peak_min || spec.peak_max) {
+    if (shortest == Nanos::max()) {
+      r.measurements.push_back(
+          failure(spec.name + ".peak_speed", "fewer than two steps in one direction: no speed", window));
+    } else {
+      r.measurements.push_back(measure(spec.name + ".peak_speed", 1e9 / static_cast<double>(shortest.count()),
+                                       "steps/s", spec.peak_min, spec.peak_max,
+                                       fmt::format("shortest step interval {} ns", shortest.count()),
+                                       TraceWindow{shortest_at - shortest, shortest_at}, shortest_at));
+    }
+  }
+  if (spec.reversals) {
+    r.measurements.push_back(measure(spec.name + ".reversals", static_cast<double>(reversals), "",
+                                     *spec.reversals, *spec.reversals, "direction changes between steps",
+                                     window));
+  }
+  return r;
+}
+
+} // namespace hilrig::checks

@@ -1,0 +1,146 @@
+// The SMD23E check kinds on hand-made traces: shaft_move (net steps, duration, peak speed,
+// reversals from a step line and a direction line) and word_bits, and their registry
+// entries' parameter rules.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "rig/checks/registry.hpp"
+#include "rig/checks/shaft_move.hpp"
+#include "rig/checks/word_bits.hpp"
+
+namespace hilrig::checks {
+namespace {
+
+using namespace hilrig::literals;
+using nlohmann::json;
+using rig::Outcome;
+
+// Steps toggle the step line; `dir` edges set the direction before the step at that time.
+std::vector<Edge> toggles(const std::vector<Nanos>& times) {
+  std::vector<Edge> out;
+  Level l = Level::Low;
+  for (Nanos t : times) {
+    l = !l;
+    out.push_back({t, l});
+  }
+  return out;
+}
+
+const Measurement* find(const CheckResult& r, const std::string& name) {
+  for (const auto& m : r.measurements)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+TEST(ShaftMove, CountsNetStepsDurationPeakAndReversals) {
+  // 5 CW steps 1 ms apart (1..5 ms), then 2 CCW steps at 5.5 and 6.0 ms. Net 5 - 2 = 3; one
+  // reversal; the shortest same-direction interval is 0.5 ms -> 2000 steps/s (the 0.5 ms
+  // across the reversal is not a speed); last step 6 ms after from = 0.
+  const std::vector<Edge> step = toggles({1_ms, 2_ms, 3_ms, 4_ms, 5_ms, 5500_us, 6_ms});
+  const std::vector<Edge> dir = {{1_ms, Level::High}, {5500_us, Level::Low}};
+  ShaftMoveSpec s;
+  s.name = "m";
+  s.steps = 3;
+  s.duration_min_ms = 5.9;
+  s.duration_max_ms = 6.1;
+  s.peak_min = 1999;
+  s.peak_max = 2001;
+  s.reversals = 1;
+  const CheckResult r = check_shaft_move(step, dir, s);
+  EXPECT_EQ(r.outcome(), Outcome::Pass);
+  EXPECT_EQ(find(r, "m.steps")->value, 3.0);
+  EXPECT_DOUBLE_EQ(find(r, "m.duration")->value, 6.0);
+  EXPECT_DOUBLE_EQ(find(r, "m.peak_speed")->value, 2000.0);
+  EXPECT_EQ(find(r, "m.reversals")->value, 1.0);
+}
+
+TEST(ShaftMove, WindowCountsStepsStrictlyAfterFromAndUpToTo) {
+  // Steps at 1..4 ms, all CW. Window (2 ms, 3 ms]: only the step at 3 ms.
+  const std::vector<Edge> step = toggles({1_ms, 2_ms, 3_ms, 4_ms});
+  const std::vector<Edge> dir = {{1_ms, Level::High}};
+  ShaftMoveSpec s;
+  s.from = 2_ms;
+  s.to = 3_ms;
+  s.steps = 1;
+  EXPECT_EQ(check_shaft_move(step, dir, s).outcome(), Outcome::Pass);
+}
+
+TEST(ShaftMove, NoStepMeansZeroDurationAndNoSpeed) {
+  ShaftMoveSpec s;
+  s.name = "stop";
+  s.from = 10_ms;
+  s.steps = 0;
+  s.duration_max_ms = 1.0;
+  s.peak_max = 10.0;
+  const CheckResult r = check_shaft_move({}, {}, s);
+  EXPECT_EQ(find(r, "stop.steps")->outcome, Outcome::Pass);
+  EXPECT_EQ(find(r, "stop.duration")->value, 0.0);
+  EXPECT_EQ(find(r, "stop.duration")->outcome, Outcome::Pass);
+  EXPECT_EQ(find(r, "stop.peak_speed")->outcome, Outcome::Fail);
+}
+
+TEST(ShaftMove, DirectionLowBeforeItsFirstEdgeIsCcw) {
+  const std::vector<Edge> step = toggles({1_ms, 2_ms});
+  ShaftMoveSpec s;
+  s.steps = -2;
+  EXPECT_EQ(check_shaft_move(step, {}, s).outcome(), Outcome::Pass);
+  s.dir_initial = Level::High;
+  s.steps = 2;
+  EXPECT_EQ(check_shaft_move(step, {}, s).outcome(), Outcome::Pass);
+}
+
+TEST(ShaftMove, StepsOutsideTheToleranceFail) {
+  const std::vector<Edge> step = toggles({1_ms, 2_ms, 3_ms});
+  const std::vector<Edge> dir = {{1_ms, Level::High}};
+  ShaftMoveSpec s;
+  s.steps = 5;
+  s.steps_tolerance = 1;
+  EXPECT_EQ(check_shaft_move(step, dir, s).outcome(), Outcome::Fail);
+  s.steps_tolerance = 2;
+  EXPECT_EQ(check_shaft_move(step, dir, s).outcome(), Outcome::Pass);
+}
+
+TEST(WordBits, JudgesOnlyTheMaskedBits) {
+  // 0x4488: Controller OK, Position Invalid, Move Complete, Stopped.
+  const std::vector<rig::Observation> obs = {{"sw1", 0x4488, "", 5_ms}};
+  WordSpec s;
+  s.name = "mc";
+  s.observation = "sw1";
+  EXPECT_EQ(check_word_bits(obs, s, 0x1080, 0x0080).outcome(), Outcome::Pass);
+  EXPECT_EQ(check_word_bits(obs, s, 0x1080, 0x1080).outcome(), Outcome::Fail);
+  s.observation = "nothing";
+  EXPECT_EQ(check_word_bits(obs, s, 0x1080, 0x0080).outcome(), Outcome::Fail);
+}
+
+TEST(WordBits, ASignedReadKeepsItsSixteenBits) {
+  // 0xC000 read as signed is -16384; bit 15 and bit 14 are still set.
+  const std::vector<rig::Observation> obs = {{"w", -16384.0, "", 1_ms}};
+  WordSpec s;
+  s.observation = "w";
+  EXPECT_EQ(check_word_bits(obs, s, 0xC000, 0xC000).outcome(), Outcome::Pass);
+}
+
+TEST(Smd23eCheckKinds, RegistryValidatesTheirParameters) {
+  const CheckKind* shaft = find_check_kind("shaft_move");
+  ASSERT_NE(shaft, nullptr);
+  EXPECT_TRUE(
+      validate_check_params(*shaft, json{{"step_line", "s"}, {"dir_line", "d"}, {"from_ms", 0}, {"steps", 3}})
+          .empty());
+  // Nothing to judge.
+  EXPECT_EQ(validate_check_params(*shaft, json{{"step_line", "s"}, {"dir_line", "d"}, {"from_ms", 0}}).size(),
+            1U);
+  const CheckKind* bits = find_check_kind("word_bits");
+  ASSERT_NE(bits, nullptr);
+  EXPECT_TRUE(
+      validate_check_params(*bits, json{{"observation", "sw1"}, {"mask", 4224}, {"value", 128}}).empty());
+  // A value bit outside the mask, and a mask wider than a word.
+  EXPECT_EQ(validate_check_params(*bits, json{{"observation", "sw1"}, {"mask", 128}, {"value", 4096}}).size(),
+            1U);
+  EXPECT_EQ(validate_check_params(*bits, json{{"observation", "sw1"}, {"mask", 70000}, {"value", 0}}).size(),
+            1U);
+}
+
+} // namespace
+} // namespace hilrig::checks

@@ -1,0 +1,126 @@
+// The SMD23E adapter on the virtual bus, driven by hand: what it declares, its shaft sensor
+// lines (one STEP edge per step, DIR High for CW) against the spec's move formulas, and the
+// staging of the host's words until word 0 is written.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+
+#include "core/scheduler.hpp"
+#include "core/trace.hpp"
+#include "drivers/virtual/virtual_bus.hpp"
+#include "rig/duts/smd23e_dut.hpp"
+
+namespace hilrig::duts {
+namespace {
+
+using namespace hilrig::literals;
+using Block = std::array<std::uint16_t, 10>;
+
+struct Bench {
+  Scheduler sched;
+  TraceRecorder trace;
+  virt::VirtualBus bus{sched, &trace};
+  std::unique_ptr<Dut> dut;
+
+  explicit Bench(const std::string& variant = "nominal") {
+    const DutInfo info = smd23e_info();
+    dut = info.make(sched, info.with_defaults({}), variant, 0);
+    dut->attach(bus, {{"STEP", "step"}, {"DIR", "dir"}, {"IN1", "in1"}});
+  }
+  // As the executive writes: words 9..1, then word 0.
+  void write(const Block& b) {
+    for (std::size_t w = b.size(); w-- > 1;) dut->host_write(w, b[w]);
+    dut->host_write(0, b[0]);
+  }
+  void at(Nanos t, const Block& b) {
+    sched.at(t, [this, b] { write(b); });
+  }
+  // v_s 1000 steps/s (1, 0), 2048 steps/turn, driver on; then Command Mode.
+  void configure() {
+    at(0_ms, Block{0x8000, 0x8007, 1, 0, 2048, 0, 1024, 50, 20, 0});
+    at(1_ms, Block{0, 0x8000, 0, 0, 0, 0, 0, 0, 0, 0});
+  }
+};
+
+TEST(Smd23eDut, DeclaresPinsVariantsAndRegisterStyleHost) {
+  const DutInfo info = smd23e_info();
+  EXPECT_EQ(info.name, "smd23e");
+  ASSERT_NE(info.pin("STEP"), nullptr);
+  EXPECT_EQ(info.pin("STEP")->direction, PinDirection::Output);
+  EXPECT_EQ(info.pin("DIR")->direction, PinDirection::Output);
+  EXPECT_EQ(info.pin("IN3")->direction, PinDirection::Input);
+  EXPECT_EQ(info.variants.front().name, "nominal");
+  for (const char* v : {"wrong-acceleration", "lost-steps", "ignored-limit", "late-stop"})
+    EXPECT_TRUE(info.has_variant(v)) << v;
+  EXPECT_EQ(info.host.output_words, 10U);
+  EXPECT_EQ(info.host.input_words, 10U);
+  EXPECT_FALSE(info.host.handshake);
+}
+
+TEST(Smd23eDut, ShaftSensorShowsATrapezoidMove) {
+  Bench b;
+  b.configure();
+  // Relative 4000 steps at 10 ms, v_p 10000, A = D = 100: T = 90 + 301 + 90 = 481 ms (§3.2).
+  b.at(10_ms, Block{2, 0x8000, 4, 0, 10, 0, 100, 100, 0, 0});
+  b.sched.run_until(600_ms);
+  const std::vector<Edge> step = b.trace.edges_of("step");
+  ASSERT_EQ(step.size(), 4000U);
+  EXPECT_NEAR(static_cast<double>((step.back().time - 10_ms).count()), 481e6, 1e3);
+  // Cruise steps are 1 / v_p = 100 us apart.
+  EXPECT_NEAR(static_cast<double>((step[2000].time - step[1999].time).count()), 100e3, 2.0);
+  const std::vector<Edge> dir = b.trace.edges_of("dir");
+  ASSERT_EQ(dir.size(), 1U);
+  EXPECT_EQ(dir[0].level, Level::High);
+  EXPECT_EQ(dir[0].time, step[0].time);
+}
+
+TEST(Smd23eDut, CcwMoveKeepsDirLow) {
+  Bench b;
+  b.configure();
+  // Relative -300 = (0, -300): both words carry the sign (§6.3); v_p = v_s: 300 ms at 1000.
+  b.at(10_ms, Block{2, 0x8000, 0, static_cast<std::uint16_t>(-300 & 0xFFFF), 1, 0, 100, 100, 0, 0});
+  b.sched.run_until(400_ms);
+  EXPECT_EQ(b.trace.edges_of("step").size(), 300U);
+  EXPECT_TRUE(b.trace.edges_of("dir").empty());
+}
+
+TEST(Smd23eDut, WordsAreStagedUntilWordZero) {
+  Bench b;
+  b.configure();
+  b.sched.run_until(5_ms);
+  const std::uint16_t sw1 = b.dut->host_read(0);
+  // Words 1..9 of a move alone do nothing; the Relative bit in word 0 starts it.
+  b.sched.at(10_ms, [&] {
+    for (std::size_t w = 1; w < 10; ++w)
+      b.dut->host_write(w, Block{2, 0x8000, 0, 10, 1, 0, 100, 100, 0, 0}[w]);
+  });
+  b.sched.run_until(50_ms);
+  EXPECT_TRUE(b.trace.edges_of("step").empty());
+  EXPECT_EQ(b.dut->host_read(0), sw1);
+  b.sched.at(60_ms, [&] { b.dut->host_write(0, 2); });
+  b.sched.run_until(100_ms);
+  EXPECT_EQ(b.trace.edges_of("step").size(), 10U); // 10 steps at v_s: 10 ms
+}
+
+TEST(Smd23eDut, LostStepsVariantShowsFewerShaftSteps) {
+  Bench b("lost-steps");
+  b.configure();
+  b.at(10_ms, Block{2, 0x8000, 4, 0, 10, 0, 100, 100, 0, 0});
+  b.sched.run_until(600_ms);
+  // One in 100 lost (models/smd23e/README.md): 40 of 4000.
+  EXPECT_EQ(b.trace.edges_of("step").size(), 3960U);
+}
+
+TEST(Smd23eDut, UnknownPinOrVariantIsRefused) {
+  const DutInfo info = smd23e_info();
+  Scheduler sched;
+  virt::VirtualBus bus{sched};
+  EXPECT_THROW((void)info.make(sched, info.with_defaults({}), "sideways", 0), std::invalid_argument);
+  auto dut = info.make(sched, info.with_defaults({}), "nominal", 0);
+  EXPECT_THROW(dut->attach(bus, {{"OUT9", "x"}}), std::invalid_argument);
+}
+
+} // namespace
+} // namespace hilrig::duts
