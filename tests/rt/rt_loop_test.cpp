@@ -24,14 +24,17 @@ public:
   std::size_t n = 0;
 };
 
-// Produces one input edge per poll, up to a limit, like a gpiod edge-event queue.
+// Holds `limit` input edges and hands over as many as fit per poll, like a gpiod edge-event
+// queue that already holds them: what the loop sees does not depend on when it wakes.
 class ScriptedInputs final : public RtInputPort {
 public:
   std::size_t poll(std::span<InputEdge> out) noexcept override {
-    if (given >= limit || out.empty()) return 0;
-    out[0] = InputEdge{Nanos{static_cast<std::int64_t>(given) * 1000}, 7, level_of(given % 2 == 0)};
-    ++given;
-    return 1;
+    std::size_t n = 0;
+    while (given < limit && n < out.size()) {
+      out[n++] = InputEdge{Nanos{static_cast<std::int64_t>(given) * 1000}, 7, level_of(given % 2 == 0)};
+      ++given;
+    }
+    return n;
   }
   std::size_t given = 0;
   std::size_t limit = 100;
