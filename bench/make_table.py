@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""Reads the raw outputs bench/run-all.sh collected in WORK and prints the one table (markdown):
+figure, hilrig, peer, ratio, target, met. Every figure comes from this one run on this machine."""
+import json
+import pathlib
+import re
+import sys
+
+try:
+    import tomllib
+except ImportError:  # Python < 3.11
+    tomllib = None
+
+
+def gbench_median(path, name_prefix):
+    """items_per_second (median of the repetitions) of the benchmark whose name starts with prefix."""
+    data = json.loads(pathlib.Path(path).read_text())
+    for b in data["benchmarks"]:
+        if b["name"].startswith(name_prefix) and b.get("aggregate_name") == "median":
+            return b["items_per_second"]
+    for b in data["benchmarks"]:  # a single repetition has no aggregates
+        if b["name"].startswith(name_prefix):
+            return b["items_per_second"]
+    raise SystemExit(f"make_table: no {name_prefix} in {path}")
+
+
+def gbench_cv(path, name_prefix):
+    data = json.loads(pathlib.Path(path).read_text())
+    for b in data["benchmarks"]:
+        if b["name"].startswith(name_prefix) and b.get("aggregate_name") == "cv":
+            return b.get("items_per_second")
+    return None
+
+
+def latency_from_histogram(text):
+    """(p99 us, max us, samples): p99 as the upper edge of the 1 us bin under which 99 % of the
+    samples fall -- the rule hilrig's LatencyHistogram::percentile_us uses, so both are read alike."""
+    bins = {}
+    for line in text.splitlines():
+        m = re.fullmatch(r"\s*(\d+)\s+(\d+)\s*", line)
+        if m:
+            bins[int(m.group(1))] = bins.get(int(m.group(1)), 0) + int(m.group(2))
+    total = sum(bins.values())
+    mx = re.search(r"# Max Latencies:\s*(\d+)", text)
+    overflow = re.search(r"# Histogram Overflows:\s*(\d+)", text)
+    total_all = total + (int(overflow.group(1)) if overflow else 0)
+    if total_all == 0:
+        return None, (int(mx.group(1)) if mx else None), 0
+    want = -(-99 * total_all // 100)
+    seen = 0
+    p99 = None
+    for us in sorted(bins):
+        seen += bins[us]
+        if seen >= want:
+            p99 = us + 1
+            break
+    return p99, (int(mx.group(1)) if mx else None), total_all
+
+
+def hilrig_latency(text):
+    p99 = re.search(r"# P99 Latencies:\s*(\d+)", text)
+    mx = re.search(r"# Max Latencies:\s*(\d+)", text)
+    total = re.search(r"# Total:\s*(\d+)", text)
+    return (int(p99.group(1)) if p99 else None, int(mx.group(1)) if mx else None,
+            int(total.group(1)) if total else 0)
+
+
+def time_v(path):
+    """(wall seconds, peak RSS kB) from /usr/bin/time -v."""
+    text = pathlib.Path(path).read_text()
+    wall = re.search(r"Elapsed \(wall clock\) time.*: (?:(\d+):)?(\d+):([\d.]+)", text)
+    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
+    secs = None
+    if wall:
+        secs = int(wall.group(1) or 0) * 3600 + int(wall.group(2)) * 60 + float(wall.group(3))
+    return secs, (int(rss.group(1)) if rss else None)
+
+
+def simulated_seconds(campaign_text, results_path):
+    """campaign.end times the runs the campaign made (results.json)."""
+    m = re.search(r'^\s*end\s*=\s*"([0-9.]+)(ns|us|ms|s)"', campaign_text, re.M)
+    unit = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[m.group(2)]
+    runs = 1
+    try:
+        runs = len(json.loads(pathlib.Path(results_path).read_text())["runs"])
+    except (OSError, ValueError, KeyError):
+        pass
+    return float(m.group(1)) * unit * runs, runs
+
+
+def fmt_rate(x):
+    if x is None:
+        return "n/a"
+    if x >= 1e6:
+        return f"{x / 1e6:.1f} M/s"
+    if x >= 1e3:
+        return f"{x / 1e3:.1f} k/s"
+    return f"{x:.1f}/s"
+
+
+def ratio(a, b):
+    return None if a is None or b in (None, 0) else a / b
+
+
+def main():
+    work = pathlib.Path(sys.argv[1])
+    campaign = pathlib.Path(sys.argv[2])
+    rt_s, rt_prio, rt_cpu = sys.argv[3], sys.argv[4], sys.argv[5]
+    machine = dict(l.split("=", 1) for l in (work / "machine").read_text().splitlines() if "=" in l)
+    rows = []  # figure, hilrig, peer, ratio, target, met
+
+    def row(fig, hil, peer, r, target, met):
+        rows.append((fig, hil, peer, "n/a" if r is None else f"{r:.2f}", target,
+                     "-" if met is None else ("yes" if met else "**no**")))
+
+    # 1. scheduler
+    s = gbench_median(work / "sched.json", "BM_SchedulerHold/1000")
+    row("1. scheduler events/s, 1,000 pending (hold model)", fmt_rate(s), "target 10 M/s",
+        s / 10e6, ">= 10 M/s (ratio >= 1)", s >= 10e6)
+
+    # 2. quadrature edges vs store bandwidth
+    q = gbench_median(work / "quad.json", "BM_SolveTrapezoid")
+    st = gbench_median(work / "quad.json", "BM_StoreRecords")
+    ms = gbench_median(work / "quad.json", "BM_MemsetRecords")
+    row("2. quadrature edges/s, trapezoid (solve into 4,096-edge buffer)", fmt_rate(q),
+        f"store loop of QuadEdge records {fmt_rate(st)}", q / st, ">= 50 M/s absolute", q >= 50e6)
+    row("2b. same, against memset of the same bytes", fmt_rate(q), f"memset {fmt_rate(ms)}", q / ms,
+        "(bound, for reading)", None)
+    sig = work / "signals.json"
+    if sig.exists() and sig.stat().st_size > 0:
+        try:
+            qs = gbench_median(sig, "BM_TrapezoidEdges")
+            row("2c. bench/signals BM_TrapezoidEdges (cross-check)", fmt_rate(qs), "store loop above", qs / st,
+                ">= 50 M/s absolute", qs >= 50e6)
+        except SystemExit:
+            pass
+
+    # 3. latency
+    htext = (work / "hilrig-latency.txt").read_text()
+    ctext = (work / "cyclictest.txt").read_text()
+    hp99, hmax, hn = hilrig_latency(htext)
+    cp99, cmax, cn = latency_from_histogram(ctext)
+    applied = "applied" if "(applied)" in htext else "NOT applied"
+    row(f"3a. RT wake-up max latency, {rt_s} s, 1 ms, prio {rt_prio}, cpu {rt_cpu} (SCHED_FIFO {applied})",
+        f"{hmax} us ({hn} samples)", f"cyclictest {cmax} us ({cn} samples)", ratio(hmax, cmax), "<= 1.2",
+        None if ratio(hmax, cmax) is None else ratio(hmax, cmax) <= 1.2)
+    row("3b. RT wake-up p99 latency (1 us bins, upper edge)", f"{hp99} us", f"cyclictest {cp99} us",
+        ratio(hp99, cp99), "<= 1.1", None if ratio(hp99, cp99) is None else ratio(hp99, cp99) <= 1.1)
+
+    # 4./5. campaign
+    ctext1 = campaign.read_text()
+    sim1, runs1 = simulated_seconds(ctext1, work / "out-x1" / "results.json")
+    wall1, rss1 = time_v(work / "time-x1.txt")
+    sim10, _ = simulated_seconds(x10_campaign_text(work), work / "out-x10" / "results.json")
+    wall10, rss10 = time_v(work / "time-x10.txt")
+    status1 = (work / "exit-x1").read_text().strip() if (work / "exit-x1").exists() else "0"
+    status10 = (work / "exit-x10").read_text().strip() if (work / "exit-x10").exists() else "0"
+    sp1 = ratio(sim1, wall1)
+    sp10 = ratio(sim10, wall10)
+    row(f"4. virtual-time speed, {campaign.name} ({sim1:g} s simulated, exit {status1})",
+        f"{sim1:g} s in {wall1:.2f} s wall", "real time (1 s per s)", sp1, ">= 200x",
+        None if sp1 is None else sp1 >= 200)
+    row(f"4b. same, 10x longer ({sim10:g} s simulated, exit {status10})", f"{sim10:g} s in {wall10:.2f} s wall",
+        "real time", sp10, ">= 200x", None if sp10 is None else sp10 >= 200)
+    rr = ratio(rss10, rss1)
+    row("5. peak RSS (maxresident), 10x longer vs 1x", f"{rss10 / 1024:.1f} MiB (10x)",
+        f"{rss1 / 1024:.1f} MiB (1x)", rr, "<= 1.2 (no growth)", None if rr is None else rr <= 1.2)
+
+    # 6. not measured in this pass
+    row("6a. CAN frames/s, virtual rig to SocketCAN", "not measured (needs the VM lane)",
+        "cangen -g 0 -> candump", None, "-", None)
+    row("6b. GPIO toggles/s, gpiod backend", "not measured (needs the VM lane)",
+        "bare libgpiod set-value loop", None, "-", None)
+
+    out = []
+    out.append(f"Machine: {machine.get('nproc')} CPUs, {machine.get('cpu')}, kernel {machine.get('kernel')}, "
+               f"load average {machine.get('load_before')} before / {machine.get('load_after')} after "
+               f"({machine.get('date')}).")
+    out.append("")
+    out.append("| figure | hilrig | peer | ratio | target | met |")
+    out.append("|---|---|---|---|---|---|")
+    for r in rows:
+        out.append("| " + " | ".join(r) + " |")
+    cv = gbench_cv(work / "sched.json", "BM_SchedulerHold/1000")
+    if cv is not None:
+        out.append("")
+        out.append(f"Scheduler spread: coefficient of variation {cv * 100:.1f} % over the repetitions.")
+    print("\n".join(out))
+
+
+def x10_campaign_text(work):
+    return (work / "press_x10.toml").read_text()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# Runs every hilrig benchmark next to its named peer and prints ONE table (figure, hilrig,
+# peer, ratio, target), also written to $BUILD_DIR/bench-table.md. `make bench` calls it after
+# building the release preset; by hand: `bash bench/run-all.sh` from the repo root.
+#
+# Environment:
+#   BUILD_DIR        build tree holding hilrig and bench/ (default build-release)
+#   BENCH_RT_SECONDS duration of each latency run, hilrig and cyclictest (default 10)
+#   BENCH_RT_PRIO    SCHED_FIFO priority of both (default 80)
+#   BENCH_RT_CPU     CPU both are pinned to (default: the last CPU)
+#   BENCH_REPS       Google Benchmark repetitions; the median is reported (default 5)
+set -euo pipefail
+
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+BUILD_DIR=${BUILD_DIR:-build-release}
+RT_S=${BENCH_RT_SECONDS:-10}
+RT_PRIO=${BENCH_RT_PRIO:-80}
+RT_CPU=${BENCH_RT_CPU:-$(($(nproc) - 1))}
+REPS=${BENCH_REPS:-5}
+# Raw outputs (benchmark JSON, latency histograms, /usr/bin/time -v, results.json) are kept
+# next to the table, so every figure can be traced back to what produced it.
+WORK=$BUILD_DIR/bench-raw
+rm -rf "$WORK"
+mkdir -p "$WORK"
+
+HILRIG=$BUILD_DIR/hilrig
+for f in "$HILRIG" "$BUILD_DIR/bench/scheduler/bench_scheduler" \
+  "$BUILD_DIR/bench/quadrature_bound/bench_quadrature_bound"; do
+  [[ -x $f ]] || { echo "run-all.sh: $f is missing; build the release preset first" >&2; exit 2; }
+done
+
+say() { echo "run-all.sh: $*" >&2; }
+
+# --- machine, as the table is read against it -------------------------------------------
+{
+  echo "nproc=$(nproc)"
+  echo "cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
+  echo "kernel=$(uname -r)$(uname -v | grep -q PREEMPT_RT && echo ' PREEMPT_RT' || echo ' (not PREEMPT_RT)')"
+  echo "load_before=$(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "date=$(date -u +%Y-%m-%dT%H:%M:%SZ)"
+} >"$WORK/machine"
+
+gbench() { # binary filter out.json
+  "$1" --benchmark_filter="$2" --benchmark_repetitions="$REPS" \
+    --benchmark_report_aggregates_only=true --benchmark_format=json >"$3" 2>"$3.err"
+}
+
+# --- 1. scheduler hold model, 1,000 pending ------------------------------------------------
+say "scheduler (bench/scheduler)"
+gbench "$BUILD_DIR/bench/scheduler/bench_scheduler" 'BM_SchedulerHold/1000$' "$WORK/sched.json"
+
+# --- 2. quadrature edges vs writing the same records ---------------------------------------
+say "quadrature edges vs store bandwidth (bench/quadrature_bound)"
+gbench "$BUILD_DIR/bench/quadrature_bound/bench_quadrature_bound" '.' "$WORK/quad.json"
+# bench/signals' own trapezoid figure, for cross-checking (same solver, same profile).
+if [[ -x $BUILD_DIR/bench/signals/bench_signals ]]; then
+  gbench "$BUILD_DIR/bench/signals/bench_signals" 'BM_TrapezoidEdges$' "$WORK/signals.json" || true
+fi
+
+# --- 3. RT loop vs cyclictest, back to back, same duration/priority/CPU ----------------------
+say "latency: hilrig then cyclictest, ${RT_S}s each, priority $RT_PRIO, cpu $RT_CPU"
+"$HILRIG" latency --duration "$RT_S" --priority "$RT_PRIO" --cpu "$RT_CPU" --interval 1000 --quiet \
+  >"$WORK/hilrig-latency.txt" 2>&1 || echo "exit=$?" >>"$WORK/hilrig-latency.txt"
+if command -v cyclictest >/dev/null; then
+  cyclictest -m -p "$RT_PRIO" -a "$RT_CPU" -i 1000 -D "$RT_S" -q -h 1000 \
+    >"$WORK/cyclictest.txt" 2>&1 || echo "exit=$?" >>"$WORK/cyclictest.txt"
+else
+  echo "cyclictest not installed (Debian rt-tests)" >"$WORK/cyclictest.txt"
+fi
+
+# --- 4./5. ANS1 press campaign: virtual-time speed and peak RSS, 1x and 10x -------------------
+CAMPAIGN=""
+for f in "$ROOT"/campaigns/ans1/*press*.toml; do [[ -f $f ]] && CAMPAIGN=$f && break; done
+[[ -n $CAMPAIGN ]] || CAMPAIGN=$ROOT/bench/campaigns/ans1_press.toml
+python3 "$ROOT/bench/lengthen_campaign.py" "$CAMPAIGN" 10 >"$WORK/press_x10.toml"
+say "campaign $CAMPAIGN, 1x and 10x"
+for v in x1 x10; do
+  file=$CAMPAIGN
+  [[ $v == x10 ]] && file=$WORK/press_x10.toml
+  /usr/bin/time -v "$HILRIG" run "$file" --out "$WORK/out-$v" >"$WORK/run-$v.txt" 2>"$WORK/time-$v.txt" ||
+    echo "$?" >"$WORK/exit-$v"
+done
+
+rm -f "$WORK"/out-x*/trace*.vcd # tens of MB each; rerun the campaign to look at one
+echo "load_after=$(cut -d' ' -f1-3 /proc/loadavg)" >>"$WORK/machine"
+
+python3 "$ROOT/bench/make_table.py" "$WORK" "$CAMPAIGN" "$RT_S" "$RT_PRIO" "$RT_CPU" | tee "$BUILD_DIR/bench-table.md"
