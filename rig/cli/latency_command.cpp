@@ -9,6 +9,7 @@
 
 #include "core/clock.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/rt/cpu_latency_request.hpp"
 #include "rig/rt/rt_loop.hpp"
 #include "rig/rt/rt_thread.hpp"
 
@@ -33,6 +34,8 @@ int run_latency(const LatencyOptions& o) {
   rig::RtSetupReport setup;
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  // As cyclictest does: no deep C-states while measuring.
+  const rig::CpuLatencyRequest no_deep_idle(0);
   // The measuring thread is set up exactly as the campaign RT loop is.
   std::thread rt([&] {
     rig::RtSettings settings;
@@ -50,6 +53,7 @@ int run_latency(const LatencyOptions& o) {
              o.cpu < 0 ? std::string("any") : std::to_string(o.cpu), setup.pinned ? "pinned" : "not pinned",
              setup.locked ? "locked" : "NOT locked");
   if (!setup.problems.empty()) fmt::print("# problems: {}\n", setup.problems);
+  fmt::print("# cpu_dma_latency: {}\n", no_deep_idle.active() ? "held at 0 us" : no_deep_idle.problem());
   fmt::print("T: 0 P:{:2d} I:{} C:{:7d} Min:{:7d} Avg:{:7d} Max:{:7d}\n", o.priority, o.interval_us,
              h.count(), h.min().count() / 1000, h.average().count() / 1000, h.max().count() / 1000);
   if (!o.quiet_histogram) {
