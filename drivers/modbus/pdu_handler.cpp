@@ -32,7 +32,7 @@ BitSpan bit_span(std::uint32_t address, std::uint32_t count) {
 }
 
 bool bit_of(std::span<const std::uint16_t> regs, std::uint32_t first_reg, std::uint32_t bit) {
-  return ((regs[bit / 16U - first_reg] >> (bit % 16U)) & 1U) != 0;
+  return ((static_cast<unsigned>(regs[bit / 16U - first_reg]) >> (bit % 16U)) & 1U) != 0;
 }
 
 PduResult read_bits(RegisterMap& map, std::span<const std::uint8_t> req, bool coils) {
@@ -109,7 +109,7 @@ RegisterStatus write_bits(RegisterMap& map, std::uint16_t address, std::uint16_t
     return s;
   }
   for (std::uint32_t i = 0; i < count; ++i) {
-    const bool on = ((packed[i / 8U] >> (i % 8U)) & 1U) != 0;
+    const bool on = ((static_cast<unsigned>(packed[i / 8U]) >> (i % 8U)) & 1U) != 0;
     const std::uint32_t bit = address + i;
     std::uint16_t& reg = view[bit / 16U - span.first_reg];
     const auto mask = static_cast<std::uint16_t>(1U << (bit % 16U));
