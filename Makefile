@@ -3,7 +3,7 @@
 SHELL := /bin/bash
 JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
-DEMO_CAMPAIGN ?= campaigns/reference/reference_pls_pass.toml
+DEMO_CAMPAIGN ?= campaigns/ans1/ans1_throughput.toml
 
 .PHONY: all deps build build-asan demo test test-unit test-asan test-vm bench format format-check clean
 

@@ -54,6 +54,18 @@ struct EncoderSpec {
   [[nodiscard]] double counts_per_turn() const { return 4.0 * static_cast<double>(lines); }
 };
 
+// Resolver stators driven from the motion (boards with analog stator pins). The rig
+// excites with amplitude * sin(2 pi f t), phase-locked to the board's reference from time 0;
+// each stator is ratio * that * sin/cos(shaft angle). No sin_line: no resolver.
+struct ResolverSpec {
+  std::string sin_line; // rig line wired to the sine stator pin
+  std::string cos_line; // rig line wired to the cosine stator pin
+  double excitation_hz = 5000.0;
+  double amplitude = 1.0;
+  double ratio = 1.0;
+  SourcePos where;
+};
+
 enum class MoveKind : std::uint8_t { Constant, Accelerate, Dwell, Trapezoid, PressStroke };
 
 // A move of the motion profile. Speeds in rpm, accelerations in rpm/s, distances in turns.
@@ -132,6 +144,9 @@ struct FaultSpec {
   std::optional<std::string> variant;
   std::optional<Stimulus> signal;
   std::vector<std::string> caught_by;
+  // Scenario keys the fault run replaces (paths as in [[sweep]]), from `set = { ... }`: the
+  // scenario is wrong on purpose, not the board (e.g. a brake too slow for its limit).
+  std::vector<std::string> set_keys;
   SourcePos where;
 };
 
@@ -140,6 +155,7 @@ struct Scenario {
   DutSpec dut;
   std::vector<Wire> wiring;
   EncoderSpec encoder;
+  ResolverSpec resolver;
   MotionSpec motion;
   std::vector<Stimulus> stimuli;
   std::vector<HostAction> host;
@@ -177,7 +193,12 @@ struct Campaign {
   std::vector<Scenario> points; // one per sweep point (one when there is no sweep)
   std::vector<std::string> point_labels;
   std::vector<FaultSpec> faults;
+  // [fault][point]: the scenario of a fault that sets keys; empty for a fault that does not.
+  std::vector<std::vector<Scenario>> fault_points;
   std::vector<RunSpec> runs;
+
+  // The scenario a run runs: its sweep point's, or its fault's when the fault sets keys.
+  [[nodiscard]] const Scenario& scenario_of(const RunSpec& run) const;
 };
 
 // Seed of run `index` for a base seed: splitmix64, so neighbouring runs differ widely.

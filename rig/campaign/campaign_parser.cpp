@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -167,37 +168,65 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
 
   std::size_t points = 1;
   for (const Axis& a : axes) points *= a.values->size();
+  // Each point's pick of every axis (the last axis varies fastest).
+  std::vector<std::vector<std::size_t>> picks(points, std::vector<std::size_t>(axes.size()));
   for (std::size_t p = 0; p < points; ++p) {
-    // A fresh parse per point: copied toml++ nodes lose their source positions.
-    toml::table doc =
-        p == 0 && axes.empty() ? std::move(root) : toml::parse(text, std::string_view(file_name));
-    std::string label;
     std::size_t rest = p;
-    // Last axis varies fastest.
-    std::vector<std::size_t> pick(axes.size());
     for (std::size_t i = axes.size(); i-- > 0;) {
-      pick[i] = rest % axes[i].values->size();
+      picks[p][i] = rest % axes[i].values->size();
       rest /= axes[i].values->size();
     }
+  }
+  // The file with point p's swept keys replaced, then `fault`'s set keys (a fresh parse:
+  // copied toml++ nodes lose their source positions).
+  auto point_doc = [&](std::size_t p, std::optional<std::size_t> fault, std::string* label) {
+    toml::table doc = p == 0 && axes.empty() && !fault && root.size() != 0
+                          ? std::move(root)
+                          : toml::parse(text, std::string_view(file_name));
     for (std::size_t i = 0; i < axes.size(); ++i) {
-      const toml::node& v = *axes[i].values->get(pick[i]);
+      const toml::node& v = *axes[i].values->get(picks[p][i]);
       if (!assign(doc, axes[i].info.key, v))
         throw CampaignError(
             file_name, axes[i].info.where, fmt::format("sweep[{}].key", i),
             fmt::format("a key path in this file whose table exists (\"{}\" is not)", axes[i].info.key));
-      label += fmt::format("{}{}={}", label.empty() ? "" : " ", axes[i].info.key, value_text(v));
+      if (label != nullptr)
+        *label += fmt::format("{}{}={}", label->empty() ? "" : " ", axes[i].info.key, value_text(v));
     }
-    ScenarioFile parsed;
+    if (fault) {
+      // The values as written in this parse of the file (read_faults checked their shape
+      // and that no key points into [[fault]], so assigning leaves this table alone).
+      const toml::table* set = doc["fault"][*fault]["set"].as_table();
+      if (set == nullptr) return doc;
+      for (const auto& [k, v] : *set)
+        if (!assign(doc, k.str(), v))
+          throw CampaignError(
+              file_name, pos_of(v), fmt::format("fault[{}].set", *fault),
+              fmt::format("a key path in this file whose table exists (\"{}\" is not)", k.str()));
+    }
+    return doc;
+  };
+  // Reads a point; an error in a swept or set value (no position of its own) points at
+  // the value in the sweep's array or the fault's table.
+  auto read_point = [&](std::size_t p, std::optional<std::size_t> fault, std::string* label) {
+    toml::table doc = point_doc(p, fault, label);
     try {
-      parsed = read_scenario_file(file_name, doc);
+      return read_scenario_file(file_name, doc);
     } catch (const CampaignError& e) {
-      if (e.where().line != 0 || axes.empty()) throw;
-      // Only swept values have no position: point at the value in the sweep's array.
+      if (e.where().line != 0 || (axes.empty() && !fault)) throw;
+      if (fault) {
+        const toml::table* set = doc["fault"][*fault]["set"].as_table();
+        throw CampaignError(file_name, set != nullptr ? pos_of(*set) : SourcePos{},
+                            fmt::format("fault[{}].set: {}", *fault, e.key()), e.expected());
+      }
       std::size_t axis = 0;
       for (std::size_t i = 0; i < axes.size(); ++i)
         if (e.key().starts_with(axes[i].info.key)) axis = i;
-      throw CampaignError(file_name, pos_of(*axes[axis].values->get(pick[axis])), e.key(), e.expected());
+      throw CampaignError(file_name, pos_of(*axes[axis].values->get(picks[p][axis])), e.key(), e.expected());
     }
+  };
+  for (std::size_t p = 0; p < points; ++p) {
+    std::string label;
+    ScenarioFile parsed = read_point(p, std::nullopt, &label);
     if (p == 0) {
       c.name = parsed.name;
       c.description = parsed.description;
@@ -207,6 +236,11 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
     }
     c.points.push_back(std::move(parsed.scenario));
     c.point_labels.push_back(label.empty() ? std::string("nominal") : label);
+  }
+  c.fault_points.resize(c.faults.size());
+  for (std::size_t f = 0; f < c.faults.size(); ++f) {
+    if (c.faults[f].set_keys.empty()) continue;
+    for (std::size_t p = 0; p < points; ++p) c.fault_points[f].push_back(read_point(p, f, nullptr).scenario);
   }
   c.runs = plan_runs(c, c.seed);
   return c;

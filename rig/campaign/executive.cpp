@@ -34,7 +34,7 @@ RunOutput Executive::run(const RunSpec& spec) const {
   r.index = spec.index;
   r.name = spec.label;
   r.seed = spec.seed;
-  const Scenario& s = campaign_.points.at(spec.point);
+  const Scenario& s = campaign_.scenario_of(spec);
 
   RunInputs in;
   in.scenario = &s;

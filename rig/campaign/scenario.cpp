@@ -16,4 +16,10 @@ const CheckSpec* Scenario::check(std::string_view check_name) const {
   return it == checks.end() ? nullptr : &*it;
 }
 
+const Scenario& Campaign::scenario_of(const RunSpec& run) const {
+  if (run.fault && *run.fault < fault_points.size() && !fault_points[*run.fault].empty())
+    return fault_points[*run.fault].at(run.point);
+  return points.at(run.point);
+}
+
 } // namespace hilrig::campaign

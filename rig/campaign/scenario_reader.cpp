@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -34,6 +35,7 @@ public:
     read_dut(out.scenario.dut);
     read_wiring(out.scenario);
     read_encoder(out.scenario.encoder);
+    read_resolver(out.scenario);
     read_motion(out.scenario);
     (void)build_motion(file_, out.scenario.motion,
                        out.scenario.encoder); // a move that cannot follow is bad input
@@ -200,6 +202,28 @@ private:
     e.where = r.where();
     e.lines = r.opt_integer("lines").value_or(e.lines);
     if (e.lines < 1 || e.lines > 1'000'000) r.fail("lines", "lines per turn in 1..1000000");
+    r.finish();
+  }
+
+  void read_resolver(Scenario& s) {
+    const toml::table* t = root_.opt_table("resolver");
+    if (t == nullptr) return;
+    TableReader r(file_, *t, "resolver");
+    ResolverSpec& res = s.resolver;
+    res.where = r.where();
+    for (const auto& [key, line] : {std::pair{"sin", &res.sin_line}, std::pair{"cos", &res.cos_line}}) {
+      *line = r.string(key);
+      const Wire* w = s.wire_for_rig(*line);
+      if (w == nullptr || !w->analog)
+        r.fail(key, fmt::format("a rig line wired to an analog pin (\"{}\" is not)", *line));
+    }
+    if (res.sin_line == res.cos_line) r.fail("cos", "a second analog line (the two stators differ)");
+    res.excitation_hz = r.opt_number("excitation_hz").value_or(res.excitation_hz);
+    if (!(res.excitation_hz > 0.0)) r.fail("excitation_hz", "a frequency above 0 Hz");
+    res.amplitude = r.opt_number("amplitude").value_or(res.amplitude);
+    if (!(res.amplitude > 0.0)) r.fail("amplitude", "an amplitude above 0");
+    res.ratio = r.opt_number("ratio").value_or(res.ratio);
+    if (!(res.ratio >= 0.0)) r.fail("ratio", "a transformation ratio of 0 or more");
     r.finish();
   }
 
@@ -381,7 +405,8 @@ private:
         }
         if (host != nullptr && h.words.size() > host->output_words)
           r.fail("write", fmt::format("at most {} output words for {}", host->output_words, info_->name));
-        if (host != nullptr && host->handshake && ((h.words[0] >> host->transmit_bit) & 1U) != 0U)
+        if (host != nullptr && host->handshake &&
+            ((static_cast<unsigned>(h.words[0]) >> host->transmit_bit) & 1U) != 0U)
           r.fail("write",
                  fmt::format("word 0 with Transmit (bit {}) clear: the rig drives the handshake itself",
                              host->transmit_bit));
@@ -506,7 +531,20 @@ private:
         f.signal = read_stimulus(s, sr, true);
         sr.finish();
       }
-      if (!f.variant && !f.signal) r.fail("variant", "a device variant or a signal = { kind = ... } fault");
+      if (const toml::table* set = r.opt_table("set")) {
+        if (set->empty())
+          r.fail("set", "a table of scenario keys and their values, e.g. { \"campaign.end\" = \"2s\" }");
+        for (const auto& [k, v] : *set) {
+          const std::string key(k.str());
+          if (key.starts_with("sweep") || key.starts_with("fault") ||
+              (key.starts_with("campaign") && key != "campaign.end"))
+            fail(pos_of(v), r.key("set"),
+                 "a key of the scenario (dut, wiring, encoder, motion, stimulus, host, check, campaign.end)");
+          f.set_keys.push_back(key);
+        }
+      }
+      if (!f.variant && !f.signal && f.set_keys.empty())
+        r.fail("variant", "a device variant, a signal = { kind = ... } fault or set = { key = value }");
       const toml::node* by = r.node("caught_by");
       if (by == nullptr) r.fail("caught_by", "missing: the check (or checks) that must catch this fault");
       auto add = [&](const toml::node& n) {

@@ -10,6 +10,7 @@
 #include "rig/campaign/executive.hpp"
 #include "rig/campaign/motion.hpp"
 #include "rig/campaign/quadrature_edges.hpp"
+#include "rig/campaign/resolver_stators.hpp"
 #include "rig/campaign/scenario_reader.hpp"
 #include "rig/checks/support.hpp"
 #include "rig/duts/dut.hpp"
@@ -49,6 +50,7 @@ public:
     if (info == nullptr) throw RigFault("no DUT model " + s_.dut.model);
     host_ = info->host;
     make_lines();
+    drive_resolver();
     dut_ = info->make(sched_, dut_params(*info, s_.dut), in_.variant, in_.seed);
     std::map<std::string, std::string, std::less<>> pins;
     for (const Wire& w : s_.wiring) pins[w.board] = w.rig;
@@ -90,6 +92,15 @@ private:
     }
     enc_a_ = find_driven(kEncoderA);
     enc_b_ = find_driven(kEncoderB);
+  }
+
+  void drive_resolver() {
+    const ResolverSpec& r = s_.resolver;
+    if (r.sin_line.empty()) return;
+    const auto profile = std::make_shared<const signals::MotionProfile>(motion_.profile);
+    const double per_turn = s_.encoder.counts_per_turn();
+    bus_.analog(r.sin_line).set_waveform(stator_waveform(profile, per_turn, r, Stator::Sine));
+    bus_.analog(r.cos_line).set_waveform(stator_waveform(profile, per_turn, r, Stator::Cosine));
   }
 
   DrivenLine* find_driven(std::string_view rig) {
@@ -189,7 +200,9 @@ private:
     sched_.after(s_.host_poll, [this] { host_poll_ack(true); });
   }
 
-  bool ack() const { return ((dut_->host_read(0) >> host_.acknowledge_bit) & 1U) != 0U; }
+  bool ack() const {
+    return ((static_cast<unsigned>(dut_->host_read(0)) >> host_.acknowledge_bit) & 1U) != 0U;
+  }
 
   void host_poll_ack(bool want) {
     const HostAction& h = s_.host[host_next_];

@@ -1,0 +1,21 @@
+#include "rig/campaign/resolver_stators.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+namespace hilrig::campaign {
+
+Waveform stator_waveform(std::shared_ptr<const signals::MotionProfile> profile, double counts_per_turn,
+                         const ResolverSpec& resolver, Stator stator) {
+  const double peak = resolver.ratio * resolver.amplitude;
+  const double omega = 2.0 * std::numbers::pi * resolver.excitation_hz;
+  const double radians_per_count = 2.0 * std::numbers::pi / counts_per_turn;
+  return [profile = std::move(profile), peak, omega, radians_per_count, stator](Nanos t) {
+    const double angle = radians_per_count * profile->position(t);
+    const double carrier = peak * std::sin(omega * t.seconds());
+    return carrier * (stator == Stator::Sine ? std::sin(angle) : std::cos(angle));
+  };
+}
+
+} // namespace hilrig::campaign

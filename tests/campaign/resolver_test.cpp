@@ -1,0 +1,160 @@
+// Resolver stator signals from the campaign's motion: the waveforms by hand, the parser's
+// checks of [resolver], and the virtual ANS1 on its default resolver path (no CB2) end to end.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "rig/campaign/campaign_parser.hpp"
+#include "rig/campaign/executive.hpp"
+#include "rig/campaign/resolver_stators.hpp"
+#include "test_support.hpp"
+
+namespace hilrig::campaign {
+namespace {
+
+using namespace hilrig::literals;
+using rig::Outcome;
+
+TEST(ResolverStators, CarryTheExcitationTimesSinAndCosOfTheShaftAngle) {
+  // A shaft standing at 90 of 360 counts (a quarter turn): sin = 1, cos = 0. At t = 50 us the
+  // 5 kHz excitation is at its positive peak, at 150 us its negative peak, at 100 us zero.
+  const auto standing = std::make_shared<const signals::MotionProfile>(90.0);
+  ResolverSpec r;
+  r.amplitude = 2.0;
+  r.ratio = 0.9;
+  const Waveform s = stator_waveform(standing, 360.0, r, Stator::Sine);
+  const Waveform c = stator_waveform(standing, 360.0, r, Stator::Cosine);
+  EXPECT_NEAR(s(50_us), 1.8, 1e-12);
+  EXPECT_NEAR(s(150_us), -1.8, 1e-12);
+  EXPECT_NEAR(s(100_us), 0.0, 1e-12);
+  EXPECT_NEAR(c(50_us), 0.0, 1e-12);
+}
+
+TEST(ResolverStators, DemodulatedAtAPeakGiveBackTheAngle) {
+  // Property: at any excitation peak, atan2(sin, cos) is the shaft angle (seeded positions).
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> counts(-5000.0, 5000.0);
+  ResolverSpec r;
+  for (int i = 0; i < 200; ++i) {
+    const double at = counts(rng);
+    const auto p = std::make_shared<const signals::MotionProfile>(at);
+    const double s = stator_waveform(p, 400.0, r, Stator::Sine)(250_us); // 5 kHz: a peak
+    const double c = stator_waveform(p, 400.0, r, Stator::Cosine)(250_us);
+    const double turns = std::atan2(s, c) / (2.0 * std::numbers::pi);
+    const double expected = at / 400.0 - std::floor(at / 400.0 + 0.5);
+    EXPECT_NEAR(turns, expected, 1e-9) << at;
+  }
+}
+
+// The ANS1 on its power-up resolver path (CPC 4096, FSC 360: W-02, W-03), output 1 on
+// [100, 200). The motion is in counts of a 90-line encoder, 360 per turn, so the rig's count
+// is the GMP. 100 RPM: 600 counts/s. The board reads its stators at each excitation peak
+// (every 100 us at 5 kHz) and truncates to 12 bits: GMP 100 is raw 1138 (1137.8 = 100/360 of
+// 4096), 0.02 counts late, plus up to 100 us of R/D lag and 20 us of throughput: 0.072 counts
+// at 600 counts/s. So each edge is within 0.5 counts of its setpoint; GMP 100 comes at 167 and
+// 767 ms, GMP 200 at 333 and 933 ms.
+const std::string kResolver = R"([campaign]
+name = "resolver"
+end = "1000ms"
+host_poll = "100us"
+[dut]
+model = "ans1"
+[[wiring]]
+rig = "res.sin"
+board = "SIN"
+[[wiring]]
+rig = "res.cos"
+board = "COS"
+[[wiring]]
+rig = "ls1"
+board = "OUT1"
+[resolver]
+sin = "res.sin"
+cos = "res.cos"
+[encoder]
+lines = 90
+[motion]
+[[motion.move]]
+kind = "constant"
+speed_rpm = 100
+duration = "1000ms"
+[[host]]
+at = "10ms"
+write = [0x0403, 1, 0, 0, 100, 200, 0, 0]
+name = "cb3"
+[[check]]
+kind = "edge_at_position"
+name = "on"
+output = "ls1"
+position = 100
+level = "high"
+tolerance_counts = 0.5
+modulus = 360
+min_edges = 2
+[[check]]
+kind = "edge_at_position"
+name = "off"
+output = "ls1"
+position = 200
+level = "low"
+tolerance_counts = 0.5
+modulus = 360
+min_edges = 2
+)";
+
+TEST(ResolverStators, TheAns1FollowsTheResolverToItsSetpoints) {
+  const Campaign c = parse_campaign(kResolver, "t.toml");
+  const rig::CampaignResult r = test::run_everything(c);
+  ASSERT_EQ(r.runs.size(), 1U);
+  ASSERT_TRUE(r.runs[0].error.empty()) << r.runs[0].error;
+  std::string got;
+  for (const auto& ch : r.runs[0].checks)
+    for (const auto& m : ch.measurements) got += m.name + " " + m.detail + "\n";
+  EXPECT_EQ(r.verdict, Outcome::Pass) << got;
+  const auto* on = test::find(r.runs[0], "on.edge0");
+  ASSERT_NE(on, nullptr);
+  EXPECT_GE(on->value, 100.0); // never early: the board only lags
+  EXPECT_LE(on->value, 100.1);
+}
+
+TEST(ResolverStators, AnOpenStatorIsAResolverFaultAndTheOutputsStayOff) {
+  // Ratio 0.5 is below the 0.75 the model accepts (an open pair drops below it): the board
+  // shows a resolver fault and, with HoldOuts = 0, holds every output off: no edges.
+  std::string text = kResolver;
+  text.replace(text.find("cos = \"res.cos\""), 15, "cos = \"res.cos\"\nratio = 0.5");
+  const Campaign c = parse_campaign(text, "t.toml");
+  const rig::CampaignResult r = test::run_everything(c);
+  EXPECT_EQ(test::find(r.runs[0], "on.edges")->value, 0.0);
+  EXPECT_EQ(r.verdict, Outcome::Fail);
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    (void)parse_campaign(text, "t.toml");
+    return "accepted";
+  } catch (const CampaignError& e) {
+    return e.what();
+  }
+}
+
+TEST(ResolverStators, TheStatorsMustBeAnalogLines) {
+  std::string text = kResolver;
+  text.replace(text.find("sin = \"res.sin\""), 15, "sin = \"ls1\"");
+  // [resolver] is line 16; sin is line 17, its value at column 7.
+  EXPECT_EQ(error_of(text), "t.toml:17:7: resolver.sin: a rig line wired to an analog pin (\"ls1\" is not)");
+}
+
+TEST(ResolverStators, AFrequencyOfZeroIsRejected) {
+  std::string text = kResolver;
+  text.replace(text.find("cos = \"res.cos\""), 15, "cos = \"res.cos\"\nexcitation_hz = 0");
+  EXPECT_NE(error_of(text).find("resolver.excitation_hz: a frequency above 0 Hz"), std::string::npos)
+      << error_of(text);
+}
+
+} // namespace
+} // namespace hilrig::campaign
