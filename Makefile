@@ -37,9 +37,16 @@ test-asan: build-asan
 	@ctest --preset asan -j $(JOBS)
 
 # The RT VM lane: Debian's PREEMPT_RT kernel under QEMU with gpio-sim, SocketCAN and UARTs.
+# Payloads: the kernel-backend tests (libgpiod 1.6 build), the same gpiod tests built against
+# libgpiod 2.x (build-gpiod2/, bookworm-backports unpacked privately by install-deps --vm),
+# and the end-to-end ANS1 campaigns through gpio-sim, CAN and Modbus RTU.
+GPIOD2_ROOT := $(CURDIR)/build-gpiod2/libgpiod2-root
 test-vm: build
 	@bash scripts/install-deps.sh --vm
-	@bash rt-config/vm/run-lane.sh build-vm rt-config/vm/payload-kernel-tests.sh
+	@cmake --preset default -B build-gpiod2 -DHILRIG_GPIOD_API=2 -DHILRIG_GPIOD_ROOT=$(GPIOD2_ROOT) >/dev/null
+	@cmake --build build-gpiod2 -j $(JOBS) --target test_kernel_gpiod
+	@bash rt-config/vm/run-lane.sh build-vm rt-config/vm/payload-kernel-tests.sh \
+	  rt-config/vm/payload-gpiod2.sh rt-config/vm/payload-e2e.sh
 
 # Every test, then the sanitizer build's tests, then the RT VM lane.
 test: test-unit test-asan format-check test-vm
@@ -57,4 +64,4 @@ format-check:
 	@git ls-files '*.cpp' '*.hpp' | xargs -r clang-format --dry-run -Werror
 
 clean:
-	rm -rf build build-asan build-release
+	rm -rf build build-asan build-release build-gpiod2 build-vm

@@ -9,6 +9,9 @@
 #   BENCH_RT_PRIO    SCHED_FIFO priority of both (default 80)
 #   BENCH_RT_CPU     CPU both are pinned to (default: the last CPU)
 #   BENCH_REPS       Google Benchmark repetitions; the median is reported (default 5)
+#   BENCH_VM         0 skips figures 6a/6b, which boot the RT VM lane (default 1)
+#   BENCH_VM_WORK    the lane's work dir for 6a/6b (default build-vm, shared with make test-vm)
+#   BENCH_CAN_FRAMES, BENCH_GPIO_EDGES, BENCH_ROUNDS  size 6a/6b (rt-config/vm/payload-bench.sh)
 set -euo pipefail
 
 cd "$(dirname "$0")/.."
@@ -81,6 +84,39 @@ for v in x1 x10; do
   /usr/bin/time -v "$HILRIG" run "$file" --out "$WORK/out-$v" >"$WORK/run-$v.txt" 2>"$WORK/time-$v.txt" ||
     echo "$?" >"$WORK/exit-$v"
 done
+
+# --- 6a./6b. CAN frames and GPIO edges: SocketCAN and gpio-sim exist only in the RT VM lane --
+# rt-config/vm/payload-bench.sh runs bench_can_frames next to cangen -> candump on vcan0 and
+# bench_gpio_edges (gpiod backend vs bare libgpiod) on a gpio-sim line, inside the guest.
+# BENCH_VM=0 skips it; BENCH_VM_WORK is the lane's work dir (kernel and module cache).
+if [[ ${BENCH_VM:-1} == 0 ]]; then
+  echo "BENCH_VM=0" >"$WORK/lane-skipped"
+elif [[ ! -x $BUILD_DIR/bench/can_frames/bench_can_frames || ! -x $BUILD_DIR/bench/gpio_edges/bench_gpio_edges ]]; then
+  echo "bench_can_frames/bench_gpio_edges not built" >"$WORK/lane-skipped"
+elif ! bash "$ROOT/scripts/install-deps.sh" --vm >"$WORK/lane-deps.txt" 2>&1; then
+  echo "the lane's packages are missing (scripts/install-deps.sh --vm, as root)" >"$WORK/lane-skipped"
+else
+  say "CAN frames and GPIO edges inside the RT VM lane (QEMU TCG, about 2 min)"
+  vm_work=${BENCH_VM_WORK:-$ROOT/build-vm} # shares make test-vm's cache
+  # The payload reads its tree from HILRIG_BUILD: a one-line wrapper sets it, however the lane
+  # passes (or does not pass) the host's environment into the guest.
+  {
+    echo '#!/bin/bash'
+    printf 'export HILRIG_BUILD=%q\n' "$(cd "$BUILD_DIR" && pwd)"
+    for v in BENCH_CAN_FRAMES BENCH_GPIO_EDGES BENCH_ROUNDS; do
+      [[ -n ${!v:-} ]] && printf 'export %s=%q\n' "$v" "${!v}"
+    done
+    printf 'exec bash %q "$@"\n' "$ROOT/rt-config/vm/payload-bench.sh"
+  } >"$WORK/lane-payload.sh"
+  HILRIG_BUILD=$(cd "$BUILD_DIR" && pwd) bash "$ROOT/rt-config/vm/run-lane.sh" "$vm_work" "$WORK/lane-payload.sh" \
+    >"$WORK/lane.txt" 2>&1 ||
+    echo "exit=$?" >>"$WORK/lane.txt"
+  if [[ -f $vm_work/out/bench/summary ]]; then
+    cp -r "$vm_work/out/bench" "$WORK/lane-bench"
+  else
+    echo "the lane gave no bench summary: $WORK/lane.txt" >"$WORK/lane-skipped"
+  fi
+fi
 
 rm -f "$WORK"/out-x*/trace*.vcd # tens of MB each; rerun the campaign to look at one
 echo "load_after=$(cut -d' ' -f1-3 /proc/loadavg)" >>"$WORK/machine"

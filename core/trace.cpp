@@ -80,19 +80,62 @@ void TraceRecorder::set_initial_real(std::uint32_t signal, double v) {
 void TraceRecorder::edge(std::uint32_t signal, const Edge& e) {
   const SignalInfo& info = checked(signals_, signal);
   require_kind(info, info.kind == SignalKind::Wire, "edge");
-  samples_.push_back(TraceSample{e.time, signal, is_high(e.level) ? 1 : 0, 0.0});
+  record(TraceSample{e.time, signal, is_high(e.level) ? 1 : 0, 0.0});
 }
 
 void TraceRecorder::value(std::uint32_t signal, Nanos t, std::int64_t v) {
   const SignalInfo& info = checked(signals_, signal);
   require_kind(info, info.kind != SignalKind::Real, "value (use real)");
-  samples_.push_back(TraceSample{t, signal, v, 0.0});
+  record(TraceSample{t, signal, v, 0.0});
 }
 
 void TraceRecorder::real(std::uint32_t signal, Nanos t, double v) {
   const SignalInfo& info = checked(signals_, signal);
   require_kind(info, info.kind == SignalKind::Real, "real");
-  samples_.push_back(TraceSample{t, signal, 0, v});
+  record(TraceSample{t, signal, 0, v});
+}
+
+void TraceRecorder::record(const TraceSample& s) {
+  samples_.push_back(s);
+  if (spill_limit_ != 0 && samples_.size() >= spill_limit_) spill();
+}
+
+void TraceRecorder::spill_beyond(std::size_t limit) {
+  spill_limit_ = limit;
+  if (limit != 0) samples_.reserve(limit);
+  if (limit != 0 && samples_.size() >= limit) spill();
+}
+
+void TraceRecorder::spill() {
+  if (!spill_file_) {
+    spill_file_.reset(std::tmpfile());
+    if (!spill_file_) throw std::runtime_error("TraceRecorder: cannot create a temporary file to spill to");
+  }
+  // Reads leave the position anywhere; appends go at the end.
+  if (std::fseek(spill_file_.get(), 0, SEEK_END) != 0 ||
+      std::fwrite(samples_.data(), sizeof(TraceSample), samples_.size(), spill_file_.get()) !=
+          samples_.size())
+    throw std::runtime_error("TraceRecorder: cannot write the spill file");
+  spilled_ += samples_.size();
+  samples_.clear(); // keeps its capacity: the memory held stays at the limit
+}
+
+void TraceRecorder::visit_samples(std::size_t from, const SampleChunk& chunk) const {
+  if (from < spilled_) {
+    std::FILE* f = spill_file_.get();
+    if (std::fflush(f) != 0 || std::fseek(f, static_cast<long>(from * sizeof(TraceSample)), SEEK_SET) != 0)
+      throw std::runtime_error("TraceRecorder: cannot read the spill file");
+    std::vector<TraceSample> buffer(std::min<std::size_t>(spilled_ - from, 8192));
+    while (from < spilled_) {
+      const std::size_t n = std::min(buffer.size(), spilled_ - from);
+      if (std::fread(buffer.data(), sizeof(TraceSample), n, f) != n)
+        throw std::runtime_error("TraceRecorder: cannot read the spill file");
+      chunk(std::span<const TraceSample>(buffer.data(), n));
+      from += n;
+    }
+  }
+  const std::size_t held = from - spilled_;
+  if (held < samples_.size()) chunk(std::span<const TraceSample>(samples_).subspan(held));
 }
 
 void TraceRecorder::can(std::string_view bus, Nanos t, const CanFrame& frame) {
@@ -109,20 +152,37 @@ std::int64_t TraceRecorder::find(std::string_view name) const {
 }
 
 std::vector<Edge> TraceRecorder::edges_of(std::string_view name) const {
-  std::vector<Edge> edges;
-  const std::int64_t index = find(name);
-  if (index < 0 || signals_[static_cast<std::size_t>(index)].kind != SignalKind::Wire) {
-    return edges;
+  const std::string names[] = {std::string(name)};
+  return std::move(edges_of(names).begin()->second);
+}
+
+std::map<std::string, std::vector<Edge>, std::less<>>
+TraceRecorder::edges_of(std::span<const std::string> names) const {
+  std::map<std::string, std::vector<Edge>, std::less<>> out;
+  // Per signal index: where its edges go (null for signals nobody asked for).
+  std::vector<std::vector<Edge>*> wanted(signals_.size(), nullptr);
+  bool any = false;
+  for (const std::string& name : names) {
+    std::vector<Edge>& edges = out[name];
+    const std::int64_t index = find(name);
+    if (index < 0 || signals_[static_cast<std::size_t>(index)].kind != SignalKind::Wire) continue;
+    wanted[static_cast<std::size_t>(index)] = &edges;
+    any = true;
   }
-  for (const TraceSample& s : samples_) {
-    if (s.signal == static_cast<std::uint32_t>(index)) {
-      edges.push_back(Edge{s.time, level_of(s.value != 0)});
+  if (!any) return out;
+  visit_samples(0, [&](std::span<const TraceSample> chunk) {
+    for (const TraceSample& s : chunk) {
+      if (std::vector<Edge>* edges = wanted[s.signal]) edges->push_back(Edge{s.time, level_of(s.value != 0)});
     }
-  }
+  });
   // Recorded in the order they happened, which is time order on a scheduler; a stable sort
   // keeps that order for equal times and guards hand-fed traces.
-  std::stable_sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.time < b.time; });
-  return edges;
+  const auto by_time = [](const Edge& a, const Edge& b) { return a.time < b.time; };
+  for (auto& [name, edges] : out) {
+    if (!std::is_sorted(edges.begin(), edges.end(), by_time))
+      std::stable_sort(edges.begin(), edges.end(), by_time);
+  }
+  return out;
 }
 
 namespace {
@@ -147,12 +207,14 @@ template <typename Sink> void emit_canonical(const TraceRecorder& t, Sink&& sink
     line += '\n';
     sink(line);
   }
-  for (const TraceSample& s : t.samples()) {
-    line = "sample " + std::to_string(s.time.count()) + ' ' + std::to_string(s.signal) + ' ';
-    line += signals[s.signal].kind == SignalKind::Real ? real_bits(s.real) : std::to_string(s.value);
-    line += '\n';
-    sink(line);
-  }
+  t.visit_samples(0, [&](std::span<const TraceSample> chunk) {
+    for (const TraceSample& s : chunk) {
+      line = "sample " + std::to_string(s.time.count()) + ' ' + std::to_string(s.signal) + ' ';
+      line += signals[s.signal].kind == SignalKind::Real ? real_bits(s.real) : std::to_string(s.value);
+      line += '\n';
+      sink(line);
+    }
+  });
   for (const TraceCanFrame& f : t.can_frames()) {
     line = "can " + std::to_string(f.time.count()) + ' ' + f.bus + ' ' + candump_frame_text(f.frame) + '\n';
     sink(line);

@@ -4,9 +4,14 @@
 // PulseView) and a candump-format CAN log; content_hash() fingerprints it so two runs
 // can be compared byte for byte.
 
+#include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <functional>
 #include <iosfwd>
 #include <map>
+#include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -71,12 +76,29 @@ public:
   void can(std::string_view bus, Nanos t, const CanFrame& frame);
   void serial(std::string_view link, SerialDirection dir, Nanos t, std::uint8_t byte);
 
+  // Long runs: once `limit` samples are held in memory, they are moved to an anonymous
+  // temporary file (std::tmpfile, gone when the recorder is), so a run's memory does not grow
+  // with its length. Every reader below sees spilled samples as if they were still held.
+  // Throws std::runtime_error when the file cannot be created or written. (The recorder owns
+  // the file: it moves, it is not copied.)
+  void spill_beyond(std::size_t limit);
+
   [[nodiscard]] const std::vector<SignalInfo>& signals() const { return signals_; }
+  // The samples still held in memory: all of them unless spill_beyond() moved some out.
   [[nodiscard]] const std::vector<TraceSample>& samples() const { return samples_; }
+  // Every sample recorded, spilled or held.
+  [[nodiscard]] std::size_t sample_count() const { return spilled_ + samples_.size(); }
+  // Calls `chunk` with the samples from index `from` on, in record order, a span at a time.
+  using SampleChunk = std::function<void(std::span<const TraceSample>)>;
+  void visit_samples(std::size_t from, const SampleChunk& chunk) const;
   [[nodiscard]] const std::vector<TraceCanFrame>& can_frames() const { return can_; }
   [[nodiscard]] const std::vector<TraceSerialByte>& serial_bytes() const { return serial_; }
   // Edges of one Wire signal, in time order.
   [[nodiscard]] std::vector<Edge> edges_of(std::string_view name) const;
+  // The same for several signals in one pass over the samples; every name is a key of the
+  // result (empty for a name that is not a declared Wire).
+  [[nodiscard]] std::map<std::string, std::vector<Edge>, std::less<>>
+  edges_of(std::span<const std::string> names) const;
   [[nodiscard]] std::int64_t find(std::string_view name) const; // -1 when absent
 
   // FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3) over the bytes of
@@ -93,9 +115,19 @@ public:
   [[nodiscard]] std::string canonical_text() const;
 
 private:
+  void record(const TraceSample& s);
+  void spill();
+
+  struct CloseFile {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+
   std::map<std::string, std::uint32_t, std::less<>> index_;
   std::vector<SignalInfo> signals_;
   std::vector<TraceSample> samples_;
+  std::size_t spill_limit_ = 0; // 0: never spill
+  std::size_t spilled_ = 0;     // samples in spill_file_, the oldest first
+  std::unique_ptr<std::FILE, CloseFile> spill_file_;
   std::vector<TraceCanFrame> can_;
   std::vector<TraceSerialByte> serial_;
 };

@@ -11,7 +11,6 @@
 // round-trip decimal>. Identifier codes are base-94 over the printable ASCII '!'..'~'.
 #include <algorithm>
 #include <charconv>
-#include <numeric>
 #include <ostream>
 #include <stdexcept>
 #include <vector>
@@ -100,10 +99,13 @@ void write_scope(std::ostream& out, const Scope& scope, const std::vector<Signal
   }
 }
 
-void write_value(std::ostream& out, const SignalInfo& s, std::size_t index, std::int64_t v, double r) {
+// Appends one value change ("1!", "b110 #", "r1.25 $") and its newline to `out`.
+void append_value(std::string& out, const SignalInfo& s, std::string_view id, std::int64_t v, double r) {
   switch (s.kind) {
   case SignalKind::Wire:
-    out << (v != 0 ? '1' : '0') << id_code(index) << '\n';
+    out += v != 0 ? '1' : '0';
+    out += id;
+    out += '\n';
     return;
   case SignalKind::Integer: {
     auto bits = static_cast<std::uint64_t>(v);
@@ -114,19 +116,30 @@ void write_value(std::ostream& out, const SignalInfo& s, std::size_t index, std:
       buf[n++] = static_cast<char>('0' + (bits & 1U));
       bits >>= 1U;
     } while (bits != 0);
-    out << 'b';
-    while (n > 0) out << buf[--n];
-    out << ' ' << id_code(index) << '\n';
+    out += 'b';
+    while (n > 0) out += buf[--n];
+    out += ' ';
+    out += id;
+    out += '\n';
     return;
   }
   case SignalKind::Real: {
     char buf[32];
     const auto res = std::to_chars(buf, buf + sizeof buf, r);
-    out << 'r' << std::string_view(buf, static_cast<std::size_t>(res.ptr - buf)) << ' ' << id_code(index)
-        << '\n';
+    out += 'r';
+    out.append(buf, static_cast<std::size_t>(res.ptr - buf));
+    out += ' ';
+    out += id;
+    out += '\n';
     return;
   }
   }
+}
+
+void write_value(std::ostream& out, const SignalInfo& s, std::size_t index, std::int64_t v, double r) {
+  std::string text;
+  append_value(text, s, id_code(index), v, r);
+  out << text;
 }
 
 void write_header(std::ostream& out, const std::vector<SignalInfo>& signals, std::string_view date) {
@@ -155,53 +168,109 @@ void check_time(Nanos t) {
   if (t < Nanos::zero()) throw std::invalid_argument("VCD: negative sample time");
 }
 
+// The value changes after $dumpvars: "#t" before the first change at each new time, then the
+// changes. Formats into a buffer written out in large blocks: a long run has millions of
+// changes, and ostream formatting per change was most of the writing time.
+class VcdBody {
+public:
+  VcdBody(std::ostream& out, const std::vector<SignalInfo>& signals, std::size_t declared)
+      : out_(out), signals_(signals) {
+    ids_.reserve(declared);
+    for (std::size_t i = 0; i < declared; ++i) ids_.push_back(id_code(i));
+    buffer_.reserve(kBlock + 128);
+  }
+  ~VcdBody() = default;
+  VcdBody(const VcdBody&) = delete;
+  VcdBody& operator=(const VcdBody&) = delete;
+
+  // Writes one sample, opening a new "#t" block when its time is later than `time`; returns
+  // false when it is earlier (it is then written at the later time, as VcdStream documents).
+  bool add(const TraceSample& s, std::int64_t& time) {
+    check_time(s.time);
+    bool in_order = true;
+    if (s.time.count() < time) {
+      in_order = false;
+    } else if (s.time.count() != time) {
+      time = s.time.count();
+      char buf[24];
+      const auto res = std::to_chars(buf, buf + sizeof buf, time);
+      buffer_ += '#';
+      buffer_.append(buf, static_cast<std::size_t>(res.ptr - buf));
+      buffer_ += '\n';
+    }
+    append_value(buffer_, signals_[s.signal], ids_[s.signal], s.value, s.real);
+    if (buffer_.size() >= kBlock) flush();
+    return in_order;
+  }
+
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+
+private:
+  static constexpr std::size_t kBlock = 64 * 1024;
+  std::ostream& out_;
+  const std::vector<SignalInfo>& signals_;
+  std::vector<std::string> ids_;
+  std::string buffer_;
+};
+
 } // namespace
 
 void write_vcd(const TraceRecorder& trace, std::ostream& out, std::string_view date_comment) {
   const std::vector<SignalInfo>& signals = trace.signals();
-  const std::vector<TraceSample>& samples = trace.samples();
   write_header(out, signals, date_comment);
-  std::vector<std::size_t> order(samples.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return samples[a].time < samples[b].time; });
-  std::int64_t time = 0;
-  for (const std::size_t i : order) {
-    const TraceSample& s = samples[i];
-    check_time(s.time);
-    if (s.time.count() != time) {
-      time = s.time.count();
-      out << '#' << time << '\n';
+  // A scheduler records in time order: then the samples are written as they come, in one pass
+  // (a spilled trace is never held whole). Otherwise they are sorted by time, stably.
+  bool sorted = true;
+  Nanos last = Nanos::min();
+  trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
+    for (const TraceSample& s : chunk) {
+      sorted = sorted && s.time >= last;
+      last = s.time;
     }
-    write_value(out, signals[s.signal], s.signal, s.value, s.real);
+  });
+  VcdBody body(out, signals, signals.size());
+  std::int64_t time = 0;
+  if (sorted) {
+    trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
+      for (const TraceSample& s : chunk) body.add(s, time);
+    });
+  } else {
+    std::vector<TraceSample> samples;
+    samples.reserve(trace.sample_count());
+    trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
+      samples.insert(samples.end(), chunk.begin(), chunk.end());
+    });
+    std::stable_sort(samples.begin(), samples.end(),
+                     [](const TraceSample& a, const TraceSample& b) { return a.time < b.time; });
+    for (const TraceSample& s : samples) body.add(s, time);
   }
+  body.flush();
 }
 
 VcdStream::VcdStream(std::ostream& out, std::string_view date_comment) : out_(out), date_(date_comment) {}
 
 void VcdStream::update(const TraceRecorder& trace) {
   const std::vector<SignalInfo>& signals = trace.signals();
-  const std::vector<TraceSample>& samples = trace.samples();
   if (!started_) {
     write_header(out_, signals, date_);
     declared_ = signals.size();
     started_ = true;
   }
-  for (; next_ < samples.size(); ++next_) {
-    const TraceSample& s = samples[next_];
-    if (s.signal >= declared_) {
-      ++skipped_;
-      continue;
+  VcdBody body(out_, signals, declared_);
+  trace.visit_samples(next_, [&](std::span<const TraceSample> chunk) {
+    for (const TraceSample& s : chunk) {
+      if (s.signal >= declared_) {
+        ++skipped_;
+        continue;
+      }
+      if (!body.add(s, time_)) ++late_;
     }
-    check_time(s.time);
-    if (s.time.count() < time_) {
-      ++late_;
-    } else if (s.time.count() != time_) {
-      time_ = s.time.count();
-      out_ << '#' << time_ << '\n';
-    }
-    write_value(out_, signals[s.signal], s.signal, s.value, s.real);
-  }
+  });
+  next_ = trace.sample_count();
+  body.flush();
   out_.flush();
 }
 

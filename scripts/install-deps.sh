@@ -47,6 +47,9 @@ if [ "${1:-}" = "--vm" ]; then
     "linux-headers-${kabi#linux-image-}" # module build against the guest kernel
     gpiod                    # gpiodetect/gpioinfo in the guest: shows the gpio-sim chip
   )
+  # libgpiod 2.x (bookworm-backports) for the lane's second GPIO backend build, build-gpiod2/:
+  # downloaded and unpacked into a private prefix there, never installed (it conflicts with 1.6).
+  bash "$(dirname "$0")/fetch-libgpiod2.sh" "$(dirname "$0")/../build-gpiod2/libgpiod2-root"
 fi
 
 want=()

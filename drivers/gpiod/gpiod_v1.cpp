@@ -43,7 +43,11 @@ int request_flags(const LineSettings& s) {
 
 std::string describe(const std::string& chip, std::span<const unsigned> offsets) {
   std::string s = chip + " lines";
-  for (unsigned o : offsets) s += " " + std::to_string(o);
+  // Appended piecewise: GCC 12 at -O3 warns falsely (-Wrestrict) on " " + std::to_string(o).
+  for (unsigned o : offsets) {
+    s += ' ';
+    s += std::to_string(o);
+  }
   return s;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Input lines requested from one GPIO chip with edge events on both edges. Each edge
-// carries the kernel's timestamp (CLOCK_MONOTONIC with the v1 character-device ABI),
+// carries the kernel's timestamp (CLOCK_MONOTONIC, with libgpiod 1.6 and 2.x alike),
 // so capture precision does not depend on how soon the rig polls.
 
 #include <cstdint>
@@ -29,7 +29,8 @@ public:
   std::size_t poll(std::span<InputEdge> out) noexcept override;
   // Current logical level of one line (a syscall: not for the RT loop's hot path).
   [[nodiscard]] Level level(std::size_t index) const;
-  // File descriptors to wait on (poll/epoll) outside the RT loop.
+  // File descriptors to wait on (poll/epoll) outside the RT loop, one per line. With
+  // libgpiod 2.x one request carries every line, so the entries are the same descriptor.
   [[nodiscard]] std::span<const int> event_fds() const { return fds_; }
   [[nodiscard]] std::size_t size() const { return offsets_.size(); }
 

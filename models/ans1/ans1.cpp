@@ -342,11 +342,10 @@ void Ans1::scan() {
   std::uint16_t ls = 0;
   for (int n = 1; n <= kOutputCount; ++n) {
     const OutputState s = channels_[index(n)].scan(state, params_.time_only_retrigger_restarts);
-    const std::uint16_t b = bit(n);
-    const auto set = [b](std::uint16_t& mask, bool on) {
-      if (on) {
-        mask = static_cast<std::uint16_t>(mask | b);
-      }
+    const auto shift = static_cast<unsigned>(n - 1);
+    // Branch-free: eight conditions of sixteen channels every 10 us.
+    const auto set = [shift](std::uint16_t& mask, bool on) {
+      mask = static_cast<std::uint16_t>(mask | (static_cast<unsigned>(on) << shift));
     };
     set(masks.calc, s.calc);
     set(masks.simple, s.simple);

@@ -56,11 +56,17 @@ OutputState OutputChannel::scan(const ScanState& scan, bool retrigger_restarts) 
     if (!pair.used()) {
       continue;
     }
-    if (pair_on(p, pair, scan.fsc, shift, scan.late_wrap_to)) {
+    const bool on = pair_on(p, pair, scan.fsc, shift, scan.late_wrap_to);
+    if (on) {
       s.calc = true;
     }
+    if (inside_pair >= 0) {
+      continue;
+    }
+    // The pair's span ignores stitching; without stitching it is the pair itself (once per
+    // scan per pair is most of the scan's cost).
     const SetpointPair span{pair.from, pair.to, 0, 0};
-    if (inside_pair < 0 && pair_on(p, span, scan.fsc, shift, scan.late_wrap_to)) {
+    if (pair.stitched() ? pair_on(p, span, scan.fsc, shift, scan.late_wrap_to) : on) {
       inside_pair = k;
     }
   }

@@ -63,6 +63,9 @@ struct ResolverSpec {
   double excitation_hz = 5000.0;
   double amplitude = 1.0;
   double ratio = 1.0;
+  // The reference's phase at time 0, degrees: amplitude * sin(2 pi f t + phase). A board
+  // whose reference is a cosine (the Series 2700 model) takes 90.
+  double phase_deg = 0.0;
   SourcePos where;
 };
 

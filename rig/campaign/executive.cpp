@@ -1,6 +1,7 @@
 #include "rig/campaign/executive.hpp"
 
 #include <exception>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -13,9 +14,27 @@ namespace hilrig::campaign {
 
 namespace {
 
+// Whether `name` is a string anywhere in a check's parameters (checks name their lines so).
+bool names_line(const nlohmann::json& params, const std::string& name) {
+  if (params.is_string()) return params.get_ref<const std::string&>() == name;
+  if (params.is_structured())
+    for (const auto& p : params)
+      if (names_line(p, name)) return true;
+  return false;
+}
+
+// Only the wired lines some check names are copied out of the trace, in one pass: the
+// encoder's lines alone are ~10^5 edges a second and no check reads them.
 checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
   checks::Capture c;
-  for (const Wire& w : s.wiring) c.lines[w.rig] = v.trace->edges_of(w.rig);
+  std::vector<std::string> named;
+  for (const Wire& w : s.wiring)
+    for (const CheckSpec& check : s.checks)
+      if (names_line(check.params, w.rig)) {
+        named.push_back(w.rig);
+        break;
+      }
+  c.lines = v.trace->edges_of(named);
   const signals::MotionProfile* profile = &v.profile;
   c.position = [profile](Nanos t) { return profile->position(t); };
   c.speed = [profile](Nanos t) { return profile->velocity(t); };
@@ -26,7 +45,19 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
   return c;
 }
 
+// A hardware run's own timing (wake-up latency, edge errors) as one result entry.
+rig::CheckResult rig_check(const std::vector<rig::Measurement>& timing) {
+  rig::CheckResult c;
+  c.check = "rig";
+  c.kind = "rt_timing";
+  c.measurements = timing;
+  return c;
+}
+
 } // namespace
+
+Executive::Executive(const Campaign& campaign, RunBackend backend)
+    : campaign_(campaign), backend_(backend ? std::move(backend) : RunBackend(run_virtual)) {}
 
 RunOutput Executive::run(const RunSpec& spec) const {
   RunOutput out;
@@ -41,6 +72,8 @@ RunOutput Executive::run(const RunSpec& spec) const {
   in.variant = s.dut.variant;
   in.seed = spec.seed;
   in.record_motion = false;
+  in.host_link = host_link_ ? &host_link_ : nullptr;
+  in.stop = stop_;
   for (const CheckSpec& c : s.checks) in.record_motion = in.record_motion || c.kind == "brake_stop_time";
   if (spec.fault) {
     const FaultSpec& f = campaign_.faults.at(*spec.fault);
@@ -51,7 +84,18 @@ RunOutput Executive::run(const RunSpec& spec) const {
   }
 
   try {
-    VirtualRun v = run_virtual(in);
+    VirtualRun v = backend_(in);
+    if (!v.rig_fault.empty()) {
+      // The rig stopped the run: keep what it captured, judge nothing on a partial capture.
+      r.error = v.rig_fault;
+      r.interrupted = v.interrupted;
+      r.observations = v.observations;
+      if (!v.handshakes.empty()) r.checks.push_back(rig::CheckResult{"host", "handshake", v.handshakes, {}});
+      if (!v.rig_timing.empty()) r.checks.push_back(rig_check(v.rig_timing));
+      out.trace = v.trace;
+      return out;
+    }
+    out.trace = v.trace; // kept when a probe run below is stopped
     checks::Capture capture = capture_of(s, v);
     for (const CheckSpec& c : s.checks) {
       const checks::CheckKind* kind = checks::find_check_kind(c.kind);
@@ -62,7 +106,8 @@ RunOutput Executive::run(const RunSpec& spec) const {
           RunInputs p = in;
           p.probe = Stimulus{StimulusKind::Pulse, c.probe_at, plan.input, plan.level, width, Nanos{0}, 0, 1,
                              Nanos::max(),        c.where};
-          const VirtualRun pv = run_virtual(p);
+          const VirtualRun pv = backend_(p);
+          if (!pv.rig_fault.empty()) throw RigFault(pv.rig_fault);
           for (const Edge& e : pv.trace->edges_of(plan.output))
             if (e.time >= c.probe_at) return true;
           return false;
@@ -80,16 +125,19 @@ RunOutput Executive::run(const RunSpec& spec) const {
       host.measurements = v.handshakes;
       r.checks.push_back(std::move(host));
     }
+    if (!v.rig_timing.empty()) r.checks.push_back(rig_check(v.rig_timing));
     r.observations = v.observations;
     out.trace = v.trace;
   } catch (const std::exception& e) {
     r.error = e.what();
+    r.interrupted = stop_ != nullptr && stop_->requested();
   }
   return out;
 }
 
 rig::CampaignResult Executive::run_all(const std::vector<RunSpec>& runs, std::uint64_t seed, rig::Shard shard,
-                                       const Progress& progress, const TraceSink& sink) const {
+                                       const Progress& progress, const TraceSink& sink,
+                                       const Checkpoint& checkpoint) const {
   rig::CampaignResult result;
   result.campaign = campaign_.name;
   result.device = campaign_.points.empty() ? std::string() : campaign_.points.front().dut.model;
@@ -101,6 +149,15 @@ rig::CampaignResult Executive::run_all(const std::vector<RunSpec>& runs, std::ui
     RunOutput out = run(runs[i]);
     if (sink) sink(runs[i], out);
     result.runs.push_back(std::move(out.result));
+    if (checkpoint && i + 1 < runs.size()) {
+      rig::CampaignResult partial = result;
+      rig::finalize(partial);
+      checkpoint(partial);
+    }
+    if (stop_ != nullptr && stop_->requested()) {
+      result.interrupted = stop_->reason();
+      break;
+    }
   }
   rig::finalize(result);
   return result;

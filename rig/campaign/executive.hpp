@@ -15,6 +15,8 @@
 
 #include "core/trace.hpp"
 #include "rig/campaign/campaign.hpp"
+#include "rig/campaign/host_link.hpp"
+#include "rig/campaign/stop_request.hpp"
 #include "rig/results/campaign_result.hpp"
 
 namespace hilrig::campaign {
@@ -30,9 +32,21 @@ struct RunOutput {
   std::shared_ptr<TraceRecorder> trace; // the run's full trace (VCD, candump)
 };
 
+struct RunInputs;
+struct VirtualRun;
+// Carries out one run and returns what it captured: run_virtual by default; the hardware
+// backend (rig/hardware) plays the same inputs on a real rig.
+using RunBackend = std::function<VirtualRun(const RunInputs&)>;
+
 class Executive {
 public:
-  explicit Executive(const Campaign& campaign) : campaign_(campaign) {}
+  explicit Executive(const Campaign& campaign, RunBackend backend = {});
+
+  // How host actions reach the DUT (rig/campaign/host_link.hpp); empty: in process.
+  void use_host_link(HostLinkFactory link) { host_link_ = std::move(link); }
+  // Once `stop` is requested, the current run stops at its next event (every rig-driven line
+  // driven inactive, the run marked interrupted) and no further run starts. Outlives run_all.
+  void stop_on(const StopRequest* stop) { stop_ = stop; }
 
   // Runs one run. A rig fault inside the run is reported in result.error, not thrown.
   [[nodiscard]] RunOutput run(const RunSpec& run) const;
@@ -41,12 +55,19 @@ public:
   // progress(i, n, run) is called before each run.
   using Progress = std::function<void(std::size_t done, std::size_t total, const RunSpec& run)>;
   using TraceSink = std::function<void(const RunSpec& run, const RunOutput& out)>;
+  // checkpoint(partial) after each run: the runs so far, finalized (incomplete until the
+  // last), so a caller can keep results.json current and a crash leaves it readable.
+  using Checkpoint = std::function<void(const rig::CampaignResult& partial)>;
   [[nodiscard]] rig::CampaignResult run_all(const std::vector<RunSpec>& runs, std::uint64_t seed,
                                             rig::Shard shard, const Progress& progress = {},
-                                            const TraceSink& sink = {}) const;
+                                            const TraceSink& sink = {},
+                                            const Checkpoint& checkpoint = {}) const;
 
 private:
   const Campaign& campaign_;
+  RunBackend backend_;
+  HostLinkFactory host_link_;
+  const StopRequest* stop_ = nullptr;
 };
 
 } // namespace hilrig::campaign

@@ -11,9 +11,10 @@ Waveform stator_waveform(std::shared_ptr<const signals::MotionProfile> profile, 
   const double peak = resolver.ratio * resolver.amplitude;
   const double omega = 2.0 * std::numbers::pi * resolver.excitation_hz;
   const double radians_per_count = 2.0 * std::numbers::pi / counts_per_turn;
-  return [profile = std::move(profile), peak, omega, radians_per_count, stator](Nanos t) {
+  const double phase = resolver.phase_deg * std::numbers::pi / 180.0;
+  return [profile = std::move(profile), peak, omega, phase, radians_per_count, stator](Nanos t) {
     const double angle = radians_per_count * profile->position(t);
-    const double carrier = peak * std::sin(omega * t.seconds());
+    const double carrier = peak * std::sin(omega * t.seconds() + phase);
     return carrier * (stator == Stator::Sine ? std::sin(angle) : std::cos(angle));
   };
 }

@@ -97,9 +97,10 @@ private:
     dut.where = r.where();
     dut.model = r.string("model");
     dut.backend = r.opt_string("backend").value_or("virtual");
-    if (dut.backend != "virtual" && dut.backend != "gpiod") r.fail("backend", "\"virtual\" or \"gpiod\"");
+    if (dut.backend != "virtual" && dut.backend != "hardware" && dut.backend != "gpiod")
+      r.fail("backend", "\"virtual\" or \"hardware\" (\"gpiod\" is the same)");
     if (dut.model == "external") {
-      if (dut.backend == "virtual") r.fail("backend", "a hardware backend (\"gpiod\") for an external board");
+      if (dut.backend == "virtual") r.fail("backend", "\"hardware\" for an external board");
       const toml::table* pins = r.opt_table("pins");
       if (pins == nullptr)
         r.fail("pins", "missing: an external board declares its pins, e.g. pins = { A = \"input\" }");
@@ -185,7 +186,9 @@ private:
         r.fail("board",
                fmt::format("the encoder drives {}: a board input pin ({} is an output)", w.rig, w.board));
       for (const Wire& other : s.wiring) {
-        if (other.rig == w.rig)
+        // One analog line may feed several analog pins: a resolver jumpered into both
+        // channels of a two-channel board (Series 2700, pls2700.md R-18-8, L1763).
+        if (other.rig == w.rig && !(w.analog && other.analog))
           r.fail("rig", fmt::format("each rig line wired once; \"{}\" is already wired", w.rig));
         if (other.board == w.board)
           r.fail("board", fmt::format("each board pin wired once; \"{}\" is already wired", w.board));
@@ -224,6 +227,9 @@ private:
     if (!(res.amplitude > 0.0)) r.fail("amplitude", "an amplitude above 0");
     res.ratio = r.opt_number("ratio").value_or(res.ratio);
     if (!(res.ratio >= 0.0)) r.fail("ratio", "a transformation ratio of 0 or more");
+    res.phase_deg = r.opt_number("phase_deg").value_or(res.phase_deg);
+    if (!(res.phase_deg >= -360.0 && res.phase_deg <= 360.0))
+      r.fail("phase_deg", "a phase in -360..360 degrees");
     r.finish();
   }
 

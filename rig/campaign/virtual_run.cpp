@@ -8,27 +8,15 @@
 #include "core/scheduler.hpp"
 #include "drivers/virtual/virtual_bus.hpp"
 #include "rig/campaign/executive.hpp"
+#include "rig/campaign/host_sequence.hpp"
 #include "rig/campaign/motion.hpp"
-#include "rig/campaign/quadrature_edges.hpp"
 #include "rig/campaign/resolver_stators.hpp"
-#include "rig/campaign/scenario_reader.hpp"
-#include "rig/checks/support.hpp"
+#include "rig/campaign/rig_drive.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::campaign {
 
 namespace {
-
-// A line the rig drives: the level the stimulus wants, and faults that override it.
-struct DrivenLine {
-  LineOutput* out = nullptr;
-  Level intended = Level::Low;
-  int forced = 0; // stuck faults in force
-  void want(Level l) {
-    intended = l;
-    if (forced == 0) out->set(l);
-  }
-};
 
 duts::DutParams dut_params(const duts::DutInfo& info, const DutSpec& spec) {
   std::map<std::string, duts::ParamValue, std::less<>> given;
@@ -36,11 +24,26 @@ duts::DutParams dut_params(const duts::DutInfo& info, const DutSpec& spec) {
   return info.with_defaults(given);
 }
 
+// The virtual DUT's host interface as the host sequence's words.
+class DutWords final : public HostWords {
+public:
+  explicit DutWords(duts::Dut& dut) : dut_(dut) {}
+  void write(std::size_t word, std::uint16_t value) override { dut_.host_write(word, value); }
+  std::uint16_t read(std::size_t word) override { return dut_.host_read(word); }
+
+private:
+  duts::Dut& dut_;
+};
+
 class Simulation {
 public:
   explicit Simulation(const RunInputs& in)
       : in_(in), s_(*in.scenario), trace_(std::make_shared<TraceRecorder>()), bus_(sched_, trace_.get()),
-        motion_(build_motion("", s_.motion, s_.encoder)), edges_(motion_.profile) {}
+        motion_(build_motion("", s_.motion, s_.encoder)), drive_(sched_, s_, motion_) {
+    // The encoder alone is ~10^5 edges a second: beyond 2 MiB of samples the trace goes to a
+    // temporary file (read back for the VCD and the checks), so memory does not grow with the run.
+    trace_->spill_beyond(std::size_t{1} << 16);
+  }
 
   VirtualRun run() {
     if (s_.dut.backend != "virtual" || s_.dut.model == "external")
@@ -48,7 +51,6 @@ public:
                                  s_.dut.backend));
     const duts::DutInfo* info = duts::find_dut(s_.dut.model);
     if (info == nullptr) throw RigFault("no DUT model " + s_.dut.model);
-    host_ = info->host;
     make_lines();
     drive_resolver();
     dut_ = info->make(sched_, dut_params(*info, s_.dut), in_.variant, in_.seed);
@@ -56,20 +58,19 @@ public:
     for (const Wire& w : s_.wiring) pins[w.board] = w.rig;
     dut_->attach(bus_, pins);
 
-    schedule_encoder();
-    for (const Stimulus& st : s_.stimuli) schedule(st);
-    for (const Stimulus& st : in_.faults) schedule(st);
-    if (in_.probe) schedule(*in_.probe);
-    for (const BrakeApplied& b : motion_.brakes) {
-      if (b.line.empty() || b.at > s_.end) continue;
-      DrivenLine* d = &driven_.at(b.line);
-      const Level l = brake_level_.at(b.line);
-      sched_.at(b.at, [d, l] { d->want(l); });
-    }
-    if (!s_.host.empty()) sched_.at(s_.host.front().at, [this] { host_step(); });
+    drive_.start(in_.faults, in_.probe, in_.record_motion);
+    if (in_.host_link != nullptr && *in_.host_link && !s_.host.empty())
+      words_ = (*in_.host_link)(*dut_, *info);
+    else
+      words_ = std::make_unique<DutWords>(*dut_);
+    host_ = std::make_unique<HostSequence>(sched_, s_, info->host, *words_);
+    host_->start();
 
-    sched_.run_until(s_.end);
-    out_.motion.push_back({s_.end, static_cast<double>(count_)});
+    const Nanos end = play();
+    out_.motion = std::move(drive_.motion());
+    checks::append_motion(out_.motion, {end, static_cast<double>(drive_.count())});
+    out_.observations = std::move(host_->observations());
+    out_.handshakes = std::move(host_->handshakes());
     out_.trace = trace_;
     out_.profile = motion_.profile;
     return std::move(out_);
@@ -77,21 +78,48 @@ public:
 
 private:
   void make_lines() {
-    const std::int64_t start = edges_.start_count();
-    count_ = start;
-    for (const Move& m : s_.motion.moves)
-      if (!m.brake_line.empty()) brake_level_[m.brake_line] = m.brake_level;
     for (const Wire& w : s_.wiring) {
       if (w.analog) continue; // an analog channel, not a line
-      Level initial = Level::Low;
-      if (w.rig == kEncoderA) initial = a_level(start);
-      if (w.rig == kEncoderB) initial = b_level(start);
-      if (const auto it = brake_level_.find(w.rig); it != brake_level_.end()) initial = !it->second;
-      virt::DigitalLine& line = bus_.line(w.rig, initial);
-      if (w.direction == duts::PinDirection::Input) driven_[w.rig] = DrivenLine{&line.driver(), initial, 0};
+      virt::DigitalLine& line = bus_.line(w.rig, drive_.initial_level(w.rig));
+      if (w.direction == duts::PinDirection::Input) {
+        drive_.own(w.rig, line.driver());
+        owned_.push_back(&line.driver());
+      }
     }
-    enc_a_ = find_driven(kEncoderA);
-    enc_b_ = find_driven(kEncoderB);
+  }
+
+  // Plays the events to the end; returns the time the run ended. A stop request (checked
+  // before each event) or a failure inside an event (a host link that lost a transaction, a
+  // model that threw) ends it early: every line the rig drives goes to its inactive level at
+  // that virtual time (so the trace shows it), and out_.rig_fault says why.
+  Nanos play() {
+    try {
+      while (sched_.next_time() <= s_.end) {
+        if (in_.stop != nullptr && in_.stop->requested()) {
+          stop_early("interrupted by " + in_.stop->reason(), true);
+          return sched_.now();
+        }
+        sched_.step();
+      }
+      sched_.run_until(s_.end);
+      return s_.end;
+    } catch (const std::exception& e) {
+      stop_early(e.what(), false);
+      return sched_.now();
+    }
+  }
+
+  // The inactive level of a rig-driven line is low: gpiod's "inactive" (an active-low wire
+  // is electrically high), a discrete input off, a brake line applied.
+  void stop_early(const std::string& why, bool interrupted) {
+    out_.interrupted = interrupted;
+    out_.rig_fault =
+        fmt::format("{} at {:.3f} ms virtual time", why, static_cast<double>(sched_.now().count()) / 1e6);
+    try {
+      for (LineOutput* line : owned_) line->set(Level::Low);
+    } catch (const std::exception& e) {
+      out_.rig_fault += fmt::format("; driving the lines inactive failed: {}", e.what());
+    }
   }
 
   void drive_resolver() {
@@ -103,170 +131,17 @@ private:
     bus_.analog(r.cos_line).set_waveform(stator_waveform(profile, per_turn, r, Stator::Cosine));
   }
 
-  DrivenLine* find_driven(std::string_view rig) {
-    const auto it = driven_.find(rig);
-    return it == driven_.end() ? nullptr : &it->second;
-  }
-
-  void schedule_encoder() {
-    out_.motion.push_back({Nanos{0}, static_cast<double>(count_)});
-    for (const Stimulus& f : in_.faults)
-      if (f.kind == StimulusKind::MissingEdges) missing_.push_back(MissingEdges{&f, 0});
-    for (const Stimulus& f : s_.stimuli)
-      if (f.kind == StimulusKind::MissingEdges) missing_.push_back(MissingEdges{&f, 0});
-    next_edge_ = edges_.next();
-    if (next_edge_ && next_edge_->time <= s_.end) sched_.at(next_edge_->time, [this] { encoder_edge(); });
-  }
-
-  void encoder_edge() {
-    const CountEdge e = *next_edge_;
-    count_ = e.count;
-    if (in_.record_motion) out_.motion.push_back({e.time, static_cast<double>(e.count)});
-    DrivenLine* line = e.on_a ? enc_a_ : enc_b_;
-    const std::string_view name = e.on_a ? kEncoderA : kEncoderB;
-    bool lost = false;
-    for (MissingEdges& m : missing_) {
-      if (m.fault->line != name || e.time < m.fault->at || e.time >= m.fault->until) continue;
-      if (++m.seen % m.fault->every == 0) lost = true;
-    }
-    if (line != nullptr && !lost) line->want(e.level);
-    next_edge_ = edges_.next();
-    if (next_edge_ && next_edge_->time <= s_.end) sched_.at(next_edge_->time, [this] { encoder_edge(); });
-  }
-
-  void schedule(const Stimulus& st) {
-    DrivenLine* d = find_driven(st.line);
-    if (d == nullptr) throw RigFault("stimulus on a line the rig does not drive: " + st.line);
-    const Level l = st.level;
-    switch (st.kind) {
-    case StimulusKind::Level:
-      sched_.at(st.at, [d, l] { d->want(l); });
-      break;
-    case StimulusKind::Pulse:
-      sched_.at(st.at, [d, l] { d->want(l); });
-      sched_.at(st.at + st.width, [d, l] { d->want(!l); });
-      break;
-    case StimulusKind::Bounce:
-      // First contact at `at`; bounce k opens at at + (2k-1)*period and closes at at + 2k*period.
-      sched_.at(st.at, [d, l] { d->want(l); });
-      for (std::int64_t k = 1; k <= st.edges; ++k) {
-        sched_.at(st.at + st.period * (2 * k - 1), [d, l] { d->want(!l); });
-        sched_.at(st.at + st.period * (2 * k), [d, l] { d->want(l); });
-      }
-      break;
-    case StimulusKind::Glitch:
-      sched_.at(st.at, [d] {
-        if (d->forced == 0) d->out->set(!d->intended);
-      });
-      sched_.at(st.at + st.width, [d] {
-        if (d->forced == 0) d->out->set(d->intended);
-      });
-      break;
-    case StimulusKind::Stuck:
-      sched_.at(st.at, [d, l] {
-        ++d->forced;
-        d->out->set(l);
-      });
-      if (st.until != Nanos::max())
-        sched_.at(st.until, [d] {
-          if (--d->forced == 0) d->out->set(d->intended);
-        });
-      break;
-    case StimulusKind::MissingEdges:
-      break; // applied as the encoder plays its edges
-    }
-  }
-
-  // Host actions run one after another; each starts at its time or when the one before
-  // it has finished its handshake, whichever is later.
-  void host_step() {
-    const HostAction& h = s_.host[host_next_];
-    if (h.kind == HostAction::Kind::Read) {
-      const std::uint16_t raw = dut_->host_read(h.word);
-      const double value =
-          h.is_signed ? static_cast<double>(static_cast<std::int16_t>(raw)) : static_cast<double>(raw);
-      out_.observations.push_back(rig::Observation{h.name, value, h.unit, sched_.now()});
-      host_done();
-      return;
-    }
-    for (std::size_t w = h.words.size(); w-- > 1;) dut_->host_write(w, h.words[w]);
-    dut_->host_write(0, h.words[0]);
-    if (!host_.handshake) {
-      host_done();
-      return;
-    }
-    write_started_ = sched_.now();
-    dut_->host_write(0, static_cast<std::uint16_t>(h.words[0] | (1U << host_.transmit_bit)));
-    sched_.after(s_.host_poll, [this] { host_poll_ack(true); });
-  }
-
-  bool ack() const {
-    return ((static_cast<unsigned>(dut_->host_read(0)) >> host_.acknowledge_bit) & 1U) != 0U;
-  }
-
-  void host_poll_ack(bool want) {
-    const HostAction& h = s_.host[host_next_];
-    const Nanos waited = sched_.now() - write_started_;
-    const std::string name =
-        fmt::format("host.{}.ack", h.name.empty() ? fmt::format("write{}", host_next_) : h.name);
-    if (ack() == want) {
-      if (want) {
-        out_.handshakes.push_back(
-            checks::measure(name, checks::to_us(waited), "us", std::nullopt, checks::to_us(h.timeout),
-                            fmt::format("Acknowledge {} after Transmit (polled every {} us)", "set",
-                                        checks::to_us(s_.host_poll)),
-                            rig::TraceWindow{write_started_, sched_.now()}));
-        dut_->host_write(0, h.words[0]);
-        write_started_ = sched_.now();
-        sched_.after(s_.host_poll, [this] { host_poll_ack(false); });
-      } else {
-        host_done();
-      }
-      return;
-    }
-    if (waited >= h.timeout) {
-      out_.handshakes.push_back(
-          checks::failure(want ? name : name + "_clear",
-                          fmt::format("no Acknowledge {} within {} us of {} Transmit", want ? "set" : "clear",
-                                      checks::to_us(h.timeout), want ? "setting" : "clearing"),
-                          rig::TraceWindow{write_started_, sched_.now()}));
-      if (want) dut_->host_write(0, h.words[0]);
-      host_done();
-      return;
-    }
-    sched_.after(s_.host_poll, [this, want] { host_poll_ack(want); });
-  }
-
-  void host_done() {
-    if (++host_next_ >= s_.host.size()) return;
-    const Nanos at = std::max(sched_.now(), s_.host[host_next_].at);
-    if (at > s_.end) return;
-    sched_.at(at, [this] { host_step(); });
-  }
-
-  struct MissingEdges {
-    const Stimulus* fault;
-    std::int64_t seen;
-  };
-
   const RunInputs& in_;
   const Scenario& s_;
   Scheduler sched_;
   std::shared_ptr<TraceRecorder> trace_;
   virt::VirtualBus bus_;
   BuiltMotion motion_;
-  QuadratureEdges edges_;
+  RigDrive drive_;
   std::unique_ptr<duts::Dut> dut_;
-  duts::HostInterface host_;
-  std::map<std::string, DrivenLine, std::less<>> driven_;
-  std::map<std::string, Level, std::less<>> brake_level_;
-  DrivenLine* enc_a_ = nullptr;
-  DrivenLine* enc_b_ = nullptr;
-  std::optional<CountEdge> next_edge_;
-  std::vector<MissingEdges> missing_;
-  std::int64_t count_ = 0;
-  std::size_t host_next_ = 0;
-  Nanos write_started_{0};
+  std::vector<LineOutput*> owned_; // the lines the rig drives
+  std::unique_ptr<HostWords> words_;
+  std::unique_ptr<HostSequence> host_;
   VirtualRun out_;
 };
 

@@ -10,6 +10,8 @@
 
 #include "core/trace.hpp"
 #include "rig/campaign/campaign.hpp"
+#include "rig/campaign/host_link.hpp"
+#include "rig/campaign/stop_request.hpp"
 #include "rig/checks/brake.hpp"
 #include "rig/results/measurement.hpp"
 #include "signals/motion_profile.hpp"
@@ -22,15 +24,25 @@ struct RunInputs {
   std::vector<Stimulus> faults;  // signal faults injected on top of the stimuli
   std::optional<Stimulus> probe; // one extra pulse (debounce bisection)
   std::uint64_t seed = 0;
-  bool record_motion = true; // keep every count change (brake checks need it; it is large)
+  bool record_motion = true;                  // follow every count change (brake checks need it)
+  const HostLinkFactory* host_link = nullptr; // how host actions reach the DUT (null: in process)
+  const StopRequest* stop = nullptr;          // when requested, the run stops at its next event
 };
 
 struct VirtualRun {
   std::shared_ptr<TraceRecorder> trace;
-  signals::MotionProfile profile;             // counts
-  std::vector<checks::PositionSample> motion; // every count change (and the start and end)
+  signals::MotionProfile profile; // counts
+  // The count changes as checks::append_motion keeps them (what the brake check reads: the
+  // start, the last change and the end), so it does not grow with the run.
+  std::vector<checks::PositionSample> motion;
   std::vector<rig::Observation> observations; // host reads
   std::vector<rig::Measurement> handshakes;   // host writes: time to Acknowledge
+  std::vector<rig::Measurement> rig_timing;   // hardware runs: the rig's own timing (wake-ups, edges)
+  std::string rig_fault;                      // hardware runs: why the run stopped early ("" when it did not)
+  // The run stopped early (a stop request, or a host-link or model failure in the middle):
+  // what was captured up to then is kept, every rig-driven line was driven to its inactive
+  // level at that time, and rig_fault says why. interrupted: it was a stop request.
+  bool interrupted = false;
 };
 
 // Throws RigFault when the scenario cannot be simulated.

@@ -6,6 +6,21 @@
 
 namespace hilrig::checks {
 
+void append_motion(std::vector<PositionSample>& motion, PositionSample sample) {
+  motion.push_back(sample);
+  const std::size_t n = motion.size();
+  if (n < 3) return;
+  if (motion[n - 2].position != sample.position) {
+    // A new last change: earlier changes are older, so they cannot be the last one.
+    motion[1] = motion[n - 2];
+    motion[2] = sample;
+    motion.resize(3);
+    return;
+  }
+  // No change: the sample before is redundant unless it is the first or ends a change.
+  if (motion[n - 3].position == motion[n - 2].position) motion.erase(motion.end() - 2);
+}
+
 std::optional<Nanos> standstill_after(std::span<const PositionSample> motion, Nanos from, Nanos trace_end) {
   Nanos still = from;
   for (std::size_t i = 1; i < motion.size(); ++i) {

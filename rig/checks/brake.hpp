@@ -5,6 +5,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "core/line.hpp"
 #include "rig/checks/support.hpp"
@@ -16,6 +17,12 @@ struct PositionSample {
   Nanos time;
   double position;
 };
+
+// Appends `sample` (times ascending) keeping only what standstill_after() reads: the first
+// sample, the last change of position (the sample before it and the one that made it) and the
+// latest sample. standstill_after() of the kept samples equals that of every sample appended,
+// for any `from`, and a long run holds at most four.
+void append_motion(std::vector<PositionSample>& motion, PositionSample sample);
 
 // Standstill after `from`: the first instant at which the position stops changing for good
 // (the time of the last change, or `from` when nothing moves after it). nullopt when the

@@ -1,6 +1,7 @@
 #include "rig/checks/crossings.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace hilrig::checks {
@@ -19,26 +20,42 @@ template <class Pred> Nanos first_true(Nanos a, Nanos b, Pred pred) {
   return b;
 }
 
+// The setpoint's levels in [lo, hi]: the setpoint itself, or with a modulus every
+// setpoint + k * modulus.
+std::vector<double> levels_between(double setpoint, double modulus, double lo, double hi) {
+  std::vector<double> out;
+  if (modulus <= 0.0) {
+    if (setpoint >= lo && setpoint <= hi) out.push_back(setpoint);
+    return out;
+  }
+  for (double k = std::ceil((lo - setpoint) / modulus); setpoint + k * modulus <= hi; k += 1.0)
+    out.push_back(setpoint + k * modulus);
+  return out;
+}
+
 } // namespace
 
 std::vector<Nanos> find_crossings(const PositionFn& position, double setpoint, Nanos from, Nanos to,
-                                  Nanos step, Direction direction) {
+                                  Nanos step, Direction direction, double modulus) {
   if (step <= Nanos{0}) throw std::invalid_argument("find_crossings: step must be positive");
   std::vector<Nanos> out;
-  const auto at_or_above = [&](Nanos t) { return position(t) >= setpoint; };
-  const auto at_or_below = [&](Nanos t) { return position(t) <= setpoint; };
+  const bool want_rising = direction != Direction::Falling;
+  const bool want_falling = direction != Direction::Rising;
   Nanos a = from;
   double pa = position(a);
   while (a < to) {
     const Nanos b = std::min(a + step, to);
     const double pb = position(b);
-    const bool want_rising = direction != Direction::Falling;
-    const bool want_falling = direction != Direction::Rising;
-    if (want_rising && pa < setpoint && pb >= setpoint) out.push_back(first_true(a, b, at_or_above));
-    if (want_falling && pa > setpoint && pb <= setpoint) out.push_back(first_true(a, b, at_or_below));
+    for (const double level : levels_between(setpoint, modulus, std::min(pa, pb), std::max(pa, pb))) {
+      if (want_rising && pa < level && pb >= level)
+        out.push_back(first_true(a, b, [&](Nanos t) { return position(t) >= level; }));
+      if (want_falling && pa > level && pb <= level)
+        out.push_back(first_true(a, b, [&](Nanos t) { return position(t) <= level; }));
+    }
     a = b;
     pa = pb;
   }
+  std::sort(out.begin(), out.end());
   return out;
 }
 

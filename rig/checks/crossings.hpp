@@ -15,7 +15,10 @@ enum class Direction { Rising, Falling, Both };
 // first ns at which position <= setpoint after being above it. The function is scanned every
 // `step` and each sign change refined by bisection, so two crossings closer than `step` can
 // be missed: choose step shorter than the shortest dwell on either side of the setpoint.
+// With a modulus > 0 (a board's full-scale count, a shaft that keeps turning) the setpoint
+// is on the circle: every setpoint + k * modulus is crossed. Returned in time order.
 [[nodiscard]] std::vector<Nanos> find_crossings(const PositionFn& position, double setpoint, Nanos from,
-                                                Nanos to, Nanos step, Direction direction = Direction::Both);
+                                                Nanos to, Nanos step, Direction direction = Direction::Both,
+                                                double modulus = 0.0);
 
 } // namespace hilrig::checks

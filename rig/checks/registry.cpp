@@ -83,8 +83,9 @@ CheckResult throughput(std::string_view name, const Capture& c, const json& p) {
     const Direction dir = d == "rising"    ? Direction::Rising
                           : d == "falling" ? Direction::Falling
                                            : Direction::Both;
-    crossings = find_crossings(position_fn(c), num(p, "setpoint", 0.0), us(p, "from_us", c.begin),
-                               us(p, "to_us", c.end), us(p, "step_us", Nanos{100'000}), dir);
+    crossings =
+        find_crossings(position_fn(c), num(p, "setpoint", 0.0), us(p, "from_us", c.begin),
+                       us(p, "to_us", c.end), us(p, "step_us", Nanos{100'000}), dir, num(p, "modulus", 0.0));
   }
   return check_throughput(crossings, line(c, str(p, "output")), s);
 }
@@ -238,6 +239,7 @@ std::vector<CheckKind> make_kinds() {
         P("setpoint", Num, false, "counts: crossings derived from the position function"),
         P("direction", Str, false, "rising, falling or both (both)"),
         P("step_us", Num, false, "scan step for crossings (100); shorter than the shortest dwell"),
+        P("modulus", Num, false, "full-scale count: setpoint + k * modulus are crossings too (0: none)"),
         P("from_us", Num, false, "scan start"), P("to_us", Num, false, "scan end")},
        bind(throughput),
        false,

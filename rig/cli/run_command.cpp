@@ -6,13 +6,18 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "core/trace.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
+#include "rig/campaign/modbus_host_link.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/serve_devices.hpp"
+#include "rig/cli/stop_signals.hpp"
+#include "rig/hardware/hardware_backend.hpp"
 #include "rig/results/junit.hpp"
 #include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
@@ -23,11 +28,89 @@ namespace {
 
 constexpr std::size_t kMaxFailureTraces = 20;
 
+// Written to a temporary file and renamed, so a crash leaves a whole VCD or none.
 void write_trace_files(const std::filesystem::path& dir, const std::string& stem,
                        const TraceRecorder& trace) {
-  std::ofstream vcd(dir / (stem + ".vcd"), std::ios::binary);
-  write_vcd(trace, vcd);
-  if (!vcd) throw campaign::RigFault("cannot write " + (dir / (stem + ".vcd")).string());
+  const std::filesystem::path path = dir / (stem + ".vcd");
+  const std::filesystem::path tmp = dir / (stem + ".vcd.tmp");
+  {
+    std::ofstream vcd(tmp, std::ios::binary);
+    write_vcd(trace, vcd);
+    vcd.flush();
+    if (!vcd) throw campaign::RigFault("cannot write " + tmp.string());
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+// Host words as Modbus RTU on a pty pair: the DUT adapter's words from where `hilrig serve`
+// puts the device's first command and status words (the whole served map for the ANS1, 4501,
+// 7361 and SMD23E; the Series 2700 adapter's words are its own, not the block-transfer map).
+campaign::HostLinkFactory modbus_rtu_pty_links() {
+  return [](duts::Dut& dut, const duts::DutInfo& info) {
+    const ServedDevice* served = find_served_device(info.name);
+    if (served == nullptr) throw campaign::RigFault("no Modbus register map for " + info.name);
+    const HostWordMap& w = served->words;
+    return campaign::modbus_rtu_pty_link(dut, campaign::HostRegisters{w.command_base, info.host.output_words,
+                                                                      w.status_base, info.host.input_words});
+  };
+}
+
+// The link --host-link names, or nullopt (with the message on err) when it cannot serve the campaign.
+std::optional<campaign::HostLinkFactory> host_link_for(const RunOptions& o, const campaign::Campaign& c,
+                                                       std::ostream& err) {
+  if (o.host_link_factory) return o.host_link_factory;
+  if (o.host_link == campaign::kInProcessLink) return campaign::HostLinkFactory{};
+  if (o.host_link != campaign::kModbusRtuPtyLink) {
+    err << fmt::format("hilrig run: --host-link {}: expected {} or {}\n", o.host_link,
+                       campaign::kInProcessLink, campaign::kModbusRtuPtyLink);
+    return std::nullopt;
+  }
+  for (const campaign::Scenario& s : c.points) {
+    if (find_served_device(s.dut.model) == nullptr) {
+      err << fmt::format("hilrig run: --host-link {}: {} has no Modbus register map (served devices: {})\n",
+                         o.host_link, s.dut.model, served_device_names());
+      return std::nullopt;
+    }
+  }
+  return modbus_rtu_pty_links();
+}
+
+// --backend, or the campaign's [dut] backend: a hardware run loads the rig config and places
+// every scenario on it before anything moves. Returns an exit status (kPassed: go on).
+int choose_backend(const RunOptions& o, campaign::Campaign& c, std::optional<hardware::RigConfig>& rig,
+                   std::ostream& err) {
+  std::string asked;
+  for (const campaign::Scenario& s : c.points)
+    if (s.dut.backend != "virtual") asked = s.dut.backend;
+  const bool on_rig = o.backend == "hardware" || (o.backend.empty() && (!o.rig.empty() || !asked.empty()));
+  if (!on_rig) {
+    if (!o.rig.empty()) {
+      err << "hilrig run: --rig is for --backend hardware\n";
+      return kBadInput;
+    }
+    // --backend virtual: the same campaign file on the virtual bus, whatever it was written for.
+    for (campaign::Scenario& s : c.points) s.dut.backend = "virtual";
+    for (auto& points : c.fault_points)
+      for (campaign::Scenario& s : points) s.dut.backend = "virtual";
+    return kPassed;
+  }
+  if (o.rig.empty()) {
+    if (o.backend == "hardware") {
+      err << "hilrig run: --backend hardware needs --rig RIG.toml (docs/rig-config.md)\n";
+      return kBadInput;
+    }
+    err << fmt::format("hilrig run: rig fault: [dut] backend \"{}\" runs on a rig: give --rig RIG.toml\n",
+                       asked);
+    return kRigFault;
+  }
+  try {
+    rig = hardware::load_rig_config(o.rig);
+    hardware::check_campaign_on_rig(c, *rig);
+  } catch (const campaign::CampaignError& e) {
+    err << e.what() << '\n';
+    return kBadInput;
+  }
+  return kPassed;
 }
 
 } // namespace
@@ -62,16 +145,30 @@ int run_campaign(const RunOptions& o, std::ostream& err) {
   const std::uint64_t seed = o.seed.value_or(c.seed);
   c.runs = campaign::plan_runs(c, seed);
   const std::vector<campaign::RunSpec> runs = campaign::shard(c.runs, shard->first, shard->second);
+  const std::optional<campaign::HostLinkFactory> link = host_link_for(o, c, err);
+  if (!link) return kBadInput;
+  std::optional<hardware::RigConfig> rig;
+  if (const int status = choose_backend(o, c, rig, err); status != kPassed) return status;
 
   try {
     std::filesystem::create_directories(o.out);
-    const campaign::Executive exec(c);
+    campaign::Executive exec(c, rig ? hardware::hardware_backend(*rig, c.file, o.rig_ports)
+                                    : campaign::RunBackend{});
+    exec.use_host_link(*link);
+    campaign::StopRequest stop;
+    std::optional<StopSignals> signals;
+    if (o.handle_signals) {
+      signals.emplace(stop);
+      exec.stop_on(&stop);
+    }
     bool can_used = false;
     std::size_t failure_traces = 0;
     std::ofstream can_log;
     const auto progress = [&](std::size_t done, std::size_t total, const campaign::RunSpec& run) {
-      if (!o.progress) return;
-      err << fmt::format("\r[{}/{}] run {} {}\x1b[K", done + 1, total, run.index, run.label) << std::flush;
+      if (o.progress)
+        err << fmt::format("\r[{}/{}] run {} {}\x1b[K", done + 1, total, run.index, run.label) << std::flush;
+      else if (o.progress_lines)
+        err << fmt::format("[{}/{}] run {} {}\n", done + 1, total, run.index, run.label) << std::flush;
     };
     const auto sink = [&](const campaign::RunSpec& run, const campaign::RunOutput& out) {
       if (!out.trace) return;
@@ -94,12 +191,17 @@ int run_campaign(const RunOptions& o, std::ostream& err) {
     rig::CampaignResult result = exec.run_all(
         runs, seed,
         rig::Shard{static_cast<std::uint32_t>(shard->first), static_cast<std::uint32_t>(shard->second)},
-        progress, sink);
+        progress, sink, [&](const rig::CampaignResult& partial) {
+          // Kept current after every run (written atomically), so a crash or SIGKILL leaves
+          // the runs done so far readable; the final write below replaces it.
+          rig::write_results_file(o.out / "results.json", partial);
+        });
     if (o.progress) err << '\n';
     rig::write_results_file(o.out / "results.json", result);
     rig::write_file_atomically(o.out / "junit.xml", rig::to_junit_xml(result));
     rig::write_file_atomically(o.out / "report.html", rig::to_report_html(result));
 
+    signals.reset(); // the outputs are written: SIGINT/SIGTERM act as usual again
     const auto& t = result.totals;
     err << fmt::format("{}: {} run(s), {} passed, {} failed, {} errored; faults caught {}/{}; verdict {}\n",
                        c.name, t.runs, t.runs_passed, t.runs_failed, t.runs_errored, t.faults_caught,
@@ -107,6 +209,13 @@ int run_campaign(const RunOptions& o, std::ostream& err) {
     for (const auto& run : result.runs)
       if (!run.error.empty())
         err << fmt::format("run {} ({}): rig fault: {}\n", run.index, run.name, run.error);
+    if (result.interrupted) {
+      err << fmt::format(
+          "hilrig run: interrupted by {}: {} of {} run(s) done, the last stopped early with every "
+          "rig-driven line at its inactive level; results written to {}\n",
+          *result.interrupted, result.runs.size(), result.planned_runs, o.out.string());
+      return kRigFault;
+    }
     for (const auto& run : result.runs)
       if (!run.error.empty()) return kRigFault;
     return result.verdict == rig::Outcome::Pass ? kPassed : kCheckFailed;
@@ -124,6 +233,19 @@ void add_run_command(CLI::App& app) {
       ->required();
   cmd->add_option("--seed", options->seed, "base seed (overrides [campaign] seed)");
   cmd->add_option("--shard", options->shard, "K/N: run only the runs whose index mod N is K (0-based)");
+  cmd->add_option("--host-link", options->host_link,
+                  "how host actions reach the DUT: in-process (default) or modbus-rtu-pty (Modbus RTU on a "
+                  "pty pair, served as `hilrig serve` maps the device)")
+      ->check(
+          CLI::IsMember({std::string(campaign::kInProcessLink), std::string(campaign::kModbusRtuPtyLink)}));
+  cmd->add_option(
+         "--backend", options->backend,
+         "virtual (the in-process bus) or hardware (the rig --rig describes); default: the campaign's "
+         "[dut] backend")
+      ->check(CLI::IsMember({std::string("virtual"), std::string("hardware")}));
+  cmd->add_option("--rig", options->rig, "the rig config of a hardware run (docs/rig-config.md)");
+  cmd->add_flag("--progress", options->progress_lines,
+                "a progress line per run on stderr, also when it is not a terminal");
   cmd->callback([options] {
     options->progress = isatty(fileno(stderr)) != 0;
     const int status = run_campaign(*options, std::cerr);

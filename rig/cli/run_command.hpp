@@ -2,7 +2,8 @@
 // `hilrig run FILE.toml --out DIR [--seed S] [--shard K/N]`: runs a campaign (in virtual
 // time by default) and writes DIR/results.json, junit.xml, report.html, trace.vcd (the
 // shard's first run; also trace-run<i>.vcd for up to 20 runs that did not pass) and
-// can.log when CAN was used. Exit: 0 all passed, 1 a check failed, 2 bad input, 3 a rig fault.
+// can.log when CAN was used. Exit: 0 all passed, 1 a check failed, 2 bad input, 3 a rig fault
+// (also a run stopped by SIGINT/SIGTERM: what ran is written, the stopped run marked interrupted).
 
 #include <cstddef>
 #include <cstdint>
@@ -13,6 +14,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "rig/campaign/host_link.hpp"
+#include "rig/hardware/rig_ports.hpp"
+
 namespace hilrig::cli {
 
 void add_run_command(CLI::App& app);
@@ -22,7 +26,15 @@ struct RunOptions {
   std::filesystem::path out;
   std::optional<std::uint64_t> seed; // overrides [campaign] seed
   std::string shard = "0/1";         // K/N, K in 0..N-1: runs whose index mod N is K
-  bool progress = false;             // a progress line on err
+  bool progress = false;             // a progress line on err (a terminal: rewritten in place)
+  bool progress_lines = false;       // --progress: one line per run, also when err is not a terminal
+  std::string host_link{campaign::kInProcessLink}; // --host-link: in-process or modbus-rtu-pty
+  campaign::HostLinkFactory host_link_factory;     // set by a caller: the link to use instead
+  bool handle_signals = true; // SIGINT/SIGTERM stop the run, outputs inactive, results written, exit 3
+  // --backend: "virtual" or "hardware"; "" follows the campaign's [dut] backend (or --rig).
+  std::string backend;
+  std::string rig;                     // --rig: the rig config (docs/rig-config.md) of a hardware run
+  hardware::RigPortsFactory rig_ports; // set by a caller: the rig's ports instead of its drivers
 };
 
 // Does the whole command and returns its exit status; messages go to err.

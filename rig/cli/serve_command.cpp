@@ -12,6 +12,8 @@
 #include "drivers/modbus/pty.hpp"
 #include "drivers/modbus/rtu_server.hpp"
 #include "drivers/modbus/tcp_server.hpp"
+#include "rig/campaign/campaign_error.hpp"
+#include "rig/campaign/duration.hpp"
 #include "rig/cli/exit_status.hpp"
 #include "rig/cli/serve_devices.hpp"
 
@@ -37,6 +39,8 @@ struct ServeArgs {
   unsigned unit = 1;
   std::string bind;
   std::string port_file;
+  std::string tick;
+  std::string scan;
 };
 
 [[noreturn]] void bad_input(const std::string& why) {
@@ -95,6 +99,9 @@ void announce(const ServeOptions& o, const ServeEndpoint& e, const std::string& 
   if (!e.note.empty()) {
     std::printf("hilrig serve: note: %s\n", e.note.c_str());
   }
+  if (!e.far_side.empty()) {
+    std::printf("hilrig serve: far side: %s\n", e.far_side.c_str());
+  }
   std::fflush(stdout);
   if (!port_file.empty()) {
     std::ofstream f(port_file);
@@ -120,6 +127,23 @@ void serve_main(const ServeArgs& args) {
     o.link = args.pty ? ServeLink::Pty : ServeLink::Rtu;
     parse_rtu(args, o);
   }
+  if (!args.tick.empty()) {
+    const auto tick = campaign::parse_duration(args.tick);
+    if (!tick || *tick < milliseconds(1)) {
+      bad_input("--tick " + args.tick + ": a duration of at least 1ms, like \"1ms\"");
+    }
+    o.tick = *tick;
+  }
+  if (!args.scan.empty()) {
+    const auto scan = campaign::parse_duration(args.scan);
+    if (o.device != "ans1" || !scan || *scan < microseconds(1) || *scan > milliseconds(1)) {
+      bad_input("--scan " + args.scan + ": the ans1's scan period, 1us..1ms, like \"100us\"");
+    }
+    o.scan_period = *scan;
+  }
+  if (o.far.config.empty() && (!o.far.gpio_sim.empty() || !o.far.can.empty())) {
+    bad_input("--gpio-sim and --can need --far FAR.toml (which pin is on which line)");
+  }
   g_stop.store(false);
   struct sigaction sa {};
   sa.sa_handler = on_stop_signal;
@@ -137,6 +161,9 @@ void serve_main(const ServeArgs& args) {
   } catch (const std::invalid_argument& e) {
     restore();
     bad_input(e.what());
+  } catch (const campaign::CampaignError& e) {
+    restore();
+    bad_input(e.what());
   } catch (...) {
     restore();
     throw;
@@ -145,12 +172,27 @@ void serve_main(const ServeArgs& args) {
 }
 
 // Runs a server with the model in real time: virtual time is the monotonic time since start.
+// A far side first hands the model what arrived on its pins, stamped with that time.
 template <typename Server>
-void serve_in_real_time(Server& server, Scheduler& scheduler, const std::atomic<bool>& stop) {
+void serve_in_real_time(Server& server, Scheduler& scheduler, ServedFarSide* far,
+                        const std::atomic<bool>& stop) {
   const MonotonicClock clock;
   const Nanos t0 = clock.now();
-  server.on_tick([&] { scheduler.run_until(clock.now() - t0); });
+  server.on_tick([&] {
+    const Nanos t = clock.now() - t0;
+    if (far != nullptr) {
+      far->tick(t);
+    }
+    scheduler.run_until(t);
+    if (far != nullptr) {
+      far->note_lag(clock.now() - t0 - t); // how far behind real time the model finished
+    }
+  });
   server.run(stop);
+  if (far != nullptr) {
+    std::printf("hilrig serve: far side: %s\n", far->summary().c_str());
+    std::fflush(stdout);
+  }
 }
 
 } // namespace
@@ -163,19 +205,26 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
                                 ")");
   }
   Scheduler scheduler;
-  const ServedModel model = device->build(scheduler, {options.fault, options.m12, options.no_encoder});
+  const ServedModel model = device->build(
+      scheduler, ServeModelOptions{options.fault, options.m12, options.no_encoder, options.scan_period});
+  std::unique_ptr<ServedFarSide> far;
+  if (!options.far.config.empty()) {
+    far = std::make_unique<ServedFarSide>(scheduler, options.far, model, options.device);
+  }
   ServeEndpoint endpoint;
   endpoint.link = options.link;
+  endpoint.far_side = far ? far->describe() : std::string();
   if (options.link == ServeLink::Tcp) {
     drivers::modbus::TcpServerOptions server_options;
     server_options.bind = options.bind;
     server_options.port = options.port;
+    server_options.poll_period = options.tick;
     drivers::modbus::TcpServer server(*model.registers, server_options);
     endpoint.port = server.port();
     if (on_ready) {
       on_ready(endpoint);
     }
-    serve_in_real_time(server, scheduler, stop);
+    serve_in_real_time(server, scheduler, far.get(), stop);
     return;
   }
   drivers::modbus::RtuServerOptions server_options;
@@ -183,6 +232,7 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
   server_options.format = options.format;
   server_options.unit = options.unit;
   server_options.rs485 = options.rs485;
+  server_options.poll_period = options.tick;
   std::optional<drivers::modbus::Pty> pty;
   std::optional<drivers::modbus::RtuServer> server;
   if (options.link == ServeLink::Pty) {
@@ -198,7 +248,7 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
   if (on_ready) {
     on_ready(endpoint);
   }
-  serve_in_real_time(*server, scheduler, stop);
+  serve_in_real_time(*server, scheduler, far.get(), stop);
 }
 
 void run_serve(const ServeOptions& options, const std::atomic<bool>& stop,
@@ -239,6 +289,17 @@ void add_serve_command(CLI::App& app) {
   cmd->add_flag("--m12", args->options.m12, "smd23e: model an M12 unit (two inputs)");
   cmd->add_flag("--no-encoder", args->options.no_encoder,
                 "smd23e: model a unit without the internal encoder");
+  cmd->add_option("--far", args->options.far.config,
+                  "Far-side config (TOML): the board pins on gpio-sim lines, the resolver node");
+  cmd->add_option("--gpio-sim", args->options.far.gpio_sim,
+                  "gpio-sim chip directory (/sys/devices/platform/DEV/CHIP) the far side reads and pulls");
+  cmd->add_option("--can", args->options.far.can,
+                  "CAN interface of the far side's resolver-emulator node (e.g. can1)");
+  cmd->add_option("--tick", args->tick,
+                  "How often the model runs and the far side reads its pins while idle (default 5ms)");
+  cmd->add_option(
+      "--scan", args->scan,
+      "ans1: the master scan period (default 10us); longer keeps real time on a slow host (QEMU)");
   cmd->add_option("--port-file", args->port_file,
                   "Write the bound TCP port (or the RTU device / pty slave path) to this file once serving");
   cmd->callback([args] { serve_main(*args); });

@@ -5,6 +5,9 @@
 //   --modbus-rtu PATH [--baud B --parity N|E|O --data-bits 7|8 --stop-bits 1|2 --unit U --rs485]
 //   --pty [--unit U ...]                       Modbus RTU on a new pty pair; prints (and writes
 //                                              to --port-file) the slave path a client opens
+// and, with --far FAR.toml [--gpio-sim DIR] [--can IFACE], the model's pins on real kernel
+// interfaces (serve_far_side.hpp), read and pulled every --tick (default 5 ms). --scan sets the
+// ANS1's scan period, so a slow host (QEMU's emulated CPU) keeps the model in real time.
 // The model's scheduler is advanced to the monotonic clock before each request is answered
 // and every poll period. Stops cleanly on SIGINT/SIGTERM.
 
@@ -13,10 +16,12 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "core/serial.hpp"
 #include "drivers/modbus/rtu_server.hpp"
+#include "rig/cli/serve_far_side.hpp"
 
 namespace hilrig::cli {
 
@@ -37,6 +42,11 @@ struct ServeOptions {
   std::string fault = "none";
   bool m12 = false;
   bool no_encoder = false;
+  // The far side: the model's pins on gpio-sim and CAN (none when far.config is empty), and
+  // how often the model runs and its pins are read while no request arrives.
+  FarSideOptions far;
+  Nanos tick = milliseconds(5);
+  std::optional<Nanos> scan_period; // ans1: --scan
 };
 
 // What a client needs to reach the served device; valid while serve_device runs.
@@ -46,6 +56,7 @@ struct ServeEndpoint {
   std::string serial_path; // Rtu: the device; Pty: the slave path a client opens
   std::string note;        // e.g. why RS-485 mode is off; empty when all is as asked
   const drivers::modbus::RtuServerStats* rtu_stats = nullptr; // Rtu/Pty
+  std::string far_side;                                       // what the far side carries; empty without one
 };
 
 // Serves until `stop` becomes true; on_ready is called once the link is up.

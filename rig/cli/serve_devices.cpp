@@ -13,6 +13,7 @@
 #include "models/smd23e/smd23e.hpp"
 #include "models/ssi7361/registers.hpp"
 #include "models/ssi7361/ssi7361.hpp"
+#include "rig/far/far_side.hpp"
 
 namespace hilrig::cli {
 
@@ -38,24 +39,33 @@ ServedModel build_smd23e(Scheduler& scheduler, const ServeModelOptions& o) {
   params.has_encoder = !o.no_encoder;
   auto device = std::make_shared<models::smd23e::Smd23e>(scheduler, params);
   RegisterMap* map = device.get();
-  return {std::move(device), map};
+  return {std::move(device), map, {}};
 }
 
 // The ANS1 with no pins attached: no resolver signals (so Resolver Fault is set until a rig
-// drives them), inputs off. Its host words are fully served.
+// drives them), inputs off. Its host words are fully served. A far side gives it the pins
+// its config names (encoder, inputs, outputs, stators); the rest stay unwired.
 ServedModel build_ans1(Scheduler& scheduler, const ServeModelOptions& o) {
   const auto variant = models::ans1::variant_from_name(nominal_if_none(o.fault));
   if (!variant) {
     unknown_fault("ans1", o.fault);
   }
   struct Served {
-    Served(Scheduler& s, models::ans1::Variant v) : device(s, models::ans1::Params{}, v), map(device) {}
+    Served(Scheduler& s, const models::ans1::Params& p, models::ans1::Variant v)
+        : device(s, p, v), map(device) {}
     models::ans1::Ans1 device;
     models::ans1::Ans1RegisterMap map;
   };
-  auto served = std::make_shared<Served>(scheduler, *variant);
+  models::ans1::Params params;
+  if (o.scan_period) {
+    params.master_scan_period = *o.scan_period;
+  }
+  auto served = std::make_shared<Served>(scheduler, params, *variant);
   RegisterMap* map = &served->map;
-  return {std::move(served), map};
+  auto attach = [device = &served->device](far::FarSide& far) {
+    device->attach(models::ans1::wire_pins_by_map(far, far.pin_map()));
+  };
+  return {std::move(served), map, attach};
 }
 
 // The SSI 7361 with its clock and data lines on a private virtual bus and no encoder on them
@@ -78,7 +88,7 @@ ServedModel build_ssi7361(Scheduler& scheduler, const ServeModelOptions& o) {
   params.variant = *variant;
   auto served = std::make_shared<Served>(scheduler, params);
   RegisterMap* map = &served->map;
-  return {std::move(served), map};
+  return {std::move(served), map, {}};
 }
 
 // The 4501 with its encoder, Start, Latch and Cycle Output lines on a private virtual bus,
@@ -104,7 +114,7 @@ ServedModel build_amci4501(Scheduler& scheduler, const ServeModelOptions& o) {
   params.variant = *variant;
   auto served = std::make_shared<Served>(scheduler, params);
   RegisterMap* map = &served->map;
-  return {std::move(served), map};
+  return {std::move(served), map, {}};
 }
 
 // A Series 2731 (the single-channel standard module) with no stators attached, so it reports
@@ -122,7 +132,7 @@ ServedModel build_pls2700(Scheduler& scheduler, const ServeModelOptions& o) {
   };
   auto served = std::make_shared<Served>(scheduler, *fault);
   RegisterMap* map = &served->map;
-  return {std::move(served), map};
+  return {std::move(served), map, {}};
 }
 
 template <typename Names> std::string names_of(const Names& variants) {

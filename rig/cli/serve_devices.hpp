@@ -6,12 +6,17 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/register_map.hpp"
 #include "core/scheduler.hpp"
+
+namespace hilrig::far {
+class FarSide;
+} // namespace hilrig::far
 
 namespace hilrig::cli {
 
@@ -20,12 +25,17 @@ struct ServeModelOptions {
   std::string fault = "none"; // fault variant name; "none" (or the model's nominal name) = as specified
   bool m12 = false;           // smd23e: an M12 unit
   bool no_encoder = false;    // smd23e: no internal encoder
+  // ans1: the master scan period (the model's default 10 us when empty). A host slower than
+  // the board (QEMU's emulated CPU) keeps real time with a longer one.
+  std::optional<Nanos> scan_period;
 };
 
 // A built model: `keep` owns the model (and whatever it needs); `registers` is its host map.
 struct ServedModel {
   std::shared_ptr<void> keep;
   RegisterMap* registers = nullptr;
+  // Wires the model's pins to a far side (rig/far): empty when the model has no pins to offer.
+  std::function<void(far::FarSide&)> attach_far;
 };
 
 // Where the device's host words sit: command (output) word k is holding register

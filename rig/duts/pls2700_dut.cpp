@@ -27,10 +27,11 @@ public:
   }
 
   void host_write(std::size_t word, std::uint16_t value) override {
-    if (word < btw_.size()) {
-      btw_[word] = value;
-    } else if (word == kPls2700BtwSendWord && value >= 1 && value <= btw_.size()) {
-      device_.write_btw(std::span<const std::uint16_t>(btw_.data(), value));
+    if (word == kPls2700BtwSendWord) {
+      if (value >= 1 && value <= btw_.size())
+        device_.write_btw(std::span<const std::uint16_t>(btw_.data(), value));
+    } else if (word - 1 < btw_.size()) {
+      btw_[word - 1] = value;
     }
   }
   [[nodiscard]] std::uint16_t host_read(std::size_t word) const override {
@@ -111,7 +112,7 @@ DutInfo pls2700_info() {
   };
   for (const auto& f : p::kFaultNames)
     info.variants.push_back({std::string(f.name), std::string(f.description)});
-  info.host = HostInterface{kPls2700BtwSendWord + 1, kPls2700SingleTransferWord + 1, false, 15, 15};
+  info.host = HostInterface{p::kMaxBtwWords + 1, kPls2700SingleTransferWord + 1, false, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
     const auto model = p::model_from_name(params.text("model"));

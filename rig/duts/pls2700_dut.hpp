@@ -3,9 +3,11 @@
 // COS1, SIN2, COS2 (analog stators), IN1, IN2 (2742-18), OUT1..OUT8. Parameter "model" picks
 // one of the seven modules ("2731" ... "2742-18"); variants by the model's fault names.
 //
-// Host words (no handshake; a block transfer is a buffer plus a length):
-//   output words 0..63  the BTW being assembled
-//   output word  64     writing n (1..64) sends words 0..n-1 as one BTW
+// Host words (no handshake; a block transfer is a buffer plus a length). A campaign's
+// `write = [n, w1, ..., wn]` is one BTW of n words: the rig writes words 1.. first and
+// word 0 last, so the length arrives when the words are in place.
+//   output word  0      writing n (1..64) sends words 1..n as one BTW
+//   output words 1..64  the BTW being assembled (its word 1 = the first instruction word)
 //   input words  0..4   the BTR (1-channel modules: 0..2, then 0)
 //   input word   5      the programming error byte
 //   input word   6      the single-transfer position word (2731-04)
@@ -14,7 +16,7 @@
 
 namespace hilrig::duts {
 
-inline constexpr std::size_t kPls2700BtwSendWord = 64;
+inline constexpr std::size_t kPls2700BtwSendWord = 0;
 inline constexpr std::size_t kPls2700ErrorWord = 5;
 inline constexpr std::size_t kPls2700SingleTransferWord = 6;
 

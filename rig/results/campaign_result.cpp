@@ -88,7 +88,10 @@ void finalize(CampaignResult& r) {
     r.faults.push_back(std::move(row));
   }
   r.totals = t;
-  r.complete = r.runs.size() == r.planned_runs;
+  // A run stopped by a stop request did not run to its end: the result is not complete.
+  r.complete =
+      r.runs.size() == r.planned_runs && !r.interrupted &&
+      std::none_of(r.runs.begin(), r.runs.end(), [](const RunResult& run) { return run.interrupted; });
   if (t.runs_errored > 0 || !r.complete) {
     r.verdict = Outcome::Error;
   } else if (t.runs_failed > 0 || t.faults_caught < t.faults) {

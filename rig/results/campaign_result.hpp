@@ -20,6 +20,7 @@ struct RunResult {
   std::string fault;                   // the fault injected in this run; "" for a nominal run
   std::vector<std::string> must_catch; // checks that must fail when `fault` is injected
   std::string error;                   // a rig fault that stopped the run ("" when none)
+  bool interrupted = false;            // stopped by a stop request (SIGINT/SIGTERM); error says when
   std::vector<CheckResult> checks;
   std::vector<Observation> observations;
 };
@@ -60,6 +61,8 @@ struct CampaignResult {
   Shard shard;
   std::size_t planned_runs = 0; // runs this result should hold when complete
   std::vector<RunResult> runs;  // in run-index order
+  // The campaign was stopped early by this signal ("SIGTERM"); nullopt when it was not.
+  std::optional<std::string> interrupted;
   // Derived by finalize():
   std::vector<FaultRow> faults; // sorted by fault name
   Totals totals;

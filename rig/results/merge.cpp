@@ -45,6 +45,7 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards) {
   std::set<std::uint64_t> indices;
   for (auto& s : shards) {
     out.planned_runs += s.planned_runs;
+    if (s.interrupted && !out.interrupted) out.interrupted = s.interrupted; // a shard stopped early
     for (auto& run : s.runs) {
       if (!indices.insert(run.index).second) {
         throw std::invalid_argument(fmt::format("merge: run {} appears in two shards", run.index));

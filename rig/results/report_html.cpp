@@ -67,6 +67,11 @@ std::string to_report_html(const CampaignResult& r) {
                    kStyle);
   s += fmt::format("<h1>{}</h1>\n<p class=\"verdict\">Verdict: {}</p>\n", xml_escape(r.campaign),
                    badge(r.verdict));
+  if (r.interrupted)
+    s += fmt::format(
+        "<p class=\"error\">Interrupted by {}: the runs done are below, the last one stopped early "
+        "with every rig-driven line at its inactive level.</p>\n",
+        xml_escape(*r.interrupted));
   s += fmt::format("<table><tr><th>device</th><td>{}</td></tr><tr><th>seed</th><td>{}</td></tr>"
                    "<tr><th>shard</th><td>{} of {}</td></tr><tr><th>runs</th><td>{} of {} planned{}</td></tr>"
                    "<tr><th>runs passed / failed / errored</th><td>{} / {} / {}</td></tr>"

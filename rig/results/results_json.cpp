@@ -117,16 +117,18 @@ json run_json(const RunResult& r) {
   for (const auto& o : r.observations) {
     obs.push_back(json{{"name", o.name}, {"value", o.value}, {"unit", o.unit}, {"time_ns", o.time.count()}});
   }
-  return json{{"index", r.index},
-              {"name", r.name},
-              {"seed", r.seed},
-              {"fault", opt_str(r.fault)},
-              {"must_catch", r.must_catch},
-              {"error", opt_str(r.error)},
-              {"outcome", to_string(run_outcome(r))},
-              {"caught", r.fault.empty() ? json(nullptr) : json(caught(r))},
-              {"checks", checks},
-              {"observations", obs}};
+  json j{{"index", r.index},
+         {"name", r.name},
+         {"seed", r.seed},
+         {"fault", opt_str(r.fault)},
+         {"must_catch", r.must_catch},
+         {"error", opt_str(r.error)},
+         {"outcome", to_string(run_outcome(r))},
+         {"caught", r.fault.empty() ? json(nullptr) : json(caught(r))},
+         {"checks", checks},
+         {"observations", obs}};
+  if (r.interrupted) j["interrupted"] = true; // only when set: uninterrupted results keep their bytes
+  return j;
 }
 
 std::string str_or_empty(const json& j, const char* key, const char* where) {
@@ -143,6 +145,7 @@ RunResult run_from(const json& j) {
   r.fault = str_or_empty(j, "fault", w);
   r.must_catch = get<std::vector<std::string>>(j, "must_catch", w);
   r.error = str_or_empty(j, "error", w);
+  if (j.contains("interrupted")) r.interrupted = get<bool>(j, "interrupted", w);
   for (const auto& c : field(j, "checks", w)) r.checks.push_back(check_from(c));
   for (const auto& o : field(j, "observations", w)) {
     r.observations.push_back(Observation{
@@ -188,6 +191,7 @@ json to_json(const CampaignResult& r) {
                          {"faults", t.faults},
                          {"faults_caught", t.faults_caught}}},
          {"verdict", to_string(r.verdict)}};
+  if (r.interrupted) j["interrupted"] = *r.interrupted;
   if (r.started_at || r.host) {
     json wc = json::object();
     if (r.started_at) wc["started_at"] = *r.started_at;
@@ -210,6 +214,7 @@ CampaignResult campaign_from_json(const json& j) {
   r.shard = Shard{get<std::uint32_t>(shard, "index", "shard"), get<std::uint32_t>(shard, "count", "shard")};
   r.planned_runs = get<std::size_t>(j, "planned_runs", w);
   for (const auto& run : field(j, "runs", w)) r.runs.push_back(run_from(run));
+  if (j.contains("interrupted")) r.interrupted = get<std::string>(j, "interrupted", w);
   if (j.contains("wall_clock")) {
     const json& wc = j.at("wall_clock");
     if (wc.contains("started_at")) r.started_at = wc.at("started_at").get<std::string>();

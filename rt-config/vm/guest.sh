@@ -1,16 +1,23 @@
 #!/bin/bash
 # Runs inside the PREEMPT_RT guest, chrooted into the host's root (read-only): loads the
 # CAN and gpio-sim modules, builds the rig's gpio-sim chip, brings up vcan0, can0 and can1,
-# checks each, then runs the lane's payload. Every step prints what it does; results go to
+# checks each, then runs the lane's payloads one after another (kernel command line
+# hilrig.payload=P1,P2,...; each gets OUT CHIP SIM_DIR, HILRIG_BUILD and HILRIG_LANE_RESULT,
+# and is its own PASS/FAIL line). Every step prints what it does; results go to
 # OUT/lane-result, one "PASS name" / "FAIL name: why" a line, and a final RESULT line.
 set -u
 out=$1
 work=$(cat /proc/cmdline | tr ' ' '\n' | sed -n 's/^hilrig.work=//p')
-payload=$(cat /proc/cmdline | tr ' ' '\n' | sed -n 's/^hilrig.payload=//p')
+payloads=$(cat /proc/cmdline | tr ' ' '\n' | sed -n 's/^hilrig.payload=//p' | tr ',' ' ')
+build=$(cat /proc/cmdline | tr ' ' '\n' | sed -n 's/^hilrig.build=//p')
 export TMPDIR="$out/tmp" PATH=/usr/sbin:/usr/bin:/sbin:/bin
 mkdir -p "$TMPDIR"
 result="$out/lane-result"
 : > "$result"
+# Payloads find the hilrig build there (default: the checkout's build/) and may add their own
+# PASS/FAIL lines to the lane's result.
+[ -n "$build" ] && export HILRIG_BUILD="$build"
+export HILRIG_LANE_RESULT="$result"
 failed=0
 step() { printf '[guest] %s\n' "$*"; }
 pass() { printf 'PASS %s\n' "$1" | tee -a "$result"; }
@@ -81,10 +88,13 @@ printf 'hilrig' > /dev/ttyS1
 wait
 if [ "$(cat "$TMPDIR/uart.txt")" = hilrig ]; then pass uart_s1_to_s2; else fail uart_s1_to_s2 "ttyS2 read '$(cat "$TMPDIR/uart.txt")'"; fi
 
-if [ -n "$payload" ]; then
-  step "payload: $payload"
-  if bash "$payload" "$out" "$chip" "$sim"; then pass payload; else fail payload "exit $?"; fi
-fi
+for payload in $payloads; do
+  name=$(basename "$payload" .sh)
+  step "payload: $payload (started $(date +%T))"
+  bash "$payload" "$out" "$chip" "$sim"
+  status=$?
+  if [ "$status" = 0 ]; then pass "$name"; else fail "$name" "exit $status"; fi
+done
 
 if [ "$failed" = 0 ]; then echo "RESULT PASS" | tee -a "$result"; else echo "RESULT FAIL" | tee -a "$result"; fi
 sync

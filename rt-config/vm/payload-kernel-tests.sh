@@ -1,11 +1,19 @@
 #!/bin/bash
-# Lane payload: the kernel-backend GoogleTest binary, run inside the guest against real
-# gpio-sim, vcan and SJA1000 CAN. Arguments from guest.sh: OUT CHIP SIM_DIR.
+# Lane payload: the kernel-backend GoogleTest binaries (gpiod; SocketCAN and the rig's
+# hardware ports), run inside the guest against real gpio-sim, vcan and SJA1000 CAN.
+# Arguments from guest.sh: OUT CHIP SIM_DIR. The binaries are taken from HILRIG_BUILD
+# (default: the checkout's build/).
 set -u
 out=$1 chip=$2 sim=$3
 here=$(cd "$(dirname "$0")" && pwd)
-bin="$here/../../build/tests/kernel/test_kernel_backends"
-[ -x "$bin" ] || { echo "payload: $bin not built"; exit 1; }
+dir="${HILRIG_BUILD:-$here/../../build}/tests/kernel"
+for t in test_kernel_gpiod test_kernel_backends; do
+  [ -x "$dir/$t" ] || { echo "payload: $dir/$t not built"; exit 1; }
+done
 ip link set vcan0 down && ip link set vcan0 mtu 72 && ip link set vcan0 up # CAN FD on vcan0
-HILRIG_GPIO_CHIP=$chip HILRIG_GPIO_SIM=$sim "$bin" --gtest_output="xml:$out/kernel-tests.xml" 2>&1 | sed 's/^/[kernel-tests] /'
-exit "${PIPESTATUS[0]}"
+status=0
+for t in test_kernel_gpiod test_kernel_backends; do
+  HILRIG_GPIO_CHIP=$chip HILRIG_GPIO_SIM=$sim "$dir/$t" --gtest_output="xml:$out/$t.xml" 2>&1 | sed "s/^/[$t] /"
+  [ "${PIPESTATUS[0]}" = 0 ] || status=1
+done
+exit $status

@@ -1,12 +1,25 @@
 #!/usr/bin/env bash
 # The RT VM lane: boots Debian's PREEMPT_RT kernel under QEMU (TCG) with the host's root
 # shared read-only, real gpio-sim, two emulated SJA1000 CAN boards on one QEMU CAN bus plus
-# vcan, and two UARTs wired to each other; runs guest.sh (and an optional payload) inside.
-# Usage: run-lane.sh [WORK_DIR] [PAYLOAD_SCRIPT]. Exit 0 only when every guest check passed.
+# vcan, and two UARTs wired to each other; runs guest.sh (and the payloads, in order) inside.
+# Usage: run-lane.sh [WORK_DIR] [PAYLOAD_SCRIPT...]. Exit 0 only when every guest check and
+# every payload passed. HILRIG_BUILD names the build the payloads use (default: build/ of
+# this checkout).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 work=${1:-build-vm}
-payload=${2:-}
+shift || true
+payloads=()
+for p in "$@"; do
+  [ -f "$p" ] || { echo "vm-lane: no payload $p" >&2; exit 2; }
+  case "$p" in *,* | *' '*) echo "vm-lane: a payload path may not hold ',' or ' ': $p" >&2; exit 2 ;; esac
+  payloads+=("$(cd "$(dirname "$p")" && pwd)/$(basename "$p")")
+done
+build=${HILRIG_BUILD:-$here/../../build}
+if [ ${#payloads[@]} -gt 0 ]; then
+  [ -d "$build" ] || { echo "vm-lane: no build directory $build (HILRIG_BUILD)" >&2; exit 2; }
+  build=$(cd "$build" && pwd)
+fi
 step() { printf '[vm-lane] %s\n' "$*"; }
 start=$(date +%s)
 
@@ -18,8 +31,11 @@ rm -rf "$out" && mkdir -p "$out"
 console="$work/console.log"
 
 step "booting $kver under QEMU (TCG); console in $console"
-append="console=ttyS0 panic=-1 quiet hilrig.guest=$here/guest.sh hilrig.out=$out hilrig.work=$work"
-[ -n "$payload" ] && append="$append hilrig.payload=$(cd "$(dirname "$payload")" && pwd)/$(basename "$payload")"
+append="console=ttyS0 panic=-1 quiet hilrig.guest=$here/guest.sh hilrig.out=$out hilrig.work=$work hilrig.build=$build"
+if [ ${#payloads[@]} -gt 0 ]; then
+  append="$append hilrig.payload=$(IFS=,; echo "${payloads[*]}")"
+  step "payloads: ${payloads[*]##*/} (build: $build)"
+fi
 # ttyS0 is the console; ttyS1 <-> ttyS2: two guest UARTs joined by UDP on loopback, for the serial host link.
 p1=$((20000 + RANDOM % 20000)); p2=$((p1 + 1))
 set +e

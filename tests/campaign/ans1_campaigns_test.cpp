@@ -23,30 +23,9 @@ namespace {
 
 using rig::Outcome;
 
-std::string ans1_dir() { return std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1"; }
-
-std::vector<std::string> ans1_campaigns() {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(ans1_dir()))
-    if (e.path().extension() == ".toml") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-// Every failing measurement of a result, for the failure message.
-std::string failures(const rig::CampaignResult& r) {
-  std::string out;
-  for (const auto& run : r.runs) {
-    if (!run.error.empty()) out += run.name + ": rig error " + run.error + "\n";
-    if (rig::run_outcome(run) == Outcome::Pass) continue;
-    out += run.name + " failed:\n";
-    for (const auto& c : run.checks)
-      for (const auto& m : c.measurements)
-        out += "  " + m.name + " = " + std::to_string(m.value) + " " + rig::to_string(m.outcome) + " " +
-               m.detail + "\n";
-  }
-  return out;
-}
+std::string ans1_dir() { return test::campaign_dir("ans1"); }
+std::vector<std::string> ans1_campaigns() { return test::campaigns_of("ans1"); }
+using test::failures;
 
 class Ans1Campaign : public ::testing::TestWithParam<std::string> {};
 

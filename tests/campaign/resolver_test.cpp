@@ -35,6 +35,20 @@ TEST(ResolverStators, CarryTheExcitationTimesSinAndCosOfTheShaftAngle) {
   EXPECT_NEAR(c(50_us), 0.0, 1e-12);
 }
 
+TEST(ResolverStators, APhaseShiftsTheExcitation) {
+  // phase_deg 90: the carrier is amplitude * cos(2 pi f t) (a board with a cosine reference,
+  // the Series 2700 model): at 5 kHz its peaks are at 0, 100 us (negative), 200 us, and it
+  // is zero at 50 us. Shaft at 90 of 360 counts: the sine stator carries the whole carrier.
+  const auto standing = std::make_shared<const signals::MotionProfile>(90.0);
+  ResolverSpec r;
+  r.phase_deg = 90.0;
+  const Waveform s = stator_waveform(standing, 360.0, r, Stator::Sine);
+  EXPECT_NEAR(s(0_us), 1.0, 1e-12);
+  EXPECT_NEAR(s(100_us), -1.0, 1e-12);
+  EXPECT_NEAR(s(200_us), 1.0, 1e-12);
+  EXPECT_NEAR(s(50_us), 0.0, 1e-12);
+}
+
 TEST(ResolverStators, DemodulatedAtAPeakGiveBackTheAngle) {
   // Property: at any excitation peak, atan2(sin, cos) is the shaft angle (seeded positions).
   std::mt19937_64 rng(42);
@@ -147,6 +161,45 @@ TEST(ResolverStators, TheStatorsMustBeAnalogLines) {
   text.replace(text.find("sin = \"res.sin\""), 15, "sin = \"ls1\"");
   // [resolver] is line 16; sin is line 17, its value at column 7.
   EXPECT_EQ(error_of(text), "t.toml:17:7: resolver.sin: a rig line wired to an analog pin (\"ls1\" is not)");
+}
+
+TEST(ResolverStators, OneStatorLineMayFeedTwoChannelsButADigitalLineIsWiredOnce) {
+  // A resolver jumpered into both channels of a two-channel Series 2700 (R-18-8, L1763):
+  // res.sin and res.cos each go to two analog pins. A digital line wired twice is still an
+  // error.
+  const std::string head = R"([campaign]
+name = "jumper"
+end = "10ms"
+[dut]
+model = "pls2700"
+[[wiring]]
+rig = "res.sin"
+board = "SIN1"
+[[wiring]]
+rig = "res.cos"
+board = "COS1"
+[[wiring]]
+rig = "res.sin"
+board = "SIN2"
+[[wiring]]
+rig = "res.cos"
+board = "COS2"
+[[wiring]]
+rig = "ls1"
+board = "OUT1"
+)";
+  const std::string resolver = "[resolver]\nsin = \"res.sin\"\ncos = \"res.cos\"\nphase_deg = 90\n";
+  const Campaign c = parse_campaign(head + resolver, "t.toml");
+  EXPECT_EQ(c.points[0].wiring.size(), 5U);
+  EXPECT_EQ(c.points[0].resolver.phase_deg, 90.0);
+  const std::string twice = head + "[[wiring]]\nrig = \"ls1\"\nboard = \"OUT2\"\n" + resolver;
+  EXPECT_NE(error_of(twice).find("wiring[5].rig: each rig line wired once; \"ls1\" is already wired"),
+            std::string::npos)
+      << error_of(twice);
+  std::string wrong_phase = head + resolver;
+  wrong_phase.replace(wrong_phase.find("phase_deg = 90"), 14, "phase_deg = 400");
+  EXPECT_NE(error_of(wrong_phase).find("resolver.phase_deg: a phase in -360..360 degrees"), std::string::npos)
+      << error_of(wrong_phase);
 }
 
 TEST(ResolverStators, AFrequencyOfZeroIsRejected) {

@@ -2,7 +2,10 @@
 // Shared by the campaign tests: the shipped campaigns' paths and a small campaign text
 // for the reference PLS that each test extends.
 
+#include <algorithm>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "rig/campaign/campaign.hpp"
 #include "rig/campaign/executive.hpp"
@@ -12,6 +15,20 @@ namespace hilrig::campaign::test {
 
 inline std::string shipped(const std::string& name) {
   return std::string(HILRIG_SOURCE_DIR) + "/campaigns/reference/" + name;
+}
+
+// campaigns/DEVICE/ of the source tree.
+inline std::string campaign_dir(const std::string& device) {
+  return std::string(HILRIG_SOURCE_DIR) + "/campaigns/" + device;
+}
+
+// Every campaign file shipped for a device, in name order.
+inline std::vector<std::string> campaigns_of(const std::string& device) {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(campaign_dir(device)))
+    if (e.path().extension() == ".toml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 // Reference PLS (on 100, off 300, scan 200 us, delay 50 us, preset -50), encoder 100 lines
@@ -69,6 +86,21 @@ inline const rig::Measurement* find(const rig::RunResult& run, const std::string
     for (const auto& m : c.measurements)
       if (m.name == name) return &m;
   return nullptr;
+}
+
+// Every failing measurement of a result, for a failure message.
+inline std::string failures(const rig::CampaignResult& r) {
+  std::string out;
+  for (const auto& run : r.runs) {
+    if (!run.error.empty()) out += run.name + ": rig error " + run.error + "\n";
+    if (rig::run_outcome(run) == rig::Outcome::Pass) continue;
+    out += run.name + " failed:\n";
+    for (const auto& c : run.checks)
+      for (const auto& m : c.measurements)
+        out += "  " + m.name + " = " + std::to_string(m.value) + " " + rig::to_string(m.outcome) + " " +
+               m.detail + "\n";
+  }
+  return out;
 }
 
 // Every run of the campaign, unsharded, with its own seed.

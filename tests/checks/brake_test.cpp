@@ -21,6 +21,40 @@ std::vector<PositionSample> shaft_stopping_at(Nanos stop) {
   return s;
 }
 
+// A shaft that moves, stops, creeps back and stops again (counts every ms, with long still
+// stretches), compacted by append_motion: the standstill is the same as from every sample.
+TEST(BrakeStop, CompactedMotionGivesTheSameStandstill) {
+  std::vector<PositionSample> all;
+  std::vector<PositionSample> kept;
+  const double counts[] = {0, 1, 2, 2, 2, 3, 3, 2, 2, 2, 2, 5, 5, 5, 5, 5, 5, 5};
+  Nanos t = 0_ms;
+  for (const double c : counts) {
+    all.push_back({t, c});
+    append_motion(kept, {t, c});
+    t += 1_ms;
+  }
+  EXPECT_LE(kept.size(), 4U);
+  // The last change is to 5 at 11 ms; the samples run to 17 ms.
+  for (const Nanos from : {0_ms, 5_ms, 11_ms, 12_ms, 17_ms, 20_ms}) {
+    for (const Nanos end : {10_ms, 17_ms, 30_ms}) {
+      EXPECT_EQ(standstill_after(kept, from, end), standstill_after(all, from, end))
+          << "from " << from.count() << " end " << end.count();
+    }
+  }
+  EXPECT_EQ(standstill_after(kept, 5_ms, 30_ms), 11_ms);
+}
+
+TEST(BrakeStop, CompactedMotionKeepsAShortTraceWhole) {
+  std::vector<PositionSample> kept;
+  append_motion(kept, {0_ms, 4.0});
+  append_motion(kept, {1_ms, 5.0});
+  ASSERT_EQ(kept.size(), 2U);
+  EXPECT_EQ(kept[0].time, 0_ms);
+  EXPECT_EQ(kept[0].position, 4.0);
+  EXPECT_EQ(kept[1].time, 1_ms);
+  EXPECT_EQ(kept[1].position, 5.0);
+}
+
 TEST(BrakeStop, StandstillIsTheLastCountChange) {
   const auto s = shaft_stopping_at(300_ms);
   EXPECT_EQ(standstill_after(s, 100_ms, 600_ms), 300_ms);

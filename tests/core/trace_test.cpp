@@ -6,6 +6,8 @@
 #include <sstream>
 #include <string>
 
+#include "core/vcd_stream.hpp"
+
 using namespace hilrig;
 using namespace hilrig::literals;
 
@@ -22,9 +24,11 @@ std::uint64_t fnv1a(std::string_view s) {
 }
 
 // A seeded random trace: a few wires, an integer, a real, CAN frames and serial bytes.
-TraceRecorder random_trace(std::uint32_t seed) {
+// With `spill` > 0 the recorder keeps at most that many samples in memory (spill_beyond).
+TraceRecorder random_trace(std::uint32_t seed, std::size_t spill = 0) {
   std::mt19937 rng(seed);
   TraceRecorder t;
+  t.spill_beyond(spill);
   const std::uint32_t a = t.declare("rig.enc.A");
   const std::uint32_t b = t.declare("rig.enc.B");
   const std::uint32_t n = t.declare("dut.count", SignalKind::Integer, 16);
@@ -159,4 +163,40 @@ TEST(TraceRecorder, DifferentInputGivesDifferentHash) {
   p.serial("l", SerialDirection::AtoB, 1_us, 1);
   q.serial("l", SerialDirection::BtoA, 1_us, 1);
   EXPECT_NE(p.content_hash(), q.content_hash());
+}
+
+// A long run's trace moves to a temporary file as it grows: everything read from it (the
+// canonical text, a line's edges, the VCD, written whole or streamed) is what it was in memory.
+TEST(TraceSpill, ReadsAsIfEverySampleWereHeld) {
+  for (const std::uint32_t seed : {1U, 2U, 3U}) {
+    const TraceRecorder held = random_trace(seed);
+    const TraceRecorder spilled = random_trace(seed, 7);
+    EXPECT_LE(spilled.samples().size(), 7U);
+    EXPECT_EQ(spilled.sample_count(), held.sample_count());
+    EXPECT_EQ(spilled.canonical_text(), held.canonical_text());
+    EXPECT_EQ(spilled.content_hash(), held.content_hash());
+    EXPECT_EQ(spilled.edges_of("rig.enc.A"), held.edges_of("rig.enc.A"));
+    EXPECT_EQ(vcd_of(spilled), vcd_of(held));
+    std::ostringstream streamed;
+    VcdStream stream(streamed);
+    stream.update(spilled);
+    EXPECT_EQ(streamed.str(), vcd_of(held));
+  }
+}
+
+TEST(TraceSpill, HandFedSamplesOutOfTimeOrderAreStillSortedInTheVcd) {
+  TraceRecorder t;
+  t.spill_beyond(2);
+  const std::uint32_t a = t.declare("a");
+  const std::uint32_t b = t.declare("b");
+  t.edge(a, Edge{30_ns, Level::High});
+  t.edge(b, Edge{10_ns, Level::High});
+  t.edge(a, Edge{20_ns, Level::Low});
+  t.edge(b, Edge{10_ns, Level::Low});
+  t.edge(a, Edge{5_ns, Level::High});
+  EXPECT_EQ(t.edges_of("a"),
+            (std::vector<Edge>{{5_ns, Level::High}, {20_ns, Level::Low}, {30_ns, Level::High}}));
+  const std::string vcd = vcd_of(t);
+  // Times ascending; the two samples at 10 ns in the order they were recorded.
+  EXPECT_TRUE(vcd.ends_with("$end\n#5\n1!\n#10\n1\"\n0\"\n#20\n0!\n#30\n1!\n")) << vcd;
 }

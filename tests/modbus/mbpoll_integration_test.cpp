@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/modbus/server_thread.hpp"
+#include "tests/modbus/serve_thread.hpp"
 
 namespace hilrig::test {
 namespace {
@@ -70,7 +70,7 @@ std::vector<long> read_inputs(std::uint16_t port, int count) {
 
 TEST(Smd23eOverModbusTcp, MbpollConfiguresTheUnitAndRunsARelativeMove) {
   ASSERT_EQ(::access(kMbpoll, X_OK), 0) << "this test needs Debian's mbpoll (apt install mbpoll)";
-  ServerThread server; // 127.0.0.1, free port, stopped and joined on every exit path
+  ServeThread server{smd23e_on_tcp()}; // 127.0.0.1, free port, stopped and joined on every exit path
   const std::uint16_t port = server.port();
 
   // Power-up: unconfigured (M-05).
@@ -108,7 +108,7 @@ TEST(Smd23eOverModbusTcp, MbpollConfiguresTheUnitAndRunsARelativeMove) {
 }
 
 TEST(Smd23eOverModbusTcp, ABadRequestFromMbpollIsAnExceptionAndTheServerCarriesOn) {
-  ServerThread server;
+  ServeThread server{smd23e_on_tcp()};
   const MbpollResult bad = mbpoll(server.port(), "-r 101 -c 2 -t 3 127.0.0.1");
   EXPECT_NE(bad.output.find("Illegal data address"), std::string::npos) << bad.output;
   EXPECT_EQ(read_inputs(server.port(), 1), (std::vector<long>{0x6408}));

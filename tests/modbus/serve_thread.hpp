@@ -3,9 +3,12 @@
 // the destructor always stops and joins it, whatever the test did.
 
 #include <atomic>
+#include <cstdint>
 #include <exception>
 #include <future>
+#include <string>
 #include <thread>
+#include <utility>
 
 #include "rig/cli/serve_command.hpp"
 
@@ -38,6 +41,7 @@ public:
   ~ServeThread() { stop(); }
 
   [[nodiscard]] const cli::ServeEndpoint& endpoint() const { return endpoint_; }
+  [[nodiscard]] std::uint16_t port() const { return endpoint_.port; }
   void stop() {
     stop_.store(true);
     if (thread_.joinable()) {
@@ -57,6 +61,15 @@ inline cli::ServeOptions ans1_on_pty(std::uint8_t unit = 1) {
   o.device = "ans1";
   o.link = cli::ServeLink::Pty;
   o.unit = unit;
+  return o;
+}
+// The SMD23E (the first served device) on a free loopback port, optionally a fault variant.
+inline cli::ServeOptions smd23e_on_tcp(std::string fault = "none") {
+  cli::ServeOptions o;
+  o.device = "smd23e";
+  o.link = cli::ServeLink::Tcp;
+  o.port = 0;
+  o.fault = std::move(fault);
   return o;
 }
 inline cli::ServeOptions ans1_on_tcp() {

@@ -8,7 +8,7 @@
 #include <cerrno>
 #include <memory>
 
-#include "tests/modbus/server_thread.hpp"
+#include "tests/modbus/serve_thread.hpp"
 
 namespace hilrig::test {
 namespace {
@@ -51,7 +51,7 @@ void expect_still_answering(modbus_t* c) {
 }
 
 TEST(ModbusTcpServer, ServesTheSmd23eMap) {
-  ServerThread server;
+  ServeThread server{smd23e_on_tcp()};
   Client c = connect(server.port());
   ASSERT_TRUE(c);
   expect_still_answering(c.get());
@@ -71,7 +71,7 @@ TEST(ModbusTcpServer, ServesTheSmd23eMap) {
 }
 
 TEST(ModbusTcpServer, UnknownFunctionGetsIllegalFunctionAndServerKeepsAnswering) {
-  ServerThread server;
+  ServeThread server{smd23e_on_tcp()};
   Client c = connect(server.port());
   ASSERT_TRUE(c);
   EXPECT_EQ(raw(c.get(), {1, 0x41}), (std::vector<std::uint8_t>{0xC1, MODBUS_EXCEPTION_ILLEGAL_FUNCTION}));
@@ -83,7 +83,7 @@ TEST(ModbusTcpServer, UnknownFunctionGetsIllegalFunctionAndServerKeepsAnswering)
 }
 
 TEST(ModbusTcpServer, OutOfRangeAddressGetsIllegalDataAddress) {
-  ServerThread server;
+  ServeThread server{smd23e_on_tcp()};
   Client c = connect(server.port());
   ASSERT_TRUE(c);
   std::array<std::uint16_t, 2> regs{};
@@ -98,7 +98,7 @@ TEST(ModbusTcpServer, OutOfRangeAddressGetsIllegalDataAddress) {
 }
 
 TEST(ModbusTcpServer, WrongQuantityGetsIllegalDataValue) {
-  ServerThread server;
+  ServeThread server{smd23e_on_tcp()};
   Client c = connect(server.port());
   ASSERT_TRUE(c);
   // FC 3, address 0, quantity 0.
@@ -111,7 +111,7 @@ TEST(ModbusTcpServer, WrongQuantityGetsIllegalDataValue) {
 }
 
 TEST(ModbusTcpServer, ServesSeveralClientsAndSurvivesADisconnect) {
-  ServerThread server;
+  ServeThread server{smd23e_on_tcp()};
   {
     Client first = connect(server.port());
     ASSERT_TRUE(first);

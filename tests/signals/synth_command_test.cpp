@@ -1,7 +1,7 @@
 // `hilrig synth`: the command writes the solved quadrature / discrete edges to a VCD file.
 // Expected edge counts are worked out by hand from the options.
 
-#include "rig/cli/synth_command.hpp"
+#include "tests/signals/run_synth.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,16 +16,7 @@ using namespace hilrig::literals;
 
 namespace {
 
-// Runs `hilrig synth ...` in-process.
-void synth(std::vector<std::string> args) {
-  CLI::App app{"hilrig"};
-  app.require_subcommand(1);
-  cli::add_synth_command(app);
-  args.insert(args.begin(), {"hilrig", "synth"});
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  app.parse(static_cast<int>(argv.size()), argv.data());
-}
+using test::synth;
 
 // Value changes per VCD identifier after $dumpvars (each change is one "0<id>"/"1<id>" line),
 // with the names the header gives the identifiers.

@@ -13,21 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "rig/cli/synth_command.hpp"
+#include "tests/signals/run_synth.hpp"
 
 using namespace hilrig;
 
 namespace {
 
-void synth(std::vector<std::string> args) {
-  CLI::App app{"hilrig"};
-  app.require_subcommand(1);
-  cli::add_synth_command(app);
-  args.insert(args.begin(), {"hilrig", "synth"});
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  app.parse(static_cast<int>(argv.size()), argv.data());
-}
+using test::synth;
 
 // Real and integer value changes per leaf name, after $dumpvars.
 struct Change {

@@ -12,21 +12,13 @@
 #include <string>
 #include <vector>
 
-#include "rig/cli/synth_command.hpp"
+#include "tests/signals/run_synth.hpp"
 
 using namespace hilrig;
 
 namespace {
 
-void synth(std::vector<std::string> args) {
-  CLI::App app{"hilrig"};
-  app.require_subcommand(1);
-  cli::add_synth_command(app);
-  args.insert(args.begin(), {"hilrig", "synth"});
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  app.parse(static_cast<int>(argv.size()), argv.data());
-}
+using test::synth;
 
 struct Change {
   long long time;

@@ -124,6 +124,32 @@ TEST(Amci4501Mode2, IndexPulseZeroesThePosition) {
   EXPECT_EQ(b.module->position(), 600);
 }
 
+// W17 (L174, L331): program the on setpoint >= 1, so that the window opens on a count after
+// the Z reset rather than racing it. Son = 1 is accepted. F(300) runs one window
+// (P = 1 .. 200) and leaves P = 300; Z at 5,000 us -> P = 0 with the window shut; the next
+// window opens at the first edge after Z (P = 1: 6,000 us) and closes at Soff = 200, the
+// 200th edge (6,000 + 199 * 10 = 7,990 us).
+TEST(Amci4501Mode2, W17OnSetpointOneOpensTheWindowOnTheFirstCountAfterZ) {
+  Bench b;
+  b.program_window(1, 200);
+  EXPECT_FALSE(b.bit(status::kParameterError));
+  b.burst(300, us(1000), us(10));
+  b.z_pulse(us(5000), us(10));
+  b.burst(250, us(6000), us(10));
+  b.run_until(us(5500));
+  EXPECT_EQ(b.module->position(), 0);
+  EXPECT_FALSE(b.module->window_open());
+  b.run_until(us(6000) - 1_ns);
+  EXPECT_FALSE(b.module->window_open());
+  b.run_until(us(6000));
+  EXPECT_TRUE(b.module->window_open());
+  EXPECT_EQ(b.module->position(), 1);
+  b.run_until(us(7990) - 1_ns);
+  EXPECT_TRUE(b.module->window_open());
+  b.run_until(us(7990));
+  EXPECT_FALSE(b.module->window_open());
+}
+
 // [I] Z outside mode 2 is ignored (digest §2.1).
 TEST(Amci4501Mode2, IndexIgnoredInModeOne) {
   Bench b;

@@ -35,6 +35,19 @@ TEST(Amci4501Registers, ProgramAndMeasureThroughRegisters) {
   EXPECT_FALSE(b.bit(status::kNewValue));
 }
 
+// W21 (L243): ID code 3512 reserves 8 input and 8 output words: the image is words 0-7
+// both ways, nothing beyond.
+TEST(Amci4501Registers, W21EightInputAndEightOutputWords) {
+  Bench b;
+  Amci4501Registers regs{*b.module};
+  std::array<std::uint16_t, 8> eight{};
+  std::array<std::uint16_t, 9> nine{};
+  EXPECT_EQ(regs.read_input_registers(0, eight), RegisterStatus::Ok);
+  EXPECT_EQ(regs.read_holding_registers(0, eight), RegisterStatus::Ok);
+  EXPECT_EQ(regs.read_input_registers(0, nine), RegisterStatus::IllegalDataAddress);
+  EXPECT_EQ(regs.read_holding_registers(0, nine), RegisterStatus::IllegalDataAddress);
+}
+
 TEST(Amci4501Registers, AddressesOutsideTheImage) {
   Bench b;
   Amci4501Registers regs{*b.module};

@@ -30,8 +30,9 @@ TEST(Pls2700Dut, InfoListsPinsParamsAndVariants) {
 }
 
 TEST(Pls2700Dut, HostWordsProgramAndReadTheModule) {
-  // W14 through the adapter on a 2741: BTW 8400h 8801h 0360h C011h 0000h 0010h 0020h, sent
-  // by writing its length (7) to word 64; shaft at 15 -> output 1 on, BTR 15, 0, 0001h.
+  // W14 through the adapter on a 2741: BTW 8400h 8801h 0360h C011h 0000h 0010h 0020h in
+  // words 1..7, sent by writing its length (7) to word 0 last, as a campaign's host write
+  // does; shaft at 15 -> output 1 on, BTR 15, 0, 0001h.
   const DutInfo info = pls2700_info();
   Scheduler scheduler;
   virt::VirtualBus bus(scheduler);
@@ -43,7 +44,7 @@ TEST(Pls2700Dut, HostWordsProgramAndReadTheModule) {
   bus.analog("res.cos").set_waveform(r.cos_waveform());
   const std::uint16_t btw[] = {0x8400, 0x8801, 0x0360, 0xC011, 0x0000, 0x0010, 0x0020};
   for (std::size_t k = 0; k < 7; ++k) {
-    dut->host_write(k, btw[k]);
+    dut->host_write(k + 1, btw[k]);
   }
   dut->host_write(kPls2700BtwSendWord, 7);
   scheduler.run_until(1_ms);

@@ -1,5 +1,5 @@
 // Resolver decode, Scale Factor, Circular Offset and AutoZero (pls2700.md §2.3, §4.1, §4.2;
-// examples W1-W3, W15, W21), driven through the stator channels and host words.
+// examples W1-W3, W15, W16, W21), driven through the stator channels and host words.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +7,7 @@
 
 #include "models/pls2700/bcd.hpp"
 #include "models/pls2700/error_codes.hpp"
+#include "models/pls2700/register_map.hpp"
 #include "pls2700_bench.hpp"
 
 namespace hilrig::models::pls2700 {
@@ -126,6 +127,31 @@ TEST(Pls2700Position, W15SampleBtrReadsPositionTachStatus) {
   b.hold(1, 155, 360);
   b.run_for(300_ms);
   EXPECT_EQ(b.btr(), (std::vector<std::uint16_t>{155, 0, 0}));
+}
+
+TEST(Pls2700Position, W16SingleTransferWordOfThe2731_04) {
+  // W16 (L1184-L1216): the 2731-04 publishes its position also as a single-transfer input
+  // word (I:011 with 1-slot, I:023 with 1/2-slot addressing; rack addressing is the PLC's).
+  // What the module puts there (§5.2, L1320): the 16-bit binary position, at most 1023;
+  // 8000h on a transducer fault. The host link serves it at input register 16.
+  Bench b(ModelVariant::M2731_04);
+  EXPECT_EQ(b.btw({0x8801, 0x1024}), error::kNone); // SF 1024, the 273x maximum
+  b.hold(1, 1023, 1024);
+  b.run_for(1_ms);
+  EXPECT_EQ(b.device().single_transfer_word(), 1023);
+  Pls2700Registers regs(b.device());
+  std::array<std::uint16_t, 1> word{};
+  ASSERT_EQ(regs.read_input_registers(16, word), RegisterStatus::Ok);
+  EXPECT_EQ(word[0], 1023);
+  auto& r = b.hold(1, 1023, 1024);
+  signals::ResolverFaults open;
+  open.sin_open = true;
+  open.cos_open = true;
+  r.set_faults(open);
+  b.run_for(1_ms);
+  EXPECT_EQ(b.device().single_transfer_word(), 0x8000);
+  ASSERT_EQ(regs.read_input_registers(16, word), RegisterStatus::Ok);
+  EXPECT_EQ(word[0], 0x8000);
 }
 
 TEST(Pls2700Fault, W21OpenStatorGives8000hAndOutputsOff) {

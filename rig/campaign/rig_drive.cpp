@@ -1,0 +1,114 @@
+#include "rig/campaign/rig_drive.hpp"
+
+#include "rig/campaign/executive.hpp"
+#include "rig/campaign/scenario_reader.hpp"
+
+namespace hilrig::campaign {
+
+RigDrive::RigDrive(Scheduler& scheduler, const Scenario& scenario, const BuiltMotion& motion)
+    : sched_(scheduler), s_(scenario), built_(motion), edges_(motion.profile), count_(edges_.start_count()) {
+  for (const Move& m : s_.motion.moves)
+    if (!m.brake_line.empty()) brake_level_[m.brake_line] = m.brake_level;
+}
+
+Level RigDrive::initial_level(std::string_view rig) const {
+  if (rig == kEncoderA) return a_level(edges_.start_count());
+  if (rig == kEncoderB) return b_level(edges_.start_count());
+  if (const auto it = brake_level_.find(rig); it != brake_level_.end()) return !it->second;
+  return Level::Low;
+}
+
+void RigDrive::own(const std::string& rig, LineOutput& out) {
+  driven_[rig] = DrivenLine{&out, initial_level(rig), 0};
+}
+
+RigDrive::DrivenLine* RigDrive::find(std::string_view rig) {
+  const auto it = driven_.find(rig);
+  return it == driven_.end() ? nullptr : &it->second;
+}
+
+void RigDrive::start(const std::vector<Stimulus>& faults, const std::optional<Stimulus>& probe,
+                     bool record_motion) {
+  record_motion_ = record_motion;
+  enc_a_ = find(kEncoderA);
+  enc_b_ = find(kEncoderB);
+  checks::append_motion(motion_, {Nanos{0}, static_cast<double>(count_)});
+  for (const Stimulus& f : faults)
+    if (f.kind == StimulusKind::MissingEdges) missing_.push_back(MissingEdges{f, 0});
+  for (const Stimulus& f : s_.stimuli)
+    if (f.kind == StimulusKind::MissingEdges) missing_.push_back(MissingEdges{f, 0});
+  next_edge_ = edges_.next();
+  if (next_edge_ && next_edge_->time <= s_.end) sched_.at(next_edge_->time, [this] { encoder_edge(); });
+
+  for (const Stimulus& st : s_.stimuli) schedule(st);
+  for (const Stimulus& st : faults) schedule(st);
+  if (probe) schedule(*probe);
+  for (const BrakeApplied& b : built_.brakes) {
+    if (b.line.empty() || b.at > s_.end) continue;
+    DrivenLine* d = find(b.line);
+    if (d == nullptr) throw RigFault("brake on a line the rig does not drive: " + b.line);
+    const Level l = brake_level_.at(b.line);
+    sched_.at(b.at, [d, l] { d->want(l); });
+  }
+}
+
+void RigDrive::encoder_edge() {
+  const CountEdge e = *next_edge_;
+  count_ = e.count;
+  if (record_motion_) checks::append_motion(motion_, {e.time, static_cast<double>(e.count)});
+  DrivenLine* line = e.on_a ? enc_a_ : enc_b_;
+  const std::string_view name = e.on_a ? kEncoderA : kEncoderB;
+  bool lost = false;
+  for (MissingEdges& m : missing_) {
+    if (m.fault.line != name || e.time < m.fault.at || e.time >= m.fault.until) continue;
+    if (++m.seen % m.fault.every == 0) lost = true;
+  }
+  if (line != nullptr && !lost) line->want(e.level);
+  next_edge_ = edges_.next();
+  if (next_edge_ && next_edge_->time <= s_.end) sched_.at(next_edge_->time, [this] { encoder_edge(); });
+}
+
+void RigDrive::schedule(const Stimulus& st) {
+  DrivenLine* d = find(st.line);
+  if (d == nullptr) throw RigFault("stimulus on a line the rig does not drive: " + st.line);
+  const Level l = st.level;
+  switch (st.kind) {
+  case StimulusKind::Level:
+    sched_.at(st.at, [d, l] { d->want(l); });
+    break;
+  case StimulusKind::Pulse:
+    sched_.at(st.at, [d, l] { d->want(l); });
+    sched_.at(st.at + st.width, [d, l] { d->want(!l); });
+    break;
+  case StimulusKind::Bounce:
+    // First contact at `at`; bounce k opens at at + (2k-1)*period and closes at at + 2k*period.
+    sched_.at(st.at, [d, l] { d->want(l); });
+    for (std::int64_t k = 1; k <= st.edges; ++k) {
+      sched_.at(st.at + st.period * (2 * k - 1), [d, l] { d->want(!l); });
+      sched_.at(st.at + st.period * (2 * k), [d, l] { d->want(l); });
+    }
+    break;
+  case StimulusKind::Glitch:
+    sched_.at(st.at, [d] {
+      if (d->forced == 0) d->out->set(!d->intended);
+    });
+    sched_.at(st.at + st.width, [d] {
+      if (d->forced == 0) d->out->set(d->intended);
+    });
+    break;
+  case StimulusKind::Stuck:
+    sched_.at(st.at, [d, l] {
+      ++d->forced;
+      d->out->set(l);
+    });
+    if (st.until != Nanos::max())
+      sched_.at(st.until, [d] {
+        if (--d->forced == 0) d->out->set(d->intended);
+      });
+    break;
+  case StimulusKind::MissingEdges:
+    break; // applied as the encoder plays its edges
+  }
+}
+
+} // namespace hilrig::campaign

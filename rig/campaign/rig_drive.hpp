@@ -1,0 +1,79 @@
+#pragma once
+// The rig's drive of the lines it owns, in a Scheduler's time: the encoder edges solved
+// from the motion (with missing-edge faults), the discrete stimuli, signal faults, a probe
+// pulse and the press brake. The virtual run drives bus lines with it; the hardware run
+// drives recording outputs with it to precompute the RT loop's edge schedule, so both
+// backends play the same edges.
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/line.hpp"
+#include "core/scheduler.hpp"
+#include "rig/campaign/campaign.hpp"
+#include "rig/campaign/motion.hpp"
+#include "rig/campaign/quadrature_edges.hpp"
+#include "rig/checks/brake.hpp"
+
+namespace hilrig::campaign {
+
+class RigDrive {
+public:
+  // The scheduler, scenario and motion outlive the drive.
+  RigDrive(Scheduler& scheduler, const Scenario& scenario, const BuiltMotion& motion);
+  RigDrive(const RigDrive&) = delete;
+  RigDrive& operator=(const RigDrive&) = delete;
+
+  // The level a rig line starts at: the encoder's from the start count, a brake line's
+  // released level, otherwise low.
+  [[nodiscard]] Level initial_level(std::string_view rig) const;
+  // Hands the drive one line it owns (a board input), already at initial_level(rig).
+  void own(const std::string& rig, LineOutput& out);
+  // Schedules everything up to the scenario's end. Throws RigFault for a stimulus on a
+  // line the rig does not own.
+  void start(const std::vector<Stimulus>& faults, const std::optional<Stimulus>& probe, bool record_motion);
+
+  [[nodiscard]] std::int64_t count() const { return count_; }
+  // Every count change so far (when recorded), from the start sample at time 0.
+  [[nodiscard]] std::vector<checks::PositionSample>& motion() { return motion_; }
+
+private:
+  // A line the rig drives: the level the stimulus wants, and faults that override it.
+  struct DrivenLine {
+    LineOutput* out = nullptr;
+    Level intended = Level::Low;
+    int forced = 0; // stuck faults in force
+    void want(Level l) {
+      intended = l;
+      if (forced == 0) out->set(l);
+    }
+  };
+  struct MissingEdges {
+    Stimulus fault;
+    std::int64_t seen;
+  };
+
+  DrivenLine* find(std::string_view rig);
+  void encoder_edge();
+  void schedule(const Stimulus& st);
+
+  Scheduler& sched_;
+  const Scenario& s_;
+  const BuiltMotion& built_;
+  QuadratureEdges edges_;
+  std::map<std::string, Level, std::less<>> brake_level_;
+  std::map<std::string, DrivenLine, std::less<>> driven_;
+  DrivenLine* enc_a_ = nullptr;
+  DrivenLine* enc_b_ = nullptr;
+  std::optional<CountEdge> next_edge_;
+  std::vector<MissingEdges> missing_;
+  std::int64_t count_ = 0;
+  bool record_motion_ = true;
+  std::vector<checks::PositionSample> motion_;
+};
+
+} // namespace hilrig::campaign

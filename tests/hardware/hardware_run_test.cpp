@@ -1,0 +1,175 @@
+// The hardware run's orchestration over the RT ports, looped through a virtual DUT
+// (virtual_dut_ports.hpp): the RT loop plays the precomputed schedule in real time, the
+// board's edges come back with timestamps, and the trace holds what the virtual run's holds,
+// shifted by the harness's wire delay. Rig faults stop the run and keep what was captured.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "rig/campaign/campaign_parser.hpp"
+#include "rig/campaign/virtual_run.hpp"
+#include "rig/hardware/edge_schedule.hpp"
+#include "rig/hardware/hardware_run.hpp"
+#include "tests/hardware/loop_campaign.hpp"
+#include "tests/hardware/virtual_dut_ports.hpp"
+
+namespace hilrig::hardware {
+namespace {
+
+// One scan period of the reference PLS: with the scan phase fixed by the seed, a DUT that
+// sees every edge one scan later decides everything exactly one scan later.
+constexpr Nanos kWireDelay{200'000};
+
+struct Loop {
+  campaign::Campaign c = campaign::parse_campaign(test::kLoopCampaign, "loop.toml");
+  RigConfig rig = parse_rig_config(test::kLoopRig, "rig.toml");
+  DrivePlan plan = plan_lines(c.file, c.points.at(0), rig);
+  campaign::RunInputs in;
+  HardwareRunOptions options;
+  Loop() {
+    in.scenario = &c.points.at(0);
+    in.variant = "nominal";
+    in.seed = 11;
+    options.rt = rig.rt;
+    options.realtime = false; // a unit test does not ask for SCHED_FIFO
+    options.lead = Nanos{5'000'000};
+  }
+  [[nodiscard]] std::vector<ScheduledEdge> schedule() const { return build_schedule(in, plan).edges; }
+};
+
+const rig::Measurement* measurement(const campaign::VirtualRun& v, const std::string& name) {
+  for (const rig::Measurement& m : v.rig_timing)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+TEST(HardwareRun, LoopedThroughAVirtualDutCapturesWhatTheVirtualRunCaptures) {
+  Loop f;
+  const std::vector<ScheduledEdge> schedule = f.schedule();
+  test::VirtualDutPorts ports(f.c.points[0], f.plan, schedule, kWireDelay, f.in.seed);
+  const campaign::VirtualRun hw = run_hardware(f.in, f.plan, ports, f.options);
+  ASSERT_EQ(hw.rig_fault, "");
+  EXPECT_EQ(ports.written(), schedule.size());
+  EXPECT_EQ(ports.mismatches(), 0U);
+
+  // Every output edge went out, in order, never before it was due.
+  for (std::size_t line = 0; line < f.plan.outputs.size(); ++line) {
+    std::vector<ScheduledEdge> due;
+    for (const ScheduledEdge& e : schedule)
+      if (e.line == line) due.push_back(e);
+    const std::vector<Edge> written = hw.trace->edges_of(f.plan.outputs[line].rig);
+    ASSERT_EQ(written.size(), due.size()) << f.plan.outputs[line].rig;
+    for (std::size_t i = 0; i < due.size(); ++i) {
+      EXPECT_EQ(written[i].level, due[i].level);
+      EXPECT_GE(written[i].time, due[i].time);
+    }
+  }
+
+  // The board's output: the virtual run's edges, one wire delay later, to the nanosecond.
+  const campaign::VirtualRun virt = campaign::run_virtual(f.in);
+  const std::vector<Edge> expected = virt.trace->edges_of("ls1");
+  ASSERT_GE(expected.size(), 2U); // OUT turns on at count 3 and off again
+  const std::vector<Edge> captured = hw.trace->edges_of("ls1");
+  ASSERT_EQ(captured.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(captured[i].level, expected[i].level) << "edge " << i;
+    EXPECT_EQ(captured[i].time, expected[i].time + kWireDelay) << "edge " << i;
+  }
+
+  // The rig's own timing is in the results.
+  const rig::Measurement* edge_error = measurement(hw, "rig.edge_error.max");
+  ASSERT_NE(edge_error, nullptr);
+  EXPECT_EQ(edge_error->unit, "us");
+  ASSERT_TRUE(edge_error->upper.has_value());
+  EXPECT_EQ(*edge_error->upper, 1e6); // rt.edge_tolerance = "1s"
+  EXPECT_NE(measurement(hw, "rig.wakeup.max"), nullptr);
+  EXPECT_NE(measurement(hw, "rig.wakeup.p99"), nullptr);
+  // The motion is the campaign's: count 10 at the end.
+  EXPECT_EQ(hw.motion.back().time, f.c.points[0].end);
+  EXPECT_EQ(hw.motion.back().position, 10.0);
+}
+
+TEST(HardwareRun, AnEdgeLaterThanTheToleranceIsARigFault) {
+  Loop f;
+  // No write returns within a nanosecond of the instant it was due.
+  f.options.rt.edge_tolerance = Nanos{1};
+  test::VirtualDutPorts ports(f.c.points[0], f.plan, f.schedule(), kWireDelay, f.in.seed);
+  const campaign::VirtualRun hw = run_hardware(f.in, f.plan, ports, f.options);
+  EXPECT_NE(hw.rig_fault.find("later than rt.edge_tolerance"), std::string::npos) << hw.rig_fault;
+  const rig::Measurement* edge_error = measurement(hw, "rig.edge_error.max");
+  ASSERT_NE(edge_error, nullptr);
+  EXPECT_EQ(edge_error->outcome, rig::Outcome::Fail);
+}
+
+// The resolver stream's CAN interface, reporting bus-off once three frames are out.
+class BusOffAfterThree final : public ResolverCan {
+public:
+  std::string send(const CanFrame& /*frame*/) override {
+    ++sent;
+    return {};
+  }
+  std::string check() override { return sent >= 3 ? "CAN can9: bus-off (no ACK)" : ""; }
+  const std::string& bus() const override { return name_; }
+  int sent = 0;
+
+private:
+  std::string name_ = "can9";
+};
+
+TEST(HardwareRun, BusOffStopsTheRunAndKeepsWhatWasCaptured) {
+  Loop f;
+  f.plan.resolver = true; // as if the campaign had a [resolver]: the angle stream goes out
+  BusOffAfterThree can;
+  test::VirtualDutPorts ports(f.c.points[0], f.plan, f.schedule(), kWireDelay, f.in.seed);
+  ports.set_resolver(&can);
+  const campaign::VirtualRun hw = run_hardware(f.in, f.plan, ports, f.options);
+  EXPECT_EQ(hw.rig_fault, "CAN can9: bus-off (no ACK)");
+  EXPECT_FALSE(hw.interrupted);
+  // Frames at 0, 1 and 2 ms went out before the controller said bus-off; they are in can.log.
+  EXPECT_EQ(can.sent, 3);
+  ASSERT_EQ(hw.trace->can_frames().size(), 3U);
+  EXPECT_EQ(hw.trace->can_frames()[0].bus, "can9");
+  EXPECT_EQ(hw.trace->can_frames()[0].frame.id, 0x120U); // ResolverAngle, channel 0
+  // Stopped early: every rig-driven line ends at its inactive level.
+  for (const PlannedLine& p : f.plan.outputs) {
+    const std::vector<Edge> edges = hw.trace->edges_of(p.rig);
+    if (!edges.empty()) {
+      EXPECT_EQ(edges.back().level, Level::Low) << p.rig;
+    }
+  }
+}
+
+// Host words whose link fails on the first read.
+class DeadLink final : public campaign::HostWords {
+public:
+  void write(std::size_t /*word*/, std::uint16_t /*value*/) override {}
+  std::uint16_t read(std::size_t /*word*/) override {
+    throw std::runtime_error("read input register 1: timeout");
+  }
+};
+
+TEST(HardwareRun, ALostHostLinkIsARigFault) {
+  Loop f;
+  campaign::Scenario s = f.c.points[0];
+  campaign::HostAction read;
+  read.kind = campaign::HostAction::Kind::Read;
+  read.at = Nanos{1'000'000};
+  read.word = 1;
+  read.name = "count";
+  s.host.push_back(read);
+  f.in.scenario = &s;
+  f.plan.host = true;
+  DeadLink link;
+  test::VirtualDutPorts ports(s, f.plan, f.schedule(), kWireDelay, f.in.seed);
+  ports.set_host(&link);
+  const campaign::VirtualRun hw = run_hardware(f.in, f.plan, ports, f.options);
+  EXPECT_EQ(hw.rig_fault, "host link: read input register 1: timeout");
+  EXPECT_TRUE(hw.observations.empty());
+}
+
+} // namespace
+} // namespace hilrig::hardware
