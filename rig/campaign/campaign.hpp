@@ -165,6 +165,9 @@ struct Scenario {
   std::vector<CheckSpec> checks;
   Nanos end{0};
   Nanos host_poll{1'000'000}; // how often the host polls Acknowledge
+  // On a rig: an output edge later than this is a rig fault. Unset: the rig config's
+  // rt.edge_tolerance. The virtual bus plays every edge exactly on time.
+  std::optional<Nanos> edge_tolerance;
 
   [[nodiscard]] const Wire* wire_for_rig(std::string_view rig_line) const;
   [[nodiscard]] const CheckSpec* check(std::string_view name) const;

@@ -71,6 +71,10 @@ private:
       if (*p <= Nanos{0}) r.fail("host_poll", "a duration > 0");
       out.scenario.host_poll = *p;
     }
+    if (auto tol = r.opt_duration("edge_tolerance")) {
+      if (*tol <= Nanos{0}) r.fail("edge_tolerance", "a duration > 0");
+      out.scenario.edge_tolerance = *tol;
+    }
     r.finish();
   }
 

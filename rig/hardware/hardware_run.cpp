@@ -182,17 +182,16 @@ void run_aux(const campaign::Scenario& s, const DrivePlan& plan, RigPorts& ports
   if (port) out.frames = std::move(port->sent);
 }
 
-std::vector<rig::Measurement> timing_of(const rig::RtLoopStats& st, const HardwareRunOptions& o,
+std::vector<rig::Measurement> timing_of(const rig::RtLoopStats& st, Nanos tolerance,
                                         const rig::RtSetupReport& setup) {
   using checks::measure;
   using checks::to_us;
   const std::string rt =
       setup.problems.empty() ? std::string() : fmt::format(" (the loop ran without: {})", setup.problems);
   std::vector<rig::Measurement> m;
-  m.push_back(measure("rig.edge_error.max", to_us(st.max_edge_error), "us", std::nullopt,
-                      to_us(o.rt.edge_tolerance),
+  m.push_back(measure("rig.edge_error.max", to_us(st.max_edge_error), "us", std::nullopt, to_us(tolerance),
                       fmt::format("latest output edge after its scheduled time, over {} edges; {} later than "
-                                  "rt.edge_tolerance{}",
+                                  "the edge tolerance{}",
                                   st.edges_played, st.missed_deadlines, rt)));
   m.push_back(measure("rig.wakeup.max", to_us(st.wakeups.max()), "us", std::nullopt, std::nullopt,
                       fmt::format("RT loop wake-up latency, worst of {} wake-ups", st.wakeups.count())));
@@ -227,7 +226,9 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
   rig::SpscRing<LoopSample> ring(kRingCapacity);
   auto stats = std::make_unique<rig::RtLoopStats>(); // large: the histogram
   FaultFlag fault;
-  const rig::RtLoopConfig loop{o.rt.edge_tolerance, o.poll_period};
+  // The campaign's own tolerance, when it sets one, over the rig's default.
+  const Nanos tolerance = s.edge_tolerance.value_or(o.rt.edge_tolerance);
+  const rig::RtLoopConfig loop{tolerance, o.poll_period};
   rig::RtSetupReport setup;
   std::atomic<bool> loop_done{false};
   // The run starts `lead` after the loop's thread is real-time: mlockall faults in every
@@ -297,7 +298,7 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
   v.motion = schedule.positions;
   v.observations = std::move(aux.observations);
   v.handshakes = std::move(aux.handshakes);
-  v.rig_timing = timing_of(*stats, o, setup);
+  v.rig_timing = timing_of(*stats, tolerance, setup);
   if (plan.resolver && ports.resolver() != nullptr)
     v.rig_timing.push_back(checks::measure(
         "rig.resolver.stale_frames", static_cast<double>(aux.stale_frames), "frames", std::nullopt,
@@ -308,9 +309,9 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
   v.rig_fault = fault.why();
   v.interrupted = aux.interrupted;
   if (v.rig_fault.empty() && stats->missed_deadlines > 0)
-    v.rig_fault = fmt::format("{} output edge(s) later than rt.edge_tolerance ({} us); the latest by {} us",
-                              stats->missed_deadlines, checks::to_us(o.rt.edge_tolerance),
-                              checks::to_us(stats->max_edge_error));
+    v.rig_fault =
+        fmt::format("{} output edge(s) later than the edge tolerance ({} us); the latest by {} us",
+                    stats->missed_deadlines, checks::to_us(tolerance), checks::to_us(stats->max_edge_error));
   if (v.rig_fault.empty() && stats->ring_overflows > 0)
     v.rig_fault =
         fmt::format("{} captured sample(s) lost: the ring between the RT loop and the recorder overflowed",

@@ -49,8 +49,11 @@ if [ -n "$chip" ] && gpiodetect | grep -q "$chip"; then
   # (gpioset must hold the request: a released line falls back to its pull.)
   gpioset --mode=signal "$chip" 0=1 &
   holder=$!
-  sleep 0.3
-  v=$(cat "$sim/sim_gpio0/value")
+  for _ in $(seq 50); do # until gpioset holds the line (at most 5 s on a loaded host)
+    v=$(cat "$sim/sim_gpio0/value")
+    [ "$v" = 1 ] && break
+    sleep 0.1
+  done
   kill "$holder"; wait "$holder" 2>/dev/null
   [ "$v" = 1 ] && pass gpio_sim_rig_drives || fail gpio_sim_rig_drives "sim_gpio0/value was $v"
   # The far side pulls line 1 up; the rig reads it.
@@ -75,17 +78,21 @@ for i in can0 can1; do
 done
 ip -details link show can0 | sed 's/^/[guest]   /'
 candump -n 1 -T 5000 -L can1 > "$TMPDIR/can1.log" &
-sleep 0.3
-cansend can0 123#DEADBEEF
+dumper=$!
+for _ in $(seq 20); do # resend until candump (bound some time after it started) has one
+  cansend can0 123#DEADBEEF
+  sleep 0.25
+  kill -0 "$dumper" 2>/dev/null || break
+done
 wait
 if grep -q '123#DEADBEEF' "$TMPDIR/can1.log"; then pass can0_to_can1; else fail can0_to_can1 "can1 saw: $(cat "$TMPDIR/can1.log")"; fi
 
 step "serial: ttyS1 <-> ttyS2 (two UARTs joined by QEMU), 19200 8E1"
 for t in ttyS1 ttyS2; do stty -F "/dev/$t" 19200 raw -echo cs8 parenb -parodd -cstopb; done
-timeout 5 head -c 6 /dev/ttyS2 > "$TMPDIR/uart.txt" &
-sleep 0.3
+exec 3</dev/ttyS2 # the receiver is open before the first byte is sent
 printf 'hilrig' > /dev/ttyS1
-wait
+timeout 5 head -c 6 <&3 > "$TMPDIR/uart.txt"
+exec 3<&-
 if [ "$(cat "$TMPDIR/uart.txt")" = hilrig ]; then pass uart_s1_to_s2; else fail uart_s1_to_s2 "ttyS2 read '$(cat "$TMPDIR/uart.txt")'"; fi
 
 for payload in $payloads; do

@@ -82,6 +82,16 @@ TEST(CampaignParser, BaseCampaignIsAccepted) {
   ASSERT_EQ(c.runs.size(), 1U);
 }
 
+TEST(CampaignParser, EdgeToleranceIsTheCampaignsOwnWhenSet) {
+  EXPECT_FALSE(parse_campaign(kBase, "t.toml").points[0].edge_tolerance.has_value());
+  const Campaign c =
+      parse_campaign(replace_line(kBase, 3, "end = \"100ms\"\nedge_tolerance = \"20us\""), "t.toml");
+  EXPECT_EQ(c.points[0].edge_tolerance, 20_us);
+  // Line 4 is the new key; its value starts at column 18.
+  const std::string error = error_of(replace_line(kBase, 3, "end = \"100ms\"\nedge_tolerance = \"0us\""));
+  EXPECT_EQ(error.rfind("t.toml:4:18: campaign.edge_tolerance: ", 0), 0U) << error;
+}
+
 TEST(CampaignParser, TomlSyntaxErrorGivesItsPosition) {
   // Line 7 "on = = 10": toml++ reports the second '=' at column 6.
   EXPECT_TRUE(rejected_at(replace_line(kBase, 7, "on = = 10"), "t.toml:7:"));

@@ -99,9 +99,27 @@ TEST(HardwareRun, AnEdgeLaterThanTheToleranceIsARigFault) {
   f.options.rt.edge_tolerance = Nanos{1};
   test::VirtualDutPorts ports(f.c.points[0], f.plan, f.schedule(), kWireDelay, f.in.seed);
   const campaign::VirtualRun hw = run_hardware(f.in, f.plan, ports, f.options);
-  EXPECT_NE(hw.rig_fault.find("later than rt.edge_tolerance"), std::string::npos) << hw.rig_fault;
+  EXPECT_NE(hw.rig_fault.find("later than the edge tolerance"), std::string::npos) << hw.rig_fault;
   const rig::Measurement* edge_error = measurement(hw, "rig.edge_error.max");
   ASSERT_NE(edge_error, nullptr);
+  EXPECT_EQ(edge_error->outcome, rig::Outcome::Fail);
+}
+
+// The campaign's [campaign] edge_tolerance wins over the rig config's: a campaign that needs
+// nanosecond edges fails on a rig configured loosely, and the reported limit is its own.
+TEST(HardwareRun, TheCampaignsEdgeToleranceOverridesTheRigs) {
+  Loop f;
+  f.options.rt.edge_tolerance = seconds(1);
+  campaign::Scenario s = f.c.points[0];
+  s.edge_tolerance = Nanos{1};
+  f.in.scenario = &s;
+  test::VirtualDutPorts ports(s, f.plan, f.schedule(), kWireDelay, f.in.seed);
+  const campaign::VirtualRun hw = run_hardware(f.in, f.plan, ports, f.options);
+  EXPECT_NE(hw.rig_fault.find("later than the edge tolerance (0.001 us)"), std::string::npos) << hw.rig_fault;
+  const rig::Measurement* edge_error = measurement(hw, "rig.edge_error.max");
+  ASSERT_NE(edge_error, nullptr);
+  ASSERT_TRUE(edge_error->upper.has_value());
+  EXPECT_EQ(*edge_error->upper, 0.001); // 1 ns in us
   EXPECT_EQ(edge_error->outcome, rig::Outcome::Fail);
 }
 
