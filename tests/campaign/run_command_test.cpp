@@ -10,24 +10,15 @@
 #include "rig/cli/run_command.hpp"
 #include "rig/results/results_json.hpp"
 #include "test_support.hpp"
+#include "tests/tools/scratch_files.hpp"
 
 namespace hilrig::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(HILRIG_BINARY_DIR) / "tests" / "campaign" / "scratch" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-fs::path write_file(const fs::path& dir, const std::string& name, const std::string& text) {
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
-}
+fs::path scratch(const std::string& name) { return hilrig::test::scratch_dir("campaign", name); }
+using hilrig::test::write_file;
 
 int run(const std::string& file, const fs::path& out, std::string* err_text = nullptr,
         const std::string& shard = "0/1") {

@@ -14,31 +14,16 @@
 #include "rig/results/results_json.hpp"
 #include "tests/hardware/loop_campaign.hpp"
 #include "tests/hardware/virtual_dut_ports.hpp"
+#include "tests/tools/scratch_files.hpp"
 
 namespace hilrig::hardware {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(HILRIG_BINARY_DIR) / "tests" / "hardware" / "scratch" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-fs::path write_file(const fs::path& dir, const std::string& name, const std::string& text) {
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
-}
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+fs::path scratch(const std::string& name) { return hilrig::test::scratch_dir("hardware", name); }
+using hilrig::test::read_file;
+using hilrig::test::write_file;
 
 cli::RunOptions hardware_options(const fs::path& dir, const std::string& rig_text) {
   cli::RunOptions o;
