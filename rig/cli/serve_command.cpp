@@ -251,17 +251,6 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
   serve_in_real_time(*server, scheduler, far.get(), stop);
 }
 
-void run_serve(const ServeOptions& options, const std::atomic<bool>& stop,
-               const std::function<void(std::uint16_t port)>& on_listening) {
-  ServeOptions tcp = options;
-  tcp.link = ServeLink::Tcp;
-  serve_device(tcp, stop, [&](const ServeEndpoint& e) {
-    if (on_listening) {
-      on_listening(e.port);
-    }
-  });
-}
-
 void add_serve_command(CLI::App& app) {
   auto args = std::make_shared<ServeArgs>();
   CLI::App* cmd =

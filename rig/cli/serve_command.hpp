@@ -65,10 +65,6 @@ struct ServeEndpoint {
 void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
                   const std::function<void(const ServeEndpoint&)>& on_ready);
 
-// Modbus TCP only (the original interface): on_listening gets the bound port.
-void run_serve(const ServeOptions& options, const std::atomic<bool>& stop,
-               const std::function<void(std::uint16_t port)>& on_listening = {});
-
 void add_serve_command(CLI::App& app);
 
 } // namespace hilrig::cli

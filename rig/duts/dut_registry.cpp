@@ -4,23 +4,13 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "rig/duts/dut.hpp"
-#include "rig/duts/reference_pls.hpp"
-#ifdef HILRIG_HAVE_ANS1_MODEL
-#include "rig/duts/ans1_adapter.hpp"
-#endif
-#ifdef HILRIG_HAVE_SSI7361_MODEL
-#include "rig/duts/ssi7361_dut.hpp"
-#endif
-#ifdef HILRIG_HAVE_AMCI4501_MODEL
 #include "rig/duts/amci4501_dut.hpp"
-#endif
-#ifdef HILRIG_HAVE_PLS2700_MODEL
+#include "rig/duts/ans1_adapter.hpp"
+#include "rig/duts/dut.hpp"
 #include "rig/duts/pls2700_dut.hpp"
-#endif
-#ifdef HILRIG_HAVE_SMD23E_MODEL
+#include "rig/duts/reference_pls.hpp"
 #include "rig/duts/smd23e_dut.hpp"
-#endif
+#include "rig/duts/ssi7361_dut.hpp"
 
 namespace hilrig::duts {
 
@@ -79,21 +69,11 @@ const std::vector<DutInfo>& dut_registry() {
   static const std::vector<DutInfo> registry = [] {
     std::vector<DutInfo> r;
     r.push_back(reference_pls_info());
-#ifdef HILRIG_HAVE_ANS1_MODEL
     r.push_back(ans1_info());
-#endif
-#ifdef HILRIG_HAVE_SSI7361_MODEL
     r.push_back(ssi7361_info());
-#endif
-#ifdef HILRIG_HAVE_AMCI4501_MODEL
     r.push_back(amci4501_info());
-#endif
-#ifdef HILRIG_HAVE_PLS2700_MODEL
     r.push_back(pls2700_info());
-#endif
-#ifdef HILRIG_HAVE_SMD23E_MODEL
     r.push_back(smd23e_info());
-#endif
     std::sort(r.begin(), r.end(), [](const DutInfo& a, const DutInfo& b) { return a.name < b.name; });
     return r;
   }();

@@ -1,6 +1,5 @@
 // The campaign adapter (rig/duts/pls2700_dut.hpp): made from its DutInfo with defaults,
 // wired by pin name, programmed and read through host words as a campaign does.
-#ifdef HILRIG_HAVE_PLS2700_DUT
 #include <gtest/gtest.h>
 
 #include "drivers/virtual/virtual_bus.hpp"
@@ -59,4 +58,3 @@ TEST(Pls2700Dut, HostWordsProgramAndReadTheModule) {
 
 } // namespace
 } // namespace hilrig::duts
-#endif
