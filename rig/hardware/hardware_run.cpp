@@ -59,28 +59,6 @@ private:
   std::atomic<bool> stop_{false};
 };
 
-// After the last output edge the loop keeps capturing until the scenario's end. RT side:
-// no allocation, the only syscalls are the sleep and the port's reads.
-void capture_until(Nanos end, RtInputPort& inputs, rig::SpscRing<LoopSample>& ring,
-                   const std::atomic<bool>& stop, Nanos poll_period, rig::RtLoopStats& stats) noexcept {
-  std::array<InputEdge, 64> batch{};
-  for (;;) {
-    for (;;) {
-      const std::size_t n = inputs.poll(batch);
-      for (std::size_t k = 0; k < n; ++k) {
-        const InputEdge& e = batch[k];
-        ++stats.inputs_seen;
-        if (!ring.push(LoopSample{LoopSample::Kind::Input, e.line, e.level, e.time, e.time}))
-          ++stats.ring_overflows;
-      }
-      if (n < batch.size()) break;
-    }
-    const Nanos now = monotonic_now();
-    if (now >= end || stop.load(std::memory_order_relaxed)) return;
-    (void)rig::sleep_until(std::min(end, now + poll_period));
-  }
-}
-
 // The resolver stream's CAN port: frames go out on the rig's interface and are kept, with
 // the time they were sent, for can.log.
 class StreamPort final : public CanPort {
@@ -244,7 +222,7 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
     ready.notify_all();
     rig::play(schedule.edges, start, ports.outputs(), ports.inputs(), ring, fault.stop(), loop, *stats);
     if (ports.inputs() != nullptr)
-      capture_until(start + s.end, *ports.inputs(), ring, fault.stop(), o.poll_period, *stats);
+      rig::capture_until(start + s.end, *ports.inputs(), ring, fault.stop(), o.poll_period, *stats);
     loop_done.store(true, std::memory_order_release);
   });
   ready.wait(false, std::memory_order_acquire);

@@ -1,5 +1,6 @@
 #include "rig/rt/rt_loop.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <ctime>
@@ -37,6 +38,16 @@ Nanos sleep_until(Nanos deadline) noexcept {
   ts.tv_nsec = static_cast<long>(deadline.count() % 1'000'000'000);
   while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {}
   return monotonic_now();
+}
+
+void capture_until(Nanos end, RtInputPort& inputs, SpscRing<LoopSample>& ring, const std::atomic<bool>& stop,
+                   Nanos poll_period, RtLoopStats& stats) noexcept {
+  for (;;) {
+    drain_inputs(inputs, ring, stats);
+    const Nanos now = monotonic_now();
+    if (now >= end || stop.load(std::memory_order_relaxed)) return;
+    (void)sleep_until(std::min(end, now + poll_period));
+  }
 }
 
 void play(std::span<const ScheduledEdge> schedule, Nanos start, RtOutputPort& outputs, RtInputPort* inputs,

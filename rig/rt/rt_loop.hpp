@@ -55,6 +55,11 @@ void play(std::span<const ScheduledEdge> schedule, Nanos start, RtOutputPort& ou
           SpscRing<LoopSample>& ring, const std::atomic<bool>& stop, const RtLoopConfig& config,
           RtLoopStats& stats) noexcept;
 
+// After the schedule: keeps draining input edges into `ring` every `poll_period` until the
+// absolute time `end` or `stop`. Same rules as play(): no allocation, only sleeps and reads.
+void capture_until(Nanos end, RtInputPort& inputs, SpscRing<LoopSample>& ring, const std::atomic<bool>& stop,
+                   Nanos poll_period, RtLoopStats& stats) noexcept;
+
 // Wakes every `interval` from `start` for `loops` wake-ups, measuring latency only: what
 // `hilrig latency` and cyclictest both measure.
 void measure_wakeups(Nanos start, Nanos interval, std::uint64_t loops, const std::atomic<bool>& stop,

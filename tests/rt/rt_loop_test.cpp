@@ -96,6 +96,30 @@ TEST(RtLoop, DoesNotAllocateWhilePlaying) {
   EXPECT_EQ(stats->inputs_seen, inputs.limit);
 }
 
+// The capture tail after the last edge (a hardware run keeps listening to the board until
+// the scenario's end) hands over every input edge and allocates nothing either.
+TEST(RtLoop, CapturesInputsUntilTheEndWithoutAllocating) {
+  ScriptedInputs inputs;
+  SpscRing<LoopSample> ring(4096);
+  std::atomic<bool> stop{false};
+  auto stats = std::make_unique<RtLoopStats>();
+  const Nanos end = MonotonicClock{}.now() + milliseconds(2);
+
+  hilrig::test::arm_allocation_counter();
+  capture_until(end, inputs, ring, stop, microseconds(200), *stats);
+  const std::uint64_t allocations = hilrig::test::disarm_allocation_counter();
+
+  EXPECT_EQ(allocations, 0U);
+  EXPECT_EQ(stats->inputs_seen, inputs.limit);
+  LoopSample sample{};
+  std::size_t popped = 0;
+  while (ring.pop(sample)) {
+    EXPECT_EQ(sample.kind, LoopSample::Kind::Input);
+    ++popped;
+  }
+  EXPECT_EQ(popped, inputs.limit);
+}
+
 TEST(RtLoop, AllocationCounterSeesAnAllocation) {
   // The proof above is only worth something if the counter can count.
   hilrig::test::arm_allocation_counter();
