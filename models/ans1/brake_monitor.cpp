@@ -6,6 +6,10 @@ namespace hilrig::models::ans1 {
 
 namespace {
 [[nodiscard]] std::int64_t whole_ms(Nanos d) { return d / milliseconds(1); }
+// A time at its limit is within it; a limit of 0 disables the check [MODEL A44].
+[[nodiscard]] bool over_limit(std::int64_t time_ms, std::uint16_t limit_ms) {
+  return limit_ms != 0 && time_ms > limit_ms;
+}
 } // namespace
 
 void BrakeMonitor::configure(const BrakeSetup& setup) {
@@ -49,6 +53,7 @@ void BrakeMonitor::tick(Nanos now, bool released, std::int64_t pos4096, std::uin
     if (release_edge) {
       phase_ = Phase::Starting;
       t0_ = now;
+      overrun_tripped_ = false;
       start_pos_ = pos4096;
       status_.released_position = gmp;
     } else if (apply_edge) {
@@ -61,6 +66,8 @@ void BrakeMonitor::tick(Nanos now, bool released, std::int64_t pos4096, std::uin
       begin_debounce(now, gmp);
     } else if (std::llabs(pos4096 - start_pos_) > 2 * static_cast<std::int64_t>(setup_.complete_stop_count)) {
       finish_start(whole_ms(now - t0_));
+    } else {
+      still_starting(whole_ms(now - t0_));
     }
     break;
   case Phase::Debouncing:
@@ -73,6 +80,8 @@ void BrakeMonitor::tick(Nanos now, bool released, std::int64_t pos4096, std::uin
     if (elapsed >= kStopWindowMs &&
         std::llabs(pos4096 - position_ms_ago(kStopWindowMs)) < setup_.complete_stop_count) {
       finish_stop(elapsed);
+    } else {
+      still_stopping(elapsed);
     }
     break;
   }
@@ -82,6 +91,7 @@ void BrakeMonitor::tick(Nanos now, bool released, std::int64_t pos4096, std::uin
 void BrakeMonitor::begin_debounce(Nanos now, std::uint16_t gmp) {
   phase_ = Phase::Debouncing;
   t0_ = now;
+  overrun_tripped_ = false;
   pending_applied_position_ = gmp;
   active_samples_ = 0;
   inactive_samples_ = 0;
@@ -113,13 +123,34 @@ void BrakeMonitor::debounce(Nanos now, bool released, std::uint16_t gmp) {
   }
 }
 
+void BrakeMonitor::still_starting(std::int64_t elapsed_ms) {
+  // No motion yet: the start time is already longer than elapsed_ms, so an overrun is certain
+  // now, not only when the press finally moves (a press that never moves must still trip).
+  // Tripped once per cycle, so Clear Errors holds until the cycle ends and is judged again.
+  if (!overrun_tripped_ && over_limit(elapsed_ms, setup_.start_time_limit_ms)) {
+    overrun_tripped_ = true;
+    start_fault_ = !never_faults_;
+  }
+  // L2616 [A8]: a start time over 32,767 ms is recorded as 32,768 once it is that long.
+  if (elapsed_ms > 32767) status_.start_time_ms = kStartTimeOverflow;
+}
+
+void BrakeMonitor::still_stopping(std::int64_t elapsed_ms) {
+  // No standstill at elapsed_ms: the earliest standstill is one tick later, whose net stop time
+  // (L1052) is elapsed_ms + 1 - 125. Once that is over the limit the overrun is certain, so a
+  // brake that fails to stop a turning press trips here instead of waiting for standstill.
+  if (!overrun_tripped_ && over_limit(elapsed_ms + 1 - kStopWindowMs, setup_.stop_time_limit_ms)) {
+    overrun_tripped_ = true;
+    stop_fault_ = !never_faults_;
+  }
+}
+
 void BrakeMonitor::finish_start(std::int64_t elapsed_ms) {
   phase_ = Phase::Idle;
   status_.start_time_ms = elapsed_ms > 32767 ? kStartTimeOverflow : static_cast<std::uint16_t>(elapsed_ms);
   ++status_.completed_starts;
   // A limit of 0 disables the check [MODEL A44]; a start within limit clears the fault [MODEL A44].
-  const bool over = setup_.start_time_limit_ms != 0 && elapsed_ms > setup_.start_time_limit_ms;
-  start_fault_ = over && !never_faults_;
+  start_fault_ = over_limit(elapsed_ms, setup_.start_time_limit_ms) && !never_faults_;
 }
 
 void BrakeMonitor::finish_stop(std::int64_t elapsed_ms) {
@@ -128,8 +159,7 @@ void BrakeMonitor::finish_stop(std::int64_t elapsed_ms) {
   status_.stop_time_ms = net > 32767 ? kStartTimeOverflow : static_cast<std::uint16_t>(net);
   status_.applied_position = pending_applied_position_;
   ++status_.completed_stops;
-  const bool over = setup_.stop_time_limit_ms != 0 && net > setup_.stop_time_limit_ms;
-  stop_fault_ = over && !never_faults_;
+  stop_fault_ = over_limit(net, setup_.stop_time_limit_ms) && !never_faults_;
 }
 
 } // namespace hilrig::models::ans1

@@ -12,7 +12,9 @@
 //   gmp:      Global Machine Position, only recorded as released/applied position.
 // The input is sampled on the tick (1 ms resolution, L640); an edge is a change between two
 // ticks. Results: status(); faults: start_fault()/stop_fault() (true = fault; the fault output
-// is then OFF [MODEL A5, chapter 3: normally on, off = fault]).
+// is then OFF [MODEL A5, chapter 3: normally on, off = fault]). An overrun trips on the tick it
+// becomes certain (start: no motion when the limit is passed; stop: no standstill by limit +
+// 125 ms), not only when the press next moves or stops.
 #include <array>
 #include <cstdint>
 
@@ -70,6 +72,8 @@ private:
   [[nodiscard]] std::int64_t position_ms_ago(std::int64_t ms) const;
   void begin_debounce(Nanos now, std::uint16_t gmp);
   void debounce(Nanos now, bool released, std::uint16_t gmp);
+  void still_starting(std::int64_t elapsed_ms);
+  void still_stopping(std::int64_t elapsed_ms);
   void finish_start(std::int64_t elapsed_ms);
   void finish_stop(std::int64_t elapsed_ms);
 
@@ -84,6 +88,7 @@ private:
   std::uint16_t pending_applied_position_ = 0;
   int active_samples_ = 0;
   int inactive_samples_ = 0;
+  bool overrun_tripped_ = false; // the running cycle already tripped its overrun before ending
   bool start_fault_ = false;
   bool stop_fault_ = false;
   std::array<std::int64_t, kHistory> history_{};

@@ -33,6 +33,7 @@ Smd23e::Smd23e(Scheduler& scheduler, Params params) : sched_(scheduler), p_(para
       cfg_ = *c;
       configured_ = true;
       config_error_ = false;
+      idle_percent_ = cfg_.words[7];
     }
   }
 }
@@ -198,7 +199,7 @@ double Smd23e::motor_current_amps() const {
     return full;
   }
   // The idle percentage is the level the current drops *to* (spec §4, L1265).
-  return full * static_cast<double>(cfg_.words[7]) / 100.0;
+  return full * static_cast<double>(idle_percent_.value_or(cfg_.words[7])) / 100.0;
 }
 
 // ---- Configuration -------------------------------------------------------------------------
@@ -323,6 +324,12 @@ void Smd23e::process_config(const Words& previous) {
       immediate_stop();
     }
     cfg_ = applied;
+    // A changed idle current takes effect only at the end of the first move after
+    // re-configuration (L2350); the first configuration since power-up has nothing to keep.
+    if (!idle_percent_) {
+      idle_percent_ = applied.words[7];
+    }
+    pending_idle_percent_ = applied.words[7];
     configured_ = true;
     config_error_ = false;
     pos_invalid_ = true; // a configuration written sets Position Invalid (L2846)

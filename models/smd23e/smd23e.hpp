@@ -153,6 +153,8 @@ private:
   void resume();
   void run_dwell_segment(std::size_t index, std::uint32_t dwell_ms);
   void home_next(HomeStage stage);
+  void homing_error();
+  [[nodiscard]] bool limit_toward(int dir) const; // the limit ending travel in dir is active
   void change_jog(const MoveSpec& spec);
 
   // Motion engine.
@@ -214,6 +216,9 @@ private:
   std::int64_t shaft_frozen_ = 0;
   std::int64_t slip_ = 0;
   Nanos last_motion_end_{0};
+  // Idle current % in effect, and a re-configured one waiting for the end of a move (L2350).
+  std::optional<std::uint16_t> idle_percent_;
+  std::optional<std::uint16_t> pending_idle_percent_;
 
   std::vector<ShaftRun> runs_;
   std::optional<Run> run_;
@@ -224,6 +229,7 @@ private:
   EventId aux_event_{};
   EventId stall_event_{};
   EventId pause_event_{};
+  EventId home_pause_{}; // pause_event_ when it is a homing pause
 };
 
 } // namespace hilrig::models::smd23e

@@ -161,6 +161,10 @@ void Smd23e::continue_motion(std::vector<Piece> pieces) {
 }
 
 void Smd23e::end_motion(Nanos at) {
+  if (pending_idle_percent_) {
+    idle_percent_ = pending_idle_percent_; // the end of the first move after re-configuration
+    pending_idle_percent_.reset();
+  }
   if (!runs_.empty()) {
     ShaftRun& last = runs_.back();
     last.stop = std::min(last.stop, at);
@@ -290,8 +294,14 @@ void Smd23e::on_motion_end() {
     const HomeStage next = r.home_stage == HomeStage::Search ? HomeStage::Pause1 : HomeStage::Pause2;
     const int dir = r.home_dir;
     const MoveSpec spec = r.spec;
-    pause_event_ = sched_.after(p_.homing_pause, [this, next, dir, spec] {
-      pause_event_ = {};
+    home_pause_ = pause_event_ = sched_.after(p_.homing_pause, [this, next, dir, spec] {
+      pause_event_ = home_pause_ = {};
+      // The next run sets off on the levels, not only on edges: a limit already active in its
+      // direction (the opposite limit for the reverse search, L1365; both, L1367) is an error.
+      if (limit_toward(next == HomeStage::Pause1 ? -dir : dir)) {
+        homing_error();
+        return;
+      }
       Run h;
       h.kind = Kind::Home;
       h.home_dir = dir;
@@ -511,17 +521,15 @@ void Smd23e::start_home(int dir) {
     command_error(); // no Home input configured [A]
     return;
   }
-  const bool limit_ahead = p_.fault != Fault::IgnoredLimit &&
-                           function_active(dir > 0 ? InputFunction::CwLimit : InputFunction::CcwLimit);
-  // Profile C starts at step 4 with the search-direction limit active: not refused.
-  if (run_ || pause_event_.valid()) {
-    command_error();
-    return;
-  }
-  if (!limit_ahead && !may_start(dir, false)) {
-    return;
-  }
-  if (limit_ahead && !may_start(-dir, false)) {
+  const bool proximity = (cfg_.words[0] & ccw::kHomeProximityEnable) != 0;
+  // Profile C starts at step 4 with the search-direction limit active (L1382), profile A at
+  // step 5 with Home active (L1331): both set off opposite to the requested direction. The
+  // first run is judged on the limit levels like any move (L1043), so with both limits active,
+  // or the opposite limit active where the search starts reversed, it stops with an Input
+  // Error before moving (L1367).
+  const bool reversed = limit_toward(dir) || (!proximity && function_active(InputFunction::Home));
+  const int first_dir = reversed ? -dir : dir;
+  if (!may_start(first_dir, false)) {
     return;
   }
   begin_command();
@@ -530,17 +538,23 @@ void Smd23e::start_home(int dir) {
   r.kind = Kind::Home;
   r.home_dir = dir;
   r.spec = *spec;
+  r.home_stage = reversed ? HomeStage::Back : HomeStage::Search;
   std::vector<Piece> pieces;
   append_ramp(pieces, vs(), spec->vp, spec->a, spec->shape);
   append_cruise(pieces, spec->vp, kInf);
-  const bool proximity = (cfg_.words[0] & ccw::kHomeProximityEnable) != 0;
-  if (!proximity && (limit_ahead || function_active(InputFunction::Home))) {
-    r.home_stage = HomeStage::Back; // profile A step 5 / profile C step 4
-    start_motion(std::move(r), std::move(pieces), -dir);
-    return;
-  }
-  r.home_stage = HomeStage::Search;
-  start_motion(std::move(r), std::move(pieces), dir);
+  start_motion(std::move(r), std::move(pieces), first_dir);
+}
+
+void Smd23e::homing_error() {
+  // "stop all motion and issue a Home Invalid error" (L1365); the bit is Input Error (L2836).
+  immediate_stop(); // also ends a homing pause
+  in_err_ = true;
+  pos_invalid_ = true;
+}
+
+bool Smd23e::limit_toward(int dir) const {
+  return p_.fault != Fault::IgnoredLimit &&
+         function_active(dir > 0 ? InputFunction::CwLimit : InputFunction::CcwLimit);
 }
 
 void Smd23e::home_next(HomeStage stage) {
@@ -729,7 +743,22 @@ void Smd23e::on_input(int input, Level level) {
 }
 
 void Smd23e::limit_active(int dir) {
-  if (p_.fault == Fault::IgnoredLimit || !run_) {
+  if (p_.fault == Fault::IgnoredLimit) {
+    return;
+  }
+  // Both limits active while finding home, moving or in a pause, is an error (L1367).
+  const auto homing = [this] { return (run_ && run_->kind == Kind::Home) || sched_.pending(home_pause_); };
+  if (homing() && limit_toward(1) && limit_toward(-1)) {
+    act(
+        [this, homing] {
+          if (homing()) {
+            homing_error();
+          }
+        },
+        true);
+    return;
+  }
+  if (!run_) {
     return;
   }
   const Kind kind = run_->kind;
@@ -751,9 +780,7 @@ void Smd23e::limit_active(int dir) {
     act(
         [this] {
           if (run_) {
-            immediate_stop();
-            in_err_ = true; // "Home Invalid" (L1365): Input Error
-            pos_invalid_ = true;
+            homing_error();
           }
         },
         true);

@@ -458,8 +458,15 @@ TEST(Ans1Device, BrakeStartOverrunOutputAndItsNeverFaultsVariant) {
     bench.device().configure_monitors(monitors);
     bench.input_at(10_ms + 3_us, 2, true);
     bench.quadrature_run(200_ms + 3_us, 100_us, 100, +1);
-    bench.run_until(150_ms);
+    // Sampled on the 11 ms tick: elapsed 50 ms (at the limit) at 61 ms, exceeded at 62 ms --
+    // the output goes off by the clock while the press has not moved yet
+    // (seeds/000_08a2edf5547d4d1e.txt:1056: "turn off a fault output if the starting time is
+    // exceeded").
+    bench.run_until(61_ms + 500_us);
     EXPECT_EQ(bench.pin(13), Level::High) << variant_name(v);
+    bench.run_until(62_ms + 500_us);
+    EXPECT_EQ(bench.pin(13), v == Variant::Correct ? Level::Low : Level::High) << variant_name(v);
+    EXPECT_EQ(bench.device().monitors().brake().status().completed_starts, 0U) << variant_name(v);
     bench.run_until(300_ms);
     EXPECT_EQ(bench.device().monitors().brake().status().completed_starts, 1U) << variant_name(v);
     EXPECT_GT(bench.device().monitors().brake().status().start_time_ms, 50) << variant_name(v);

@@ -274,5 +274,116 @@ TEST(BrakeMonitor, DisabledMonitorMeasuresNothing) {
   EXPECT_EQ(rig.brake.phase(), Phase::Idle);
 }
 
+// A press released at 50 ms that never moves. ans1 manual (seeds/000_08a2edf5547d4d1e.txt:1056):
+// the start time runs from release to motion > 2*CSC and the Start Time Limit turns the fault
+// output off "if the starting time is exceeded" -- exceeded by the clock, motion or not.
+TEST(BrakeMonitor, ReleasedPressThatNeverMovesTripsTheStartFaultWhenTheLimitExpires) {
+  for (const int limit : {1, 2, 59, 60, 61, 1000, 32766, 32767}) {
+    BrakeRig rig(setup_with(10, static_cast<std::uint16_t>(limit), 0));
+    rig.released = [](std::int64_t t) { return t >= 50; };
+    // Elapsed = limit ms is at the limit: not exceeded (one inclusive rule, like finish_start).
+    rig.run_to(50 + limit);
+    EXPECT_FALSE(rig.brake.start_fault()) << "limit " << limit;
+    rig.run_to(50 + limit + 1);
+    EXPECT_TRUE(rig.brake.start_fault()) << "limit " << limit;
+    EXPECT_EQ(rig.brake.phase(), Phase::Starting) << "limit " << limit; // the timer still runs
+    EXPECT_EQ(rig.brake.status().completed_starts, 0U);
+  }
+}
+
+TEST(BrakeMonitor, StartTimeOverflowIsRecordedWhileThePressStillHasNotMoved) {
+  // seeds/000_08a2edf5547d4d1e.txt:2616 (DA19 w4): "If the time exceeds 32,767 milliseconds, a
+  // value of 32,768 is recorded" -- recorded once exceeded, without waiting for motion.
+  BrakeRig rig(setup_with(10, 0, 0)); // limit 0: no fault [MODEL A44], the report still overflows
+  rig.released = [](std::int64_t t) { return t >= 50; };
+  rig.run_to(50 + 32767);
+  EXPECT_EQ(rig.brake.status().start_time_ms, 0);
+  rig.run_to(50 + 32768);
+  EXPECT_EQ(rig.brake.status().start_time_ms, 32768);
+  EXPECT_FALSE(rig.brake.start_fault());
+}
+
+TEST(BrakeMonitor, StartFaultTrippedByTheClockStaysWhenThePressFinallyMovesLate) {
+  // Released at 50, limit 60, motion > 2*CSC only at 200 (start time 150 > 60): tripped at
+  // 111 ms by the clock and still tripped when the late start is measured (L1056).
+  BrakeRig rig(setup_with(10, 60, 0));
+  rig.released = [](std::int64_t t) { return t >= 50; };
+  rig.pos = [](std::int64_t t) { return t < 200 ? 0 : 100; };
+  rig.run_to(111);
+  EXPECT_TRUE(rig.brake.start_fault());
+  rig.run_to(300);
+  EXPECT_EQ(rig.brake.status().start_time_ms, 150);
+  EXPECT_TRUE(rig.brake.start_fault());
+}
+
+TEST(BrakeMonitor, ClearErrorsHoldsWhileTheOverrunningStartIsStillTimed) {
+  // Cleared at 200 while the press still has not moved: the trip is once per cycle [MODEL A44,
+  // clearing not stated], so the fault stays cleared until the cycle is judged at motion.
+  BrakeRig rig(setup_with(10, 60, 0));
+  rig.released = [](std::int64_t t) { return t >= 50; };
+  rig.pos = [](std::int64_t t) { return t < 400 ? 0 : 100; };
+  rig.run_to(200);
+  ASSERT_TRUE(rig.brake.start_fault());
+  rig.brake.clear_errors();
+  rig.run_to(399);
+  EXPECT_FALSE(rig.brake.start_fault());
+  rig.run_to(400);
+  EXPECT_TRUE(rig.brake.start_fault()); // 350 ms > 60 ms, judged at motion
+}
+
+TEST(BrakeMonitor, NeverFaultsVariantDoesNotTripAStartThatNeverMoves) {
+  BrakeRig rig(setup_with(10, 60, 0), /*never_faults=*/true);
+  rig.released = [](std::int64_t t) { return t >= 50; };
+  rig.run_to(1000);
+  EXPECT_FALSE(rig.brake.start_fault());
+}
+
+// Brake applied at 100 ms while the press keeps turning at 41 counts/ms (a failed brake).
+// seeds/000_08a2edf5547d4d1e.txt:1042 and :1052: standstill is < CSC counts in 125 ms and 125 ms
+// is subtracted from the reported stop time, so standstill detected at tick t reports
+// t - 100 - 125. Still turning at tick 100 + limit + 125 means the stop time will be at least
+// limit + 1: the overrun is certain there and trips -- not one tick earlier.
+TEST(BrakeMonitor, BrakeAppliedWhileThePressKeepsTurningTripsTheStopFaultWhenTheLimitExpires) {
+  for (const int limit : {1, 2, 149, 150, 151, 2000, 32767}) {
+    BrakeRig rig(setup_with(10, 0, static_cast<std::uint16_t>(limit)));
+    rig.released = [](std::int64_t t) { return t < 100; };
+    rig.pos = [](std::int64_t t) { return 41 * t; };
+    rig.run_to(100 + limit + 124);
+    EXPECT_FALSE(rig.brake.stop_fault()) << "limit " << limit;
+    rig.run_to(100 + limit + 125);
+    EXPECT_TRUE(rig.brake.stop_fault()) << "limit " << limit;
+    EXPECT_EQ(rig.brake.phase(), Phase::Stopping) << "limit " << limit; // still timing the stop
+    EXPECT_EQ(rig.brake.status().completed_stops, 0U);
+  }
+}
+
+TEST(BrakeMonitor, StopFaultByTheClockAgreesWithTheMeasuredStopAroundTheLimit) {
+  // The press stops 150 ms after application (measured 150 ms, see W17 above). Sweep the limit
+  // across 150: over-limit iff 150 > limit, and the trip never comes before 100 + limit + 125.
+  for (int limit = 140; limit <= 160; ++limit) {
+    BrakeRig rig(setup_with(10, 0, static_cast<std::uint16_t>(limit)));
+    constant_speed_then_stop(rig);
+    rig.run_to(100 + limit + 124);
+    EXPECT_FALSE(rig.brake.stop_fault()) << "limit " << limit;
+    rig.run_to(1000);
+    EXPECT_EQ(rig.brake.status().stop_time_ms, 150);
+    EXPECT_EQ(rig.brake.stop_fault(), 150 > limit) << "limit " << limit;
+  }
+}
+
+TEST(BrakeMonitor, ClearErrorsHoldsWhileTheFailedBrakeIsStillTimed) {
+  // The same failed brake, stop limit 200: tripped at 100 + 200 + 125 = 425 ms, the cycle is
+  // still running then; Clear Errors clears it and the running cycle does not trip it again.
+  BrakeRig rig(setup_with(10, 0, 200));
+  rig.released = [](std::int64_t t) { return t < 100; };
+  rig.pos = [](std::int64_t t) { return 41 * t; };
+  rig.run_to(425);
+  EXPECT_TRUE(rig.brake.stop_fault());
+  rig.brake.clear_errors();
+  rig.run_to(5000);
+  EXPECT_FALSE(rig.brake.stop_fault());
+  EXPECT_EQ(rig.brake.phase(), Phase::Stopping);
+}
+
 } // namespace
 } // namespace hilrig::models::ans1

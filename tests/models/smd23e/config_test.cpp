@@ -167,6 +167,65 @@ TEST_F(Smd23eConfig, M12IdleCurrentDropsTo25PercentAfter1500ms) {
   EXPECT_EQ(dut.input_words()[8], 5);
 }
 
+// smd23e manual (seeds/003_7a93cebfafae55cd.txt:2350): "Changes to the Idle Current only take
+// effect at the end of the first move after re-configuration"; :781 the current drops to the
+// idle level after 1.5 s without motion; :1265 the percentage is the level it drops *to*.
+// 2.0 A motor current: 25 % reads 5, 75 % reads 15 (input word 8 = A x 10).
+TEST_F(Smd23eConfig, ReconfiguredIdleCurrentWaitsForTheEndOfTheFirstMove) {
+  configure(ConfigWords{.idle_percent = 25, .current10 = 20});
+  run_to(1500_ms);
+  ASSERT_EQ(dut.input_words()[8], 5);
+  configure(ConfigWords{.idle_percent = 75, .current10 = 20}); // at 1.5 s
+  run_to(1500_ms + 1499_ms);
+  EXPECT_EQ(dut.input_words()[8], 20);
+  run_to(1500_ms + 1500_ms);
+  EXPECT_EQ(dut.input_words()[8], 5); // idle again, still at the old 25 %
+  run_to(10_s);
+  EXPECT_EQ(dut.input_words()[8], 5);                        // however long it idles
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000}); // 10 s .. 11 s
+  EXPECT_EQ(dut.input_words()[8], 20);
+  run_to(11_s + 1499_ms);
+  EXPECT_EQ(dut.input_words()[8], 20);
+  run_to(11_s + 1500_ms);
+  EXPECT_EQ(dut.input_words()[8], 15); // the end of that move brought in 75 %
+}
+
+TEST_F(Smd23eConfig, OnlyTheLastIdleCurrentBeforeTheMoveIsTakenAtItsEnd) {
+  configure(ConfigWords{.idle_percent = 25, .current10 = 20});
+  configure(ConfigWords{.idle_percent = 100, .current10 = 20});
+  configure(ConfigWords{.idle_percent = 0, .current10 = 20});
+  run_to(1500_ms);
+  EXPECT_EQ(dut.input_words()[8], 5);                        // neither 100 % nor 0 % yet
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000}); // 1.5 s .. 2.5 s
+  run_to(2500_ms + 1500_ms);
+  EXPECT_EQ(dut.input_words()[8], 0); // 0 %: no holding current (:1261)
+  EXPECT_DOUBLE_EQ(dut.motor_current_amps(), 0.0);
+}
+
+TEST_F(Smd23eConfig, ReconfigurationThatKeepsTheIdleCurrentKeepsIt) {
+  // Sweep the new percentage around the old one: only a changed value waits for a move, and
+  // after the move each value is exactly what was configured.
+  for (const int percent : {49, 50, 51}) {
+    const auto idle = static_cast<std::uint16_t>(percent);
+    Scheduler s2;
+    Smd23e unit(s2);
+    const auto cfg = [&](std::uint16_t pct, std::uint16_t steps) {
+      ConfigWords c{.idle_percent = pct, .current10 = 20};
+      c.steps_per_turn = steps;
+      unit.write_outputs(config_block(c));
+      unit.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+    };
+    cfg(50, 2048);
+    cfg(idle, 4096); // a re-configuration (steps/turn changed too)
+    s2.run_until(1500_ms);
+    EXPECT_EQ(unit.input_words()[8], 10) << idle; // 50 % of 2.0 A until a move ends
+    unit.write_outputs(block(0, kDrive, MoveWords{.value = 1000}));
+    unit.write_outputs(block(msw::kRelative, kDrive, MoveWords{.value = 1000}));
+    s2.run_until(2500_ms + 1500_ms);
+    EXPECT_DOUBLE_EQ(unit.motor_current_amps(), 2.0 * idle / 100.0) << idle;
+  }
+}
+
 TEST_F(Smd23eConfig, M19TenWordsEachWay) {
   std::array<std::uint16_t, 10> buf{};
   EXPECT_EQ(dut.read_input_registers(0, buf), RegisterStatus::Ok);

@@ -556,5 +556,224 @@ TEST_F(Smd23eMoves, FindHomeWithoutAHomeInputIsACommandError) {
   EXPECT_TRUE(bit1(sw1::kStopped));
 }
 
+// ---- Homing with both overtravel limits wired ------------------------------------------------
+// smd23e manual (seeds/003_7a93cebfafae55cd.txt):
+//   :1365 hitting the limit of the opposite direction while homing is an Immediate Stop with a
+//         "Home Invalid" error -- the status bit is Input Error (:2836);
+//   :1367 "The SMD23E will stop with an error if both overtravel limits are activated while the
+//         unit is trying to find the home position";
+//   :1335 Home already active: the profile starts at step 5 (reverse search);
+//   :1382 the search-direction limit already active: the profile starts at step 4 (reverse).
+// A limit is judged on its level whenever a run sets off, not only on its edge.
+class Smd23eHomingLimits : public Smd23eBench {
+protected:
+  // Input 1 Home (110), input 2 CW limit (001), input 3 CCW limit (010).
+  static constexpr std::uint16_t kHomeAndBothLimits = 0b010'001'110;
+  void SetUp() override { configure(ConfigWords{.control = kHomeAndBothLimits}); }
+  TestLine& limit(int dir) { return dir > 0 ? in2 : in3; }
+  void expect_home_invalid() {
+    EXPECT_TRUE(bit1(sw1::kStopped));
+    EXPECT_TRUE(bit1(sw1::kInputError));
+    EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+    EXPECT_FALSE(bit1(sw1::kHomed));
+    EXPECT_FALSE(dut.moving());
+  }
+  // The Profile A timings of Smd23eHoming.ProfileAHomeInputOnly: search stop, 2 s pause, reverse.
+  static constexpr double kReverseAt = 0.1 + 940.0 / 1100.0 + 0.1 + 2.0;
+};
+
+TEST_F(Smd23eHomingLimits, BothLimitsActiveWhenFindHomeArrivesStopsWithAnError) {
+  // Every requested direction and Home level: nothing moves, Input Error (:1367).
+  for (const std::uint16_t bit : {msw::kHomeCw, msw::kHomeCcw}) {
+    for (const Level home : {Level::Low, Level::High}) {
+      configure(ConfigWords{.control = kHomeAndBothLimits});
+      command(msw::kResetErrors);
+      in1.set(home);
+      in2.set(Level::High);
+      in3.set(Level::High);
+      const std::size_t runs = dut.runs().size();
+      command(bit);
+      run_to(sched.now() + 3_s);
+      EXPECT_EQ(dut.runs().size(), runs) << bit << " home " << static_cast<int>(home);
+      EXPECT_TRUE(bit1(sw1::kInputError)) << bit << " home " << static_cast<int>(home);
+      EXPECT_FALSE(bit1(sw1::kHomed));
+      in1.set(Level::Low);
+      in2.set(Level::Low);
+      in3.set(Level::Low);
+    }
+  }
+}
+
+TEST_F(Smd23eHomingLimits, OppositeLimitActiveWhenTheReverseSearchStartsAtOnce) {
+  // Home already active (:1335): the first run is the reverse search, toward the opposite
+  // limit, which is already active -> refused with Input Error, nothing moves; both directions.
+  for (const int dir : {+1, -1}) {
+    configure(ConfigWords{.control = kHomeAndBothLimits});
+    command(msw::kResetErrors);
+    in1.set(Level::High);
+    limit(-dir).set(Level::High);
+    const std::size_t runs = dut.runs().size();
+    command(dir > 0 ? msw::kHomeCw : msw::kHomeCcw);
+    run_to(sched.now() + 3_s);
+    EXPECT_EQ(dut.runs().size(), runs) << dir;
+    EXPECT_TRUE(bit1(sw1::kInputError)) << dir;
+    EXPECT_FALSE(bit1(sw1::kHomed)) << dir;
+    in1.set(Level::Low);
+    limit(-dir).set(Level::Low);
+  }
+}
+
+TEST_F(Smd23eHomingLimits, OppositeLimitAloneDoesNotBlockASearchAwayFromIt) {
+  // Sitting on the CCW limit, +Find Home searches CW (away from it): it starts, no error.
+  in3.set(Level::High);
+  command(msw::kHomeCw);
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  EXPECT_FALSE(bit1(sw1::kInputError));
+}
+
+TEST_F(Smd23eHomingLimits, OppositeLimitStillActiveWhenTheReverseSearchStartsAfterThePause) {
+  // +Find Home from the CCW limit (still active, no edge ever comes): Home at 1000 stops the
+  // search; after the 2 s pause the reverse search would set off toward the active CCW limit.
+  // Judged on the level: the unit stops with the error at the pause end, no CCW run.
+  in3.set(Level::High);
+  command(msw::kHomeCw);
+  at(when_at(1000), in1, Level::High);
+  run_to(Nanos::from_seconds(kReverseAt) - 1_us);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_FALSE(bit1(sw1::kInputError)); // only when it would set off
+  sched.run_until_idle();
+  expect_home_invalid();
+  EXPECT_NEAR(sched.now().seconds(), kReverseAt, 1e-6);
+  EXPECT_EQ(dut.runs().back().dir, +1); // the CW search was the last run
+}
+
+TEST_F(Smd23eHomingLimits, OppositeLimitTurningActiveInThePauseStopsTheReverseSearch) {
+  // The same with the CCW limit's edge during the first pause (no motion then): judged when
+  // the reverse search sets off.
+  command(msw::kHomeCw);
+  at(when_at(1000), in1, Level::High);
+  at(Nanos::from_seconds(kReverseAt - 1.0), in3, Level::High);
+  sched.run_until_idle();
+  expect_home_invalid();
+  EXPECT_EQ(dut.runs().back().dir, +1);
+}
+
+TEST_F(Smd23eHomingLimits, OppositeLimitHitDuringTheReverseSearchIsAnError) {
+  // Reverse search (CCW) under way, Home still active, the CCW limit turns active (:1365).
+  in1.set(Level::High);
+  command(msw::kHomeCw); // starts at step 5, CCW
+  ASSERT_TRUE(bit1(sw1::kMovingCcw));
+  at(500_ms, in3, Level::High);
+  run_to(600_ms);
+  expect_home_invalid();
+}
+
+TEST_F(Smd23eHomingLimits, ProfileCWithOnlyTheSearchLimitActiveAtTheCommandReverses) {
+  // The neighbour of the error cases: the CW limit alone at the command -> step 4, the reverse
+  // search, no error (:1382).
+  in2.set(Level::High);
+  command(msw::kHomeCw);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  EXPECT_FALSE(bit1(sw1::kInputError));
+}
+
+TEST_F(Smd23eHomingLimits, ProfileCWithOnlyTheSearchLimitHitWhileSearchingReverses) {
+  // The CW limit alone hit while searching: immediate stop, 2 s pause, reverse, no error
+  // (:1365, steps 3-4).
+  command(msw::kHomeCw);
+  at(500_ms, in2, Level::High);
+  run_to(2500_ms + 200_ms);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  EXPECT_FALSE(bit1(sw1::kInputError));
+}
+
+TEST_F(Smd23eHomingLimits, BothLimitsActiveDuringTheSearchStopAtOnceInsteadOfReversing) {
+  // Started on the CCW limit (still active), searching CW; the CW limit turns active: both are
+  // active -> stop with the error (:1367), not the Profile C reversal.
+  in3.set(Level::High);
+  command(msw::kHomeCw);
+  at(500_ms, in2, Level::High);
+  run_to(500_ms);
+  expect_home_invalid();
+  sched.run_until_idle();
+  EXPECT_FALSE(dut.moving());
+  EXPECT_EQ(dut.runs().back().dir, +1);
+}
+
+TEST_F(Smd23eHomingLimits, BothLimitsActiveDuringThePauseEndTheHomingAtOnce) {
+  // Profile C: the CW limit stops the search at 500 ms (pause until 2.5 s); the CCW limit
+  // turns active at 1.5 s, in the pause: both active -> the error then, the pause ends.
+  command(msw::kHomeCw);
+  at(500_ms, in2, Level::High);
+  at(1500_ms, in3, Level::High);
+  run_to(1499_ms);
+  EXPECT_FALSE(bit1(sw1::kInputError));
+  run_to(1500_ms);
+  expect_home_invalid();
+  run_to(4_s);
+  EXPECT_EQ(dut.runs().back().dir, +1); // no reverse search after the pause
+}
+
+TEST_F(Smd23eHomingLimits, SearchLimitStillActiveWhenTheCreepStartsIsAnError) {
+  // Profile C with a long CW limit cam that is still active when the creep (step 7) would set
+  // off CW toward it: the run is judged on the level -> error, no creep.
+  command(msw::kHomeCw);
+  at(500_ms, in2, Level::High); // search stops at 500, pause, reverse CCW from 2.5 s
+  run_to(2600_ms);
+  ASSERT_TRUE(bit1(sw1::kMovingCcw));
+  in1.set(Level::High);
+  at(2700_ms, in1, Level::Low); // leaving Home: decelerate, second pause, then creep CW
+  sched.run_until_idle();
+  expect_home_invalid();
+  EXPECT_EQ(dut.runs().back().dir, -1); // the reverse search was the last run
+}
+
+TEST_F(Smd23eHomingLimits, CcwFindHomeMirrorsTheLevelRules) {
+  // -Find Home from the CW limit (the opposite one for CCW) with Home at -1000: the reverse
+  // search would set off CW toward the still active CW limit -> error at the pause end.
+  in2.set(Level::High);
+  command(msw::kHomeCcw);
+  ASSERT_TRUE(bit1(sw1::kMovingCcw));
+  at(when_at(-1000), in1, Level::High);
+  sched.run_until_idle();
+  expect_home_invalid();
+  EXPECT_NEAR(sched.now().seconds(), kReverseAt, 1e-6);
+}
+
+TEST_F(Smd23eHomingLimits, ProximityProfileWithTheSearchLimitActiveStartsReversed) {
+  // [MODEL] The manual describes the step-4 start only without the proximity bit (:1382); a
+  // search-direction limit met while searching reverses whatever the profile, so an active one
+  // at the command does the same instead of driving into it.
+  configure(ConfigWords{.control = kHomeAndBothLimits | ccw::kHomeProximityEnable});
+  in2.set(Level::High);
+  command(msw::kHomeCw);
+  EXPECT_TRUE(bit1(sw1::kMovingCcw));
+  EXPECT_FALSE(bit1(sw1::kInputError));
+}
+
+TEST_F(Smd23eHomingLimits, ProximityProfileWithBothLimitsActiveIsAnError) {
+  configure(ConfigWords{.control = kHomeAndBothLimits | ccw::kHomeProximityEnable});
+  in2.set(Level::High);
+  in3.set(Level::High);
+  command(msw::kHomeCw);
+  EXPECT_FALSE(dut.moving());
+  EXPECT_TRUE(bit1(sw1::kInputError));
+}
+
+class Smd23eHomingIgnoredLimit : public Smd23eBench {
+protected:
+  Smd23eHomingIgnoredLimit() : Smd23eBench(Params{.fault = Fault::IgnoredLimit}) {}
+};
+
+TEST_F(Smd23eHomingIgnoredLimit, TheIgnoredLimitVariantDrivesOnWithBothLimitsActive) {
+  // The fault variant a campaign must catch: limits have no effect, so it searches anyway.
+  configure(ConfigWords{.control = 0b010'001'110});
+  in2.set(Level::High);
+  in3.set(Level::High);
+  command(msw::kHomeCw);
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  EXPECT_FALSE(bit1(sw1::kInputError));
+}
+
 } // namespace
 } // namespace hilrig::models::smd23e::test
