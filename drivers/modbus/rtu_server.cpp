@@ -2,24 +2,27 @@
 
 #include <modbus/modbus.h>
 #include <poll.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
+#include <ctime>
 #include <span>
 #include <stdexcept>
-
-#include "drivers/modbus/pdu_handler.hpp"
 
 namespace hilrig::drivers::modbus {
 
 namespace {
 
-constexpr std::size_t kCrcLength = 2;
-// How long a foreign unit's reply may take to follow its request before the line is
-// taken as idle again [MODEL: Modbus leaves the response timeout to the master].
-constexpr int kForeignReplyWindowUs = 50'000;
+// Waits up to `timeout` (to the nanosecond: 3.5 characters are under 2 ms) for `events`.
+bool wait_for(int fd, short events, Nanos timeout) {
+  pollfd pfd{fd, events, 0};
+  const timespec ts{static_cast<time_t>(timeout.count() / 1'000'000'000),
+                    static_cast<long>(timeout.count() % 1'000'000'000)};
+  return ::ppoll(&pfd, 1, &ts, nullptr) > 0 && (pfd.revents & events) != 0;
+}
 
 char parity_letter(Parity p) { return p == Parity::Even ? 'E' : p == Parity::Odd ? 'O' : 'N'; }
 
@@ -40,13 +43,15 @@ modbus_t* new_context(const RtuServerOptions& o) {
 } // namespace
 
 RtuServer::RtuServer(RegisterMap& map, RtuServerOptions options)
-    : map_(map), options_(std::move(options)), ctx_(new_context(options_)) {
+    : map_(map), options_(std::move(options)), ctx_(new_context(options_)),
+      silence_(rtu_silence(options_.format)) {
   if (modbus_connect(ctx_) != 0) {
     const std::string why = modbus_strerror(errno);
     modbus_free(ctx_);
     throw std::runtime_error("modbus rtu: cannot open " + options_.device + ": " + why);
   }
   owns_device_ = true;
+  fd_ = modbus_get_socket(ctx_);
   if (options_.rs485) {
     if (modbus_rtu_set_serial_mode(ctx_, MODBUS_RTU_RS485) == 0) {
       rs485_active_ = true;
@@ -58,8 +63,8 @@ RtuServer::RtuServer(RegisterMap& map, RtuServerOptions options)
 }
 
 RtuServer::RtuServer(RegisterMap& map, int fd, RtuServerOptions options)
-    : map_(map), options_(std::move(options)), ctx_(new_context(options_)) {
-  modbus_set_socket(ctx_, fd);
+    : map_(map), options_(std::move(options)), ctx_(new_context(options_)), fd_(fd),
+      silence_(rtu_silence(options_.format)) {
   if (options_.rs485) {
     rs485_note_ = "RS-485 mode not supported by a pty";
   }
@@ -68,8 +73,6 @@ RtuServer::RtuServer(RegisterMap& map, int fd, RtuServerOptions options)
 RtuServer::~RtuServer() {
   if (owns_device_) {
     modbus_close(ctx_);
-  } else {
-    modbus_set_socket(ctx_, -1); // the fd belongs to the caller
   }
   modbus_free(ctx_);
 }
@@ -81,73 +84,76 @@ void RtuServer::run(const std::atomic<bool>& stop) {
 }
 
 void RtuServer::serve_once() {
-  pollfd pfd{modbus_get_socket(ctx_), POLLIN, 0};
-  const int timeout_ms =
-      static_cast<int>(std::max<std::int64_t>(1, options_.poll_period.count() / 1'000'000));
-  const int ready = ::poll(&pfd, 1, timeout_ms);
+  const bool began = wait_readable(options_.poll_period) && read_more();
   if (tick_) {
     tick_();
   }
-  if (ready > 0 && (pfd.revents & POLLIN) != 0) {
-    answer();
-  }
-}
-
-void RtuServer::answer() {
-  std::array<std::uint8_t, MODBUS_RTU_MAX_ADU_LENGTH> req{};
-  const int rc = modbus_receive(ctx_, req.data());
-  if (rc < 0) {
-    if (errno == EMBBADCRC) {
-      ++stats_.crc_errors; // dropped: the master repeats after its timeout
-    }
-    return; // a frame cut short (byte timeout) is dropped the same way
-  }
-  if (rc == 0) {
-    skip_foreign_reply();
-    ++stats_.other_unit; // counted once the line is idle again
+  if (!began) {
     return;
   }
-  ++stats_.requests;
-  const std::uint8_t unit = req[0];
-  const bool broadcast = unit == MODBUS_BROADCAST_ADDRESS;
-  if (broadcast) {
-    ++stats_.broadcasts;
+  while (pending_ > 0) {
+    RtuFrame frame = next_rtu_frame(std::span(in_.data(), pending_), false);
+    if (frame.kind == RtuFrameKind::Incomplete) {
+      if (wait_readable(silence_) && read_more()) {
+        continue;
+      }
+      frame = next_rtu_frame(std::span(in_.data(), pending_), true); // the line fell silent
+    }
+    take(frame);
   }
-  if (tick_) {
-    tick_();
-  }
-  const auto len = static_cast<std::size_t>(rc);
-  const std::span<const std::uint8_t> pdu(req.data() + 1, len - 1 - kCrcLength);
-  const PduResult result = handle_pdu(map_, pdu);
-  if (broadcast) {
-    return; // broadcasts are never answered, not even with an exception
-  }
-  std::array<std::uint8_t, MODBUS_RTU_MAX_ADU_LENGTH> rsp{};
-  std::size_t n = 0;
-  rsp[n++] = unit;
-  if (result.status != RegisterStatus::Ok) {
-    ++stats_.exceptions;
-    rsp[n++] = static_cast<std::uint8_t>(pdu[0] | 0x80U);
-    rsp[n++] = static_cast<std::uint8_t>(result.status);
-  } else {
-    std::memcpy(rsp.data() + n, result.response.data(), result.response.size());
-    n += result.response.size();
-  }
-  // libmodbus appends the CRC.
-  modbus_send_raw_request(ctx_, rsp.data(), static_cast<int>(n));
 }
 
-// libmodbus expects the addressed unit's reply to follow a foreign request and reads it as
-// a confirmation to skip. Do that now, within a bounded window, so that a silent foreign
-// unit cannot make the server swallow the next request meant for it.
-void RtuServer::skip_foreign_reply() {
-  std::array<std::uint8_t, MODBUS_RTU_MAX_ADU_LENGTH> sink{};
-  std::uint32_t sec = 0;
-  std::uint32_t usec = 0;
-  modbus_get_response_timeout(ctx_, &sec, &usec);
-  modbus_set_response_timeout(ctx_, 0, kForeignReplyWindowUs);
-  modbus_receive(ctx_, sink.data());
-  modbus_set_response_timeout(ctx_, sec, usec);
+bool RtuServer::wait_readable(Nanos timeout) const { return wait_for(fd_, POLLIN, timeout); }
+
+bool RtuServer::read_more() {
+  const ssize_t n = ::read(fd_, in_.data() + pending_, in_.size() - pending_);
+  if (n <= 0) {
+    return false;
+  }
+  pending_ += static_cast<std::size_t>(n);
+  return true;
+}
+
+// Acts on the first frame of the buffer and drops its bytes.
+void RtuServer::take(const RtuFrame& frame) {
+  const std::span<const std::uint8_t> bytes(in_.data(), frame.length);
+  if (frame.kind == RtuFrameKind::BadCrc) {
+    ++stats_.crc_errors; // dropped: the master repeats after its timeout
+  } else {
+    if (tick_) {
+      tick_();
+    }
+    out_.clear();
+    const RtuAnswer a = answer_rtu_request(map_, options_.unit, bytes, out_);
+    if (!a.addressed) {
+      ++stats_.other_unit;
+    } else {
+      ++stats_.requests;
+      if (a.broadcast) {
+        ++stats_.broadcasts;
+      } else if (a.status != RegisterStatus::Ok) {
+        ++stats_.exceptions;
+      }
+      send(out_);
+    }
+  }
+  std::copy(in_.begin() + static_cast<std::ptrdiff_t>(frame.length),
+            in_.begin() + static_cast<std::ptrdiff_t>(pending_), in_.begin());
+  pending_ -= frame.length;
+}
+
+void RtuServer::send(std::span<const std::uint8_t> bytes) {
+  while (!bytes.empty()) {
+    const ssize_t w = ::write(fd_, bytes.data(), bytes.size());
+    if (w < 0 && (errno == EAGAIN || errno == EINTR)) {
+      (void)wait_for(fd_, POLLOUT, options_.poll_period);
+      continue;
+    }
+    if (w <= 0) {
+      return; // the line is gone; the master's timeout tells it
+    }
+    bytes = bytes.subspan(static_cast<std::size_t>(w));
+  }
 }
 
 } // namespace hilrig::drivers::modbus

@@ -1,20 +1,26 @@
 #pragma once
-// A Modbus RTU server on libmodbus that serves any RegisterMap over a serial device or a pty.
-// Framing and CRC checking come from libmodbus (modbus_receive); the protocol logic is
-// handle_pdu(), shared with TcpServer. It answers only its own unit id; a broadcast (unit 0)
-// write is carried out and never answered (Modbus over Serial Line v1.02, §2.2); a frame with
-// a bad CRC is counted and dropped, and the server keeps listening.
+// A Modbus RTU server that serves any RegisterMap over a serial device or a pty. libmodbus
+// opens and configures the serial line (termios, RS-485 mode); frames are cut and answered
+// by rtu_framing.hpp (by length when the function code fixes it, else at the 3.5-character
+// silence), so an unknown function gets exception 01 and the next request is read cleanly.
+// It answers only its own unit id; a broadcast (unit 0) write is carried out and never
+// answered (Modbus over Serial Line v1.02, §2.2); a frame with a bad CRC is counted and
+// dropped, and the server keeps listening.
 // Single-threaded: the map is only touched from run()/serve_once(); stats() may be read from
 // any thread.
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "core/register_map.hpp"
 #include "core/serial.hpp"
 #include "core/time.hpp"
+#include "drivers/modbus/rtu_framing.hpp"
 
 typedef struct _modbus modbus_t; // NOLINT: libmodbus's own opaque type
 
@@ -59,12 +65,15 @@ public:
 
   // Serves until `stop` becomes true (checked at least once per poll period).
   void run(const std::atomic<bool>& stop);
-  // One round: waits up to the poll period, answers a frame if one arrived.
+  // One round: waits up to the poll period for a frame to begin, then reads until it is
+  // whole (by its length, or a silence of 3.5 characters) and answers it.
   void serve_once();
 
 private:
-  void answer();
-  void skip_foreign_reply();
+  bool wait_readable(Nanos timeout) const;
+  bool read_more();
+  void take(const RtuFrame& frame);
+  void send(std::span<const std::uint8_t> bytes);
 
   RegisterMap& map_;
   RtuServerOptions options_;
@@ -72,6 +81,11 @@ private:
   bool owns_device_ = false;
   bool rs485_active_ = false;
   std::string rs485_note_;
+  int fd_ = -1;
+  Nanos silence_;
+  std::array<std::uint8_t, 2 * kMaxRtuAdu> in_{}; // bytes since the line was last idle
+  std::size_t pending_ = 0;
+  std::vector<std::uint8_t> out_;
   std::function<void()> tick_;
   RtuServerStats stats_;
 };

@@ -1,188 +1,281 @@
 #include "drivers/modbus/tcp_server.hpp"
 
-#include <algorithm>
-#include <arpa/inet.h>
-#include <modbus/modbus.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/write.hpp>
 
+#include <algorithm>
 #include <array>
-#include <cerrno>
-#include <cstring>
+#include <chrono>
+#include <list>
 #include <span>
 #include <stdexcept>
+#include <vector>
 
-#include "drivers/modbus/pdu_handler.hpp"
+#include "drivers/modbus/tcp_framing.hpp"
 
 namespace hilrig::drivers::modbus {
 
 namespace {
-constexpr int kMbapLength = 7; // transaction id, protocol id, length, unit id
 
-[[noreturn]] void fail(const std::string& what) {
-  throw std::runtime_error(what + ": " + std::strerror(errno));
-}
+namespace asio = boost::asio;
+using tcp = asio::ip::tcp;
+using Clock = std::chrono::steady_clock;
+using boost::system::error_code;
 
-bool send_all(int fd, const std::uint8_t* data, std::size_t n) {
-  while (n > 0) {
-    const ssize_t w = ::send(fd, data, n, MSG_NOSIGNAL);
-    if (w <= 0) {
-      if (w < 0 && errno == EINTR) {
-        continue;
-      }
-      return false;
-    }
-    data += w;
-    n -= static_cast<std::size_t>(w);
-  }
-  return true;
-}
+std::chrono::nanoseconds chrono(Nanos t) { return std::chrono::nanoseconds(t.count()); }
+
+struct Connection {
+  explicit Connection(tcp::socket s) : socket(std::move(s)) {}
+  tcp::socket socket;
+  std::array<std::uint8_t, kMaxTcpAdu> in{}; // one whole frame fits: the rest waits in the kernel
+  std::size_t in_length = 0;
+  std::vector<std::uint8_t> pending;   // replies not yet handed to the socket
+  std::vector<std::uint8_t> in_flight; // replies the socket is writing
+  bool writing = false;
+  bool open = true;
+  Clock::time_point last_activity;
+  std::list<std::shared_ptr<Connection>>::iterator self;
+
+  [[nodiscard]] std::size_t held() const { return pending.size() + in_flight.size(); }
+};
+using ConnectionPtr = std::shared_ptr<Connection>;
+
 } // namespace
 
-TcpServer::TcpServer(RegisterMap& map, TcpServerOptions options) : map_(map), options_(std::move(options)) {
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(options_.port);
-  if (::inet_pton(AF_INET, options_.bind.c_str(), &addr.sin_addr) != 1) {
+class TcpServer::Impl {
+public:
+  Impl(RegisterMap& map, TcpServerOptions options);
+
+  void run(const std::atomic<bool>& stop);
+
+  RegisterMap& map_;
+  TcpServerOptions options_;
+  asio::io_context io_;
+  tcp::acceptor acceptor_;
+  asio::steady_timer ticker_;
+  std::uint16_t port_ = 0;
+  std::function<void()> tick_;
+  TcpServerStats stats_;
+
+private:
+  void accept();
+  void admit(tcp::socket socket);
+  void read(const ConnectionPtr& c);
+  bool take_frames(const ConnectionPtr& c);
+  void write(const ConnectionPtr& c);
+  void close(const ConnectionPtr& c);
+  void arm_ticker();
+  void close_idle();
+  void count_open();
+
+  std::list<ConnectionPtr> connections_;
+  const std::atomic<bool>* stop_ = nullptr;
+  bool accepting_ = false;
+};
+
+TcpServer::Impl::Impl(RegisterMap& map, TcpServerOptions options)
+    : map_(map), options_(std::move(options)), acceptor_(io_), ticker_(io_) {
+  error_code ec;
+  const asio::ip::address_v4 address = asio::ip::make_address_v4(options_.bind, ec);
+  if (ec) {
     throw std::runtime_error("modbus tcp: not an IPv4 address: " + options_.bind);
   }
-  listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  if (listen_fd_ < 0) {
-    fail("modbus tcp: socket");
+  const tcp::endpoint at(address, options_.port);
+  if (acceptor_.open(at.protocol(), ec) || acceptor_.set_option(tcp::acceptor::reuse_address(true), ec) ||
+      acceptor_.bind(at, ec) || acceptor_.listen(asio::socket_base::max_listen_connections, ec)) {
+    throw std::runtime_error("modbus tcp: cannot listen on " + options_.bind + ":" +
+                             std::to_string(options_.port) + ": " + ec.message());
   }
-  const int yes = 1;
-  ::setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  if (::bind(listen_fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0 ||
-      ::listen(listen_fd_, options_.max_connections) != 0) {
-    const int err = errno;
-    ::close(listen_fd_);
-    errno = err;
-    fail("modbus tcp: cannot listen on " + options_.bind + ":" + std::to_string(options_.port));
-  }
-  socklen_t len = sizeof addr;
-  ::getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len);
-  port_ = ntohs(addr.sin_port);
-  // The context only frames requests and builds exception replies; we own the sockets.
-  ctx_ = modbus_new_tcp(options_.bind.c_str(), port_);
-  if (ctx_ == nullptr) {
-    ::close(listen_fd_);
-    fail("modbus tcp: modbus_new_tcp");
-  }
-  modbus_set_indication_timeout(ctx_, 1, 0); // a half-sent request cannot stall the server
+  port_ = acceptor_.local_endpoint().port();
 }
 
-TcpServer::~TcpServer() {
-  for (int fd : clients_) {
-    ::close(fd);
-  }
-  if (listen_fd_ >= 0) {
-    ::close(listen_fd_);
-  }
-  if (ctx_ != nullptr) {
-    modbus_set_socket(ctx_, -1);
-    modbus_free(ctx_);
-  }
+void TcpServer::Impl::run(const std::atomic<bool>& stop) {
+  stop_ = &stop;
+  accept();
+  arm_ticker();
+  io_.run();
+  io_.restart();
 }
 
-void TcpServer::run(const std::atomic<bool>& stop) {
-  while (!stop.load()) {
-    serve_once();
-  }
+void TcpServer::Impl::accept() {
+  accepting_ = true;
+  acceptor_.async_accept([this](const error_code& ec, tcp::socket socket) {
+    accepting_ = false;
+    if (ec == asio::error::operation_aborted || !acceptor_.is_open()) {
+      return;
+    }
+    if (!ec) {
+      admit(std::move(socket));
+      accept();
+    } // else (out of descriptors, say): the ticker tries again next period
+  });
 }
 
-void TcpServer::serve_once() {
-  std::array<pollfd, 17> fds{};
-  std::size_t n = 0;
-  fds[n++] = {listen_fd_, POLLIN, 0};
-  for (int fd : clients_) {
-    if (n < fds.size()) {
-      fds[n++] = {fd, POLLIN, 0};
+void TcpServer::Impl::admit(tcp::socket socket) {
+  if (connections_.size() >= options_.limits.max_connections) {
+    const auto longest_idle = std::min_element(
+        connections_.begin(), connections_.end(),
+        [](const ConnectionPtr& a, const ConnectionPtr& b) { return a->last_activity < b->last_activity; });
+    if (longest_idle != connections_.end()) {
+      ++stats_.replaced;
+      close(ConnectionPtr(*longest_idle));
     }
   }
-  const int timeout_ms =
-      static_cast<int>(std::max<std::int64_t>(1, options_.poll_period.count() / 1'000'000));
-  const int ready = ::poll(fds.data(), n, timeout_ms);
-  if (tick_) {
-    tick_();
-  }
-  if (ready <= 0) {
-    return;
-  }
-  for (std::size_t i = n; i-- > 1;) {
-    if ((fds[i].revents & (POLLIN | POLLHUP | POLLERR)) != 0 && !answer(fds[i].fd)) {
-      close_client(i - 1);
-    }
-  }
-  if ((fds[0].revents & POLLIN) != 0) {
-    accept_client();
-  }
-}
-
-void TcpServer::accept_client() {
-  const int fd = ::accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
-  if (fd < 0) {
-    return;
-  }
-  if (static_cast<int>(clients_.size()) >= options_.max_connections) {
-    ::close(fd);
-    return;
-  }
-  clients_.push_back(fd);
+  error_code ignored;
+  socket.set_option(tcp::no_delay(true), ignored); // a reply is one small segment: send it now
+  auto c = std::make_shared<Connection>(std::move(socket));
+  c->last_activity = Clock::now();
+  c->self = connections_.insert(connections_.end(), c);
   ++stats_.connections;
+  count_open();
+  read(c);
 }
 
-void TcpServer::close_client(std::size_t index) {
-  ::close(clients_[index]);
-  clients_.erase(clients_.begin() + static_cast<std::ptrdiff_t>(index));
+void TcpServer::Impl::read(const ConnectionPtr& c) {
+  const asio::mutable_buffer room(c->in.data() + c->in_length, c->in.size() - c->in_length);
+  c->socket.async_read_some(room, [this, c](const error_code& ec, std::size_t n) {
+    if (!c->open) {
+      return;
+    }
+    if (ec) {
+      close(c); // the client left (EOF) or the socket failed
+      return;
+    }
+    c->in_length += n;
+    c->last_activity = Clock::now();
+    if (take_frames(c)) {
+      write(c);
+      read(c);
+    }
+  });
 }
 
-bool TcpServer::answer(int fd) {
-  std::array<std::uint8_t, MODBUS_TCP_MAX_ADU_LENGTH> req{};
-  modbus_set_socket(ctx_, fd);
-  const int rc = modbus_receive(ctx_, req.data());
-  if (rc <= 0) {
-    return rc == 0; // -1: closed, timed out or garbled beyond framing
-  }
-  ++stats_.requests;
-  const auto len = static_cast<std::size_t>(rc);
-  // libmodbus frames by function code; bytes the MBAP length announces beyond that
-  // (an unknown function's data) are drained so the next request parses cleanly.
-  const std::size_t announced = 6U + ((std::size_t{req[4]} << 8U) | req[5]);
-  bool length_mismatch = announced != len;
-  for (std::size_t extra = announced > len ? announced - len : 0; extra > 0;) {
-    std::array<std::uint8_t, 256> sink{};
-    const ssize_t r = ::recv(fd, sink.data(), std::min(extra, sink.size()), MSG_DONTWAIT);
-    if (r <= 0) {
+// Answers every whole frame in the input buffer; false when the connection had to be closed.
+bool TcpServer::Impl::take_frames(const ConnectionPtr& c) {
+  std::size_t at = 0;
+  for (;;) {
+    const std::span<const std::uint8_t> rest(c->in.data() + at, c->in_length - at);
+    const TcpFrame frame = next_tcp_frame(rest);
+    if (frame.kind == TcpFrameKind::Incomplete) {
       break;
     }
-    extra -= static_cast<std::size_t>(r);
+    if (frame.kind == TcpFrameKind::Invalid) {
+      ++stats_.bad_frames;
+      close(c);
+      return false;
+    }
+    if (frame.kind == TcpFrameKind::Foreign) {
+      ++stats_.discarded;
+    } else {
+      if (tick_) {
+        tick_();
+      }
+      const std::size_t before = c->pending.size();
+      const RegisterStatus status = answer_tcp_request(map_, rest.first(frame.length), c->pending);
+      stats_.buffered_bytes += c->pending.size() - before;
+      ++stats_.requests;
+      if (status != RegisterStatus::Ok) {
+        ++stats_.exceptions;
+      }
+      if (c->held() > options_.limits.max_output_bytes) {
+        ++stats_.overflowed; // it sends and does not read: it may not hold the server's memory
+        close(c);
+        return false;
+      }
+    }
+    at += frame.length;
   }
-  if (tick_) {
-    tick_();
-  }
-  const std::span<const std::uint8_t> pdu(req.data() + kMbapLength, len - kMbapLength);
-  PduResult result = handle_pdu(map_, pdu);
-  if (length_mismatch && result.status == RegisterStatus::Ok && pdu[0] != 0) {
-    // A request whose length field disagrees with its function's format is malformed.
-    result.status = RegisterStatus::IllegalDataValue;
-  }
-  if (result.status != RegisterStatus::Ok) {
-    ++stats_.exceptions;
-    return modbus_reply_exception(ctx_, req.data(), static_cast<unsigned>(result.status)) > 0;
-  }
-  std::array<std::uint8_t, MODBUS_TCP_MAX_ADU_LENGTH> adu{};
-  const std::size_t pdu_len = result.response.size();
-  adu[0] = req[0]; // transaction id echoes the request
-  adu[1] = req[1];
-  adu[2] = 0; // protocol id
-  adu[3] = 0;
-  adu[4] = static_cast<std::uint8_t>((pdu_len + 1U) >> 8U);
-  adu[5] = static_cast<std::uint8_t>((pdu_len + 1U) & 0xFFU);
-  adu[6] = req[6]; // unit id
-  std::memcpy(adu.data() + kMbapLength, result.response.data(), pdu_len);
-  return send_all(fd, adu.data(), kMbapLength + pdu_len);
+  std::copy(c->in.begin() + static_cast<std::ptrdiff_t>(at),
+            c->in.begin() + static_cast<std::ptrdiff_t>(c->in_length), c->in.begin());
+  c->in_length -= at;
+  return true;
 }
+
+void TcpServer::Impl::write(const ConnectionPtr& c) {
+  if (c->writing || c->pending.empty()) {
+    return;
+  }
+  std::swap(c->pending, c->in_flight);
+  c->writing = true;
+  asio::async_write(c->socket, asio::buffer(c->in_flight), [this, c](const error_code& ec, std::size_t) {
+    if (!c->open) {
+      return;
+    }
+    if (ec) {
+      close(c);
+      return;
+    }
+    stats_.buffered_bytes -= c->in_flight.size();
+    c->in_flight.clear();
+    c->writing = false;
+    c->last_activity = Clock::now();
+    write(c);
+  });
+}
+
+// Closes at once; the handlers still queued for it see `open` false and return.
+void TcpServer::Impl::close(const ConnectionPtr& c) {
+  if (!c->open) {
+    return;
+  }
+  c->open = false;
+  error_code ignored;
+  c->socket.close(ignored);
+  stats_.buffered_bytes -= c->held();
+  c->pending.clear(); // in_flight stays: a cancelled write may still point into it
+  connections_.erase(c->self);
+  count_open();
+}
+
+void TcpServer::Impl::count_open() {
+  stats_.open.store(connections_.size());
+  stats_.open.notify_all();
+}
+
+void TcpServer::Impl::arm_ticker() {
+  ticker_.expires_after(chrono(options_.poll_period));
+  ticker_.async_wait([this](const error_code& ec) {
+    if (ec) {
+      return;
+    }
+    if (tick_) {
+      tick_();
+    }
+    if (stop_->load()) {
+      error_code ignored;
+      acceptor_.close(ignored);
+      while (!connections_.empty()) {
+        close(ConnectionPtr(connections_.front()));
+      }
+      return; // nothing left to wait for: io_.run() returns once the cancelled handlers ran
+    }
+    close_idle();
+    if (!accepting_) {
+      accept();
+    }
+    arm_ticker();
+  });
+}
+
+void TcpServer::Impl::close_idle() {
+  const Clock::time_point now = Clock::now();
+  const auto timeout = chrono(options_.limits.idle_timeout);
+  for (auto it = connections_.begin(); it != connections_.end();) {
+    const ConnectionPtr c = *it++;
+    if (now - c->last_activity >= timeout) {
+      ++stats_.timed_out;
+      close(c);
+    }
+  }
+}
+
+TcpServer::TcpServer(RegisterMap& map, TcpServerOptions options)
+    : impl_(std::make_unique<Impl>(map, std::move(options))) {}
+TcpServer::~TcpServer() = default;
+std::uint16_t TcpServer::port() const { return impl_->port_; }
+const TcpServerStats& TcpServer::stats() const { return impl_->stats_; }
+void TcpServer::on_tick(std::function<void()> tick) { impl_->tick_ = std::move(tick); }
+void TcpServer::run(const std::atomic<bool>& stop) { impl_->run(stop); }
 
 } // namespace hilrig::drivers::modbus

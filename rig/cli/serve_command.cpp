@@ -41,6 +41,7 @@ struct ServeArgs {
   std::string port_file;
   std::string tick;
   std::string scan;
+  std::string idle_timeout;
 };
 
 [[noreturn]] void bad_input(const std::string& why) {
@@ -134,6 +135,13 @@ void serve_main(const ServeArgs& args) {
     }
     o.tick = *tick;
   }
+  if (!args.idle_timeout.empty()) {
+    const auto idle = campaign::parse_duration(args.idle_timeout);
+    if (!idle || *idle < milliseconds(1)) {
+      bad_input("--idle-timeout " + args.idle_timeout + ": a duration of at least 1ms, like \"60s\"");
+    }
+    o.tcp_limits.idle_timeout = *idle;
+  }
   if (!args.scan.empty()) {
     const auto scan = campaign::parse_duration(args.scan);
     if (o.device != "ans1" || !scan || *scan < microseconds(1) || *scan > milliseconds(1)) {
@@ -218,9 +226,11 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
     drivers::modbus::TcpServerOptions server_options;
     server_options.bind = options.bind;
     server_options.port = options.port;
+    server_options.limits = options.tcp_limits;
     server_options.poll_period = options.tick;
     drivers::modbus::TcpServer server(*model.registers, server_options);
     endpoint.port = server.port();
+    endpoint.tcp_stats = &server.stats();
     if (on_ready) {
       on_ready(endpoint);
     }
@@ -262,6 +272,16 @@ void add_serve_command(CLI::App& app) {
   cmd->add_flag("--pty", args->pty,
                 "Serve Modbus RTU on a new pty pair; prints the slave path for the client");
   cmd->add_option("--bind", args->bind, "Address to bind (default 127.0.0.1; needed for non-loopback)");
+  cmd->add_option("--max-connections", args->options.tcp_limits.max_connections,
+                  "TCP clients served at once (default 64); a newcomer at the limit replaces the "
+                  "connection idle the longest")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
+  cmd->add_option("--idle-timeout", args->idle_timeout,
+                  "Close a TCP connection with no byte either way for this long (default 60s)");
+  cmd->add_option("--max-output", args->options.tcp_limits.max_output_bytes,
+                  "Unsent reply bytes held for one TCP client before it is closed as one that sends "
+                  "and never reads (default 65536)")
+      ->check(CLI::Range(std::size_t{260}, std::size_t{1} << 24U));
   cmd->add_option("--baud", args->baud, "RTU baud rate (default 19200)");
   cmd->add_option("--parity", args->parity, "RTU parity N, E or O (default E)")
       ->check(CLI::IsMember({'N', 'E', 'O'}));

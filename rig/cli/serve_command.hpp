@@ -1,7 +1,8 @@
 #pragma once
 // `hilrig serve DEVICE` runs a virtual device (serve_devices.hpp) in real time behind one
 // Modbus link:
-//   --modbus-tcp [ADDR:]PORT [--bind ADDR]     Modbus TCP, loopback unless --bind says otherwise
+//   --modbus-tcp [ADDR:]PORT [--bind ADDR]     Modbus TCP, loopback unless --bind says otherwise,
+//       [--max-connections N --idle-timeout T --max-output BYTES]   its limits (docs/serve.md)
 //   --modbus-rtu PATH [--baud B --parity N|E|O --data-bits 7|8 --stop-bits 1|2 --unit U --rs485]
 //   --pty [--unit U ...]                       Modbus RTU on a new pty pair; prints (and writes
 //                                              to --port-file) the slave path a client opens
@@ -21,6 +22,7 @@
 
 #include "core/serial.hpp"
 #include "drivers/modbus/rtu_server.hpp"
+#include "drivers/modbus/tcp_server.hpp"
 #include "rig/cli/serve_far_side.hpp"
 
 namespace hilrig::cli {
@@ -32,7 +34,8 @@ struct ServeOptions {
   ServeLink link = ServeLink::Tcp;
   // Modbus TCP
   std::string bind = "127.0.0.1";
-  std::uint16_t port = 502; // 0: a free port, reported through on_listening / on_ready
+  std::uint16_t port = 502;              // 0: a free port, reported through on_listening / on_ready
+  drivers::modbus::TcpLimits tcp_limits; // connections, idle timeout, output bound (docs/serve.md)
   // Modbus RTU (Rtu: serial_device is opened; Pty: a new pty pair is made)
   std::string serial_device;
   SerialFormat format{19200, 8, Parity::Even, 1};
@@ -56,6 +59,7 @@ struct ServeEndpoint {
   std::string serial_path; // Rtu: the device; Pty: the slave path a client opens
   std::string note;        // e.g. why RS-485 mode is off; empty when all is as asked
   const drivers::modbus::RtuServerStats* rtu_stats = nullptr; // Rtu/Pty
+  const drivers::modbus::TcpServerStats* tcp_stats = nullptr; // Tcp
   std::string far_side;                                       // what the far side carries; empty without one
 };
 
