@@ -6,39 +6,10 @@
 #include <vector>
 
 #include "drivers/modbus/pdu_handler.hpp"
+#include "tests/modbus/plain_map.hpp"
 
 namespace hilrig::drivers::modbus {
 namespace {
-
-class PlainMap final : public RegisterMap {
-public:
-  std::array<std::uint16_t, 10> input{};
-  std::array<std::uint16_t, 10> holding{};
-  int writes = 0;
-
-  RegisterStatus read_input_registers(std::uint16_t a, std::span<std::uint16_t> out) override {
-    if (a + out.size() > 10) {
-      return RegisterStatus::IllegalDataAddress;
-    }
-    std::copy_n(input.begin() + a, out.size(), out.begin());
-    return RegisterStatus::Ok;
-  }
-  RegisterStatus read_holding_registers(std::uint16_t a, std::span<std::uint16_t> out) override {
-    if (a < 1024 || a + out.size() > 1034) {
-      return RegisterStatus::IllegalDataAddress;
-    }
-    std::copy_n(holding.begin() + (a - 1024), out.size(), out.begin());
-    return RegisterStatus::Ok;
-  }
-  RegisterStatus write_holding_registers(std::uint16_t a, std::span<const std::uint16_t> v) override {
-    if (a < 1024 || a + v.size() > 1034) {
-      return RegisterStatus::IllegalDataAddress;
-    }
-    std::copy(v.begin(), v.end(), holding.begin() + (a - 1024));
-    ++writes;
-    return RegisterStatus::Ok;
-  }
-};
 
 using Bytes = std::vector<std::uint8_t>;
 

@@ -183,5 +183,39 @@ TEST(ModbusRtuServer, UnknownFunctionGetsIllegalFunction) {
   EXPECT_EQ(line.receive(7), frame({1, 4, 2, 0x00, 0x53}));
 }
 
+TEST(ModbusRtuServer, UnknownFunctionWithDataGetsIllegalFunctionAndTheNextRequestIsAnswered) {
+  // FC 8 (Diagnostics, not served) with a sub-function and data: its length is not fixed by
+  // the function code, so the frame ends at the 3.5-character silence (Serial Line §2.5.1.1)
+  // and is answered with exception 01; the next request, sent once that reply is in, is
+  // answered at once rather than lost in the rest of the first frame.
+  ServeThread server(ans1_on_pty());
+  const auto& stats = *server.endpoint().rtu_stats;
+  RawLine line(server.endpoint().serial_path);
+  ASSERT_TRUE(line.ok());
+  for (const std::vector<std::uint8_t>& unknown :
+       {std::vector<std::uint8_t>{1, 8, 0, 0, 0x12, 0x34}, std::vector<std::uint8_t>{1, 0x42, 1, 2, 3, 4, 5},
+        std::vector<std::uint8_t>{1, 0x64}}) {
+    ASSERT_TRUE(line.send(frame(unknown)));
+    EXPECT_EQ(line.receive(5), frame({1, static_cast<std::uint8_t>(unknown[1] | 0x80U), 1}));
+    ASSERT_TRUE(line.send(frame({1, 4, 0, 13, 0, 1})));
+    EXPECT_EQ(line.receive(7), frame({1, 4, 2, 0x00, 0x53}));
+  }
+  EXPECT_EQ(stats.crc_errors.load(), 0U);
+  EXPECT_EQ(stats.requests.load(), 6U);
+  EXPECT_EQ(stats.exceptions.load(), 3U);
+}
+
+TEST(ModbusRtuServer, ShortRequestWithAGoodCrcGetsIllegalDataValue) {
+  // FC 4 without its count: the CRC is good, the PDU is short -> exception 03, and the line
+  // stays in step for the next request.
+  ServeThread server(ans1_on_pty());
+  RawLine line(server.endpoint().serial_path);
+  ASSERT_TRUE(line.ok());
+  ASSERT_TRUE(line.send(frame({1, 4, 0, 13})));
+  EXPECT_EQ(line.receive(5), frame({1, 0x84, 3}));
+  ASSERT_TRUE(line.send(frame({1, 4, 0, 13, 0, 1})));
+  EXPECT_EQ(line.receive(7), frame({1, 4, 2, 0x00, 0x53}));
+}
+
 } // namespace
 } // namespace hilrig::test
