@@ -63,13 +63,17 @@ public:
   [[nodiscard]] std::uint16_t status2() const;
 
   // Plant observation. step_position: net steps issued (CW +) since power-up, at any t up to
-  // now; shaft_steps: where the shaft actually is, in steps (differs with lost steps or a
-  // blocked shaft). motor_position: the Motor Position register (presets and homing applied).
+  // now back to the start of the oldest kept run (the last kKeptRuns); shaft_steps: where the shaft actually
+  // is, in steps (differs with lost steps or a blocked shaft). motor_position: the Motor Position register
+  // (presets and homing applied).
   [[nodiscard]] std::int64_t step_position(Nanos t) const;
   [[nodiscard]] std::int64_t shaft_steps(Nanos t) const;
   [[nodiscard]] std::int64_t motor_position() const;
   [[nodiscard]] std::int64_t encoder_position() const;
   [[nodiscard]] const std::vector<ShaftRun>& runs() const { return runs_; }
+  // Runs kept in the history: a board served for a week makes millions of moves, and only
+  // the present run (and a little of the past, for tests and traces) is ever looked at.
+  static constexpr std::size_t kKeptRuns = 64;
   [[nodiscard]] bool moving() const { return run_.has_value(); }
   [[nodiscard]] double motor_current_amps() const;
   [[nodiscard]] const Params& params() const { return p_; }
@@ -160,6 +164,7 @@ private:
   // Motion engine.
   void start_motion(Run run, std::vector<Piece> pieces, int dir);
   void continue_motion(std::vector<Piece> pieces);
+  void keep_recent_runs();
   void end_motion(Nanos at);
   void on_motion_end();
   [[nodiscard]] double progress() const; // of the current chain, at now

@@ -127,6 +127,7 @@ void Smd23e::start_motion(Run run, std::vector<Piece> pieces, int dir) {
   }
   sr.motion = Motion(now, std::move(pieces));
   runs_.push_back(std::move(sr));
+  keep_recent_runs();
   run.dir = dir;
   run_ = std::move(run);
   const Nanos end = runs_.back().motion.end();
@@ -151,6 +152,7 @@ void Smd23e::continue_motion(std::vector<Piece> pieces) {
   last.stop = now;
   sr.motion = Motion(now, std::move(pieces));
   runs_.push_back(std::move(sr));
+  keep_recent_runs();
   const Nanos end = runs_.back().motion.end();
   sched_.cancel(end_event_);
   end_event_ = {};
@@ -158,6 +160,12 @@ void Smd23e::continue_motion(std::vector<Piece> pieces) {
     end_event_ = sched_.at(end, [this] { on_motion_end(); });
   }
   schedule_stall_check();
+}
+
+void Smd23e::keep_recent_runs() {
+  if (runs_.size() > kKeptRuns) {
+    runs_.erase(runs_.begin(), runs_.end() - static_cast<std::ptrdiff_t>(kKeptRuns));
+  }
 }
 
 void Smd23e::end_motion(Nanos at) {
