@@ -276,8 +276,10 @@ void add_serve_command(CLI::App& app) {
                   "TCP clients served at once (default 64); a newcomer at the limit replaces the "
                   "connection idle the longest")
       ->check(CLI::Range(std::size_t{1}, std::size_t{4096}));
-  cmd->add_option("--idle-timeout", args->idle_timeout,
-                  "Close a TCP connection with no byte either way for this long (default 60s)");
+  cmd->add_option(
+      "--idle-timeout", args->idle_timeout,
+      "Close a TCP connection with no byte either way for this long (default 60s; ns, us, ms or s; "
+      "limits: docs/serve.md)");
   cmd->add_option("--max-output", args->options.tcp_limits.max_output_bytes,
                   "Unsent reply bytes held for one TCP client before it is closed as one that sends "
                   "and never reads (default 65536)")
