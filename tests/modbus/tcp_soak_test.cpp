@@ -9,6 +9,7 @@
 
 #include <array>
 #include <atomic>
+#include <latch>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -24,11 +25,14 @@ constexpr int kRequests = 1'000;
 constexpr std::size_t kLimit = 64;
 
 // One polite client: connects, reads input registers 0..9 kRequests times, counts the
-// answers whose status word 1 is the unconfigured SMD23E's 0x6408.
-int polite_client(std::uint16_t port) {
+// answers whose status word 1 is the unconfigured SMD23E's 0x6408. After its first answer it
+// waits until every polite client has one, so all are in before any leaves (and the count
+// of holders replaced is exact).
+int polite_client(std::uint16_t port, std::latch& all_in) {
   modbus_t* c = modbus_new_tcp("127.0.0.1", port);
   if (c == nullptr || modbus_connect(c) != 0) {
     modbus_free(c);
+    all_in.count_down(); // never in: the others must not wait for it
     return 0;
   }
   modbus_set_response_timeout(c, 10, 0); // a failure bound, not a measurement
@@ -38,6 +42,9 @@ int polite_client(std::uint16_t port) {
     in[0] = 0;
     if (modbus_read_input_registers(c, 0, 10, in.data()) == 10 && in[0] == 0x6408) {
       ++answered;
+    }
+    if (i == 0) {
+      all_in.arrive_and_wait();
     }
   }
   modbus_close(c);
@@ -60,8 +67,15 @@ TEST(ModbusTcpSoak, FiftyClientsAreAllAnsweredBesideAFlooderAndIdleHolders) {
   }
 
   std::atomic<int> flooder_bursts{0};
+  std::latch flooder_in(1);
   std::thread flooder([&] {
     RawTcpClient f(server.port(), 4096);
+    // One answered request proves it is in; from then on it sends and never reads.
+    const bool in = f.send(mbap_frame(0, 0, 1, {4, 0, 0, 0, 1})) && f.receive(11).size() == 11;
+    flooder_in.count_down();
+    if (!in) {
+      return;
+    }
     std::vector<std::uint8_t> burst;
     for (int i = 0; i < 100; ++i) {
       const auto frame = mbap_frame(static_cast<std::uint16_t>(i), 0, 1, {4, 0, 0, 0, 10});
@@ -71,10 +85,12 @@ TEST(ModbusTcpSoak, FiftyClientsAreAllAnsweredBesideAFlooderAndIdleHolders) {
       ++flooder_bursts;
     }
   });
+  flooder_in.wait();
   std::atomic<int> answered{0};
+  std::latch all_in(kPolite);
   std::vector<std::thread> polite;
   for (int i = 0; i < kPolite; ++i) {
-    polite.emplace_back([&] { answered += polite_client(server.port()); });
+    polite.emplace_back([&] { answered += polite_client(server.port(), all_in); });
   }
   for (auto& t : polite) {
     t.join();
