@@ -7,7 +7,9 @@
 
 #include <fmt/format.h>
 
+#include "rig/campaign/limits.hpp"
 #include "rig/campaign/scenario_reader.hpp"
+#include "rig/campaign/toml_file.hpp"
 #include "rig/campaign/toml_reader.hpp"
 
 namespace hilrig::campaign {
@@ -150,12 +152,7 @@ std::vector<RunSpec> shard(const std::vector<RunSpec>& runs, std::size_t k, std:
 }
 
 Campaign parse_campaign(std::string_view text, const std::string& file_name) {
-  toml::table root;
-  try {
-    root = toml::parse(text, std::string_view(file_name));
-  } catch (const toml::parse_error& e) {
-    throw CampaignError(file_name, pos_of(e.source()), "toml", std::string(e.description()));
-  }
+  toml::table root = parse_toml(text, file_name);
 
   Campaign c;
   c.file = file_name;
@@ -166,8 +163,15 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
   const std::vector<Axis> axes = read_sweep(file_name, top);
   for (const Axis& a : axes) c.sweep.push_back(a.info);
 
+  // The plan's size before anything is allocated for it (a product of axes can overflow).
   std::size_t points = 1;
-  for (const Axis& a : axes) points *= a.values->size();
+  for (const Axis& a : axes) {
+    if (a.values->size() > limits::kMaxSweepPoints / points)
+      throw CampaignError(file_name, a.info.where, "sweep",
+                          fmt::format("at most {} sweep points (the product of every axis' values)",
+                                      limits::kMaxSweepPoints));
+    points *= a.values->size();
+  }
   // Each point's pick of every axis (the last axis varies fastest).
   std::vector<std::vector<std::size_t>> picks(points, std::vector<std::size_t>(axes.size()));
   for (std::size_t p = 0; p < points; ++p) {
@@ -180,9 +184,8 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
   // The file with point p's swept keys replaced, then `fault`'s set keys (a fresh parse:
   // copied toml++ nodes lose their source positions).
   auto point_doc = [&](std::size_t p, std::optional<std::size_t> fault, std::string* label) {
-    toml::table doc = p == 0 && axes.empty() && !fault && root.size() != 0
-                          ? std::move(root)
-                          : toml::parse(text, std::string_view(file_name));
+    toml::table doc =
+        p == 0 && axes.empty() && !fault && root.size() != 0 ? std::move(root) : parse_toml(text, file_name);
     for (std::size_t i = 0; i < axes.size(); ++i) {
       const toml::node& v = *axes[i].values->get(picks[p][i]);
       if (!assign(doc, axes[i].info.key, v))
@@ -224,6 +227,12 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
       throw CampaignError(file_name, pos_of(*axes[axis].values->get(picks[p][axis])), e.key(), e.expected());
     }
   };
+  // Where a plan too big is pointed at: the repeat count, or the campaign table.
+  SourcePos plan_at{};
+  if (const toml::node* n = root["campaign"]["repeat"].node())
+    plan_at = pos_of(*n);
+  else if (const toml::node* t = root["campaign"].node())
+    plan_at = pos_of(*t);
   for (std::size_t p = 0; p < points; ++p) {
     std::string label;
     ScenarioFile parsed = read_point(p, std::nullopt, &label);
@@ -233,6 +242,14 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
       c.seed = parsed.seed;
       c.repeat = parsed.repeat;
       c.faults = parsed.faults;
+      // points x repeat nominal runs, then points per fault (each factor is bounded already).
+      const std::size_t runs = points * (static_cast<std::size_t>(c.repeat) + c.faults.size());
+      if (runs > limits::kMaxRuns) {
+        throw CampaignError(file_name, plan_at, "campaign.repeat",
+                            fmt::format("a plan of at most {} runs ({} sweep point(s) x ({} repeat + {} "
+                                        "fault(s)) is {}); split it into campaigns or sweeps",
+                                        limits::kMaxRuns, points, c.repeat, c.faults.size(), runs));
+      }
     }
     c.points.push_back(std::move(parsed.scenario));
     c.point_labels.push_back(label.empty() ? std::string("nominal") : label);
@@ -247,11 +264,7 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
 }
 
 Campaign load_campaign(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw CampaignError(path, SourcePos{}, "file", "a readable campaign file (cannot open it)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_campaign(text.str(), path);
+  return parse_campaign(read_toml_text(path, "campaign file"), path);
 }
 
 } // namespace hilrig::campaign

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "rig/campaign/limits.hpp"
 #include "rig/campaign/motion.hpp"
 #include "rig/campaign/stimulus_kinds.hpp"
 #include "rig/campaign/toml_reader.hpp"
@@ -53,45 +54,84 @@ private:
     throw CampaignError(file_, at, key, expected);
   }
 
+  // A number in [lo, hi] (what: "a speed in rpm"), the range named in the message.
+  static double number_in(TableReader& r, std::string_view key, double lo, double hi, std::string_view what) {
+    const double v = r.number(key);
+    if (!(v >= lo && v <= hi)) r.fail(key, fmt::format("{} in {} .. {}", what, lo, hi));
+    return v;
+  }
+  static std::optional<double> opt_number_in(TableReader& r, std::string_view key, double lo, double hi,
+                                             std::string_view what) {
+    if (!r.has(key)) {
+      (void)r.node(key);
+      return std::nullopt;
+    }
+    return number_in(r, key, lo, hi, what);
+  }
+  static std::int64_t integer_in(TableReader& r, std::string_view key, std::int64_t lo, std::int64_t hi,
+                                 std::string_view what) {
+    const std::int64_t v = r.integer(key);
+    if (v < lo || v > hi) r.fail(key, fmt::format("{} in {} .. {}", what, lo, hi));
+    return v;
+  }
+  // A duration in [lo, hi].
+  static Nanos duration_in(TableReader& r, std::string_view key, Nanos lo, Nanos hi) {
+    const Nanos d = r.duration(key);
+    if (d < lo || d > hi)
+      r.fail(key, fmt::format("a duration in {} .. {}", duration_text(lo), duration_text(hi)));
+    return d;
+  }
+  static std::optional<Nanos> opt_duration_in(TableReader& r, std::string_view key, Nanos lo, Nanos hi) {
+    if (!r.has(key)) {
+      (void)r.node(key);
+      return std::nullopt;
+    }
+    return duration_in(r, key, lo, hi);
+  }
+
   void read_campaign(ScenarioFile& out) {
     const toml::table* t = root_.opt_table("campaign");
     if (t == nullptr) fail(root_.where(), "campaign", "missing: a [campaign] table with name and end");
     TableReader r(file_, *t, "campaign");
     out.name = r.string("name");
     out.description = r.opt_string("description").value_or("");
-    out.scenario.end = r.duration("end");
-    if (out.scenario.end <= Nanos{0}) r.fail("end", "a duration > 0");
+    out.scenario.end = duration_in(r, "end", Nanos{1}, limits::kMaxEnd);
     if (auto s = r.opt_integer("seed")) {
       if (*s < 0) r.fail("seed", "a seed >= 0");
       out.seed = static_cast<std::uint64_t>(*s);
     }
-    out.repeat = r.opt_integer("repeat").value_or(1);
-    if (out.repeat < 1) r.fail("repeat", "a repetition count >= 1");
-    if (auto p = r.opt_duration("host_poll")) {
-      if (*p <= Nanos{0}) r.fail("host_poll", "a duration > 0");
+    out.repeat = r.has("repeat") ? integer_in(r, "repeat", 1, limits::kMaxRepeat, "a repetition count") : 1;
+    if (auto p = opt_duration_in(r, "host_poll", limits::kMinHostPoll, limits::kMaxHostPoll))
       out.scenario.host_poll = *p;
-    }
-    if (auto tol = r.opt_duration("edge_tolerance")) {
-      if (*tol <= Nanos{0}) r.fail("edge_tolerance", "a duration > 0");
+    if (auto tol = opt_duration_in(r, "edge_tolerance", Nanos{1}, limits::kMaxEdgeTolerance))
       out.scenario.edge_tolerance = *tol;
-    }
     r.finish();
   }
 
+  // The parameter as its declared kind, inside the range its device declares.
   ParamValue dut_param(TableReader& r, const duts::ParamInfo& info) {
+    ParamValue v = std::int64_t{0};
     switch (info.kind) {
     case ParamKind::Integer:
-      return r.integer(info.name);
+      v = r.integer(info.name);
+      break;
     case ParamKind::Number:
-      return r.number(info.name);
+      v = r.number(info.name);
+      break;
     case ParamKind::Duration:
-      return r.duration(info.name);
+      v = r.duration(info.name);
+      break;
     case ParamKind::Boolean:
-      return r.boolean(info.name);
+      v = r.boolean(info.name);
+      break;
     case ParamKind::Text:
-      return r.string(info.name);
+      v = r.string(info.name);
+      break;
     }
-    return std::int64_t{0};
+    if (!duts::in_range(info.range, v))
+      r.fail(info.name, fmt::format("{}{} ({} {})", info.kind == ParamKind::Text ? "" : "a value in ",
+                                    range_text(info.kind, info.range), info_->name, info.description));
+    return v;
   }
 
   void read_dut(DutSpec& dut) {
@@ -225,12 +265,14 @@ private:
         r.fail(key, fmt::format("a rig line wired to an analog pin (\"{}\" is not)", *line));
     }
     if (res.sin_line == res.cos_line) r.fail("cos", "a second analog line (the two stators differ)");
-    res.excitation_hz = r.opt_number("excitation_hz").value_or(res.excitation_hz);
-    if (!(res.excitation_hz > 0.0)) r.fail("excitation_hz", "a frequency above 0 Hz");
+    res.excitation_hz = opt_number_in(r, "excitation_hz", limits::kMinExcitationHz, limits::kMaxExcitationHz,
+                                      "an excitation frequency in Hz")
+                            .value_or(res.excitation_hz);
     res.amplitude = r.opt_number("amplitude").value_or(res.amplitude);
-    if (!(res.amplitude > 0.0)) r.fail("amplitude", "an amplitude above 0");
-    res.ratio = r.opt_number("ratio").value_or(res.ratio);
-    if (!(res.ratio >= 0.0)) r.fail("ratio", "a transformation ratio of 0 or more");
+    if (!(res.amplitude > 0.0 && res.amplitude <= limits::kMaxAmplitude))
+      r.fail("amplitude", fmt::format("an amplitude above 0, at most {}", limits::kMaxAmplitude));
+    res.ratio =
+        opt_number_in(r, "ratio", 0.0, limits::kMaxRatio, "a transformation ratio").value_or(res.ratio);
     res.phase_deg = r.opt_number("phase_deg").value_or(res.phase_deg);
     if (!(res.phase_deg >= -360.0 && res.phase_deg <= 360.0))
       r.fail("phase_deg", "a phase in -360..360 degrees");
@@ -254,7 +296,21 @@ private:
     if (t == nullptr) return;
     TableReader r(file_, *t, "motion");
     s.motion.where = r.where();
-    s.motion.start_turns = r.opt_number("start_turns").value_or(0.0);
+    s.motion.start_turns =
+        opt_number_in(r, "start_turns", -limits::kMaxTurns, limits::kMaxTurns, "a position in turns")
+            .value_or(0.0);
+    // The encoder's count rate at a speed: only an encoder that is wired makes edges.
+    const bool encoder_wired = s.wire_for_rig(kEncoderA) != nullptr || s.wire_for_rig(kEncoderB) != nullptr;
+    const double max_rpm =
+        encoder_wired ? std::min(limits::kMaxRpm, limits::kMaxCountsPerS * 60.0 / s.encoder.counts_per_turn())
+                      : limits::kMaxRpm;
+    const auto speed_text = [&] {
+      return encoder_wired && max_rpm < limits::kMaxRpm
+                 ? fmt::format(
+                       "a speed in rpm in -{0} .. {0} ({1} counts/s at most from the {2}-line encoder)",
+                       max_rpm, limits::kMaxCountsPerS, s.encoder.lines)
+                 : fmt::format("a speed in rpm in -{0} .. {0}", max_rpm);
+    };
     std::size_t i = 0;
     for (const toml::table* mt : r.tables("move")) {
       TableReader m(file_, *mt, fmt::format("motion.move[{}]", i++));
@@ -262,38 +318,48 @@ private:
       mv.where = m.where();
       const std::string kind = m.string("kind");
       auto positive_duration = [&](std::string_view key) {
-        const Nanos d = m.duration(key);
-        if (d <= Nanos{0}) m.fail(key, "a duration > 0");
-        return d;
+        return duration_in(m, key, Nanos{1}, limits::kMaxEnd);
       };
-      auto positive = [&](std::string_view key) {
+      auto speed = [&](std::string_view key) {
         const double v = m.number(key);
-        if (!(v > 0.0) || !std::isfinite(v)) m.fail(key, "a number > 0");
+        if (!(std::fabs(v) <= max_rpm)) m.fail(key, speed_text());
+        return v;
+      };
+      auto cruise = [&](std::string_view key) {
+        const double v = speed(key);
+        if (!(v >= limits::kMinCruiseRpm))
+          m.fail(key, fmt::format("a cruise speed in rpm in {} .. {}", limits::kMinCruiseRpm, max_rpm));
+        return v;
+      };
+      auto rate = [&](std::string_view key) {
+        const double v = m.number(key);
+        if (!(v > 0.0 && v <= limits::kMaxRpmPerS))
+          m.fail(key, fmt::format("a rate in rpm/s above 0, at most {}", limits::kMaxRpmPerS));
         return v;
       };
       if (kind == "constant") {
         mv.kind = MoveKind::Constant;
-        mv.speed_rpm = m.number("speed_rpm");
+        mv.speed_rpm = speed("speed_rpm");
         mv.duration = positive_duration("duration");
       } else if (kind == "accelerate") {
         mv.kind = MoveKind::Accelerate;
-        mv.to_rpm = m.number("to_rpm");
+        mv.to_rpm = speed("to_rpm");
         mv.duration = positive_duration("duration");
       } else if (kind == "dwell") {
         mv.kind = MoveKind::Dwell;
         mv.duration = positive_duration("duration");
       } else if (kind == "trapezoid") {
         mv.kind = MoveKind::Trapezoid;
-        mv.speed_rpm = positive("speed_rpm");
-        mv.accel_rpm_s = positive("accel_rpm_s");
-        mv.turns = m.number("turns");
+        mv.speed_rpm = cruise("speed_rpm");
+        mv.accel_rpm_s = rate("accel_rpm_s");
+        mv.turns = number_in(m, "turns", -limits::kMaxTurns, limits::kMaxTurns, "a distance in turns");
         if (mv.turns == 0.0) m.fail("turns", "a distance in turns, not 0 (negative runs backwards)");
       } else if (kind == "press_stroke") {
         mv.kind = MoveKind::PressStroke;
-        mv.speed_rpm = positive("speed_rpm");
-        mv.decel_rpm_s = positive("decel_rpm_s");
-        mv.strokes = m.opt_integer("strokes").value_or(0);
-        if (mv.strokes < 0) m.fail("strokes", "a number of strokes >= 0");
+        mv.speed_rpm = cruise("speed_rpm");
+        mv.decel_rpm_s = rate("decel_rpm_s");
+        mv.strokes =
+            m.has("strokes") ? integer_in(m, "strokes", 0, limits::kMaxStrokes, "a number of strokes") : 0;
         mv.brake_at_deg = m.opt_number("brake_at_deg").value_or(0.0);
         if (mv.brake_at_deg < 0.0 || mv.brake_at_deg >= 360.0)
           m.fail("brake_at_deg", "a crank angle in [0, 360)");
@@ -323,9 +389,7 @@ private:
     st.line = w->rig;
     const bool encoder = is_encoder_line(st.line);
     auto positive_duration = [&](std::string_view key) {
-      const Nanos d = r.duration(key);
-      if (d <= Nanos{0}) r.fail(key, "a duration > 0");
-      return d;
+      return duration_in(r, key, Nanos{1}, limits::kMaxEnd);
     };
     auto until = [&] {
       st.until = r.opt_duration("until").value_or(Nanos::max());
@@ -352,8 +416,7 @@ private:
       break;
     case StimulusKind::Bounce:
       st.level = r.opt_level("level").value_or(Level::High);
-      st.edges = r.integer("edges");
-      if (st.edges < 1) r.fail("edges", "a number of bounce edges >= 1");
+      st.edges = integer_in(r, "edges", 1, limits::kMaxBounceEdges, "a number of bounce edges");
       st.period = positive_duration("period");
       break;
     case StimulusKind::Glitch:
@@ -365,8 +428,7 @@ private:
       break;
     case StimulusKind::MissingEdges:
       if (!encoder) r.fail("line", "an encoder line (enc.A or enc.B)");
-      st.every = r.opt_integer("every").value_or(1);
-      if (st.every < 1) r.fail("every", "every n-th edge lost, n >= 1");
+      st.every = r.has("every") ? integer_in(r, "every", 1, limits::kMaxEvery, "every n-th edge lost, n") : 1;
       until();
       break;
     }
@@ -421,10 +483,7 @@ private:
                  fmt::format("word 0 with Transmit (bit {}) clear: the rig drives the handshake itself",
                              host->transmit_bit));
         h.name = r.opt_string("name").value_or("");
-        if (auto to = r.opt_duration("timeout")) {
-          if (*to <= Nanos{0}) r.fail("timeout", "a duration > 0");
-          h.timeout = *to;
-        }
+        if (auto to = opt_duration_in(r, "timeout", Nanos{1}, limits::kMaxEnd)) h.timeout = *to;
       } else {
         h.kind = HostAction::Kind::Read;
         const std::int64_t word = r.integer("read");

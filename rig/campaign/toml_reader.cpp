@@ -1,5 +1,7 @@
 #include "rig/campaign/toml_reader.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "rig/campaign/duration.hpp"
@@ -74,7 +76,11 @@ std::optional<double> TableReader::opt_number(std::string_view name) {
   const toml::node* n = node(name);
   if (n == nullptr) return std::nullopt;
   if (const auto* i = n->as_integer()) return static_cast<double>(i->get());
-  if (const auto* f = n->as_floating_point()) return f->get();
+  if (const auto* f = n->as_floating_point()) {
+    // TOML allows nan and inf; no campaign quantity is either.
+    if (!std::isfinite(f->get())) fail(name, "a finite number (nan and inf are not values here)");
+    return f->get();
+  }
   fail(name, "expected a number");
 }
 

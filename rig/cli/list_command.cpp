@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "rig/campaign/limits.hpp"
+
 #include "rig/campaign/stimulus_kinds.hpp"
 #include "rig/checks/registry.hpp"
 #include "rig/duts/dut.hpp"
@@ -39,8 +41,11 @@ void write_listing(std::ostream& out) {
     }
     out << fmt::format("    input pins: {}\n    output pins: {}\n", inputs, outputs);
     for (const auto& p : d.params)
-      out << fmt::format("    param {} ({}, default {}): {}\n", p.name, duts::to_string(p.kind),
-                         value_text(p.default_value), p.description);
+      out << fmt::format("    param {} ({}, default {}{}): {}\n", p.name, duts::to_string(p.kind),
+                         value_text(p.default_value),
+                         p.kind == duts::ParamKind::Boolean ? ""
+                                                            : ", " + campaign::range_text(p.kind, p.range),
+                         p.description);
     out << fmt::format("    host words: {} out, {} in{}\n", d.host.output_words, d.host.input_words,
                        d.host.handshake ? " (Transmit/Acknowledge handshake)" : "");
   }

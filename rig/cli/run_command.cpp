@@ -129,6 +129,18 @@ std::optional<std::pair<std::size_t, std::size_t>> parse_shard(const std::string
   return std::make_pair(k, n);
 }
 
+std::string interruption_text(const rig::CampaignResult& result, const std::string& out_dir) {
+  // The signal stopped a run in the middle, or landed between two runs (the run before it
+  // finished whole and the next never started).
+  const bool mid_run = !result.runs.empty() && result.runs.back().interrupted;
+  return fmt::format("hilrig run: interrupted by {}: {} of {} run(s) done, {}; results written to {}",
+                     result.interrupted.value_or("a signal"), result.runs.size(), result.planned_runs,
+                     mid_run
+                         ? "the last stopped early with every rig-driven line at its inactive level"
+                         : "the signal landed between runs (every run done is whole; none started after it)",
+                     out_dir);
+}
+
 int run_campaign(const RunOptions& o, std::ostream& err) {
   const auto shard = parse_shard(o.shard);
   if (!shard) {
@@ -210,10 +222,7 @@ int run_campaign(const RunOptions& o, std::ostream& err) {
       if (!run.error.empty())
         err << fmt::format("run {} ({}): rig fault: {}\n", run.index, run.name, run.error);
     if (result.interrupted) {
-      err << fmt::format(
-          "hilrig run: interrupted by {}: {} of {} run(s) done, the last stopped early with every "
-          "rig-driven line at its inactive level; results written to {}\n",
-          *result.interrupted, result.runs.size(), result.planned_runs, o.out.string());
+      err << interruption_text(result, o.out.string()) << '\n';
       return kRigFault;
     }
     for (const auto& run : result.runs)

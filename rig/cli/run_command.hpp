@@ -16,6 +16,7 @@
 
 #include "rig/campaign/host_link.hpp"
 #include "rig/hardware/rig_ports.hpp"
+#include "rig/results/campaign_result.hpp"
 
 namespace hilrig::cli {
 
@@ -39,6 +40,10 @@ struct RunOptions {
 
 // Does the whole command and returns its exit status; messages go to err.
 [[nodiscard]] int run_campaign(const RunOptions& options, std::ostream& err);
+
+// What `hilrig run` says of a campaign a signal stopped: how many runs are done, and whether
+// the last was stopped early or the signal landed between runs.
+[[nodiscard]] std::string interruption_text(const rig::CampaignResult& result, const std::string& out_dir);
 
 // "K/N" -> (K, N); nullopt unless 0 <= K < N.
 [[nodiscard]] std::optional<std::pair<std::size_t, std::size_t>> parse_shard(const std::string& text);

@@ -9,6 +9,8 @@
 
 namespace hilrig::duts {
 
+using namespace hilrig::literals;
+
 namespace {
 
 namespace m = hilrig::models::amci4501;
@@ -75,31 +77,64 @@ DutInfo amci4501_info() {
       {"CYCLE_OUT", PinDirection::Output, "Cycle Output (pins 5/4), high while sinking", false},
   };
   const m::Params d{};
+  // Ranges (spec/amci4501.md): throughput 125 us (L281) or 100 us (L49), a model 0 .. 10 ms;
+  // 1 us timer resolution (L26): 1 ns .. 1 ms; 50 ms velocity window (L114): 1 ms .. 10 s;
+  // No Response after 4 (L88) or 5 (L223) missed cycles: 1 .. 100; firmware 1 .. 3 (v2 adds the
+  // mode 4 filters, L36; v3 the timeout report, L95-L102).
   info.params = {
-      {"throughput", ParamKind::Duration, d.throughput, "input edge to response (L281)"},
-      {"mode5_throughput", ParamKind::Duration, d.mode5_throughput, "the same in mode 5 (L49, A1)"},
-      {"late_throughput", ParamKind::Duration, d.late_throughput, "response delay of variant late_outputs"},
-      {"timer_resolution", ParamKind::Duration, d.timer_resolution, "time measurement tick (L26)"},
-      {"velocity_window", ParamKind::Duration, d.velocity_window, "velocity counts per window (L114)"},
-      {"start_jumper", ParamKind::Text, std::string("rising"), "JP6: rising (pins 1-2) or falling (3-4)"},
-      {"latch_jumper", ParamKind::Text, std::string("rising"), "JP5: rising (pins 1-2) or falling (3-4)"},
+      {"throughput", ParamKind::Duration, d.throughput, "input edge to response (L281)",
+       between(0_us, 10_ms)},
+      {"mode5_throughput", ParamKind::Duration, d.mode5_throughput, "the same in mode 5 (L49, A1)",
+       between(0_us, 10_ms)},
+      {"late_throughput", ParamKind::Duration, d.late_throughput, "response delay of variant late_outputs",
+       between(0_us, 10_ms)},
+      {"timer_resolution", ParamKind::Duration, d.timer_resolution, "time measurement tick (L26)",
+       between(1_ns, 1_ms)},
+      {"velocity_window", ParamKind::Duration, d.velocity_window, "velocity counts per window (L114)",
+       between(1_ms, 10_s)},
+      {"start_jumper", ParamKind::Text, std::string("rising"), "JP6: rising (pins 1-2) or falling (3-4)",
+       one_of({"rising", "falling"})},
+      {"latch_jumper", ParamKind::Text, std::string("rising"), "JP5: rising (pins 1-2) or falling (3-4)",
+       one_of({"rising", "falling"})},
       {"no_response_missed", ParamKind::Integer, std::int64_t{d.no_response_missed},
-       "missed cycles before No Response (A4)"},
+       "missed cycles before No Response (A4)", between(1.0, 100.0)},
       {"fw_version", ParamKind::Integer, std::int64_t{d.fw_version},
-       "firmware: 2 = mode 4 filters, 3 = timeout report"},
-      {"mode4_timeout_sets_new", ParamKind::Boolean, d.mode4_timeout_sets_new,
-       "bit 0 with the mode 4 timeout report"},
-      {"z_resets_in_all_modes", ParamKind::Boolean, d.z_resets_in_all_modes,
-       "Z zeroes the count outside mode 2"},
-      {"lower_word_over_999_is_error", ParamKind::Boolean, d.lower_word_over_999_is_error,
-       "setpoint lower word > 999 is a Parameter Error"},
-      {"saturate_latch_counts", ParamKind::Boolean, d.saturate_latch_counts, "mode 2 L values cap at 32,767"},
-      {"acknowledge_on_rising_edge", ParamKind::Boolean, d.acknowledge_on_rising_edge,
-       "result acknowledge on control bit 0's rising edge (else any write with it set)"},
-      {"acknowledge_invalid_program", ParamKind::Boolean, d.acknowledge_invalid_program,
-       "an invalid programming cycle is still acknowledged"},
-      {"program_clears_results", ParamKind::Boolean, d.program_clears_results,
-       "a valid programming cycle clears the result words"},
+       "firmware: 2 = mode 4 filters, 3 = timeout report", between(1.0, 3.0)},
+      {"mode4_timeout_sets_new",
+       ParamKind::Boolean,
+       d.mode4_timeout_sets_new,
+       "bit 0 with the mode 4 timeout report",
+       {}},
+      {"z_resets_in_all_modes",
+       ParamKind::Boolean,
+       d.z_resets_in_all_modes,
+       "Z zeroes the count outside mode 2",
+       {}},
+      {"lower_word_over_999_is_error",
+       ParamKind::Boolean,
+       d.lower_word_over_999_is_error,
+       "setpoint lower word > 999 is a Parameter Error",
+       {}},
+      {"saturate_latch_counts",
+       ParamKind::Boolean,
+       d.saturate_latch_counts,
+       "mode 2 L values cap at 32,767",
+       {}},
+      {"acknowledge_on_rising_edge",
+       ParamKind::Boolean,
+       d.acknowledge_on_rising_edge,
+       "result acknowledge on control bit 0's rising edge (else any write with it set)",
+       {}},
+      {"acknowledge_invalid_program",
+       ParamKind::Boolean,
+       d.acknowledge_invalid_program,
+       "an invalid programming cycle is still acknowledged",
+       {}},
+      {"program_clears_results",
+       ParamKind::Boolean,
+       d.program_clears_results,
+       "a valid programming cycle clears the result words",
+       {}},
   };
   for (const auto& v : m::kVariantNames)
     info.variants.push_back({std::string(v.name), v.variant == m::Variant::Correct

@@ -7,6 +7,8 @@
 
 namespace hilrig::duts {
 
+using namespace hilrig::literals;
+
 namespace {
 
 namespace a = hilrig::models::ans1;
@@ -83,12 +85,19 @@ DutInfo ans1_info() {
   for (int i = 1; i <= a::kOutputCount; ++i)
     info.pins.push_back({a::output_pin_name(i), PinDirection::Output, "output " + std::to_string(i), false});
   const a::Params d{};
+  // Ranges: a scan of 10 us (master) or 50 us throughput (slave), spec/ans1.md L187 (manual
+  // L572-L576); a model may scan 1 us .. 1 ms around them, not faster (a 1 ns scan is 10^9 events
+  // per virtual second). Speed update 14.6 ms (L820): 1 ms .. 1 s. Excitation: the band the ANS1
+  // accepts from a resolver, 2.2 .. 7 kHz (spec/ans1.md L60, manual L1455).
   info.params = {
-      {"scan", ParamKind::Duration, d.master_scan_period, "master position-and-output scan period"},
-      {"slave_scan", ParamKind::Duration, d.slave_scan_period, "scan period as a slave"},
-      {"output_delay", ParamKind::Duration, d.output_delay, "scan to output pin"},
-      {"speed_update", ParamKind::Duration, d.speed_update_period, "speed value update period"},
-      {"excitation_hz", ParamKind::Number, d.excitation_hz, "resolver excitation frequency"},
+      {"scan", ParamKind::Duration, d.master_scan_period, "master position-and-output scan period",
+       between(1_us, 1_ms)},
+      {"slave_scan", ParamKind::Duration, d.slave_scan_period, "scan period as a slave", between(1_us, 1_ms)},
+      {"output_delay", ParamKind::Duration, d.output_delay, "scan to output pin", between(0_us, 1_ms)},
+      {"speed_update", ParamKind::Duration, d.speed_update_period, "speed value update period",
+       between(1_ms, 1_s)},
+      {"excitation_hz", ParamKind::Number, d.excitation_hz, "resolver excitation frequency",
+       between(2'200.0, 7'000.0)},
   };
   for (const auto& v : a::kVariantNames)
     info.variants.push_back({std::string(v.name), v.variant == a::Variant::Correct

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -39,11 +40,26 @@ enum class ParamKind : std::uint8_t { Integer, Number, Duration, Boolean, Text }
 // A parameter's value, already of its declared kind (Duration is Nanos).
 using ParamValue = std::variant<std::int64_t, double, Nanos, bool, std::string>;
 
+// The values a parameter may take: a closed interval for integers, numbers and durations
+// (durations in ns), or the words a text parameter accepts. A campaign outside it is bad
+// input. Each device cites, beside its bounds, the manual line or the rig limit behind them.
+struct ParamRange {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  std::vector<std::string> choices; // text parameters
+};
+[[nodiscard]] ParamRange between(double min, double max);
+[[nodiscard]] ParamRange between(Nanos min, Nanos max);
+[[nodiscard]] ParamRange one_of(std::vector<std::string> choices);
+// Whether the value lies in the range (booleans always do).
+[[nodiscard]] bool in_range(const ParamRange& range, const ParamValue& value);
+
 struct ParamInfo {
   std::string name;
   ParamKind kind = ParamKind::Integer;
   ParamValue default_value;
   std::string description;
+  ParamRange range;
 };
 
 struct VariantInfo {

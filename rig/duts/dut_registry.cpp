@@ -30,6 +30,27 @@ const char* to_string(ParamKind kind) {
   return "?";
 }
 
+ParamRange between(double min, double max) { return ParamRange{min, max, {}}; }
+ParamRange between(Nanos min, Nanos max) {
+  return ParamRange{static_cast<double>(min.count()), static_cast<double>(max.count()), {}};
+}
+ParamRange one_of(std::vector<std::string> choices) {
+  ParamRange r;
+  r.choices = std::move(choices);
+  return r;
+}
+
+bool in_range(const ParamRange& range, const ParamValue& value) {
+  const auto inside = [&](double v) { return v >= range.min && v <= range.max; };
+  if (const auto* i = std::get_if<std::int64_t>(&value)) return inside(static_cast<double>(*i));
+  if (const auto* d = std::get_if<double>(&value)) return inside(*d);
+  if (const auto* n = std::get_if<Nanos>(&value)) return inside(static_cast<double>(n->count()));
+  if (const auto* t = std::get_if<std::string>(&value))
+    return range.choices.empty() ||
+           std::find(range.choices.begin(), range.choices.end(), *t) != range.choices.end();
+  return true;
+}
+
 const ParamValue& DutParams::at(std::string_view name) const {
   const auto it = values_.find(name);
   if (it == values_.end()) throw std::out_of_range("no DUT parameter " + std::string(name));

@@ -8,6 +8,8 @@
 
 namespace hilrig::duts {
 
+using namespace hilrig::literals;
+
 namespace {
 
 namespace p = hilrig::models::pls2700;
@@ -92,23 +94,37 @@ DutInfo pls2700_info() {
     info.pins.push_back(
         {p::output_pin_name(n), PinDirection::Output, "limit output " + std::to_string(n), false});
   const p::Params d{};
+  // Ranges: the manual gives no reference frequency, amplitude or fault threshold (spec/pls2700.md
+  // L632, [X]); the model's sampling at each reference peak is honest for the common resolver
+  // references, 400 Hz .. 10 kHz. Stator/reference ratios 0 .. 10; the mask is 8 outputs (R-M-2);
+  // the 2742-18 input delay is at most 3 ms (L1724); the update period is 200/400 us (L377).
   info.params = {
-      {"model", ParamKind::Text, std::string("2742"), "2731, 2731-04, 2732, 2732-04, 2741, 2742, 2742-18"},
-      {"excitation_hz", ParamKind::Number, d.excitation_hz, "resolver reference frequency [X]"},
-      {"excitation_amplitude", ParamKind::Number, d.excitation_amplitude, "reference peak [X]"},
-      {"min_stator_ratio", ParamKind::Number, d.min_stator_ratio, "transducer fault below this stator/ref"},
-      {"max_stator_ratio", ParamKind::Number, d.max_stator_ratio, "transducer fault above this stator/ref"},
-      {"tach_32ms", ParamKind::Boolean, d.tach_32ms_on_single_channel, "tach code 0 = 32 ms on 27x1"},
-      {"wrap_pairs", ParamKind::Boolean, d.wrap_pairs, "ON > OFF wraps through zero"},
-      {"equal_pair_full_turn", ParamKind::Boolean, d.equal_pair_full_turn, "ON == OFF always on"},
-      {"reverse_advance", ParamKind::Text, std::string("signed"), "signed | disabled (R-ADV-6)"},
-      {"fault_all_outputs", ParamKind::Boolean, d.fault_turns_off_all_outputs,
-       "a transducer fault turns off all outputs (else the channel's)"},
+      {"model", ParamKind::Text, std::string("2742"), "2731, 2731-04, 2732, 2732-04, 2741, 2742, 2742-18",
+       one_of({"2731", "2731-04", "2732", "2732-04", "2741", "2742", "2742-18"})},
+      {"excitation_hz", ParamKind::Number, d.excitation_hz, "resolver reference frequency [X]",
+       between(400.0, 10'000.0)},
+      {"excitation_amplitude", ParamKind::Number, d.excitation_amplitude, "reference peak [X]",
+       between(0.001, 100.0)},
+      {"min_stator_ratio", ParamKind::Number, d.min_stator_ratio, "transducer fault below this stator/ref",
+       between(0.0, 10.0)},
+      {"max_stator_ratio", ParamKind::Number, d.max_stator_ratio, "transducer fault above this stator/ref",
+       between(0.0, 10.0)},
+      {"tach_32ms", ParamKind::Boolean, d.tach_32ms_on_single_channel, "tach code 0 = 32 ms on 27x1", {}},
+      {"wrap_pairs", ParamKind::Boolean, d.wrap_pairs, "ON > OFF wraps through zero", {}},
+      {"equal_pair_full_turn", ParamKind::Boolean, d.equal_pair_full_turn, "ON == OFF always on", {}},
+      {"reverse_advance", ParamKind::Text, std::string("signed"), "signed | disabled (R-ADV-6)",
+       one_of({"signed", "disabled"})},
+      {"fault_all_outputs",
+       ParamKind::Boolean,
+       d.fault_turns_off_all_outputs,
+       "a transducer fault turns off all outputs (else the channel's)",
+       {}},
       {"power_up_mask", ParamKind::Integer, static_cast<std::int64_t>(d.power_up_mask),
-       "output mask at power-up"},
-      {"output_delay", ParamKind::Duration, d.output_delay, "update to output pin"},
-      {"input_delay", ParamKind::Duration, d.input_delay, "2742-18 input T_ON/T_OFF"},
-      {"update_phase", ParamKind::Duration, d.update_phase, "first update after power-up"},
+       "output mask at power-up", between(0.0, 255.0)},
+      {"output_delay", ParamKind::Duration, d.output_delay, "update to output pin", between(0_us, 10_ms)},
+      {"input_delay", ParamKind::Duration, d.input_delay, "2742-18 input T_ON/T_OFF", between(0_us, 3_ms)},
+      {"update_phase", ParamKind::Duration, d.update_phase, "first update after power-up",
+       between(0_us, 1_s)},
   };
   for (const auto& f : p::kFaultNames)
     info.variants.push_back({std::string(f.name), std::string(f.description)});

@@ -6,6 +6,8 @@
 
 namespace hilrig::duts {
 
+using namespace hilrig::literals;
+
 namespace {
 
 // X4 quadrature: the Gray sequence 00 -> 10 -> 11 -> 01 (A,B) counts up (A leads B).
@@ -155,13 +157,17 @@ DutInfo reference_pls_info() {
       {"EN", PinDirection::Input, "output enable (filtered); unwired = enabled"},
       {"OUT", PinDirection::Output, "the limit switch output"},
   };
+  // A test double with no manual: counts are the 16-bit host words' (-32768 .. 32767); a scan
+  // of 1 us .. 100 ms (a 1 ns scan is 10^9 events per virtual second), delays 0 .. 1 s.
+  const ParamRange count = between(-32'768.0, 32'767.0);
   info.params = {
-      {"on", ParamKind::Integer, std::int64_t{100}, "count at which OUT turns on"},
-      {"off", ParamKind::Integer, std::int64_t{300}, "count at which OUT turns off"},
-      {"scan", ParamKind::Duration, Nanos{200'000}, "scan period"},
-      {"delay", ParamKind::Duration, Nanos{50'000}, "throughput delay from scan to output pin"},
-      {"filter", ParamKind::Duration, Nanos{1'000'000}, "EN input filter time"},
-      {"preset", ParamKind::Integer, std::int64_t{0}, "count at power-up"},
+      {"on", ParamKind::Integer, std::int64_t{100}, "count at which OUT turns on", count},
+      {"off", ParamKind::Integer, std::int64_t{300}, "count at which OUT turns off", count},
+      {"scan", ParamKind::Duration, Nanos{200'000}, "scan period", between(1_us, 100_ms)},
+      {"delay", ParamKind::Duration, Nanos{50'000}, "throughput delay from scan to output pin",
+       between(0_us, 1_s)},
+      {"filter", ParamKind::Duration, Nanos{1'000'000}, "EN input filter time", between(0_us, 1_s)},
+      {"preset", ParamKind::Integer, std::int64_t{0}, "count at power-up", count},
   };
   info.variants = {
       {"nominal", "as specified"},

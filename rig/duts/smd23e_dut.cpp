@@ -9,6 +9,8 @@
 
 namespace hilrig::duts {
 
+using namespace hilrig::literals;
+
 namespace {
 
 namespace m = hilrig::models::smd23e;
@@ -112,17 +114,25 @@ DutInfo smd23e_info() {
   info.pins.push_back({kSmd23eDirPin, PinDirection::Output,
                        "shaft sensor: High while the shaft steps CW, Low CCW (Low at power-up)", false});
   const m::Params d{};
+  // Ranges: the homing pause is 2 s (spec/smd23e.md T2, L136; manual L1327): 0 .. 60 s; an input
+  // delay [A] 0 .. 1 s; the fault knobs within what keeps a move a move (1 lost step in 1 ..
+  // 1,000,000; ramps at 0.01 .. 100 x A and D; stops 0 .. 10 s late).
   info.params = {
-      {"homing_pause", ParamKind::Duration, d.homing_pause, "pause between homing stops (T2, 2 s)"},
-      {"input_delay", ParamKind::Duration, d.input_delay, "input edge to effect [A] (0)"},
-      {"has_encoder", ParamKind::Boolean, d.has_encoder, "an E unit (internal 1024-count encoder)"},
-      {"flash_config_valid", ParamKind::Boolean, d.flash_config_valid,
-       "power up configured from flash (v_s 100, 2048 steps/turn)"},
-      {"late_stop_delay", ParamKind::Duration, d.late_stop_delay, "variant late-stop: how late stops act"},
+      {"homing_pause", ParamKind::Duration, d.homing_pause, "pause between homing stops (T2, 2 s)",
+       between(0_us, 60_s)},
+      {"input_delay", ParamKind::Duration, d.input_delay, "input edge to effect [A] (0)", between(0_us, 1_s)},
+      {"has_encoder", ParamKind::Boolean, d.has_encoder, "an E unit (internal 1024-count encoder)", {}},
+      {"flash_config_valid",
+       ParamKind::Boolean,
+       d.flash_config_valid,
+       "power up configured from flash (v_s 100, 2048 steps/turn)",
+       {}},
+      {"late_stop_delay", ParamKind::Duration, d.late_stop_delay, "variant late-stop: how late stops act",
+       between(0_us, 10_s)},
       {"lost_step_interval", ParamKind::Integer, d.lost_step_interval,
-       "variant lost-steps: one step lost in this many"},
+       "variant lost-steps: one step lost in this many", between(1.0, 1'000'000.0)},
       {"wrong_accel_factor", ParamKind::Number, d.wrong_accel_factor,
-       "variant wrong-acceleration: ramps at this x A and D"},
+       "variant wrong-acceleration: ramps at this x A and D", between(0.01, 100.0)},
   };
   info.variants.push_back({"nominal", "as specified"});
   for (const std::string_view v : m::fault_names())

@@ -8,6 +8,8 @@
 
 namespace hilrig::duts {
 
+using namespace hilrig::literals;
+
 namespace {
 
 namespace s = hilrig::models::ssi7361;
@@ -65,23 +67,45 @@ DutInfo ssi7361_info() {
       {kPinData, PinDirection::Input, "SSI data DATA+/- from the transducer (idle high)", false},
   };
   const s::Params d{};
+  // Ranges (spec/ssi7361.md): data values are 25-bit, |Preset| <= 33,554,431 (L91, L148; A2);
+  // ROVErr above 64,108,863 counts/s (L182, A3), a limit of 0 .. 2^31 - 1; the first frame
+  // within 0 .. 1 s (a frame every 250/500 us, L53); ACK within 0 .. 1 s.
   info.params = {
-      {"first_frame", ParamKind::Duration, d.first_frame, "F1 of the first frame"},
-      {"sample_at_rising_edge", ParamKind::Boolean, false,
-       "sample bit k at R_k instead of half a period later"},
-      {"invert_before_gray", ParamKind::Boolean, d.invert_before_gray,
-       "Data Logic inversion before Gray (A14)"},
-      {"count_direction_wrap", ParamKind::Boolean, d.count_direction_wrap,
-       "negative direction maps 0 to 0 (A12)"},
-      {"rate_rounding", ParamKind::Text, std::string("truncate"), "rate of change: truncate or nearest (A9)"},
-      {"rate_overflow_limit", ParamKind::Integer, d.rate_overflow_limit, "ROVErr above this |RoC| (A3)"},
-      {"preset_restarts_rate_window", ParamKind::Boolean, d.preset_restarts_rate_window,
-       "an applied preset starts a new rate window"},
+      {"first_frame", ParamKind::Duration, d.first_frame, "F1 of the first frame", between(0_us, 1_s)},
+      {"sample_at_rising_edge",
+       ParamKind::Boolean,
+       false,
+       "sample bit k at R_k instead of half a period later",
+       {}},
+      {"invert_before_gray",
+       ParamKind::Boolean,
+       d.invert_before_gray,
+       "Data Logic inversion before Gray (A14)",
+       {}},
+      {"count_direction_wrap",
+       ParamKind::Boolean,
+       d.count_direction_wrap,
+       "negative direction maps 0 to 0 (A12)",
+       {}},
+      {"rate_rounding", ParamKind::Text, std::string("truncate"), "rate of change: truncate or nearest (A9)",
+       one_of({"truncate", "nearest"})},
+      {"rate_overflow_limit", ParamKind::Integer, d.rate_overflow_limit, "ROVErr above this |RoC| (A3)",
+       between(0.0, 2'147'483'647.0)},
+      {"preset_restarts_rate_window",
+       ParamKind::Boolean,
+       d.preset_restarts_rate_window,
+       "an applied preset starts a new rate window",
+       {}},
       {"format_clears_offset", ParamKind::Text, std::string("when_changed"),
-       "Format clears LO: when_changed or always (A27)"},
-      {"preset_limit", ParamKind::Integer, std::int64_t{d.preset_limit}, "largest |Preset| accepted (A2)"},
-      {"multiplier_may_equal_divisor", ParamKind::Boolean, d.multiplier_may_equal_divisor, "MUL <= DIV (A4)"},
-      {"acknowledge_delay", ParamKind::Duration, d.acknowledge_delay, "TRMT edge to ACK"},
+       "Format clears LO: when_changed or always (A27)", one_of({"when_changed", "always"})},
+      {"preset_limit", ParamKind::Integer, std::int64_t{d.preset_limit}, "largest |Preset| accepted (A2)",
+       between(0.0, 33'554'431.0)},
+      {"multiplier_may_equal_divisor",
+       ParamKind::Boolean,
+       d.multiplier_may_equal_divisor,
+       "MUL <= DIV (A4)",
+       {}},
+      {"acknowledge_delay", ParamKind::Duration, d.acknowledge_delay, "TRMT edge to ACK", between(0_us, 1_s)},
   };
   for (const auto& v : s::kVariantNames)
     info.variants.push_back({std::string(v.name), v.variant == s::Variant::Correct

@@ -5,6 +5,7 @@
 
 #include <toml++/toml.h>
 
+#include "rig/campaign/toml_file.hpp"
 #include "rig/campaign/toml_reader.hpp"
 
 namespace hilrig::far {
@@ -56,12 +57,7 @@ FarResolver read_resolver(const std::string& file, const toml::table& t) {
 } // namespace
 
 FarConfig parse_far_config(std::string_view text, const std::string& file_name) {
-  toml::table root;
-  try {
-    root = toml::parse(text, std::string_view(file_name));
-  } catch (const toml::parse_error& e) {
-    throw CampaignError(file_name, campaign::pos_of(e.source()), "toml", std::string(e.description()));
-  }
+  const toml::table root = campaign::parse_toml(text, file_name);
   TableReader r(file_name, root, "");
   FarConfig c;
   c.file = file_name;
@@ -94,11 +90,7 @@ FarConfig parse_far_config(std::string_view text, const std::string& file_name) 
 }
 
 FarConfig load_far_config(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw CampaignError(path, campaign::SourcePos{}, "file", "a readable far-side config file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_far_config(text.str(), path);
+  return parse_far_config(campaign::read_toml_text(path, "far-side config file"), path);
 }
 
 } // namespace hilrig::far

@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "drivers/gpiod/input_request.hpp"
+#include "rig/campaign/toml_file.hpp"
 #include "rig/campaign/toml_reader.hpp"
 
 namespace hilrig::hardware {
@@ -222,21 +223,12 @@ const GpioLine* RigConfig::line_for(std::string_view rig) const {
 }
 
 RigConfig parse_rig_config(std::string_view text, const std::string& file_name) {
-  toml::table root;
-  try {
-    root = toml::parse(text, std::string_view(file_name));
-  } catch (const toml::parse_error& e) {
-    throw CampaignError(file_name, campaign::pos_of(e.source()), "toml", std::string(e.description()));
-  }
+  const toml::table root = campaign::parse_toml(text, file_name);
   return Reader(file_name, root).read();
 }
 
 RigConfig load_rig_config(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw CampaignError(path, SourcePos{}, "file", "a readable rig config file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_rig_config(text.str(), path);
+  return parse_rig_config(campaign::read_toml_text(path, "rig config file"), path);
 }
 
 } // namespace hilrig::hardware

@@ -3,9 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "rig/campaign/campaign_parser.hpp"
+#include "rig/campaign/executive.hpp"
+#include "rig/campaign/stop_request.hpp"
 
 #include "rig/cli/run_command.hpp"
 #include "rig/results/results_json.hpp"
@@ -112,6 +117,65 @@ TEST(RunCommand, ParseShard) {
   EXPECT_FALSE(parse_shard("0/0"));
   EXPECT_FALSE(parse_shard("a/2"));
   EXPECT_FALSE(parse_shard("1/2x"));
+}
+
+// What the file got wrong is bad input (exit 2) before anything runs, never a rig fault (3):
+// each of these was an out-of-memory exit 3, a run that never ended or a crash before.
+TEST(RunCommand, OutOfRangeFilesExitTwoBeforeAnythingRuns) {
+  const fs::path dir = scratch("ranges");
+  struct Case {
+    const char* name;
+    std::string from;
+    std::string to;
+    std::string key;
+  };
+  const std::string base = campaign::test::kPlsCampaign;
+  const Case cases[] = {
+      {"repeat", "seed = 5", "seed = 5\nrepeat = 100000000",
+       ": campaign.repeat: a repetition count in 1 .. 10000"},
+      {"speed", "speed_rpm = 600", "speed_rpm = 1e12", ": motion.move[0].speed_rpm: a speed in rpm in"},
+      {"scan", "preset = -50", "preset = -50\nscan = \"1ns\"", ": dut.params.scan: a value in 1us .. 100ms"},
+      {"nan", "speed_rpm = 600", "speed_rpm = nan", ": motion.move[0].speed_rpm: a finite number"},
+  };
+  for (const Case& c : cases) {
+    std::string text = base;
+    ASSERT_NE(text.find(c.from), std::string::npos) << c.name;
+    text.replace(text.find(c.from), c.from.size(), c.to);
+    const fs::path file = write_file(dir, std::string(c.name) + ".toml", text);
+    std::string err;
+    EXPECT_EQ(run(file.string(), dir / c.name, &err), 2) << c.name << ": " << err;
+    EXPECT_NE(err.find(c.key), std::string::npos) << c.name << ": " << err;
+    EXPECT_FALSE(fs::exists(dir / c.name / "results.json")) << c.name;
+  }
+  std::string err;
+  EXPECT_EQ(run(dir.string(), dir / "out", &err), 2) << err;
+  EXPECT_NE(err.find("is a directory"), std::string::npos) << err;
+}
+
+// A signal that lands after a run finished and before the next started stops the campaign
+// there; the message says so instead of calling the last (whole) run "stopped early".
+TEST(RunCommand, SignalBetweenRunsIsReportedAsSuch) {
+  const campaign::Campaign c = campaign::load_campaign(campaign::test::shipped("reference_pls_pass.toml"));
+  ASSERT_GE(c.runs.size(), 2U);
+  campaign::Executive exec(c);
+  campaign::StopRequest stop;
+  exec.stop_on(&stop);
+  // The sink runs after each run and before the executive looks at the stop request.
+  const rig::CampaignResult r =
+      exec.run_all(c.runs, c.seed, rig::Shard{0, 1}, {},
+                   [&](const campaign::RunSpec&, const campaign::RunOutput&) { stop.request(SIGTERM); });
+  ASSERT_EQ(r.runs.size(), 1U);
+  EXPECT_FALSE(r.runs[0].interrupted);
+  EXPECT_EQ(r.interrupted, std::optional<std::string>("SIGTERM"));
+  const std::string text = interruption_text(r, "out");
+  EXPECT_NE(text.find("interrupted by SIGTERM: 1 of 4 run(s) done, the signal landed between runs"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("stopped early"), std::string::npos) << text;
+  // A run the signal cut short is still reported as stopped early.
+  rig::CampaignResult cut = r;
+  cut.runs[0].interrupted = true;
+  EXPECT_NE(interruption_text(cut, "out").find("the last stopped early"), std::string::npos);
 }
 
 } // namespace

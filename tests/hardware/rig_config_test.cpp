@@ -194,5 +194,18 @@ TEST(RigConfig, MissingFileNamesIt) {
   }
 }
 
+// The same file checks as a campaign: a directory or a FIFO is not read (a FIFO would block).
+TEST(RigConfig, OnlyARegularFileIsRead) {
+  for (const char* path : {HILRIG_SOURCE_DIR "/rt-config", "/dev/zero"}) {
+    try {
+      (void)load_rig_config(path);
+      FAIL() << "accepted " << path;
+    } catch (const CampaignError& e) {
+      EXPECT_EQ(e.key(), "file");
+      EXPECT_NE(e.expected().find("a regular rig config file"), std::string::npos) << e.what();
+    }
+  }
+}
+
 } // namespace
 } // namespace hilrig::hardware

@@ -1,0 +1,34 @@
+#include "rig/campaign/limits.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace hilrig::campaign {
+
+std::string duration_text(Nanos d) {
+  struct Unit {
+    std::int64_t ns;
+    const char* suffix;
+  };
+  constexpr Unit units[] = {{1'000'000'000, "s"}, {1'000'000, "ms"}, {1'000, "us"}};
+  for (const Unit& u : units)
+    if (d.count() != 0 && d.count() % u.ns == 0) return fmt::format("{}{}", d.count() / u.ns, u.suffix);
+  return d.count() == 0 ? std::string("0s") : fmt::format("{}ns", d.count());
+}
+
+std::string range_text(duts::ParamKind kind, const duts::ParamRange& range) {
+  if (kind == duts::ParamKind::Text) {
+    std::string words;
+    for (const auto& c : range.choices) words += (words.empty() ? "" : ", ") + c;
+    return words.empty() ? std::string("any text") : "one of " + words;
+  }
+  if (kind == duts::ParamKind::Boolean) return "true or false";
+  const auto bound = [&](double v) {
+    if (kind == duts::ParamKind::Duration) return duration_text(Nanos{static_cast<std::int64_t>(v)});
+    return fmt::format("{}", v);
+  };
+  return fmt::format("{} .. {}", bound(range.min), bound(range.max));
+}
+
+} // namespace hilrig::campaign
