@@ -82,6 +82,9 @@ RtuFrame next_rtu_frame(std::span<const std::uint8_t> bytes, bool silent) {
 RtuAnswer answer_rtu_request(RegisterMap& map, std::uint8_t unit, std::span<const std::uint8_t> frame,
                              std::vector<std::uint8_t>& response) {
   RtuAnswer a;
+  if (frame.size() < 4) {
+    return a; // not a frame (unit, function, CRC): nobody is addressed
+  }
   a.broadcast = frame[0] == kBroadcastUnit;
   a.addressed = a.broadcast || frame[0] == unit;
   if (!a.addressed) {

@@ -58,6 +58,7 @@ struct RtuAnswer {
 
 // Carries out one request frame (RtuFrameKind::Request) for unit `unit`: the reply ADU with
 // its CRC is appended to `response` unless the frame was for another unit or a broadcast.
+// Fewer than 4 bytes are not a frame: not addressed, nothing appended.
 RtuAnswer answer_rtu_request(RegisterMap& map, std::uint8_t unit, std::span<const std::uint8_t> frame,
                              std::vector<std::uint8_t>& response);
 

@@ -32,6 +32,9 @@ TcpFrame next_tcp_frame(std::span<const std::uint8_t> stream) {
 
 RegisterStatus answer_tcp_request(RegisterMap& map, std::span<const std::uint8_t> frame,
                                   std::vector<std::uint8_t>& response) {
+  if (frame.size() <= kMbapHeaderLength) {
+    return RegisterStatus::IllegalDataValue; // not a request frame: nothing to answer
+  }
   const std::span<const std::uint8_t> pdu = frame.subspan(kMbapHeaderLength);
   const PduResult result = handle_pdu(map, pdu);
   const bool ok = result.status == RegisterStatus::Ok;

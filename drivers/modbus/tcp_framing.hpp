@@ -38,6 +38,7 @@ struct TcpFrame {
 // ADU, with the request's transaction and unit ids, is appended to `response`. A PDU the
 // handler cannot parse (a truncated request whose MBAP length is consistent) is answered
 // with exception 03, an unknown function with exception 01. Returns the status sent.
+// Bytes too short to hold a function code are not a frame: nothing is appended.
 RegisterStatus answer_tcp_request(RegisterMap& map, std::span<const std::uint8_t> frame,
                                   std::vector<std::uint8_t>& response);
 

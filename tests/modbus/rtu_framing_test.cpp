@@ -127,7 +127,11 @@ TEST(ModbusRtuFraming, OtherUnitIgnoredBroadcastNotAnswered) {
   const RtuAnswer b = answer_rtu_request(m, 1, framed({0, 6, 0x04, 0x00, 0x12, 0x34}), rsp);
   EXPECT_TRUE(b.addressed && b.broadcast);
   EXPECT_TRUE(rsp.empty());
-  EXPECT_EQ(m.holding[0], 0x1234); // carried out (Serial Line §2.2)
+  EXPECT_EQ(m.holding[0], 0x1234);      // carried out (Serial Line §2.2)
+  for (std::size_t n = 0; n < 4; ++n) { // no room for unit, function and CRC: not a frame
+    EXPECT_FALSE(answer_rtu_request(m, 1, Bytes(n, 1), rsp).addressed) << n;
+  }
+  EXPECT_TRUE(rsp.empty());
 }
 
 } // namespace

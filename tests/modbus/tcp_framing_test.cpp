@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "drivers/modbus/tcp_framing.hpp"
@@ -30,6 +31,34 @@ TEST(ModbusTcpFraming, AFrameIsAsLongAsItsLengthFieldSays) {
   const TcpFrame f = next_tcp_frame(two);
   EXPECT_EQ(f.kind, TcpFrameKind::Request);
   EXPECT_EQ(f.length, 12U); // 6 + length 6: the second frame is left for the next call
+}
+
+TEST(ModbusTcpFraming, AStreamOfFramesSplitsBackIntoThem) {
+  // Round trip: random frames (any PDU of 1..253 bytes, protocol id 0 or not) concatenated,
+  // then cut apart again, however the stream is chunked.
+  std::mt19937 rng(19); // fixed seed: deterministic
+  for (int trial = 0; trial < 50; ++trial) {
+    Bytes stream;
+    std::vector<std::pair<TcpFrameKind, std::size_t>> sent;
+    for (int i = 0; i < 20; ++i) {
+      Bytes pdu(1 + rng() % 253);
+      for (auto& b : pdu) b = static_cast<std::uint8_t>(rng());
+      const auto protocol = static_cast<std::uint16_t>(rng() % 3 == 0 ? rng() % 0x10000 : 0);
+      const Bytes f = mbap_frame(static_cast<std::uint16_t>(i), protocol, 1, pdu);
+      sent.emplace_back(protocol == 0 ? TcpFrameKind::Request : TcpFrameKind::Foreign, f.size());
+      stream.insert(stream.end(), f.begin(), f.end());
+    }
+    std::size_t at = 0;
+    for (const auto& [kind, length] : sent) {
+      const std::span<const std::uint8_t> rest(stream.data() + at, stream.size() - at);
+      EXPECT_EQ(next_tcp_frame(rest.first(length - 1)).kind, TcpFrameKind::Incomplete);
+      const TcpFrame f = next_tcp_frame(rest);
+      EXPECT_EQ(f.kind, kind);
+      ASSERT_EQ(f.length, length);
+      at += length;
+    }
+    EXPECT_EQ(at, stream.size());
+  }
 }
 
 TEST(ModbusTcpFraming, LengthFieldOutsideTwoTo254IsInvalid) {
@@ -75,6 +104,14 @@ TEST(ModbusTcpFraming, TruncatedPduWithConsistentLengthGetsException3) {
   }
   Bytes rsp;
   EXPECT_EQ(answer_tcp_request(m, mbap_frame(9, 0, 1, full), rsp), RegisterStatus::Ok);
+}
+
+TEST(ModbusTcpFraming, BytesWithoutAFunctionCodeAreNotAnswered) {
+  PlainMap m;
+  Bytes rsp;
+  const Bytes header = mbap_frame(3, 0, 1, {});
+  EXPECT_EQ(answer_tcp_request(m, header, rsp), RegisterStatus::IllegalDataValue);
+  EXPECT_TRUE(rsp.empty());
 }
 
 TEST(ModbusTcpFraming, UnknownFunctionGetsException1) {
