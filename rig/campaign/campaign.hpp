@@ -16,6 +16,7 @@
 #include "core/line.hpp"
 #include "core/time.hpp"
 #include "rig/campaign/campaign_error.hpp"
+#include "rig/campaign/plant_spec.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::campaign {
@@ -160,6 +161,7 @@ struct Scenario {
   EncoderSpec encoder;
   ResolverSpec resolver;
   MotionSpec motion;
+  std::optional<PlantSpec> plant; // a plant turns the shaft instead of the motion
   std::vector<Stimulus> stimuli;
   std::vector<HostAction> host;
   std::vector<CheckSpec> checks;

@@ -1,5 +1,7 @@
 #include "rig/campaign/scenario_reader.hpp"
 
+#include "rig/campaign/plant_reader.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -40,6 +42,7 @@ public:
     read_motion(out.scenario);
     (void)build_motion(file_, out.scenario.motion,
                        out.scenario.encoder); // a move that cannot follow is bad input
+    read_plant_table(out.scenario);
     read_stimuli(out.scenario);
     read_host(out.scenario);
     read_checks(out.scenario);
@@ -633,6 +636,17 @@ private:
       r.finish();
       out.faults.push_back(std::move(f));
     }
+  }
+
+  // [plant] (plant_reader.cpp): a plant turns the encoder shaft instead of [motion].
+  void read_plant_table(Scenario& s) {
+    (void)root_.node("plant");
+    s.plant = read_plant(file_, root_.table(), s.wiring);
+    if (!s.plant) return;
+    if (!s.motion.moves.empty())
+      fail(s.plant->where, "plant", "no [motion] moves beside it (the plant turns the shaft)");
+    if (!s.resolver.sin_line.empty())
+      fail(s.plant->where, "plant", "no [resolver] beside it (a plant drives the quadrature encoder)");
   }
 
   const std::string& file_;

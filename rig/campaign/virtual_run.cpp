@@ -10,6 +10,7 @@
 #include "rig/campaign/executive.hpp"
 #include "rig/campaign/host_sequence.hpp"
 #include "rig/campaign/motion.hpp"
+#include "rig/campaign/plant_drive.hpp"
 #include "rig/campaign/resolver_stators.hpp"
 #include "rig/campaign/rig_drive.hpp"
 #include "rig/duts/dut.hpp"
@@ -43,6 +44,7 @@ public:
     // The encoder alone is ~10^5 edges a second: beyond 2 MiB of samples the trace goes to a
     // temporary file (read back for the VCD and the checks), so memory does not grow with the run.
     trace_->spill_beyond(std::size_t{1} << 16);
+    if (s_.plant) plant_ = std::make_unique<PlantDrive>(sched_, s_);
   }
 
   VirtualRun run() {
@@ -59,6 +61,7 @@ public:
     dut_->attach(bus_, pins);
 
     drive_.start(in_.faults, in_.probe, in_.record_motion);
+    if (plant_) plant_->start();
     if (in_.host_link != nullptr && *in_.host_link && !s_.host.empty())
       words_ = (*in_.host_link)(*dut_, *info);
     else
@@ -67,12 +70,18 @@ public:
     host_->start();
 
     const Nanos end = play();
-    out_.motion = std::move(drive_.motion());
-    checks::append_motion(out_.motion, {end, static_cast<double>(drive_.count())});
+    if (plant_) {
+      // The shaft as the plant moved it: its last change is the located standstill.
+      out_.motion = plant_->motion().samples();
+      out_.profile = plant_->motion().trajectory();
+    } else {
+      out_.motion = std::move(drive_.motion());
+      checks::append_motion(out_.motion, {end, static_cast<double>(drive_.count())});
+      out_.profile = motion_.profile;
+    }
     out_.observations = std::move(host_->observations());
     out_.handshakes = std::move(host_->handshakes());
     out_.trace = trace_;
-    out_.profile = motion_.profile;
     return std::move(out_);
   }
 
@@ -80,7 +89,14 @@ private:
   void make_lines() {
     for (const Wire& w : s_.wiring) {
       if (w.analog) continue; // an analog channel, not a line
+      if (plant_ && plant_->drives(w.rig)) {
+        virt::DigitalLine& line = bus_.line(w.rig, plant_->initial_level(w.rig));
+        plant_->own(w.rig, line.driver());
+        owned_.push_back(&line.driver());
+        continue;
+      }
       virt::DigitalLine& line = bus_.line(w.rig, drive_.initial_level(w.rig));
+      if (plant_ && plant_->watches(w.rig)) plant_->watch(w.rig, line.reader());
       if (w.direction == duts::PinDirection::Input) {
         drive_.own(w.rig, line.driver());
         owned_.push_back(&line.driver());
@@ -138,6 +154,7 @@ private:
   virt::VirtualBus bus_;
   BuiltMotion motion_;
   RigDrive drive_;
+  std::unique_ptr<PlantDrive> plant_; // when a plant turns the shaft
   std::unique_ptr<duts::Dut> dut_;
   std::vector<LineOutput*> owned_; // the lines the rig drives
   std::unique_ptr<HostWords> words_;

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "core/scheduler.hpp"
+#include "rig/campaign/executive.hpp"
 #include "rig/campaign/rig_drive.hpp"
 
 namespace hilrig::hardware {
@@ -32,6 +33,9 @@ private:
 
 EdgeSchedule build_schedule(const campaign::RunInputs& in, const DrivePlan& plan) {
   const campaign::Scenario& s = *in.scenario;
+  if (s.plant)
+    throw campaign::RigFault("a [plant] closes the loop through the board's outputs, which the precomputed "
+                             "schedule of a rig run cannot: plant campaigns run on the virtual backend");
   EdgeSchedule out;
   out.motion = campaign::build_motion("", s.motion, s.encoder);
   Scheduler sched;

@@ -1,0 +1,95 @@
+#include "rig/campaign/plant_drive.hpp"
+
+#include "rig/campaign/scenario_reader.hpp"
+
+namespace hilrig::campaign {
+
+PlantDrive::PlantDrive(Scheduler& scheduler, const Scenario& scenario)
+    : sched_(scheduler), s_(scenario), spec_(*scenario.plant),
+      motion_(spec_, scenario.encoder.counts_per_turn(), scenario.end),
+      valve_(spec_.kind != PlantKind::Press || spec_.press_start.valve) {
+  encoder_.lines_per_turn = static_cast<std::uint32_t>(s_.encoder.lines);
+  encoder_.units_per_turn = s_.encoder.counts_per_turn(); // the plan is in counts
+  count_ = encoder_.count_at(motion_.plan().position(motion_.plan().start_time()));
+}
+
+bool PlantDrive::drives(std::string_view rig) const {
+  return is_encoder_line(rig) || (!spec_.valve_monitor.empty() && rig == spec_.valve_monitor);
+}
+
+bool PlantDrive::watches(std::string_view rig) const { return spec_.inputs.contains(rig); }
+
+Level PlantDrive::initial_level(std::string_view rig) const {
+  if (rig == kEncoderA) return level_of(signals::channel_a(count_));
+  if (rig == kEncoderB) return level_of(signals::channel_b(count_));
+  return level_of(valve_);
+}
+
+void PlantDrive::own(const std::string& rig, LineOutput& out) {
+  if (rig == kEncoderA) enc_a_ = &out;
+  if (rig == kEncoderB) enc_b_ = &out;
+  if (rig == spec_.valve_monitor) monitor_ = &out;
+}
+
+void PlantDrive::watch(const std::string& rig, LineInput& in) {
+  const plants::PlantInput which = spec_.inputs.find(rig)->second;
+  in.on_edge([this, which](const Edge& e) { apply(which, e.level == Level::High); });
+}
+
+void PlantDrive::start() {
+  for (const PlantCommand& c : spec_.commands) {
+    if (c.at > s_.end) continue;
+    sched_.at(c.at, [this, c] { apply(c.input, c.level == Level::High); });
+  }
+  resolve();
+}
+
+void PlantDrive::apply(plants::PlantInput which, bool level) {
+  const Nanos now = sched_.now();
+  motion_.input(now, which, level);
+  if (which == plants::PlantInput::Valve) {
+    valve_ = level;
+    if (monitor_ != nullptr) monitor_->set(level_of(level));
+  }
+  resolve();
+}
+
+void PlantDrive::resolve() {
+  ++generation_;
+  solver_ = std::make_unique<signals::QuadratureEdgeSolver>(motion_.plan(), encoder_, s_.end);
+  next_ = filled_ = 0;
+  // The new plan starts where the old one was at this instant; a count that rounding puts
+  // on the other side of an edge is set right here, once.
+  const std::int64_t start = solver_->initial_count();
+  if (start != count_) {
+    count_ = start;
+    if (enc_a_ != nullptr) enc_a_->set(level_of(signals::channel_a(count_)));
+    if (enc_b_ != nullptr) enc_b_->set(level_of(signals::channel_b(count_)));
+  }
+  schedule_next();
+}
+
+void PlantDrive::schedule_next() {
+  if (next_ == filled_) {
+    filled_ = solver_->fill(buffer_);
+    next_ = 0;
+    if (filled_ == 0) return;
+  }
+  const Nanos at = buffer_[next_].time;
+  if (at > s_.end) return;
+  sched_.at(at, [this, g = generation_] {
+    if (g == generation_) play();
+  });
+}
+
+void PlantDrive::play() {
+  const signals::QuadEdge e = buffer_[next_++];
+  if (e.channel != signals::QuadChannel::Z) {
+    count_ = e.count;
+    LineOutput* line = e.channel == signals::QuadChannel::A ? enc_a_ : enc_b_;
+    if (line != nullptr) line->set(e.level);
+  }
+  schedule_next();
+}
+
+} // namespace hilrig::campaign

@@ -1,0 +1,64 @@
+#pragma once
+// The rig's drive of a plant scenario, in a Scheduler's time: the encoder lines played
+// from the plant's motion (the closed-form quadrature solver over PlantMotion's plan), the
+// board outputs wired to plant inputs acting on it the instant they change, the rig's own
+// plant commands, and the valve monitor line. Virtual backend only: on a rig the loop
+// would have to close in real time.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/line.hpp"
+#include "core/scheduler.hpp"
+#include "rig/campaign/campaign.hpp"
+#include "rig/campaign/plant_motion.hpp"
+#include "signals/quadrature_edges.hpp"
+
+namespace hilrig::campaign {
+
+class PlantDrive {
+public:
+  // The scheduler and scenario (which has a plant) outlive the drive.
+  PlantDrive(Scheduler& scheduler, const Scenario& scenario);
+  PlantDrive(const PlantDrive&) = delete;
+  PlantDrive& operator=(const PlantDrive&) = delete;
+
+  // Whether the drive owns a rig line (the encoder's, the valve monitor) or watches one (a
+  // board output acting on the plant).
+  [[nodiscard]] bool drives(std::string_view rig) const;
+  [[nodiscard]] bool watches(std::string_view rig) const;
+  [[nodiscard]] Level initial_level(std::string_view rig) const;
+  void own(const std::string& rig, LineOutput& out);
+  void watch(const std::string& rig, LineInput& in);
+  // Schedules the encoder and the commands.
+  void start();
+
+  [[nodiscard]] const PlantMotion& motion() const { return motion_; }
+
+private:
+  void apply(plants::PlantInput which, bool level);
+  void resolve(); // a new solver over the plan, from now
+  void schedule_next();
+  void play();
+
+  Scheduler& sched_;
+  const Scenario& s_;
+  const PlantSpec& spec_;
+  PlantMotion motion_;
+  signals::QuadratureEncoder encoder_;
+  std::unique_ptr<signals::QuadratureEdgeSolver> solver_;
+  std::array<signals::QuadEdge, 64> buffer_{};
+  std::size_t next_ = 0, filled_ = 0;
+  std::uint64_t generation_ = 0; // edges scheduled under an older plan are dropped
+  std::int64_t count_ = 0;
+  LineOutput* enc_a_ = nullptr;
+  LineOutput* enc_b_ = nullptr;
+  LineOutput* monitor_ = nullptr;
+  bool valve_ = true;
+};
+
+} // namespace hilrig::campaign

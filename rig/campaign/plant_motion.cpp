@@ -1,0 +1,92 @@
+#include "rig/campaign/plant_motion.hpp"
+
+#include <numbers>
+
+namespace hilrig::campaign {
+
+std::unique_ptr<plants::Plant> make_plant(const PlantSpec& spec) {
+  switch (spec.kind) {
+  case PlantKind::Press:
+    return std::make_unique<plants::PressPlant>(spec.press, spec.press_start, spec.step, spec.press_changes);
+  case PlantKind::RotaryAxis:
+    return std::make_unique<plants::RotaryAxis>(spec.rotary, spec.rotary_start, spec.step,
+                                                spec.rotary_changes);
+  case PlantKind::StepperLoad:
+    return std::make_unique<plants::StepperLoad>(spec.stepper, spec.step, spec.stepper_changes);
+  }
+  return nullptr;
+}
+
+PlantMotion::PlantMotion(const PlantSpec& spec, double counts_per_turn, Nanos end)
+    : per_rad_(counts_per_turn / (2.0 * std::numbers::pi)), end_(end), checkpoint_(make_plant(spec)) {
+  input(checkpoint_->now(), plants::PlantInput::Valve,
+        spec.kind != PlantKind::Press || spec.press_start.valve);
+}
+
+signals::Segment PlantMotion::segment(const plants::Knot& a, const plants::Knot& b) const {
+  const double d = (b.time - a.time).seconds();
+  const double p0 = a.angle * per_rad_;
+  const double v0 = a.speed * per_rad_;
+  // Through both knots' positions; into a standstill, to speed 0 exactly (a constant
+  // torque makes the two the same).
+  const double acc =
+      b.speed == 0.0 && a.speed != 0.0 ? -v0 / d : 2.0 * (b.angle * per_rad_ - p0 - v0 * d) / (d * d);
+  return signals::Segment{a.time, b.time - a.time, p0, v0, acc};
+}
+
+void PlantMotion::integrate(plants::Plant& plant, Nanos until, std::vector<signals::Segment>& out) const {
+  plants::Knot prev = plant.state();
+  while (prev.time < until) {
+    const plants::Knot k = plant.advance(until);
+    if (k.time > prev.time) out.push_back(segment(prev, k));
+    prev = k;
+  }
+}
+
+void PlantMotion::input(Nanos t, plants::PlantInput which, bool level) {
+  // Rewind to the last input and integrate to t: the same steps as the plan took, so the
+  // history matches what the encoder played up to t.
+  std::unique_ptr<plants::Plant> plant = checkpoint_->clone();
+  const std::size_t before = plant->standstills().size();
+  integrate(*plant, t, history_);
+  for (std::size_t i = before; i < plant->standstills().size(); ++i)
+    history_standstills_.push_back(plant->standstills()[i]);
+  plant->input(which, level);
+  checkpoint_ = plant->clone();
+
+  std::vector<signals::Segment> segments;
+  const std::size_t known = plant->standstills().size();
+  integrate(*plant, end_, segments);
+  plan_standstills_.assign(plant->standstills().begin() + static_cast<std::ptrdiff_t>(known),
+                           plant->standstills().end());
+  const plants::Knot at = checkpoint_->state();
+  plan_ = signals::MotionProfile(at.angle * per_rad_, at.time);
+  for (const signals::Segment& s : segments) plan_.append(s);
+}
+
+signals::MotionProfile PlantMotion::trajectory() const {
+  const double start = history_.empty() ? plan_.position(plan_.start_time()) : history_.front().position;
+  const Nanos t0 = history_.empty() ? plan_.start_time() : history_.front().start;
+  signals::MotionProfile p(start, t0);
+  for (const signals::Segment& s : history_) p.append(s);
+  for (const signals::Segment& s : plan_.segments()) p.append(s);
+  return p;
+}
+
+std::vector<checks::PositionSample> PlantMotion::samples() const {
+  std::vector<checks::PositionSample> out;
+  const auto add = [&](const signals::Segment& s) { checks::append_motion(out, {s.start, s.position}); };
+  for (const signals::Segment& s : history_) add(s);
+  for (const signals::Segment& s : plan_.segments()) add(s);
+  const signals::MotionProfile& last = plan_;
+  checks::append_motion(out, {last.end_time(), last.end_position()});
+  return out;
+}
+
+std::vector<Nanos> PlantMotion::standstills() const {
+  std::vector<Nanos> out = history_standstills_;
+  out.insert(out.end(), plan_standstills_.begin(), plan_standstills_.end());
+  return out;
+}
+
+} // namespace hilrig::campaign
