@@ -3,6 +3,7 @@
 // limit exactly at the brake wear the physics predicts, a board output acts on the plant
 // (the loop closes), and [plant] errors point at their key.
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -82,6 +83,24 @@ TEST(Ans1PressPlant, AWornBrakeOverrunsAtTheWearThePhysicsPredicts) {
     ASSERT_NE(m, nullptr) << e;
     EXPECT_NEAR(m->value, predicted_stop_ms(s_star * (1.0 + e)), 1e-6) << e;
     EXPECT_EQ(m->outcome, e > 0 ? Outcome::Pass : Outcome::Fail) << e << " " << m->value;
+  }
+}
+
+// A sweep over a physical parameter: each point's stop time is the closed form's.
+TEST(Ans1PressPlant, SweepsOverThePlantsParameters) {
+  const std::string text = read_text(kPressFile) + R"(
+[[sweep]]
+key = "plant.brake_torque"
+values = [2000.0, 1500.0, 1000.0]
+)";
+  const Campaign c = parse_campaign(text, "sweep.toml");
+  ASSERT_EQ(c.points.size(), 3U);
+  for (std::size_t p = 0; p < 3; ++p) {
+    const RunOutput out = Executive(c).run(c.runs[p]);
+    const rig::Measurement* m = find_measurement(out.result, "stop.stop_time");
+    ASSERT_NE(m, nullptr);
+    const double s = std::array{1.0, 0.75, 0.5}[p];
+    EXPECT_NEAR(m->value, predicted_stop_ms(s), 1e-6) << p;
   }
 }
 
