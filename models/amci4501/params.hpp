@@ -56,8 +56,12 @@ struct Params {
   bool acknowledge_on_rising_edge = true;
   // An invalid programming cycle is still acknowledged (A30, not stated).
   bool acknowledge_invalid_program = true;
-  // A valid programming cycle clears the result words, bit 0 and responses not yet out.
-  bool program_clears_results = true;
+  // [MODEL] off (the manual, L167-L168: bits 0 and 1 act at once, a programming cycle only
+  // loads bits 2-6 and words 1-5): a same-mode programming cycle keeps the results and a
+  // running cycle. On: every valid programming cycle clears the result words, bit 0 and
+  // responses not yet out, and aborts a running cycle (an acknowledge sent with Transmit
+  // then wipes the last measurement).
+  bool program_clears_results = false;
 
   Variant variant = Variant::Correct;
 };

@@ -1,6 +1,6 @@
 #pragma once
-// Fault variants of the virtual 4501: models that are wrong on purpose, so a campaign can
-// show that its checks catch them. Selected by name from a campaign file.
+// Fault variants of the virtual 4501, each breaking one documented behaviour so a campaign can
+// show that its checks catch it. Selected by name from a campaign file.
 
 #include <array>
 #include <cstdint>
@@ -22,16 +22,18 @@ enum class Variant : std::uint8_t {
 struct VariantName {
   Variant variant;
   std::string_view name;
+  std::string_view description; // what it does wrong (`hilrig list`)
 };
 
 inline constexpr std::array<VariantName, 7> kVariantNames{{
-    {Variant::Correct, "nominal"},
-    {Variant::LateOutputs, "late_outputs"},
-    {Variant::X2Counting, "x2_counting"},
-    {Variant::TimeWrongUnit, "time_wrong_unit"},
-    {Variant::TimeOffByOne, "time_off_by_one"},
-    {Variant::Mode4FilterIgnored, "mode4_filter_ignored"},
-    {Variant::NoResponseNeverRaised, "no_response_never_raised"},
+    {Variant::Correct, "nominal", "as specified"},
+    {Variant::LateOutputs, "late_outputs",
+     "responds (Cycle Output, results) after late_throughput, 250 us, beyond the 125 us throughput"},
+    {Variant::X2Counting, "x2_counting", "decodes the encoder X2 instead of X4: half the counts"},
+    {Variant::TimeWrongUnit, "time_wrong_unit", "time values counted in 10 us units instead of 1 us"},
+    {Variant::TimeOffByOne, "time_off_by_one", "time values one timer tick (1 us) long"},
+    {Variant::Mode4FilterIgnored, "mode4_filter_ignored", "mode 4 Filter 1 and Filter 2 not applied"},
+    {Variant::NoResponseNeverRaised, "no_response_never_raised", "status bit 1 (No Response) never set"},
 }};
 
 [[nodiscard]] constexpr std::optional<Variant> variant_from_string(std::string_view name) {

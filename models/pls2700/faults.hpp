@@ -1,6 +1,6 @@
 #pragma once
-// Fault variants of the virtual 2700: models that are wrong on purpose, selected by name, so
-// a campaign can show that its checks catch each one.
+// Fault variants of the virtual 2700, selected by name, each breaking one documented behaviour
+// so a campaign can show that its checks catch it.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -9,12 +9,14 @@
 namespace hilrig::models::pls2700 {
 
 enum class Fault : std::uint8_t {
-  Nominal,            // as specified
-  LateOutputs,        // position/output update at twice the specified period
-  AdvanceWrongSign,   // advances move edges later instead of earlier
-  OffLeOnNotEnforced, // a_off > a_on accepted on a standard (non -04) model
-  TachWindowWrong,    // 30 ms tach response counts over 60 ms but scales as 30 ms
-  ErrorLatchMissing,  // a bad instruction does not stop the rest, and no 24h afterwards
+  Nominal,               // as specified
+  LateOutputs,           // position/output update at twice the specified period
+  AdvanceWrongSign,      // advances move edges later instead of earlier
+  OffLeOnNotEnforced,    // a_off > a_on accepted on a standard (non -04) model
+  TachWindowWrong,       // 30 ms tach response counts over 60 ms but scales as 30 ms
+  ErrorLatchMissing,     // a bad instruction does not stop the rest, and no 24h afterwards
+  AdvanceSpeedJitter,    // advances use one update's motion: the edge jitters, outputs chatter
+  TachFirstIntervalLong, // the first tach value after a response-time change spans T + T_upd
 };
 
 struct FaultName {
@@ -23,7 +25,7 @@ struct FaultName {
   std::string_view description;
 };
 
-inline constexpr std::array<FaultName, 6> kFaultNames{{
+inline constexpr std::array<FaultName, 8> kFaultNames{{
     {Fault::Nominal, "nominal", "as specified"},
     {Fault::LateOutputs, "late_outputs", "position/output update every 2 x 200/400 us"},
     {Fault::AdvanceWrongSign, "advance_wrong_sign", "advances move edges later instead of earlier"},
@@ -32,6 +34,12 @@ inline constexpr std::array<FaultName, 6> kFaultNames{{
     {Fault::TachWindowWrong, "tach_window_wrong", "tach code 0 counts over 60 ms, scaled as 30 ms"},
     {Fault::ErrorLatchMissing, "error_latch_missing",
      "a bad instruction does not stop the rest of the BTW; no Message Ignored"},
+    {Fault::AdvanceSpeedJitter, "advance_speed_jitter",
+     "advances use the last update's motion alone, which alternates between adjacent counts: "
+     "advanced edges jump by a x 1 count / T_upd and outputs chatter (several ON pulses a pass)"},
+    {Fault::TachFirstIntervalLong, "tach_first_interval_long",
+     "the first tach value after the response time is set also counts the update in progress: "
+     "measured over T + T_upd, reads high (999.9 rpm at 0.1 rpm: 10007)"},
 }};
 
 [[nodiscard]] std::optional<Fault> fault_from_name(std::string_view name);

@@ -27,6 +27,9 @@ struct Params {
   // R-LS-4: ON == OFF means "never on" (false) or "always on" (true).
   bool equal_pair_full_turn = false;
   ReverseAdvance reverse_advance = ReverseAdvance::Signed;
+  // R-ADV-5 [X]: the advances' speed is the motion over this moving window (advance_speed.hpp);
+  // 200 ms = twice the largest advance (99 ms, L1393) keeps every advanced edge within one count.
+  Nanos advance_speed_window{200'000'000};
   // §4.9 / §7.20: a transducer fault switches off all eight outputs (true) or only the outputs
   // allocated to the faulted channel (false).
   bool fault_turns_off_all_outputs = true;

@@ -10,8 +10,10 @@ namespace hilrig::models::pls2700 {
 Pls2700::Pls2700(Scheduler& scheduler, ModelVariant model, const Params& params, Fault fault)
     : scheduler_(scheduler), model_(traits(model)), params_(params), fault_(fault),
       period_(fault == Fault::LateOutputs ? model_.update_period * 2 : model_.update_period),
-      excitation_(params.excitation_hz, params.excitation_amplitude), inputs_(std::make_shared<InputState>()),
-      outputs_(std::make_shared<OutputPins>()) {
+      excitation_(params.excitation_hz, params.excitation_amplitude),
+      advance_speed_{AdvanceSpeed(advance_window_updates(params.advance_speed_window, period_), period_),
+                     AdvanceSpeed(advance_window_updates(params.advance_speed_window, period_), period_)},
+      inputs_(std::make_shared<InputState>()), outputs_(std::make_shared<OutputPins>()) {
   setup_.mask = params_.power_up_mask;
   for (std::size_t ch = 0; ch < 2; ++ch) {
     restart_tach(ch);
@@ -61,7 +63,14 @@ void Pls2700::restart_tach(std::size_t ch) {
   const Nanos interval = tach_interval(code, thirty_two);
   // Fault variant: the 30 ms response sums over 60 ms but still scales as 30 ms.
   const Nanos window = (fault_ == Fault::TachWindowWrong && code == 0) ? interval * 2 : interval;
-  tach_[ch].restart(scheduler_.now(), window, interval, tach_in_tenths(code));
+  // The interval starts at the sample its first counted step starts from: the last update, or
+  // the first one still to come. Starting it at `now` would also count the step from the last
+  // update to `now`, one update too many in the first value.
+  Nanos start = last_update_ >= Nanos{0} ? last_update_ : scheduler_.now() + params_.update_phase;
+  if (fault_ == Fault::TachFirstIntervalLong) {
+    start = scheduler_.now();
+  }
+  tach_[ch].restart(start, window, interval, tach_in_tenths(code));
 }
 
 void Pls2700::sample_channel(std::size_t ch, Nanos peak) {
@@ -76,6 +85,7 @@ void Pls2700::sample_channel(std::size_t ch, Nanos peak) {
     fault_latched_[ch] = true; // Err1, held until Clear Errors (L601, L1359)
     have_raw_[ch] = false;
     raw_step_[ch] = 0;
+    advance_speed_[ch].reset();
     return;
   }
   const ChannelSetup& c = setup_.channels[ch];
@@ -86,6 +96,9 @@ void Pls2700::sample_channel(std::size_t ch, Nanos peak) {
       pls2700::machine_position(absolute_position(r.raw, c.scale_factor), c.circular_offset, c.scale_factor);
   if (have_raw_[ch]) {
     cycles_[ch].advance(circular_step(previous_mp, mp_[ch], c.scale_factor));
+  }
+  if (have_raw_[ch]) {
+    advance_speed_[ch].add(raw_step_[ch]);
   }
   have_raw_[ch] = true;
   tach_[ch].add(raw_step_[ch]);
@@ -117,14 +130,18 @@ void Pls2700::update() {
   output_states_ = evaluate_outputs();
   drive_outputs(output_states_);
   ++updates_;
+  last_update_ = now;
   schedule_update(now + period_);
 }
 
 double Pls2700::speed_counts_per_ms(std::size_t ch) const {
-  // R-ADV-5 [I]: instantaneous speed from the last two samples, in MP counts per ms.
+  // R-ADV-5 [X]: the windowed speed (advance_speed.hpp), in MP counts per ms.
   const double sf = static_cast<double>(setup_.channels[ch].scale_factor);
-  const double period_ms = static_cast<double>(period_.count()) / 1e6;
-  return static_cast<double>(raw_step_[ch]) * sf / kInternalCounts / period_ms;
+  if (fault_ == Fault::AdvanceSpeedJitter) {
+    const double period_ms = static_cast<double>(period_.count()) / 1e6;
+    return static_cast<double>(raw_step_[ch]) * sf / kInternalCounts / period_ms;
+  }
+  return advance_speed_[ch].steps_per_ms() * sf / kInternalCounts;
 }
 
 std::uint8_t Pls2700::evaluate_outputs() const {

@@ -19,6 +19,7 @@
 #include <span>
 
 #include "core/scheduler.hpp"
+#include "models/pls2700/advance_speed.hpp"
 #include "models/pls2700/cycle.hpp"
 #include "models/pls2700/faults.hpp"
 #include "models/pls2700/limits.hpp"
@@ -135,6 +136,8 @@ private:
   std::array<bool, 2> fault_present_{};
   std::array<bool, 2> fault_latched_{};
   std::array<Tachometer, 2> tach_{};
+  std::array<AdvanceSpeed, 2> advance_speed_;
+  Nanos last_update_{-1};
   std::array<CycleLogic, 2> cycles_{};
   std::shared_ptr<InputState> inputs_;
   std::shared_ptr<OutputPins> outputs_;

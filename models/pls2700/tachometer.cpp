@@ -27,8 +27,8 @@ std::uint16_t tach_value(std::int64_t counts, Nanos interval, bool tenths) {
   return static_cast<std::uint16_t>(std::min<std::int64_t>(value, kTachMask));
 }
 
-void Tachometer::restart(Nanos now, Nanos window, Nanos scale, bool tenths) {
-  end_ = now + window;
+void Tachometer::restart(Nanos start, Nanos window, Nanos scale, bool tenths) {
+  end_ = start + window;
   window_ = window;
   scale_ = scale;
   tenths_ = tenths;

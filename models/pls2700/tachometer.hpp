@@ -18,9 +18,10 @@ inline constexpr std::uint16_t kTachMask = 0x3FFF; // 14-bit field (L1613)
 
 class Tachometer {
 public:
-  // Starts a new interval at `now`: `window` is how long counts are summed, `scale` the
-  // interval the speed is computed for (equal in a correct module).
-  void restart(Nanos now, Nanos window, Nanos scale, bool tenths);
+  // Starts a new interval at the update sample `start` (the steps added from then on are
+  // counted): `window` is how long counts are summed, `scale` the interval the speed is
+  // computed for (equal in a correct module).
+  void restart(Nanos start, Nanos window, Nanos scale, bool tenths);
   void add(std::int64_t counts) { sum_ += counts; }
   // At an update tick: closes the interval when it is over. True when the value changed.
   bool update(Nanos now);

@@ -98,10 +98,19 @@ std::int32_t Ssi7361::data_value() const { return saturate_i32(dv_); }
 void Ssi7361::restart_rate_window() {
   if (rate_event_.valid()) scheduler_.cancel(rate_event_);
   dv_at_window_ = dv_;
+  frames_at_window_ = frames_;
   rate_event_ = scheduler_.after(milliseconds(state_.setup.rut_ms), [this] { on_rate_update(); });
 }
 
 void Ssi7361::on_rate_update() {
+  // A rate is the change between two frames read from the transducer (§3): before the window
+  // started with a frame and a later frame ended it there is no rate and no ROVErr — at
+  // power-up the Data Value of "no frame yet" is not a position.
+  const bool two_frames = frames_at_window_ > 0 && frames_ > frames_at_window_;
+  if (!two_frames && params_.variant != Variant::RateFromPowerUp) {
+    restart_rate_window();
+    return;
+  }
   const std::int64_t roc = rate_of_change(dv_ - dv_at_window_, state_.setup.rut_ms, params_.rate_rounding);
   if (params_.variant != Variant::RateNotUpdated) {
     rate_ = saturate_i32(roc);

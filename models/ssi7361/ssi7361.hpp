@@ -112,6 +112,7 @@ private:
   std::uint32_t raw_ = 0; // until the first frame completes
   std::int64_t dv_ = 0;
   std::int64_t dv_at_window_ = 0;
+  std::uint64_t frames_at_window_ = 0; // frames read when the rate window started
   std::int32_t rate_ = 0;
   bool rate_overflow_ = false;
   EventId rate_event_{};

@@ -92,6 +92,10 @@ DutInfo amci4501_info() {
        between(1_ns, 1_ms)},
       {"velocity_window", ParamKind::Duration, d.velocity_window, "velocity counts per window (L114)",
        between(1_ms, 10_s)},
+      {"default_timeout", ParamKind::Duration, d.default_timeout,
+       "the timeout that timeout word 0 means (L169)", between(1_ms, 100_s)},
+      {"cycle_output_on", ParamKind::Text, std::string("high"),
+       "the Cycle Output line's level while the output sinks (L277)", one_of({"high", "low"})},
       {"start_jumper", ParamKind::Text, std::string("rising"), "JP6: rising (pins 1-2) or falling (3-4)",
        one_of({"rising", "falling"})},
       {"latch_jumper", ParamKind::Text, std::string("rising"), "JP5: rising (pins 1-2) or falling (3-4)",
@@ -133,13 +137,12 @@ DutInfo amci4501_info() {
       {"program_clears_results",
        ParamKind::Boolean,
        d.program_clears_results,
-       "a valid programming cycle clears the result words",
+       "a valid programming cycle clears the result words and aborts a running cycle (false: the manual, "
+       "L167-L168)",
        {}},
   };
   for (const auto& v : m::kVariantNames)
-    info.variants.push_back({std::string(v.name), v.variant == m::Variant::Correct
-                                                      ? "as specified"
-                                                      : "wrong on purpose (models/amci4501/variants.hpp)"});
+    info.variants.push_back({std::string(v.name), std::string(v.description)});
   info.host = HostInterface{m::kWords, m::kWords, true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
@@ -149,6 +152,8 @@ DutInfo amci4501_info() {
     p.late_throughput = params.duration("late_throughput");
     p.timer_resolution = params.duration("timer_resolution");
     p.velocity_window = params.duration("velocity_window");
+    p.default_timeout = params.duration("default_timeout");
+    p.cycle_output_on = params.text("cycle_output_on") == "low" ? Level::Low : Level::High;
     p.start_jumper = jumper(params.text("start_jumper"), "start_jumper");
     p.latch_jumper = jumper(params.text("latch_jumper"), "latch_jumper");
     p.no_response_missed = static_cast<unsigned>(params.integer("no_response_missed"));

@@ -125,6 +125,8 @@ DutInfo pls2700_info() {
       {"input_delay", ParamKind::Duration, d.input_delay, "2742-18 input T_ON/T_OFF", between(0_us, 3_ms)},
       {"update_phase", ParamKind::Duration, d.update_phase, "first update after power-up",
        between(0_us, 1_s)},
+      {"advance_speed_window", ParamKind::Duration, d.advance_speed_window,
+       "the advances' speed is the motion over this moving window (R-ADV-5)", between(1_ms, 10_s)},
   };
   for (const auto& f : p::kFaultNames)
     info.variants.push_back({std::string(f.name), std::string(f.description)});
@@ -152,6 +154,7 @@ DutInfo pls2700_info() {
     q.output_delay = params.duration("output_delay");
     q.input_delay = params.duration("input_delay");
     q.update_phase = params.duration("update_phase");
+    q.advance_speed_window = params.duration("advance_speed_window");
     return std::make_unique<Pls2700Dut>(scheduler, *model, q, *fault);
   };
   return info;

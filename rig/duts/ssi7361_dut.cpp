@@ -77,6 +77,11 @@ DutInfo ssi7361_info() {
        false,
        "sample bit k at R_k instead of half a period later",
        {}},
+      {"read_all_ones_without_supply",
+       ParamKind::Boolean,
+       d.read_all_ones_without_supply,
+       "no +24 V on pins 1/2: every bit reads 1 (L2182-2184)",
+       {}},
       {"invert_before_gray",
        ParamKind::Boolean,
        d.invert_before_gray,
@@ -108,9 +113,7 @@ DutInfo ssi7361_info() {
       {"acknowledge_delay", ParamKind::Duration, d.acknowledge_delay, "TRMT edge to ACK", between(0_us, 1_s)},
   };
   for (const auto& v : s::kVariantNames)
-    info.variants.push_back({std::string(v.name), v.variant == s::Variant::Correct
-                                                      ? "as specified"
-                                                      : "wrong on purpose (models/ssi7361/variants.hpp)"});
+    info.variants.push_back({std::string(v.name), std::string(v.description)});
   info.host = HostInterface{s::kCommandWords, s::kStatusWords, true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
@@ -118,6 +121,7 @@ DutInfo ssi7361_info() {
     p.first_frame = params.duration("first_frame");
     p.sample_instant = params.boolean("sample_at_rising_edge") ? s::SampleInstant::AtRisingEdge
                                                                : s::SampleInstant::HalfPeriodAfterRising;
+    p.read_all_ones_without_supply = params.boolean("read_all_ones_without_supply");
     p.invert_before_gray = params.boolean("invert_before_gray");
     p.count_direction_wrap = params.boolean("count_direction_wrap");
     const std::string& rounding = params.text("rate_rounding");

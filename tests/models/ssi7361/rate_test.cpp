@@ -132,12 +132,14 @@ TEST(Ssi7361Rate, M21_DefaultRut100msFromPowerUp) {
   // Defaults M = 1, N = 24: the sensor's 24-bit value sits in stream bits 1..24.
   rig.attach_sensor(signals::ssi7361_frame(1, 24), ramp(1, 1_ms));
   rig.run_until(150_ms);
-  // Window 0..100 ms: DV went 0 (nothing read yet) -> 99 (frame latched at 99.5 ms).
-  EXPECT_EQ(rig.rate(), 990);
+  // Window 0..100 ms started before any frame: no rate (power_up_rate_test.cpp).
+  EXPECT_EQ(rig.rate(), 0);
   rig.run_until(199_ms);
-  EXPECT_EQ(rig.rate(), 990); // held between updates (L1269)
+  EXPECT_EQ(rig.rate(), 0);
   rig.run_until(200_ms);
-  EXPECT_EQ(rig.rate(), 1000); // 199 - 99 = 100 in 100 ms
+  EXPECT_EQ(rig.rate(), 1000); // 199 - 99 = 100 in 100 ms (default RUT, L1269-1270)
+  rig.run_until(299_ms);
+  EXPECT_EQ(rig.rate(), 1000); // held between updates (L1269)
 }
 
 TEST(Ssi7361Rate, ProgrammingRutRestartsTheWindow) {
@@ -146,7 +148,7 @@ TEST(Ssi7361Rate, ProgrammingRutRestartsTheWindow) {
   rig.run_until(130_ms);
   ASSERT_EQ(rig.program(qbit::kRut, {.rut = 100}), kAck); // same RUT, new window at 130 ms
   rig.run_until(229_ms);
-  EXPECT_EQ(rig.rate(), 990); // still the 100 ms update: none at 200 ms
+  EXPECT_EQ(rig.rate(), 0); // no update at 200 ms (and none from the frameless first window)
   rig.run_until(230_ms);
   EXPECT_EQ(rig.rate(), 1000); // 229 - 129
 }
