@@ -16,6 +16,8 @@
 #include "rig/campaign/duration.hpp"
 #include "rig/cli/exit_status.hpp"
 #include "rig/cli/serve_devices.hpp"
+#include "rig/cli/serve_params.hpp"
+#include "rig/duts/dut.hpp"
 
 namespace hilrig::cli {
 
@@ -212,9 +214,23 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
     throw std::invalid_argument("unknown device '" + options.device + "' (served: " + served_device_names() +
                                 ")");
   }
+  ServeModelOptions model_options;
+  model_options.fault = options.fault;
+  model_options.m12 = options.m12;
+  model_options.no_encoder = options.no_encoder;
+  model_options.scan_period = options.scan_period;
+  if (const duts::DutInfo* info = duts::find_dut(options.device); info != nullptr) {
+    model_options.params = serve_params(*info, options.params); // throws on a bad --param
+  } else if (!options.params.empty()) {
+    throw std::invalid_argument("--param: " + options.device + " has no parameters");
+  }
+  model_options.params_given = !options.params.empty();
+  if (!options.motion.empty() && options.device != "pls2700") {
+    throw std::invalid_argument("--motion is for pls2700 (a built-in resolver), not " + options.device);
+  }
+  model_options.motion = options.motion;
   Scheduler scheduler;
-  const ServedModel model = device->build(
-      scheduler, ServeModelOptions{options.fault, options.m12, options.no_encoder, options.scan_period});
+  const ServedModel model = device->build(scheduler, model_options);
   std::unique_ptr<ServedFarSide> far;
   if (!options.far.config.empty()) {
     far = std::make_unique<ServedFarSide>(scheduler, options.far, model, options.device);
@@ -297,6 +313,16 @@ void add_serve_command(CLI::App& app) {
   cmd->add_option("--fault", args->options.fault,
                   "Fault variant (smd23e: none, wrong-acceleration, lost-steps, ignored-limit, late-stop; "
                   "ans1: none or a variant name)");
+  cmd->add_option(
+         "--param", args->options.params,
+         "KEY=VALUE: a [MODEL] choice of the device by its campaign name (`hilrig list`); repeatable")
+      ->allow_extra_args(false);
+  cmd->add_option_function<std::string>(
+      "--model", [args](const std::string& m) { args->options.params.push_back("model=" + m); },
+      "pls2700: the module, 2731, 2731-04, 2732, 2732-04, 2741, 2742 (default) or 2742-18 (= --param "
+      "model=)");
+  cmd->add_option("--motion", args->options.motion,
+                  "pls2700: a built-in transducer on the stators, constant:<rpm>rpm (e.g. constant:300rpm)");
   cmd->add_flag("--m12", args->options.m12, "smd23e: model an M12 unit (two inputs)");
   cmd->add_flag("--no-encoder", args->options.no_encoder,
                 "smd23e: model a unit without the internal encoder");

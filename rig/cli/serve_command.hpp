@@ -19,6 +19,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/serial.hpp"
 #include "drivers/modbus/rtu_server.hpp"
@@ -45,6 +46,10 @@ struct ServeOptions {
   std::string fault = "none";
   bool m12 = false;
   bool no_encoder = false;
+  // The device's [MODEL] choices as "KEY=VALUE" (its campaign adapter's names, `hilrig list`)
+  // and, for pls2700, the built-in transducer's motion ("constant:300rpm").
+  std::vector<std::string> params;
+  std::string motion;
   // The far side: the model's pins on gpio-sim and CAN (none when far.config is empty), and
   // how often the model runs and its pins are read while no request arrives.
   FarSideOptions far;

@@ -1,5 +1,8 @@
 #include "rig/cli/serve_devices.hpp"
 
+#include <charconv>
+#include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "drivers/virtual/virtual_bus.hpp"
@@ -13,7 +16,11 @@
 #include "models/smd23e/smd23e.hpp"
 #include "models/ssi7361/registers.hpp"
 #include "models/ssi7361/ssi7361.hpp"
+#include "rig/duts/amci4501_dut.hpp"
+#include "rig/duts/pls2700_dut.hpp"
+#include "rig/duts/ssi7361_dut.hpp"
 #include "rig/far/far_side.hpp"
+#include "signals/resolver.hpp"
 
 namespace hilrig::cli {
 
@@ -28,7 +35,15 @@ std::string_view nominal_if_none(const std::string& fault) {
   throw std::invalid_argument("unknown fault variant '" + fault + "' for " + std::string(device));
 }
 
+// Devices whose serve builder does not read ServeModelOptions::params yet.
+void refuse_params(std::string_view device, const ServeModelOptions& o) {
+  if (o.params_given) {
+    throw std::invalid_argument("--param is not taken by " + std::string(device) + " (served: its defaults)");
+  }
+}
+
 ServedModel build_smd23e(Scheduler& scheduler, const ServeModelOptions& o) {
+  refuse_params("smd23e", o);
   const auto fault = models::smd23e::fault_from_name(o.fault);
   if (!fault) {
     unknown_fault("smd23e", o.fault);
@@ -46,6 +61,7 @@ ServedModel build_smd23e(Scheduler& scheduler, const ServeModelOptions& o) {
 // drives them), inputs off. Its host words are fully served. A far side gives it the pins
 // its config names (encoder, inputs, outputs, stators); the rest stay unwired.
 ServedModel build_ans1(Scheduler& scheduler, const ServeModelOptions& o) {
+  refuse_params("ans1", o);
   const auto variant = models::ans1::variant_from_name(nominal_if_none(o.fault));
   if (!variant) {
     unknown_fault("ans1", o.fault);
@@ -84,7 +100,7 @@ ServedModel build_ssi7361(Scheduler& scheduler, const ServeModelOptions& o) {
     models::ssi7361::Ssi7361 module;
     models::ssi7361::Ssi7361Registers map;
   };
-  models::ssi7361::Params params;
+  models::ssi7361::Params params = duts::ssi7361_params(o.params);
   params.variant = *variant;
   auto served = std::make_shared<Served>(scheduler, params);
   RegisterMap* map = &served->map;
@@ -110,27 +126,60 @@ ServedModel build_amci4501(Scheduler& scheduler, const ServeModelOptions& o) {
     models::amci4501::Amci4501 module;
     models::amci4501::Amci4501Registers map;
   };
-  models::amci4501::Params params;
+  models::amci4501::Params params = duts::amci4501_params(o.params);
   params.variant = *variant;
   auto served = std::make_shared<Served>(scheduler, params);
   RegisterMap* map = &served->map;
   return {std::move(served), map, {}};
 }
 
-// A Series 2731 (the single-channel standard module) with no stators attached, so it reports
-// a transducer fault (8000h position words) until the host looks; its BTW/BTR words are served.
+// "constant:<rpm>rpm" (e.g. "constant:300rpm", "constant:-12.5rpm"): the transducer's speed.
+double constant_rpm(const std::string& motion) {
+  constexpr std::string_view kPrefix = "constant:";
+  constexpr std::string_view kUnit = "rpm";
+  const std::string_view m(motion);
+  double rpm = 0.0;
+  if (m.starts_with(kPrefix) && m.ends_with(kUnit) && m.size() > kPrefix.size() + kUnit.size()) {
+    const char* first = m.data() + kPrefix.size();
+    const char* last = m.data() + m.size() - kUnit.size();
+    const auto [end, ec] = std::from_chars(first, last, rpm);
+    if (ec == std::errc() && end == last && std::isfinite(rpm)) {
+      return rpm;
+    }
+  }
+  throw std::invalid_argument("--motion " + motion + ": expected constant:<rpm>rpm, e.g. constant:300rpm");
+}
+
+// A Series 2700 module (`--param model=`, the adapter's default 2742) on a private virtual bus.
+// Without a motion its stators are open, so it reports a transducer fault (8000h position
+// words); with one, a resolver turning at that speed drives every channel's stators (one
+// transducer jumpered into both channels of a 2-channel module, R-18-8), locked to the
+// module's own reference, so a host can program it and watch positions, tach and outputs.
 ServedModel build_pls2700(Scheduler& scheduler, const ServeModelOptions& o) {
   const auto fault = models::pls2700::fault_from_name(nominal_if_none(o.fault));
   if (!fault) {
     unknown_fault("pls2700", o.fault);
   }
+  namespace p = models::pls2700;
   struct Served {
-    Served(Scheduler& s, models::pls2700::Fault f)
-        : module(s, models::pls2700::ModelVariant::M2731, {}, f), map(module) {}
-    models::pls2700::Pls2700 module;
-    models::pls2700::Pls2700Registers map;
+    Served(Scheduler& s, p::ModelVariant model, const p::Params& params, p::Fault f)
+        : bus(s), module(s, p::wire_pins(bus, "pls."), model, params, f), map(module) {}
+    virt::VirtualBus bus;
+    p::Pls2700 module;
+    p::Pls2700Registers map;
+    std::optional<signals::Resolver> transducer;
   };
-  auto served = std::make_shared<Served>(scheduler, *fault);
+  auto served = std::make_shared<Served>(scheduler, duts::pls2700_model(o.params),
+                                         duts::pls2700_params(o.params), *fault);
+  if (!o.motion.empty()) {
+    const double rpm = constant_rpm(o.motion);
+    signals::Resolver& r = served->transducer.emplace(served->module.excitation().resolver_params(),
+                                                      signals::angle_at_constant_speed(0.0, rpm / 60.0));
+    for (int ch = 1; ch <= 2; ++ch) {
+      served->bus.analog("pls." + p::sin_pin_name(ch)).set_waveform(r.sin_waveform());
+      served->bus.analog("pls." + p::cos_pin_name(ch)).set_waveform(r.cos_waveform());
+    }
+  }
   RegisterMap* map = &served->map;
   return {std::move(served), map, {}};
 }
@@ -162,10 +211,11 @@ const std::vector<ServedDevice>& served_devices() {
        {1024, 20, 0, 20},
        build_ans1},
       {"pls2700",
-       "Series 2731 limit switch: BTR at input registers 0-2, BTW at holding 0-63 (FC16 at 0 = one BTW), "
-       "error byte at holding 64",
+       "Series 2700 limit switch (--param model=2731 .. 2742-18, default 2742; --motion constant:<rpm>rpm "
+       "turns a built-in transducer): BTR at input registers 0-4 (1-channel modules 0-2), BTW at holding "
+       "0-63 (FC16 at 0 = one BTW), error byte at holding 64",
        pls2700_faults,
-       {0, 65, 0, 3},
+       {0, 65, 0, 5},
        build_pls2700},
       {"smd23e",
        "SMD23E stepper: input registers 0-9, output words at holding registers 1024-1033",

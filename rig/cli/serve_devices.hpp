@@ -13,6 +13,7 @@
 
 #include "core/register_map.hpp"
 #include "core/scheduler.hpp"
+#include "rig/duts/dut.hpp"
 
 namespace hilrig::far {
 class FarSide;
@@ -28,6 +29,13 @@ struct ServeModelOptions {
   // ans1: the master scan period (the model's default 10 us when empty). A host slower than
   // the board (QEMU's emulated CPU) keeps real time with a longer one.
   std::optional<Nanos> scan_period;
+  // Every [MODEL] parameter of the device's campaign adapter (defaults filled in, `--param`
+  // overrides): pls2700, amci4501 and ssi7361 build their model from it.
+  duts::DutParams params;
+  bool params_given = false; // a --param was written (refused by devices that do not take them)
+  // pls2700: the built-in transducer on every channel's stators, "constant:<rpm>rpm"; empty =
+  // no stators (a transducer fault until a far side drives them).
+  std::string motion;
 };
 
 // A built model: `keep` owns the model (and whatever it needs); `registers` is its host map.

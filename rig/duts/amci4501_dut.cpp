@@ -64,6 +64,29 @@ m::Jumper jumper(const std::string& text, const char* which) {
 
 } // namespace
 
+m::Params amci4501_params(const DutParams& params) {
+  m::Params p;
+  p.throughput = params.duration("throughput");
+  p.mode5_throughput = params.duration("mode5_throughput");
+  p.late_throughput = params.duration("late_throughput");
+  p.timer_resolution = params.duration("timer_resolution");
+  p.velocity_window = params.duration("velocity_window");
+  p.default_timeout = params.duration("default_timeout");
+  p.cycle_output_on = params.text("cycle_output_on") == "low" ? Level::Low : Level::High;
+  p.start_jumper = jumper(params.text("start_jumper"), "start_jumper");
+  p.latch_jumper = jumper(params.text("latch_jumper"), "latch_jumper");
+  p.no_response_missed = static_cast<unsigned>(params.integer("no_response_missed"));
+  p.fw_version = static_cast<unsigned>(params.integer("fw_version"));
+  p.mode4_timeout_sets_new = params.boolean("mode4_timeout_sets_new");
+  p.z_resets_in_all_modes = params.boolean("z_resets_in_all_modes");
+  p.lower_word_over_999_is_error = params.boolean("lower_word_over_999_is_error");
+  p.saturate_latch_counts = params.boolean("saturate_latch_counts");
+  p.acknowledge_on_rising_edge = params.boolean("acknowledge_on_rising_edge");
+  p.acknowledge_invalid_program = params.boolean("acknowledge_invalid_program");
+  p.program_clears_results = params.boolean("program_clears_results");
+  return p;
+}
+
 DutInfo amci4501_info() {
   DutInfo info;
   info.name = "amci4501";
@@ -146,25 +169,7 @@ DutInfo amci4501_info() {
   info.host = HostInterface{m::kWords, m::kWords, true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
-    m::Params p;
-    p.throughput = params.duration("throughput");
-    p.mode5_throughput = params.duration("mode5_throughput");
-    p.late_throughput = params.duration("late_throughput");
-    p.timer_resolution = params.duration("timer_resolution");
-    p.velocity_window = params.duration("velocity_window");
-    p.default_timeout = params.duration("default_timeout");
-    p.cycle_output_on = params.text("cycle_output_on") == "low" ? Level::Low : Level::High;
-    p.start_jumper = jumper(params.text("start_jumper"), "start_jumper");
-    p.latch_jumper = jumper(params.text("latch_jumper"), "latch_jumper");
-    p.no_response_missed = static_cast<unsigned>(params.integer("no_response_missed"));
-    p.fw_version = static_cast<unsigned>(params.integer("fw_version"));
-    p.mode4_timeout_sets_new = params.boolean("mode4_timeout_sets_new");
-    p.z_resets_in_all_modes = params.boolean("z_resets_in_all_modes");
-    p.lower_word_over_999_is_error = params.boolean("lower_word_over_999_is_error");
-    p.saturate_latch_counts = params.boolean("saturate_latch_counts");
-    p.acknowledge_on_rising_edge = params.boolean("acknowledge_on_rising_edge");
-    p.acknowledge_invalid_program = params.boolean("acknowledge_invalid_program");
-    p.program_clears_results = params.boolean("program_clears_results");
+    m::Params p = amci4501_params(params);
     const auto v = m::variant_from_string(variant);
     if (!v) throw std::invalid_argument("amci4501 has no variant " + std::string(variant));
     p.variant = *v;

@@ -5,11 +5,16 @@
 // Transmit/Acknowledge programming handshake on bit 15 of word 0; variants by the model's
 // own names (models/amci4501/variants.hpp).
 
+#include "models/amci4501/params.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::duts {
 
 // The registry entry (name "amci4501").
 [[nodiscard]] DutInfo amci4501_info();
+
+// The model's Params (variant left nominal) from a full set of this entry's parameters
+// (defaults filled in): what a campaign's [dut.params] and `hilrig serve amci4501 --param` set.
+[[nodiscard]] models::amci4501::Params amci4501_params(const DutParams& params);
 
 } // namespace hilrig::duts

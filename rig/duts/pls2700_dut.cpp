@@ -76,6 +76,34 @@ private:
 
 } // namespace
 
+p::ModelVariant pls2700_model(const DutParams& params) {
+  const auto model = p::model_from_name(params.text("model"));
+  if (!model) throw std::invalid_argument("pls2700 has no model " + params.text("model"));
+  return *model;
+}
+
+p::Params pls2700_params(const DutParams& params) {
+  p::Params q;
+  q.excitation_hz = params.number("excitation_hz");
+  q.excitation_amplitude = params.number("excitation_amplitude");
+  q.min_stator_ratio = params.number("min_stator_ratio");
+  q.max_stator_ratio = params.number("max_stator_ratio");
+  q.tach_32ms_on_single_channel = params.boolean("tach_32ms");
+  q.wrap_pairs = params.boolean("wrap_pairs");
+  q.equal_pair_full_turn = params.boolean("equal_pair_full_turn");
+  const std::string& reverse = params.text("reverse_advance");
+  if (reverse != "signed" && reverse != "disabled")
+    throw std::invalid_argument("pls2700 reverse_advance must be signed or disabled");
+  q.reverse_advance = reverse == "signed" ? p::ReverseAdvance::Signed : p::ReverseAdvance::Disabled;
+  q.fault_turns_off_all_outputs = params.boolean("fault_all_outputs");
+  q.power_up_mask = static_cast<std::uint8_t>(params.integer("power_up_mask") & 0xFF);
+  q.output_delay = params.duration("output_delay");
+  q.input_delay = params.duration("input_delay");
+  q.update_phase = params.duration("update_phase");
+  q.advance_speed_window = params.duration("advance_speed_window");
+  return q;
+}
+
 DutInfo pls2700_info() {
   DutInfo info;
   info.name = "pls2700";
@@ -133,29 +161,9 @@ DutInfo pls2700_info() {
   info.host = HostInterface{p::kMaxBtwWords + 1, kPls2700SingleTransferWord + 1, false, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
-    const auto model = p::model_from_name(params.text("model"));
-    if (!model) throw std::invalid_argument("pls2700 has no model " + params.text("model"));
     const auto fault = p::fault_from_name(variant);
     if (!fault) throw std::invalid_argument("pls2700 has no variant " + std::string(variant));
-    p::Params q;
-    q.excitation_hz = params.number("excitation_hz");
-    q.excitation_amplitude = params.number("excitation_amplitude");
-    q.min_stator_ratio = params.number("min_stator_ratio");
-    q.max_stator_ratio = params.number("max_stator_ratio");
-    q.tach_32ms_on_single_channel = params.boolean("tach_32ms");
-    q.wrap_pairs = params.boolean("wrap_pairs");
-    q.equal_pair_full_turn = params.boolean("equal_pair_full_turn");
-    const std::string& reverse = params.text("reverse_advance");
-    if (reverse != "signed" && reverse != "disabled")
-      throw std::invalid_argument("pls2700 reverse_advance must be signed or disabled");
-    q.reverse_advance = reverse == "signed" ? p::ReverseAdvance::Signed : p::ReverseAdvance::Disabled;
-    q.fault_turns_off_all_outputs = params.boolean("fault_all_outputs");
-    q.power_up_mask = static_cast<std::uint8_t>(params.integer("power_up_mask") & 0xFF);
-    q.output_delay = params.duration("output_delay");
-    q.input_delay = params.duration("input_delay");
-    q.update_phase = params.duration("update_phase");
-    q.advance_speed_window = params.duration("advance_speed_window");
-    return std::make_unique<Pls2700Dut>(scheduler, *model, q, *fault);
+    return std::make_unique<Pls2700Dut>(scheduler, pls2700_model(params), pls2700_params(params), *fault);
   };
   return info;
 }

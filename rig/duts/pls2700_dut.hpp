@@ -12,6 +12,8 @@
 //   input word   5      the programming error byte
 //   input word   6      the single-transfer position word (2731-04)
 
+#include "models/pls2700/model_variant.hpp"
+#include "models/pls2700/params.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::duts {
@@ -22,5 +24,10 @@ inline constexpr std::size_t kPls2700SingleTransferWord = 6;
 
 // The registry entry (name "pls2700").
 [[nodiscard]] DutInfo pls2700_info();
+
+// The module and the model's Params from a full set of this entry's parameters (defaults
+// filled in): what a campaign's [dut.params] and `hilrig serve pls2700 --param` set.
+[[nodiscard]] models::pls2700::ModelVariant pls2700_model(const DutParams& params);
+[[nodiscard]] models::pls2700::Params pls2700_params(const DutParams& params);
 
 } // namespace hilrig::duts

@@ -58,6 +58,31 @@ private:
 
 } // namespace
 
+s::Params ssi7361_params(const DutParams& params) {
+  s::Params p;
+  p.first_frame = params.duration("first_frame");
+  p.sample_instant = params.boolean("sample_at_rising_edge") ? s::SampleInstant::AtRisingEdge
+                                                             : s::SampleInstant::HalfPeriodAfterRising;
+  p.read_all_ones_without_supply = params.boolean("read_all_ones_without_supply");
+  p.invert_before_gray = params.boolean("invert_before_gray");
+  p.count_direction_wrap = params.boolean("count_direction_wrap");
+  const std::string& rounding = params.text("rate_rounding");
+  if (rounding != "truncate" && rounding != "nearest")
+    throw std::invalid_argument("ssi7361 rate_rounding is truncate or nearest, not " + rounding);
+  p.rate_rounding = rounding == "nearest" ? s::RateRounding::Nearest : s::RateRounding::Truncate;
+  p.rate_overflow_limit = params.integer("rate_overflow_limit");
+  p.preset_restarts_rate_window = params.boolean("preset_restarts_rate_window");
+  const std::string& clears = params.text("format_clears_offset");
+  if (clears != "when_changed" && clears != "always")
+    throw std::invalid_argument("ssi7361 format_clears_offset is when_changed or always, not " + clears);
+  p.format_clears_offset =
+      clears == "always" ? s::FormatClearsOffset::Always : s::FormatClearsOffset::WhenSetupChanges;
+  p.preset_limit = static_cast<std::int32_t>(params.integer("preset_limit"));
+  p.multiplier_may_equal_divisor = params.boolean("multiplier_may_equal_divisor");
+  p.acknowledge_delay = params.duration("acknowledge_delay");
+  return p;
+}
+
 DutInfo ssi7361_info() {
   DutInfo info;
   info.name = "ssi7361";
@@ -117,27 +142,7 @@ DutInfo ssi7361_info() {
   info.host = HostInterface{s::kCommandWords, s::kStatusWords, true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
-    s::Params p;
-    p.first_frame = params.duration("first_frame");
-    p.sample_instant = params.boolean("sample_at_rising_edge") ? s::SampleInstant::AtRisingEdge
-                                                               : s::SampleInstant::HalfPeriodAfterRising;
-    p.read_all_ones_without_supply = params.boolean("read_all_ones_without_supply");
-    p.invert_before_gray = params.boolean("invert_before_gray");
-    p.count_direction_wrap = params.boolean("count_direction_wrap");
-    const std::string& rounding = params.text("rate_rounding");
-    if (rounding != "truncate" && rounding != "nearest")
-      throw std::invalid_argument("ssi7361 rate_rounding is truncate or nearest, not " + rounding);
-    p.rate_rounding = rounding == "nearest" ? s::RateRounding::Nearest : s::RateRounding::Truncate;
-    p.rate_overflow_limit = params.integer("rate_overflow_limit");
-    p.preset_restarts_rate_window = params.boolean("preset_restarts_rate_window");
-    const std::string& clears = params.text("format_clears_offset");
-    if (clears != "when_changed" && clears != "always")
-      throw std::invalid_argument("ssi7361 format_clears_offset is when_changed or always, not " + clears);
-    p.format_clears_offset =
-        clears == "always" ? s::FormatClearsOffset::Always : s::FormatClearsOffset::WhenSetupChanges;
-    p.preset_limit = static_cast<std::int32_t>(params.integer("preset_limit"));
-    p.multiplier_may_equal_divisor = params.boolean("multiplier_may_equal_divisor");
-    p.acknowledge_delay = params.duration("acknowledge_delay");
+    s::Params p = ssi7361_params(params);
     const auto v = s::variant_from_string(variant);
     if (!v) throw std::invalid_argument("ssi7361 has no variant " + std::string(variant));
     p.variant = *v;

@@ -1,0 +1,141 @@
+// `hilrig serve DEVICE --param KEY=VALUE` and `hilrig serve pls2700 --motion`: a served board
+// takes every [MODEL] choice its campaign adapter lists (the same names, kinds and ranges as
+// a campaign's [dut.params], `hilrig list`), and the Series 2700 serves the chosen module's
+// register map with a built-in transducer, so a PLC programs it without a far side.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "drivers/hostlink/modbus_client.hpp"
+#include "rig/cli/serve_params.hpp"
+#include "rig/duts/dut.hpp"
+#include "tests/modbus/serve_thread.hpp"
+
+namespace hilrig::test {
+namespace {
+
+cli::ServeOptions on_tcp(std::string device, std::vector<std::string> params, std::string motion = "") {
+  cli::ServeOptions o;
+  o.device = std::move(device);
+  o.link = cli::ServeLink::Tcp;
+  o.port = 0;
+  o.params = std::move(params);
+  o.motion = std::move(motion);
+  return o;
+}
+
+std::unique_ptr<hostlink::ModbusClient> client_of(const ServeThread& server) {
+  hostlink::TcpSettings s;
+  s.port = server.port();
+  return hostlink::ModbusClient::tcp(s);
+}
+
+TEST(ServedParams, Pls2700ServesTheChosenModulesBtr) {
+  // BTR length (pls2700 spec §1 table, L1257-L1260): 3 words on 1-channel modules, 5 on
+  // 2-channel ones; reading past it is Illegal Data Address (README "Host register map").
+  for (const auto& [model, words] : {std::pair{"2731", 3}, std::pair{"2731-04", 3}, std::pair{"2741", 3},
+                                     std::pair{"2732", 5}, std::pair{"2742", 5}, std::pair{"2742-18", 5}}) {
+    ServeThread server(on_tcp("pls2700", {std::string("model=") + model}));
+    auto client = client_of(server);
+    std::vector<std::uint16_t> btr(static_cast<std::size_t>(words));
+    EXPECT_EQ(client->read_input_registers(0, btr), RegisterStatus::Ok) << model;
+    std::array<std::uint16_t, 1> past{};
+    EXPECT_EQ(client->read_input_registers(static_cast<std::uint16_t>(words), past),
+              RegisterStatus::IllegalDataAddress)
+        << model;
+  }
+}
+
+TEST(ServedParams, Pls2700WithABuiltInTransducerTakesAProgram) {
+  // With --motion the stators carry a turning resolver from the first update on: no
+  // transducer fault, so a BTW (8400h Clear Errors; 9801h SF of channel 1 = 4096, BCD) is
+  // accepted: error byte (holding 64) 00h, and the position word is a position, not 8000h
+  // (R-T-6 / §7.20), below the Scale Factor on every module and speed.
+  for (const char* model : {"2731", "2742", "2742-18"}) {
+    for (const char* motion : {"constant:300rpm", "constant:0rpm", "constant:-1000.5rpm"}) {
+      ServeThread server(on_tcp("pls2700", {std::string("model=") + model}, motion));
+      auto client = client_of(server);
+      const bool twelve_bit = std::string(model).starts_with("274");
+      const std::uint16_t sf = twelve_bit ? 0x4096 : 0x1024;
+      const std::array<std::uint16_t, 3> btw{0x8400, 0x8801, sf};
+      ASSERT_EQ(client->write_holding_registers(0, btw), RegisterStatus::Ok);
+      std::array<std::uint16_t, 1> error{0xFFFF};
+      ASSERT_EQ(client->read_holding_registers(64, error), RegisterStatus::Ok);
+      EXPECT_EQ(error[0], 0x00) << model << " " << motion;
+      std::array<std::uint16_t, 1> position{};
+      ASSERT_EQ(client->read_input_registers(0, position), RegisterStatus::Ok);
+      EXPECT_LT(position[0], twelve_bit ? 4096 : 1024) << model << " " << motion;
+    }
+  }
+}
+
+TEST(ServedParams, EveryAdapterParameterOfTheThreeModelsIsAccepted) {
+  // Each parameter `hilrig list` shows, set to its own default as text, starts the server.
+  for (const char* device : {"pls2700", "amci4501", "ssi7361"}) {
+    const duts::DutInfo* info = duts::find_dut(device);
+    ASSERT_NE(info, nullptr);
+    std::vector<std::string> all;
+    for (const duts::ParamInfo& p : info->params) {
+      std::string text;
+      std::visit(
+          [&text](const auto& v) {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, bool>)
+              text = v ? "true" : "false";
+            else if constexpr (std::is_same_v<T, std::string>)
+              text = v;
+            else if constexpr (std::is_same_v<T, Nanos>)
+              text = std::to_string(v.count()) + "ns";
+            else
+              text = std::to_string(v);
+          },
+          p.default_value);
+      all.push_back(p.name + "=" + text);
+    }
+    ServeThread server(on_tcp(device, all));
+    EXPECT_GT(server.port(), 0) << device;
+  }
+}
+
+TEST(ServedParams, ParamsReachTheModel) {
+  // The parsed --param values are the model's: the typed DutParams the builders read.
+  const duts::DutInfo* info = duts::find_dut("amci4501");
+  ASSERT_NE(info, nullptr);
+  const duts::DutParams p = cli::serve_params(
+      *info, {"program_clears_results=true", "default_timeout=250ms", "no_response_missed=5"});
+  EXPECT_TRUE(p.boolean("program_clears_results"));
+  EXPECT_EQ(p.duration("default_timeout"), milliseconds(250));
+  EXPECT_EQ(p.integer("no_response_missed"), 5);
+  EXPECT_FALSE(p.boolean("mode4_timeout_sets_new")); // not written: the default
+}
+
+TEST(ServedParams, BadParamsAreRefusedBeforeServing) {
+  // Unknown key, wrong kind, outside the adapter's range (the 2742-18 input delay is at most
+  // 3 ms, L1724; the module list of §1), no '=', a bad motion, a motion for another device.
+  const std::vector<cli::ServeOptions> bad{
+      on_tcp("pls2700", {"no_such_key=1"}),
+      on_tcp("pls2700", {"model=2799"}),
+      on_tcp("pls2700", {"input_delay=3001us"}),
+      on_tcp("pls2700", {"wrap_pairs=yes"}),
+      on_tcp("pls2700", {"power_up_mask=256"}),
+      on_tcp("pls2700", {"model"}),
+      on_tcp("pls2700", {}, "constant:300"),
+      on_tcp("pls2700", {}, "ramp:300rpm"),
+      on_tcp("amci4501", {}, "constant:300rpm"),
+      on_tcp("ssi7361", {"rate_rounding=up"}),
+      on_tcp("ans1", {"model=2742"}),
+  };
+  for (const cli::ServeOptions& o : bad) {
+    EXPECT_THROW(ServeThread server(o), std::invalid_argument)
+        << o.device << " " << (o.params.empty() ? o.motion : o.params[0]);
+  }
+  // At the limit it is accepted (limits are inclusive).
+  ServeThread at_limit(on_tcp("pls2700", {"input_delay=3ms", "power_up_mask=255"}));
+  EXPECT_GT(at_limit.port(), 0);
+}
+
+} // namespace
+} // namespace hilrig::test
