@@ -33,10 +33,14 @@ void PlantDrive::own(const std::string& rig, LineOutput& out) {
 
 void PlantDrive::watch(const std::string& rig, LineInput& in) {
   const plants::PlantInput which = spec_.inputs.find(rig)->second;
+  watched_.emplace_back(which, &in);
   in.on_edge([this, which](const Edge& e) { apply(which, e.level == Level::High); });
 }
 
 void PlantDrive::start() {
+  // A board output acts from time 0 with the level it starts at, whatever the plant's start
+  // state says.
+  for (const auto& [which, in] : watched_) apply(which, in->level() == Level::High);
   for (const PlantCommand& c : spec_.commands) {
     if (c.at > s_.end) continue;
     sched_.at(c.at, [this, c] { apply(c.input, c.level == Level::High); });

@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "core/line.hpp"
 #include "core/scheduler.hpp"
@@ -58,6 +60,7 @@ private:
   LineOutput* enc_a_ = nullptr;
   LineOutput* enc_b_ = nullptr;
   LineOutput* monitor_ = nullptr;
+  std::vector<std::pair<plants::PlantInput, LineInput*>> watched_;
   bool valve_ = true;
 };
 

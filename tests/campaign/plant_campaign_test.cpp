@@ -163,6 +163,18 @@ limit_ms = 1000
   const double turned = 0.5 * (0.7 / j) * on * on / (2.0 * std::numbers::pi);
   EXPECT_GE(turned, 199.5 / 400.0);
   EXPECT_LT(turned, 201.0 / 400.0);
+
+  // The board's output rules from time 0: a plant that would start with its motor on
+  // follows the output's initial low level, so the run is the same.
+  std::string motor_on = text;
+  motor_on.replace(motor_on.find("start_motor = false"), std::string("start_motor = false").size(),
+                   "start_motor = true");
+  const Campaign c2 = parse_campaign(motor_on, "loop_on.toml");
+  const RunOutput out2 = Executive(c2).run(c2.runs[0]);
+  EXPECT_EQ(out2.trace->edges_of("ls1"), ls1);
+  const rig::Measurement* m2 = find_measurement(out2.result, "coast.stop_time");
+  ASSERT_NE(m2, nullptr);
+  EXPECT_EQ(m2->value, m->value);
 }
 
 struct BadPlant {
