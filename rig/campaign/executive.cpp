@@ -135,25 +135,29 @@ RunOutput Executive::run(const RunSpec& spec) const {
   return out;
 }
 
-rig::CampaignResult Executive::run_all(const std::vector<RunSpec>& runs, std::uint64_t seed, rig::Shard shard,
-                                       const Progress& progress, const TraceSink& sink,
-                                       const Checkpoint& checkpoint) const {
+rig::CampaignResult Executive::planned(const std::vector<RunSpec>& runs, std::uint64_t seed,
+                                       rig::Shard shard) const {
   rig::CampaignResult result;
   result.campaign = campaign_.name;
   result.device = campaign_.points.empty() ? std::string() : campaign_.points.front().dut.model;
   result.seed = seed;
   result.shard = shard;
   result.planned_runs = runs.size();
+  return result;
+}
+
+rig::CampaignResult Executive::run_all(const std::vector<RunSpec>& runs, std::uint64_t seed, rig::Shard shard,
+                                       const Progress& progress, const TraceSink& sink,
+                                       const Recorder& record) const {
+  rig::CampaignResult result = planned(runs, seed, shard);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (progress) progress(i, runs.size(), runs[i]);
     RunOutput out = run(runs[i]);
     if (sink) sink(runs[i], out);
-    result.runs.push_back(std::move(out.result));
-    if (checkpoint && i + 1 < runs.size()) {
-      rig::CampaignResult partial = result;
-      rig::finalize(partial);
-      checkpoint(partial);
-    }
+    if (record)
+      record(out.result);
+    else
+      result.runs.push_back(std::move(out.result));
     if (stop_ != nullptr && stop_->requested()) {
       result.interrupted = stop_->reason();
       break;

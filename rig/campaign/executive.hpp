@@ -55,13 +55,16 @@ public:
   // progress(i, n, run) is called before each run.
   using Progress = std::function<void(std::size_t done, std::size_t total, const RunSpec& run)>;
   using TraceSink = std::function<void(const RunSpec& run, const RunOutput& out)>;
-  // checkpoint(partial) after each run: the runs so far, finalized (incomplete until the
-  // last), so a caller can keep results.json current and a crash leaves it readable.
-  using Checkpoint = std::function<void(const rig::CampaignResult& partial)>;
+  // record(run) after each run: when given, each finished run is handed to it and not kept,
+  // so the returned result holds no runs (the caller folds them, e.g. from a rig::RunLog) and
+  // memory does not grow with the run count. Without it, the runs are in the returned result.
+  using Recorder = std::function<void(const rig::RunResult& run)>;
   [[nodiscard]] rig::CampaignResult run_all(const std::vector<RunSpec>& runs, std::uint64_t seed,
                                             rig::Shard shard, const Progress& progress = {},
-                                            const TraceSink& sink = {},
-                                            const Checkpoint& checkpoint = {}) const;
+                                            const TraceSink& sink = {}, const Recorder& record = {}) const;
+  // The campaign's facts for these runs, before any has run (the run log's header).
+  [[nodiscard]] rig::CampaignResult planned(const std::vector<RunSpec>& runs, std::uint64_t seed,
+                                            rig::Shard shard) const;
 
 private:
   const Campaign& campaign_;

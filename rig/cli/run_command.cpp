@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -15,12 +16,14 @@
 #include "rig/campaign/executive.hpp"
 #include "rig/campaign/modbus_host_link.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/output_dir.hpp"
 #include "rig/cli/serve_devices.hpp"
 #include "rig/cli/stop_signals.hpp"
 #include "rig/hardware/hardware_backend.hpp"
 #include "rig/results/junit.hpp"
 #include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
+#include "rig/results/run_log.hpp"
 
 namespace hilrig::cli {
 
@@ -28,18 +31,13 @@ namespace {
 
 constexpr std::size_t kMaxFailureTraces = 20;
 
-// Written to a temporary file and renamed, so a crash leaves a whole VCD or none.
+// Written to a temporary file and renamed, so a crash leaves a whole VCD or none (and a full
+// disk no *.tmp).
 void write_trace_files(const std::filesystem::path& dir, const std::string& stem,
                        const TraceRecorder& trace) {
-  const std::filesystem::path path = dir / (stem + ".vcd");
-  const std::filesystem::path tmp = dir / (stem + ".vcd.tmp");
-  {
-    std::ofstream vcd(tmp, std::ios::binary);
-    write_vcd(trace, vcd);
-    vcd.flush();
-    if (!vcd) throw campaign::RigFault("cannot write " + tmp.string());
-  }
-  std::filesystem::rename(tmp, path);
+  std::ostringstream vcd;
+  write_vcd(trace, vcd);
+  rig::write_file_atomically(dir / (stem + ".vcd"), vcd.str());
 }
 
 // Host words as Modbus RTU on a pty pair: the DUT adapter's words from where `hilrig serve`
@@ -162,8 +160,17 @@ int run_campaign(const RunOptions& o, std::ostream& err) {
   std::optional<hardware::RigConfig> rig;
   if (const int status = choose_backend(o, c, rig, err); status != kPassed) return status;
 
+  std::optional<OutputDirectory> out_dir;
   try {
-    std::filesystem::create_directories(o.out);
+    out_dir.emplace(o.out);
+  } catch (const ForeignOutput& e) {
+    err << "hilrig run: " << e.what() << '\n';
+    return kBadInput;
+  } catch (const std::exception& e) {
+    err << "hilrig run: rig fault: " << e.what() << '\n';
+    return kRigFault;
+  }
+  try {
     campaign::Executive exec(c, rig ? hardware::hardware_backend(*rig, c.file, o.rig_ports)
                                     : campaign::RunBackend{});
     exec.use_host_link(*link);
@@ -198,16 +205,21 @@ int run_campaign(const RunOptions& o, std::ostream& err) {
         CandumpOptions options;
         options.epoch = seconds(946'684'800);
         write_candump(*out.trace, can_log, options);
+        can_log.flush();
+        if (!can_log) throw campaign::RigFault(fmt::format("cannot write {}", (o.out / "can.log").string()));
       }
     };
-    rig::CampaignResult result = exec.run_all(
-        runs, seed,
-        rig::Shard{static_cast<std::uint32_t>(shard->first), static_cast<std::uint32_t>(shard->second)},
-        progress, sink, [&](const rig::CampaignResult& partial) {
-          // Kept current after every run (written atomically), so a crash or SIGKILL leaves
-          // the runs done so far readable; the final write below replaces it.
-          rig::write_results_file(o.out / "results.json", partial);
-        });
+    const rig::Shard part{static_cast<std::uint32_t>(shard->first),
+                          static_cast<std::uint32_t>(shard->second)};
+    // Each run is appended to the run log as it finishes (and not kept), so a campaign costs the
+    // same per run however long it is, and a crash or SIGKILL leaves every finished run; the
+    // log is folded into results.json below.
+    rig::RunLog log(o.out / rig::kRunLogName, exec.planned(runs, seed, part));
+    const rig::CampaignResult done =
+        exec.run_all(runs, seed, part, progress, sink, [&](const rig::RunResult& run) { log.append(run); });
+    rig::CampaignResult result = rig::read_run_log(log.path());
+    result.interrupted = done.interrupted;
+    rig::finalize(result);
     if (o.progress) err << '\n';
     rig::write_results_file(o.out / "results.json", result);
     rig::write_file_atomically(o.out / "junit.xml", rig::to_junit_xml(result));

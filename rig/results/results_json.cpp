@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+
+#include "rig/results/run_log.hpp"
 #include <unistd.h>
 
 namespace hilrig::rig {
@@ -110,7 +112,9 @@ CheckResult check_from(const json& j) {
   return c;
 }
 
-json run_json(const RunResult& r) {
+} // namespace
+
+json run_to_json(const RunResult& r) {
   json checks = json::array();
   for (const auto& c : r.checks) checks.push_back(check_json(c));
   json obs = json::array();
@@ -131,12 +135,16 @@ json run_json(const RunResult& r) {
   return j;
 }
 
+namespace {
+
 std::string str_or_empty(const json& j, const char* key, const char* where) {
   const json& v = field(j, key, where);
   return v.is_null() ? std::string() : get<std::string>(j, key, where);
 }
 
-RunResult run_from(const json& j) {
+} // namespace
+
+RunResult run_from_json(const json& j) {
   const char* w = "run";
   RunResult r;
   r.index = get<std::uint64_t>(j, "index", w);
@@ -155,11 +163,9 @@ RunResult run_from(const json& j) {
   return r;
 }
 
-} // namespace
-
 json to_json(const CampaignResult& r) {
   json runs = json::array();
-  for (const auto& run : r.runs) runs.push_back(run_json(run));
+  for (const auto& run : r.runs) runs.push_back(run_to_json(run));
   json faults = json::array();
   for (const auto& f : r.faults) {
     faults.push_back(json{{"fault", f.fault},
@@ -213,7 +219,7 @@ CampaignResult campaign_from_json(const json& j) {
   const json& shard = field(j, "shard", w);
   r.shard = Shard{get<std::uint32_t>(shard, "index", "shard"), get<std::uint32_t>(shard, "count", "shard")};
   r.planned_runs = get<std::size_t>(j, "planned_runs", w);
-  for (const auto& run : field(j, "runs", w)) r.runs.push_back(run_from(run));
+  for (const auto& run : field(j, "runs", w)) r.runs.push_back(run_from_json(run));
   if (j.contains("interrupted")) r.interrupted = get<std::string>(j, "interrupted", w);
   if (j.contains("wall_clock")) {
     const json& wc = j.at("wall_clock");
@@ -231,19 +237,27 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0)
     throw std::runtime_error(fmt::format("cannot write {}: {}", tmp.string(), std::strerror(errno)));
+  // On any failure (ENOSPC, EFBIG, EIO) the half-written temporary is removed: a failed write
+  // leaves the previous file, or none, and no *.tmp.
+  const auto fail = [&](const char* what, int err) {
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(fmt::format("cannot {} {}: {}", what, tmp.string(), std::strerror(err)));
+  };
   std::size_t done = 0;
   while (done < text.size()) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
-      const int err = errno;
-      ::close(fd);
-      throw std::runtime_error(fmt::format("cannot write {}: {}", tmp.string(), std::strerror(err)));
+      fail("write", errno);
     }
     done += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    throw std::runtime_error(fmt::format("cannot flush {}: {}", tmp.string(), std::strerror(errno)));
+  if (::fsync(fd) != 0) fail("flush", errno);
+  if (::close(fd) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(fmt::format("cannot flush {}: {}", tmp.string(), std::strerror(err)));
   }
   std::filesystem::rename(tmp, path);
 }
@@ -253,6 +267,7 @@ void write_results_file(const std::filesystem::path& path, const CampaignResult&
 }
 
 CampaignResult read_results_file(const std::filesystem::path& path) {
+  if (path.extension() == ".jsonl") return read_run_log(path);
   std::ifstream in(path);
   if (!in) throw std::runtime_error(fmt::format("cannot read {}", path.string()));
   json j;

@@ -20,6 +20,10 @@ inline constexpr int kResultsVersion = 1;
 // (faults, totals, verdict, complete) are recomputed with finalize(), not trusted.
 [[nodiscard]] CampaignResult campaign_from_json(const nlohmann::json& j);
 
+// One run as its results.json object, and back (the run log, rig/results/run_log.hpp, holds these).
+[[nodiscard]] nlohmann::json run_to_json(const RunResult& run);
+[[nodiscard]] RunResult run_from_json(const nlohmann::json& j);
+
 [[nodiscard]] std::string to_json_text(const CampaignResult& result); // 2-space indent, trailing newline
 
 // Writes to "<path>.tmp", fsyncs, then renames over path: a crash leaves either the previous
@@ -28,7 +32,8 @@ inline constexpr int kResultsVersion = 1;
 void write_results_file(const std::filesystem::path& path, const CampaignResult& result);
 // Same atomic write for any text (used by the junit and html writers too).
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
-// Throws std::runtime_error when the file cannot be read or is not a results file.
+// Throws std::runtime_error when the file cannot be read or is not a results file. A run log
+// (*.jsonl, rig/results/run_log.hpp) is folded: its header and whole records, finalized.
 [[nodiscard]] CampaignResult read_results_file(const std::filesystem::path& path);
 
 } // namespace hilrig::rig

@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -186,8 +188,9 @@ TEST(Interrupt, SigtermLeavesEveryOutputInactiveAndAReadablePartialReport) {
   }
 }
 
-// A crash (here SIGKILL, which no handler sees) after the first of two runs leaves
-// results.json readable with that run in it: the file is rewritten atomically after each run.
+// A crash (here SIGKILL, which no handler sees) after the first of two runs leaves the run log
+// with that run's whole record, and `hilrig merge OUT.json OUT/runs.jsonl` folds it into a
+// results.json (incomplete) with that run in it.
 TEST(Interrupt, SigkillAfterARunLeavesTheRunsDoneReadable) {
   const fs::path dir = fs::path(HILRIG_BINARY_DIR) / "tests" / "campaign" / "scratch" / "sigkill";
   fs::remove_all(dir);
@@ -208,7 +211,13 @@ TEST(Interrupt, SigkillAfterARunLeavesTheRunsDoneReadable) {
   ASSERT_EQ(::kill(hilrig.pid, SIGKILL), 0);
   const int status = hilrig.wait();
   ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_FALSE(fs::exists(out / "results.json")); // written at the end only
+  const std::string log = slurp(out / "runs.jsonl");
+  EXPECT_EQ(std::count(log.begin(), log.end(), '\n'), 2); // the header and run 0's record
 
+  const std::string merge = std::string(HILRIG_EXE) + " merge " + (out / "results.json").string() + " " +
+                            (out / "runs.jsonl").string() + " >/dev/null";
+  ASSERT_EQ(std::system(merge.c_str()), 0) << merge;
   const nlohmann::json results = nlohmann::json::parse(slurp(out / "results.json"));
   const nlohmann::json schema =
       nlohmann::json::parse(slurp(fs::path(HILRIG_SOURCE_DIR) / "docs" / "results.schema.json"));

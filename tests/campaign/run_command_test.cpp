@@ -12,8 +12,10 @@
 #include "rig/campaign/executive.hpp"
 #include "rig/campaign/stop_request.hpp"
 
+#include "rig/cli/output_dir.hpp"
 #include "rig/cli/run_command.hpp"
 #include "rig/results/results_json.hpp"
+#include "rig/results/run_log.hpp"
 #include "test_support.hpp"
 #include "tests/tools/scratch_files.hpp"
 
@@ -176,6 +178,90 @@ TEST(RunCommand, SignalBetweenRunsIsReportedAsSuch) {
   rig::CampaignResult cut = r;
   cut.runs[0].interrupted = true;
   EXPECT_NE(interruption_text(cut, "out").find("the last stopped early"), std::string::npos);
+}
+
+// Streaming the runs: with a recorder the executive keeps no run whatever the run count (the
+// memory a campaign holds does not grow with its runs), hands each run to the recorder once,
+// and the run log folds into the byte-identical results.json of an in-memory campaign.
+TEST(RunCommand, RecordedRunsAreNotHeldAndFoldToTheSameResults) {
+  const campaign::Campaign c = campaign::load_campaign(campaign::test::shipped("reference_pls_faults.toml"));
+  const fs::path dir = scratch("recorded");
+  ASSERT_GE(c.runs.size(), 3U);
+  for (std::size_t n = 1; n <= c.runs.size(); ++n) {
+    const std::vector<campaign::RunSpec> runs(c.runs.begin(),
+                                              c.runs.begin() + static_cast<std::ptrdiff_t>(n));
+    const campaign::Executive exec(c);
+    const rig::CampaignResult in_memory = exec.run_all(runs, c.seed, rig::Shard{0, 1});
+    ASSERT_EQ(in_memory.runs.size(), n);
+    std::size_t recorded = 0;
+    rig::CampaignResult held;
+    {
+      rig::RunLog log(dir / rig::kRunLogName, exec.planned(runs, c.seed, rig::Shard{0, 1}));
+      held = exec.run_all(runs, c.seed, rig::Shard{0, 1}, {}, {}, [&](const rig::RunResult& run) {
+        ++recorded;
+        log.append(run);
+      });
+    }
+    EXPECT_EQ(held.runs.size(), 0U) << n; // nothing per run is kept, for any n
+    EXPECT_EQ(recorded, n);
+    EXPECT_EQ(rig::to_json_text(rig::read_run_log(dir / rig::kRunLogName)), rig::to_json_text(in_memory))
+        << n;
+  }
+}
+
+// `hilrig run` writes results.json from its run log: the same bytes as the in-memory result.
+TEST(RunCommand, ResultsJsonIsTheFoldedRunLog) {
+  const fs::path out = scratch("folded");
+  EXPECT_EQ(run(campaign::test::shipped("reference_pls_pass.toml"), out), 0);
+  ASSERT_TRUE(fs::exists(out / rig::kRunLogName));
+  const campaign::Campaign c = campaign::load_campaign(campaign::test::shipped("reference_pls_pass.toml"));
+  std::ifstream in(out / "results.json", std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), rig::to_json_text(campaign::Executive(c).run_all(c.runs, c.seed, rig::Shard{0, 1})));
+}
+
+// --out: an earlier campaign's evidence is removed before the run, so none of it is mistaken
+// for this campaign's; a directory with something hilrig does not write is refused (exit 2)
+// and left as it was; a directory another run holds is refused (exit 3) and left as it was.
+TEST(RunCommand, OutputDirectoryIsCleanLockedAndOnlyHilrigs) {
+  const fs::path out = scratch("stale");
+  for (const char* f : {"trace-run7.vcd", "can.log", "trace.gtkw", "results.json.tmp", "junit.xml"})
+    write_file(out, f, "earlier campaign\n");
+  EXPECT_EQ(run(campaign::test::shipped("reference_pls_pass.toml"), out), 0);
+  for (const char* f : {"trace-run7.vcd", "can.log", "trace.gtkw", "results.json.tmp"})
+    EXPECT_FALSE(fs::exists(out / f)) << f;
+  EXPECT_TRUE(fs::exists(out / "junit.xml"));
+  EXPECT_TRUE(fs::exists(out / "trace.vcd"));
+
+  const fs::path foreign = scratch("foreign");
+  write_file(foreign, "notes.txt", "mine\n");
+  write_file(foreign, "trace-run3.vcd", "earlier\n");
+  std::string err;
+  EXPECT_EQ(run(campaign::test::shipped("reference_pls_pass.toml"), foreign, &err), 2);
+  EXPECT_NE(err.find("holds notes.txt, which hilrig run does not write"), std::string::npos) << err;
+  EXPECT_TRUE(fs::exists(foreign / "trace-run3.vcd"));
+  EXPECT_FALSE(fs::exists(foreign / "results.json"));
+
+  const fs::path busy = scratch("busy");
+  {
+    const OutputDirectory held(busy); // another run holds it (flock on its own open file)
+    EXPECT_EQ(run(campaign::test::shipped("reference_pls_pass.toml"), busy, &err), 3);
+    EXPECT_NE(err.find("another hilrig run is writing this directory"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(busy / "results.json"));
+    EXPECT_THROW(OutputDirectory{busy}, OutputBusy);
+  }
+  EXPECT_EQ(run(campaign::test::shipped("reference_pls_pass.toml"), busy), 0); // released
+}
+
+TEST(RunCommand, RunEvidenceIsWhatHilrigWrites) {
+  for (const char* name :
+       {"results.json", "junit.xml", "report.html", "runs.jsonl", "can.log", "trace.vcd", "trace-run12.vcd",
+        "trace-run12.vcd.tmp", "results.json.tmp", "view.gtkw", ".hilrig.lock"})
+    EXPECT_TRUE(is_run_evidence(name)) << name;
+  for (const char* name :
+       {"notes.txt", "campaign.toml", "results.json.bak", "trace.vcd.orig", "tmp", ".tmp", "my.vcd"})
+    EXPECT_FALSE(is_run_evidence(name)) << name;
 }
 
 } // namespace

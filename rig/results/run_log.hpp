@@ -1,0 +1,50 @@
+#pragma once
+// The run log: a campaign's results as they happen, one JSON Lines record per run, so a
+// campaign costs the same per run however long it is and a kill leaves every finished run.
+//
+//   line 1:    {"run_log": 1, "results": <results.json object of the campaign with no runs>}
+//   line 2...: {"run": <the run's results.json object>}
+//
+// Each record is one write() of a whole line on an O_APPEND descriptor followed by
+// fdatasync(): a SIGKILL or a crash of hilrig leaves whole records only; a power loss loses at
+// most the record in flight, which the reader sees as a last line without its newline and
+// ignores. A write that fails (ENOSPC, EFBIG, EIO) truncates the log back to its last whole
+// record and throws with the errno text. Nothing per run is held in memory.
+// Folding the log (read_run_log, or `hilrig merge OUT.json DIR/runs.jsonl`) gives exactly the
+// CampaignResult the runs make, so results.json is byte-identical to an in-memory campaign's.
+
+#include <filesystem>
+
+#include <sys/types.h>
+
+#include "rig/results/campaign_result.hpp"
+
+namespace hilrig::rig {
+
+inline constexpr const char* kRunLogName = "runs.jsonl";
+inline constexpr int kRunLogVersion = 1;
+
+class RunLog {
+public:
+  // Creates (truncates) path and writes the header: `campaign`'s facts; its runs are not written.
+  RunLog(const std::filesystem::path& path, const CampaignResult& campaign);
+  ~RunLog();
+  RunLog(const RunLog&) = delete;
+  RunLog& operator=(const RunLog&) = delete;
+
+  void append(const RunResult& run);
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+private:
+  void write_record(const std::string& line);
+
+  std::filesystem::path path_;
+  int fd_ = -1;
+  off_t size_ = 0; // bytes of whole records written
+};
+
+// The campaign the log holds: its header with every whole record, finalized. Throws
+// std::runtime_error naming the file and line of a record that is not a run.
+[[nodiscard]] CampaignResult read_run_log(const std::filesystem::path& path);
+
+} // namespace hilrig::rig

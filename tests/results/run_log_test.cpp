@@ -1,0 +1,209 @@
+// The run log (rig/results/run_log.hpp): folding it gives the byte-identical results.json of
+// the whole-file writer; a kill leaves whole records only; a full disk or a file size limit
+// leaves whole records and says why (the errno text).
+
+#include <gtest/gtest.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "rig/results/results_json.hpp"
+#include "rig/results/run_log.hpp"
+#include "sample_campaign.hpp"
+#include "tests/tools/scratch_files.hpp"
+
+namespace hilrig::rig {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) { return hilrig::test::scratch_dir("results", name); }
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t lines(const fs::path& path) {
+  const std::string text = slurp(path);
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+// Writes the campaign through a run log, run by run, as `hilrig run` does.
+void log_campaign(const fs::path& path, const CampaignResult& campaign) {
+  RunLog log(path, campaign);
+  for (const RunResult& run : campaign.runs) log.append(run);
+}
+
+// Property over campaign sizes (0 runs, fault runs caught and missed, wall-clock facts): the
+// fold is the same results.json, byte for byte, as writing the whole result at once.
+TEST(RunLog, FoldIsByteIdenticalToTheWholeFileWriter) {
+  const fs::path dir = scratch("fold");
+  for (std::size_t n : {0U, 1U, 2U, 3U, 7U, 40U}) {
+    CampaignResult whole = test::sample_campaign(n);
+    if (n == 7) whole.runs.push_back(test::fault_run(7, "late_output", false)); // a fault missed
+    whole.planned_runs = whole.runs.size() + (n == 40 ? 2 : 0);                 // and one incomplete
+    whole.started_at = "2026-01-02T03:04:05Z";
+    whole.host = "bench-3";
+    finalize(whole);
+    log_campaign(dir / kRunLogName, whole);
+    EXPECT_EQ(lines(dir / kRunLogName), whole.runs.size() + 1) << n; // header + one line a run
+    write_results_file(dir / "whole.json", whole);
+    write_results_file(dir / "folded.json", read_run_log(dir / kRunLogName));
+    EXPECT_EQ(slurp(dir / "folded.json"), slurp(dir / "whole.json")) << n;
+    // read_results_file folds a *.jsonl too (what `hilrig merge OUT.json DIR/runs.jsonl` reads).
+    EXPECT_EQ(to_json_text(read_results_file(dir / kRunLogName)), slurp(dir / "whole.json")) << n;
+  }
+}
+
+// A process killed (SIGKILL: no handler, no flush) after N appended runs leaves a log of N whole
+// records, which folds into an incomplete result with exactly those runs.
+TEST(RunLog, KillAfterNRunsLeavesNWholeRecords) {
+  const fs::path dir = scratch("kill");
+  const CampaignResult whole = test::sample_campaign(6);
+  for (std::size_t n = 0; n <= whole.runs.size(); ++n) {
+    const fs::path path = dir / fmt::format("kill{}.jsonl", n);
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      RunLog log(path, whole);
+      for (std::size_t i = 0; i < n; ++i) log.append(whole.runs[i]);
+      ::raise(SIGKILL);
+      ::_exit(1);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+    EXPECT_EQ(lines(path), n + 1);
+    const CampaignResult folded = read_run_log(path);
+    ASSERT_EQ(folded.runs.size(), n);
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(folded.runs[i].index, whole.runs[i].index);
+    EXPECT_EQ(folded.planned_runs, 6U);
+    EXPECT_EQ(folded.complete, n == 6);
+    EXPECT_EQ(folded.totals.runs, n);
+  }
+}
+
+// A record cut short (a power loss mid-write: no newline at the end) is not a run.
+TEST(RunLog, TornLastRecordIsIgnored) {
+  const fs::path dir = scratch("torn");
+  const CampaignResult whole = test::sample_campaign(3);
+  log_campaign(dir / kRunLogName, whole);
+  const std::string text = slurp(dir / kRunLogName);
+  const std::size_t last = text.rfind('\n', text.size() - 2) + 1; // start of the last record
+  for (std::size_t cut : {last + 1, last + 10, text.size() - 1}) {
+    std::ofstream(dir / "cut.jsonl", std::ios::binary) << text.substr(0, cut);
+    EXPECT_EQ(read_run_log(dir / "cut.jsonl").runs.size(), 2U) << cut;
+  }
+  // A broken record with its newline is damage, named by file and line.
+  std::ofstream(dir / "bad.jsonl", std::ios::binary) << text.substr(0, last) << "{\"run\": 5}\n";
+  try {
+    (void)read_run_log(dir / "bad.jsonl");
+    ADD_FAILURE() << "a broken record was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.jsonl:4:"), std::string::npos) << e.what();
+  }
+  std::ofstream(dir / "results.jsonl", std::ios::binary) << to_json(whole).dump() << "\n";
+  EXPECT_THROW((void)read_run_log(dir / "results.jsonl"), std::runtime_error); // not a run log
+}
+
+// Runs `body` in a child whose files may not grow beyond `limit` bytes (RLIMIT_FSIZE, with
+// SIGXFSZ ignored so write() fails with EFBIG); returns the child's exit status.
+template <class Body> int with_file_size_limit(rlim_t limit, Body body) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit r{limit, limit};
+    if (::setrlimit(RLIMIT_FSIZE, &r) != 0) ::_exit(90);
+    ::_exit(body());
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 99;
+}
+
+bool says(const std::exception& e, int err) {
+  return std::string(e.what()).find(std::strerror(err)) != std::string::npos;
+}
+
+// EFBIG mid-campaign: the record that does not fit is cut off again, the log keeps its whole
+// records, and the message carries the errno text.
+TEST(RunLog, FileSizeLimitKeepsWholeRecordsAndSaysWhy) {
+  const fs::path dir = scratch("efbig");
+  const CampaignResult whole = test::sample_campaign(5);
+  log_campaign(dir / "full.jsonl", whole);
+  const std::string text = slurp(dir / "full.jsonl");
+  // Room for the header and two records, and part of the third.
+  std::size_t end = 0;
+  for (int i = 0; i < 3; ++i) end = text.find('\n', end) + 1;
+  const fs::path path = dir / kRunLogName;
+  const int status = with_file_size_limit(end + 20, [&] {
+    try {
+      log_campaign(path, whole);
+      return 1;
+    } catch (const std::runtime_error& e) {
+      return says(e, EFBIG) ? 0 : 2;
+    }
+  });
+  EXPECT_EQ(status, 0);
+  EXPECT_EQ(slurp(path), text.substr(0, end)); // exactly the whole records
+  EXPECT_EQ(read_run_log(path).runs.size(), 2U);
+}
+
+// ENOSPC, portably: the log is /dev/full.
+TEST(RunLog, FullDiskSaysWhy) {
+  const fs::path dir = scratch("enospc");
+  fs::create_symlink("/dev/full", dir / kRunLogName);
+  try {
+    log_campaign(dir / kRunLogName, test::sample_campaign(1));
+    ADD_FAILURE() << "a write to a full disk passed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_TRUE(says(e, ENOSPC)) << e.what();
+  }
+}
+
+// The whole-file writer on a full disk (its temporary is /dev/full) or over a file size limit:
+// the message says why and no *.tmp is left behind; the previous file stays.
+TEST(WriteFileAtomically, FullDiskOrSizeLimitLeavesNoTmp) {
+  const fs::path dir = scratch("atomic");
+  const fs::path path = dir / "results.json";
+  write_file_atomically(path, "previous\n");
+  fs::create_symlink("/dev/full", dir / "results.json.tmp");
+  try {
+    write_file_atomically(path, std::string(100, 'x'));
+    ADD_FAILURE() << "a write to a full disk passed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_TRUE(says(e, ENOSPC)) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(fs::symlink_status(dir / "results.json.tmp")));
+  EXPECT_EQ(slurp(path), "previous\n");
+
+  const int status = with_file_size_limit(50, [&] {
+    try {
+      write_file_atomically(path, std::string(100, 'x'));
+      return 1;
+    } catch (const std::runtime_error& e) {
+      return says(e, EFBIG) ? 0 : 2;
+    }
+  });
+  EXPECT_EQ(status, 0);
+  EXPECT_FALSE(fs::exists(dir / "results.json.tmp"));
+  EXPECT_EQ(slurp(path), "previous\n");
+}
+
+} // namespace
+} // namespace hilrig::rig
