@@ -126,8 +126,11 @@ void OutputRequest::write(std::uint16_t index, Level level) noexcept {
     return;
   }
   values_[index] = is_high(level) ? 1 : 0;
-  if (gpiod_line_set_value(gpiod_line_bulk_get_line(&impl_->bulk, index), values_[index]) != 0)
-    ++write_errors_;
+  // The whole request, with the cached levels of the other lines: the lines share one v1
+  // handle, whose GPIOHANDLE_SET_LINE_VALUES_IOCTL sets every line of the handle from
+  // values[0..n), and libgpiod 1.6's one-line gpiod_line_set_value sends values[0] only (the
+  // rest zero) on that handle, so it could clear, or set, lines other than `index`.
+  if (gpiod_line_set_value_bulk(&impl_->bulk, values_.data()) != 0) ++write_errors_;
 }
 
 void OutputRequest::write_all(std::span<const Level> levels) noexcept {

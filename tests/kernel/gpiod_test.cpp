@@ -50,6 +50,33 @@ TEST(GpiodOutput, BulkWriteChangesABAndZTogether) {
   EXPECT_EQ(sim_value(4), 0);
 }
 
+// Writing one line of a multi-line request never changes the others (libgpiod 1.6 shares one
+// v1 handle between them, whose set ioctl carries every line's value): every single-line
+// write from every state of three lines, read back on all three.
+TEST(GpiodOutput, WritingOneLineLeavesTheOthers) {
+  const std::array<unsigned, 3> lines{11, 12, 15};
+  OutputRequest out(env("HILRIG_GPIO_CHIP"), lines, LineSettings{});
+  std::array<int, 3> expected{0, 0, 0};
+  for (unsigned state = 0; state < 8; ++state) {
+    for (std::uint16_t i = 0; i < 3; ++i) {
+      // Into `state` one line at a time, then each line toggled alone and back.
+      const int want = static_cast<int>((state >> i) & 1U);
+      out.write(i, want != 0 ? Level::High : Level::Low);
+      expected[i] = want;
+      for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(sim_value(lines[k]), expected[k]) << state << " " << k;
+    }
+    for (std::uint16_t i = 0; i < 3; ++i) {
+      for (int flip = 0; flip < 2; ++flip) {
+        expected[i] = 1 - expected[i];
+        out.write(i, expected[i] != 0 ? Level::High : Level::Low);
+        for (std::size_t k = 0; k < 3; ++k)
+          EXPECT_EQ(sim_value(lines[k]), expected[k]) << state << " line " << i << " read " << k;
+      }
+    }
+  }
+  EXPECT_EQ(out.write_errors(), 0U);
+}
+
 TEST(GpiodOutput, ActiveLowInvertsTheWire) {
   const std::array<unsigned, 1> lines{5};
   LineSettings s;
