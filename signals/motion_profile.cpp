@@ -21,7 +21,7 @@ double Segment::position_at(Nanos t) const {
 
 double Segment::velocity_at(Nanos t) const { return velocity + acceleration * (t - start).seconds(); }
 
-double Segment::end_position() const { return position_at(end()); }
+double Segment::end_position() const { return settled_end.value_or(position_at(end())); }
 double Segment::end_velocity() const { return velocity_at(end()); }
 
 MotionProfile::MotionProfile(double start_position, Nanos start_time)
@@ -49,10 +49,23 @@ MotionProfile& MotionProfile::append(const Segment& s) {
   if (std::abs(s.position - p0) > 1e-9 * (1.0 + std::abs(p0)))
     throw std::invalid_argument("MotionProfile::append: position is not continuous");
   Segment copy = s;
-  copy.position = p0; // exact continuity, so edge solvers see no jump at the boundary
+  copy.position = p0;
+  copy.settled_end.reset(); // only settle() declares an end // exact continuity, so edge solvers see no jump
+                            // at the boundary
   segments_.push_back(copy);
   peak_speed_ = std::max(peak_speed_, std::abs(copy.velocity));
   if (!open_ended(copy)) peak_speed_ = std::max(peak_speed_, std::abs(copy.end_velocity()));
+  return *this;
+}
+
+MotionProfile& MotionProfile::settle(double position) {
+  if (segments_.empty() || open_ended(segments_.back()))
+    throw std::logic_error("MotionProfile::settle: no finite segment to settle");
+  Segment& last = segments_.back();
+  const double reached = last.position_at(last.end());
+  if (std::abs(position - reached) > 1e-9 * (1.0 + std::abs(position)))
+    throw std::invalid_argument("MotionProfile::settle: the segment does not end there");
+  last.settled_end = position;
   return *this;
 }
 

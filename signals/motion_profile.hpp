@@ -6,6 +6,7 @@
 // — the profile does not care), time in Nanos, velocity per second, acceleration per s².
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "core/time.hpp"
@@ -18,6 +19,10 @@ struct Segment {
   double position;     // at start
   double velocity;     // at start, units/s
   double acceleration; // units/s², constant through the segment
+  // The end position a move builder aimed at, when it settled the segment there (see
+  // MotionProfile::settle): the closed form lands within a few ulps of it, and a count
+  // boundary must not fall into that gap.
+  std::optional<double> settled_end = std::nullopt;
 
   [[nodiscard]] Nanos end() const;
   [[nodiscard]] double position_at(Nanos t) const; // t measured absolutely
@@ -38,6 +43,10 @@ public:
   MotionProfile& dwell(Nanos duration);  // velocity must be 0 (throws otherwise)
   // Appends an arbitrary segment; its start must equal the current end time.
   MotionProfile& append(const Segment& s);
+  // Declares that the last segment ends exactly at `position` (within the closed form's
+  // rounding, a relative 1e-9; throws otherwise): a move to count 2000 then ends on 2000,
+  // not on 1999.9999999999998, and the next segment starts there.
+  MotionProfile& settle(double position);
 
   [[nodiscard]] const std::vector<Segment>& segments() const { return segments_; }
   [[nodiscard]] Nanos start_time() const;

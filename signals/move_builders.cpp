@@ -37,15 +37,17 @@ double distance_from_rest(const std::vector<Step>& steps) {
 }
 
 // Rescales the accelerations so the steps cover exactly `distance` (from rest, every
-// velocity and distance is linear in the accelerations), then appends them. Returns the
-// scale applied.
+// velocity and distance is linear in the accelerations), appends them and settles the move
+// on its target. Returns the scale applied.
 double append_exact(MotionProfile& profile, std::vector<Step>& steps, double distance) {
+  const double target = profile.end_position() + distance;
   const double covered = distance_from_rest(steps);
   const double scale = distance / covered;
   for (Step& s : steps) {
     if (s.duration <= Nanos::zero()) continue;
     profile.accelerate(s.acceleration * scale, s.duration);
   }
+  profile.settle(target);
   return scale;
 }
 

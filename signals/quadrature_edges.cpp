@@ -13,7 +13,7 @@ int sign_of(double x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
 QuadratureEdgeSolver::QuadratureEdgeSolver(const MotionProfile& profile, const QuadratureEncoder& encoder,
                                            Nanos until)
     : segments_(&profile.segments()), encoder_(encoder), counts_per_unit_(encoder.counts_per_unit()),
-      until_(until), counts_per_turn_(encoder.counts_per_turn()) {
+      until_(until), edge_offset_(encoder.edge_offset()), counts_per_turn_(encoder.counts_per_turn()) {
   if (encoder.lines_per_turn == 0)
     throw std::invalid_argument("QuadratureEncoder: lines_per_turn must be > 0");
   initial_count_ = encoder.count_at(profile.position(profile.start_time()));
@@ -37,6 +37,9 @@ bool QuadratureEdgeSolver::load_segment(std::size_t i) {
   seg_c0_ = counts_per_unit_ * s.position;
   seg_v_ = counts_per_unit_ * s.velocity * 1e-9;
   seg_a_ = counts_per_unit_ * s.acceleration * 1e-18;
+  // The end count as the profile states it (settled or closed form), so the edges take the
+  // count exactly to encoder.count_at(profile.position(end)).
+  seg_cend_ = counts_per_unit_ * (end == s.end() ? s.end_position() : s.position_at(end));
   if (seg_v_ == 0.0 && seg_a_ == 0.0) return false;
   pieces_ = 1;
   if (seg_a_ != 0.0) {
@@ -60,7 +63,7 @@ void QuadratureEdgeSolver::start_piece(int piece) {
     p_v0_ = seg_v_;
     p_end_ = seg_end_;
     p_dir_ = seg_v_ != 0.0 ? sign_of(seg_v_) : sign_of(seg_a_);
-    p_cend_ = seg_c0_ + (seg_v_ + 0.5 * seg_a_ * seg_end_) * seg_end_;
+    p_cend_ = seg_cend_;
   } else if (piece == 0) {
     p_t0_ = 0.0;
     p_c0_ = seg_c0_;
@@ -69,14 +72,16 @@ void QuadratureEdgeSolver::start_piece(int piece) {
     p_dir_ = sign_of(seg_v_);
     p_cend_ = vertex_c_;
   } else {
-    const double rest = seg_end_ - vertex_t_;
     p_t0_ = vertex_t_;
     p_c0_ = vertex_c_;
     p_v0_ = 0.0;
     p_end_ = seg_end_;
     p_dir_ = sign_of(seg_a_);
-    p_cend_ = vertex_c_ + 0.5 * seg_a_ * rest * rest;
+    p_cend_ = seg_cend_;
   }
+  // The piece's ends decide its direction: when a settled end lies a few ulps past a
+  // turning point the closed form puts just before it, the count still follows the ends.
+  if (p_cend_ != p_c0_) p_dir_ = p_cend_ > p_c0_ ? 1 : -1;
   p_inv_v_ = p_linear_ ? 1.0 / p_v0_ : 0.0;
 }
 
@@ -108,9 +113,12 @@ std::size_t QuadratureEdgeSolver::fill(std::span<QuadEdge> out) {
     if (!piece_active_ && !advance()) return written;
     const int dir = p_dir_;
     const double step = dir;
-    // Edge from n to n+dir sits at n + dir/2 counts.
-    double h = static_cast<double>(count_) + 0.5 * step;
-    while (written < limit && (dir > 0 ? h < p_cend_ : h > p_cend_)) {
+    // The edge from n up to n+1 sits at n + edge_offset counts and is emitted once the
+    // position reaches it; the edge from n down to n-1 sits at n - 1 + edge_offset and is
+    // emitted once the position falls below it (count_at's floor, both ways). Integers plus
+    // 0.5 or 1 are exact in a double, so the comparisons with the piece's end are exact.
+    double h = static_cast<double>(count_) + edge_offset_ - (dir > 0 ? 0.0 : 1.0);
+    while (written < limit && (dir > 0 ? h <= p_cend_ : h > p_cend_)) {
       const double d = h - p_c0_;
       double t;
       if (p_linear_) {

@@ -1,6 +1,9 @@
 #pragma once
 // Quadrature edge solver: the time of every A/B (and Z) edge, solved in closed form from
-// each segment's quadratic and rounded to the nanosecond; no sampling. A segment whose
+// each segment's quadratic and rounded to the nearest nanosecond (halves up, counted from
+// the segment's start); no sampling. The edges take the count from count_at(start
+// position) to count_at(end position) exactly, one edge per count, wherever the profile
+// starts and ends (fractional positions, a move settled on a count boundary). A segment whose
 // velocity crosses zero is split at the turning point, so reversals inside a segment give
 // the right edges in the right order.
 //
@@ -43,6 +46,7 @@ private:
   QuadratureEncoder encoder_;
   double counts_per_unit_ = 0;
   Nanos until_;
+  double edge_offset_ = 0.5; // QuadratureEncoder::edge_offset()
   std::size_t next_segment_ = 0;
   bool done_ = false;
   bool piece_active_ = false;
@@ -54,7 +58,7 @@ private:
 
   // The current segment, in counts and nanoseconds relative to its start.
   std::int64_t seg_start_ns_ = 0;
-  double seg_c0_ = 0, seg_v_ = 0, seg_a_ = 0, seg_end_ = 0;
+  double seg_c0_ = 0, seg_v_ = 0, seg_a_ = 0, seg_end_ = 0, seg_cend_ = 0;
   double vertex_t_ = 0, vertex_c_ = 0; // turning point inside the segment
   int pieces_ = 0, piece_ = 0;
   // The current monotonic piece: origin time/count/velocity, its end and direction.

@@ -10,7 +10,7 @@ double QuadratureEncoder::counts_per_unit() const {
 }
 
 std::int64_t QuadratureEncoder::count_at(double position) const {
-  return static_cast<std::int64_t>(std::floor(counts(position) + 0.5));
+  return static_cast<std::int64_t>(std::floor(counts(position) + 1.0 - edge_offset()));
 }
 
 bool QuadratureEncoder::index_high(std::int64_t count) const {

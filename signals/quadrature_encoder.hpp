@@ -2,9 +2,15 @@
 // An incremental quadrature encoder: lines per turn, X4 counts (4 per line), A leading B
 // for forward motion, and an index pulse Z once per turn.
 //
-// Count n is the encoder state: (A, B) = 00, 10, 11, 01 for n mod 4 = 0, 1, 2, 3. The
-// edge from n to n+1 sits half a count past n (at n + 0.5 counts), so a shaft that stops
-// exactly on a count rests in the middle of a state, not balanced on an edge.
+// Count n is the encoder state: (A, B) = 00, 10, 11, 01 for n mod 4 = 0, 1, 2, 3. Where
+// the edge from n to n+1 sits is the encoder's EdgePlacement:
+//   HalfCount  at n + 0.5 counts: count = round(position) (halves up), so a shaft that
+//              stops exactly on a count rests in the middle of a state, not on an edge;
+//   WholeCount at n + 1 counts:   count = floor(position), the rig's convention (positions
+//              in checks name the count they enter: going up, count n is entered when the
+//              position reaches n; going down, count n-1 when it falls below n).
+// Either way the count at a position is count_at(), and the edges the solver emits always
+// take the count from count_at(start) to count_at(end).
 
 #include <cstdint>
 
@@ -14,6 +20,7 @@
 namespace hilrig::signals {
 
 enum class QuadChannel : std::uint8_t { A, B, Z };
+enum class EdgePlacement : std::uint8_t { HalfCount, WholeCount };
 
 // Channel levels of encoder state n (n may be negative).
 [[nodiscard]] constexpr bool channel_a(std::int64_t n) { return ((n & 3) == 1) || ((n & 3) == 2); }
@@ -26,6 +33,7 @@ struct QuadratureEncoder {
   double units_per_turn = 1.0;
   // Direction: false = A leads B for increasing position; true = B leads A.
   bool reversed = false;
+  EdgePlacement placement = EdgePlacement::HalfCount;
   // Index Z: high while (count - index_count) mod counts_per_turn < index_width.
   // index_width 0 means no index channel.
   std::int64_t index_count = 0;
@@ -37,6 +45,8 @@ struct QuadratureEncoder {
   // Continuous count at a profile position; the encoder state there is count_at().
   [[nodiscard]] double counts(double position) const { return position * counts_per_unit(); }
   [[nodiscard]] std::int64_t count_at(double position) const;
+  // Where, in continuous counts, the edge from state n to n+1 sits, relative to n (0.5 or 1).
+  [[nodiscard]] double edge_offset() const { return placement == EdgePlacement::HalfCount ? 0.5 : 1.0; }
   [[nodiscard]] bool index_high(std::int64_t count) const;
   // Z gated to A·B high on line `line`: one count wide, on the state where A = B = 1.
   void gate_index_to_line(std::int64_t line) {

@@ -5,15 +5,29 @@
 
 namespace hilrig::campaign {
 
+namespace {
+
+// The campaign's encoder over a profile already in counts (units_per_turn = counts per turn).
+signals::QuadratureEncoder rig_encoder(const EncoderSpec& spec) {
+  signals::QuadratureEncoder e;
+  e.lines_per_turn = static_cast<std::uint32_t>(spec.lines);
+  e.units_per_turn = spec.counts_per_turn();
+  e.placement = signals::EdgePlacement::WholeCount;
+  return e;
+}
+
+} // namespace
+
 RigDrive::RigDrive(Scheduler& scheduler, const Scenario& scenario, const BuiltMotion& motion)
-    : sched_(scheduler), s_(scenario), built_(motion), edges_(motion.profile), count_(edges_.start_count()) {
+    : sched_(scheduler), s_(scenario), built_(motion),
+      edges_(motion.profile, rig_encoder(scenario.encoder), scenario.end), count_(edges_.initial_count()) {
   for (const Move& m : s_.motion.moves)
     if (!m.brake_line.empty()) brake_level_[m.brake_line] = m.brake_level;
 }
 
 Level RigDrive::initial_level(std::string_view rig) const {
-  if (rig == kEncoderA) return a_level(edges_.start_count());
-  if (rig == kEncoderB) return b_level(edges_.start_count());
+  if (rig == kEncoderA) return level_of(signals::channel_a(edges_.initial_count()));
+  if (rig == kEncoderB) return level_of(signals::channel_b(edges_.initial_count()));
   if (const auto it = brake_level_.find(rig); it != brake_level_.end()) return !it->second;
   return Level::Low;
 }
@@ -37,7 +51,7 @@ void RigDrive::start(const std::vector<Stimulus>& faults, const std::optional<St
     if (f.kind == StimulusKind::MissingEdges) missing_.push_back(MissingEdges{f, 0});
   for (const Stimulus& f : s_.stimuli)
     if (f.kind == StimulusKind::MissingEdges) missing_.push_back(MissingEdges{f, 0});
-  next_edge_ = edges_.next();
+  next_edge_ = pull_edge();
   if (next_edge_ && next_edge_->time <= s_.end) sched_.at(next_edge_->time, [this] { encoder_edge(); });
 
   for (const Stimulus& st : s_.stimuli) schedule(st);
@@ -52,19 +66,29 @@ void RigDrive::start(const std::vector<Stimulus>& faults, const std::optional<St
   }
 }
 
+std::optional<signals::QuadEdge> RigDrive::pull_edge() {
+  if (edge_next_ == edge_filled_) {
+    edge_filled_ = edges_.fill(edge_buffer_);
+    edge_next_ = 0;
+    if (edge_filled_ == 0) return std::nullopt;
+  }
+  return edge_buffer_[edge_next_++];
+}
+
 void RigDrive::encoder_edge() {
-  const CountEdge e = *next_edge_;
+  const signals::QuadEdge e = *next_edge_;
   count_ = e.count;
   if (record_motion_) checks::append_motion(motion_, {e.time, static_cast<double>(e.count)});
-  DrivenLine* line = e.on_a ? enc_a_ : enc_b_;
-  const std::string_view name = e.on_a ? kEncoderA : kEncoderB;
+  const bool on_a = e.channel == signals::QuadChannel::A;
+  DrivenLine* line = on_a ? enc_a_ : enc_b_;
+  const std::string_view name = on_a ? kEncoderA : kEncoderB;
   bool lost = false;
   for (MissingEdges& m : missing_) {
     if (m.fault.line != name || e.time < m.fault.at || e.time >= m.fault.until) continue;
     if (++m.seen % m.fault.every == 0) lost = true;
   }
   if (line != nullptr && !lost) line->want(e.level);
-  next_edge_ = edges_.next();
+  next_edge_ = pull_edge();
   if (next_edge_ && next_edge_->time <= s_.end) sched_.at(next_edge_->time, [this] { encoder_edge(); });
 }
 

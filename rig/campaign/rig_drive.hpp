@@ -5,6 +5,8 @@
 // drives recording outputs with it to precompute the RT loop's edge schedule, so both
 // backends play the same edges.
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -16,8 +18,8 @@
 #include "core/scheduler.hpp"
 #include "rig/campaign/campaign.hpp"
 #include "rig/campaign/motion.hpp"
-#include "rig/campaign/quadrature_edges.hpp"
 #include "rig/checks/brake.hpp"
+#include "signals/quadrature_edges.hpp"
 
 namespace hilrig::campaign {
 
@@ -59,17 +61,23 @@ private:
 
   DrivenLine* find(std::string_view rig);
   void encoder_edge();
+  // The next A/B edge from the solver, or nothing when the motion has no more.
+  [[nodiscard]] std::optional<signals::QuadEdge> pull_edge();
   void schedule(const Stimulus& st);
 
   Scheduler& sched_;
   const Scenario& s_;
   const BuiltMotion& built_;
-  QuadratureEdges edges_;
+  // The encoder in counts, count = floor(position) (positions in checks name the count
+  // they enter): the one quadrature solver every stimulus path uses.
+  signals::QuadratureEdgeSolver edges_;
+  std::array<signals::QuadEdge, 64> edge_buffer_{};
+  std::size_t edge_next_ = 0, edge_filled_ = 0;
   std::map<std::string, Level, std::less<>> brake_level_;
   std::map<std::string, DrivenLine, std::less<>> driven_;
   DrivenLine* enc_a_ = nullptr;
   DrivenLine* enc_b_ = nullptr;
-  std::optional<CountEdge> next_edge_;
+  std::optional<signals::QuadEdge> next_edge_;
   std::vector<MissingEdges> missing_;
   std::int64_t count_ = 0;
   bool record_motion_ = true;
