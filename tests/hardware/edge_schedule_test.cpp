@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rig/campaign/campaign_parser.hpp"
+#include "rig/campaign/executive.hpp"
 #include "rig/campaign/virtual_run.hpp"
 #include "rig/hardware/drive_plan.hpp"
 #include "rig/hardware/edge_schedule.hpp"
@@ -90,6 +91,26 @@ TEST(EdgeSchedule, ProbeAndFaultsOfTheRunAreScheduled) {
   EXPECT_EQ(en[1].level, Level::Low);
   EXPECT_EQ(en[2].time, us(4230));
   EXPECT_EQ(en[2].level, Level::High);
+}
+
+// A [plant] closes the loop through the board's outputs as they happen, which a schedule
+// computed before the run cannot: the hardware backend refuses it rather than play an
+// open-loop guess (docs/plants.md).
+TEST(EdgeSchedule, APlantScenarioIsRefused) {
+  std::string text = test::kLoopCampaign;
+  const std::string motion =
+      "[motion]\n[[motion.move]]\nkind = \"constant\"\nspeed_rpm = 150\nduration = \"10ms\"";
+  const std::size_t at = text.find(motion);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, motion.size(), "[plant]\nkind = \"rotary_axis\"\nstart_speed = 15.0");
+  const campaign::Campaign c = campaign::parse_campaign(text, "plant.toml");
+  ASSERT_TRUE(c.points.at(0).plant.has_value());
+  const RigConfig rig = parse_rig_config(test::kLoopRig, "rig.toml");
+  const DrivePlan plan = plan_lines(c.file, c.points.at(0), rig);
+  campaign::RunInputs in;
+  in.scenario = &c.points.at(0);
+  in.variant = "nominal";
+  EXPECT_THROW((void)build_schedule(in, plan), campaign::RigFault);
 }
 
 } // namespace
