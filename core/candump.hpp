@@ -9,6 +9,7 @@
 // "123##5..." for a BRS frame. canplayer and log2asc read both forms.
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -26,5 +27,21 @@ namespace hilrig {
 // Throws std::invalid_argument for a negative time.
 [[nodiscard]] std::string candump_line(Nanos t, std::string_view bus, const CanFrame& frame,
                                        std::size_t name_width = 0, bool fdf_flag = false);
+
+// One line of a candump log as read back: what candump_line() writes.
+struct CandumpRecord {
+  Nanos time;
+  std::string bus;
+  CanFrame frame;
+  bool fdf_flag = false; // the FD flags nibble had CANFD_FDF (4)
+  friend bool operator==(const CandumpRecord&, const CandumpRecord&) = default;
+};
+
+// Reads one line (without its '\n') in exactly the forms above: "(SECONDS.MICROS) BUS FRAME",
+// the seconds 1..10 digits and the microseconds 6, the bus name 1..15 characters (IFNAMSIZ)
+// after any padding, a 3-digit standard or 8-digit extended ID, at most 8 data bytes on a
+// classic frame and a CAN FD length (0..8, 12, 16, 20, 24, 32, 48, 64) on an FD frame.
+// nullopt for anything else: a log is evidence, and a line that is not one is not guessed at.
+[[nodiscard]] std::optional<CandumpRecord> read_candump_line(std::string_view line);
 
 } // namespace hilrig

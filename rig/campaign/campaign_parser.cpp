@@ -34,7 +34,8 @@ std::optional<std::vector<PathStep>> split_path(std::string_view path) {
     if (bracket != std::string_view::npos) {
       if (!part.ends_with(']')) return std::nullopt;
       const std::string digits(part.substr(bracket + 1, part.size() - bracket - 2));
-      if (digits.empty() ||
+      // At most 9 digits: no array of a file of at most 1 MiB is longer, and stoull cannot overflow.
+      if (digits.empty() || digits.size() > 9 ||
           !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
         return std::nullopt;
       step.index = static_cast<std::size_t>(std::stoull(digits));

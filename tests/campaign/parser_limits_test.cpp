@@ -294,6 +294,16 @@ TEST(CampaignLimits, SweepOfMoreThanAThousandPointsIsRefusedBeforeItIsBuilt) {
   EXPECT_TRUE(rejected_at(kBase + many, "t.toml:35:7: sweep: at most 1000 sweep points"));
 }
 
+TEST(CampaignLimits, HugeArrayIndexInASweepKeyIsBadInputNotAnUncaughtException) {
+  // std::stoull threw std::out_of_range for a 30-digit index, past every catch of `hilrig run`.
+  EXPECT_TRUE(rejected_at(kBase +
+                              "[[sweep]]\nkey = \"motion.move[999999999999999999999999999999].speed_rpm\"\n"
+                              "values = [1, 2]\n",
+                          "t.toml:32:7: sweep[0].key: a key path in this file"));
+  EXPECT_TRUE(rejected_at(kBase + "[[sweep]]\nkey = \"motion.move[1000000000].speed_rpm\"\nvalues = [1]\n",
+                          "t.toml:32:7: sweep[0].key: a key path in this file"));
+}
+
 // ---- adversarial files ----------------------------------------------------------------------
 
 std::string dotted(std::size_t parts) {
