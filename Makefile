@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
 DEMO_CAMPAIGN ?= campaigns/ans1/ans1_throughput.toml
 
-.PHONY: all deps build build-asan demo test test-unit test-asan test-vm bench format format-check clean
+.PHONY: all deps build build-asan build-fuzz demo test test-unit test-asan test-vm fuzz fuzz-smoke bench format format-check clean
 
 all: build
 
@@ -48,8 +48,23 @@ test-vm: build
 	@bash rt-config/vm/run-lane.sh build-vm rt-config/vm/payload-kernel-tests.sh \
 	  rt-config/vm/payload-gpiod2.sh rt-config/vm/payload-e2e.sh
 
-# Every test, then the sanitizer build's tests, then the RT VM lane.
-test: test-unit test-asan format-check test-vm
+# The libFuzzer targets (fuzz/): clang++ in their own build directory, only the libraries they link.
+FUZZERS := fuzz_campaign fuzz_rig_config fuzz_modbus_tcp fuzz_modbus_rtu fuzz_candump
+build-fuzz: deps
+	@cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DHILRIG_FUZZ=ON -DHILRIG_BUILD_TESTS=OFF -DHILRIG_BUILD_BENCH=OFF >/dev/null
+	@cmake --build build-fuzz -j $(JOBS) --target $(FUZZERS)
+
+# A short deterministic run of every fuzzer (fixed seed and run count, seeded from the shipped
+# files): part of make test. make fuzz runs each for FUZZ_SECONDS (default 600) and keeps its corpus.
+fuzz-smoke: build-fuzz
+	@bash fuzz/run.sh smoke $(FUZZERS)
+
+fuzz: build-fuzz
+	@bash fuzz/run.sh long $(FUZZERS)
+
+# Every test, then the sanitizer build's tests, the fuzzers' short run, then the RT VM lane.
+test: test-unit test-asan format-check fuzz-smoke test-vm
 	@echo "make test: all suites passed (default and ASan+UBSan builds)"
 
 bench: deps
@@ -64,4 +79,4 @@ format-check:
 	@git ls-files '*.cpp' '*.hpp' | xargs -r clang-format --dry-run -Werror
 
 clean:
-	rm -rf build build-asan build-release build-gpiod2 build-vm
+	rm -rf build build-asan build-release build-gpiod2 build-vm build-fuzz

@@ -17,6 +17,13 @@ if(HILRIG_SANITIZE)
   # once ASan instruments it; the optimised build keeps the warning.
   target_compile_options(hilrig_flags INTERFACE -Wno-maybe-uninitialized)
 endif()
+if(HILRIG_FUZZ)
+  # Every library the fuzzers link is instrumented for coverage and checked by ASan+UBSan; the
+  # fuzzers themselves add libFuzzer's main (fuzz/CMakeLists.txt).
+  target_compile_options(hilrig_flags INTERFACE
+    -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_link_options(hilrig_flags INTERFACE -fsanitize=address,undefined)
+endif()
 target_include_directories(hilrig_flags INTERFACE ${PROJECT_SOURCE_DIR})
 
 # hilrig_library(NAME SOURCES ... DEPS ...)

@@ -38,7 +38,8 @@ struct CandumpRecord {
 };
 
 // Reads one line (without its '\n') in exactly the forms above: "(SECONDS.MICROS) BUS FRAME",
-// the seconds 1..10 digits and the microseconds 6, the bus name 1..15 characters (IFNAMSIZ)
+// the seconds 1..10 digits (at most 9223372035, what nanoseconds in 64 bits hold) and the
+// microseconds 6, the bus name 1..15 characters (IFNAMSIZ)
 // after any padding, a 3-digit standard or 8-digit extended ID, at most 8 data bytes on a
 // classic frame and a CAN FD length (0..8, 12, 16, 20, 24, 32, 48, 64) on an FD frame.
 // nullopt for anything else: a log is evidence, and a line that is not one is not guessed at.

@@ -76,6 +76,9 @@ std::optional<CandumpRecord> read_candump_line(std::string_view line) {
   if (!take(line, '(') || !take_decimal(line, 1, 10, seconds) || !take(line, '.') ||
       !take_decimal(line, 6, 6, micros) || !take(line, ')') || !take(line, ' '))
     return std::nullopt;
+  // Ten digits can be more seconds than a 64-bit nanosecond count holds (found by fuzz_candump).
+  constexpr std::int64_t kMaxSeconds = 9'223'372'035;
+  if (seconds > kMaxSeconds) return std::nullopt;
   r.time = Nanos{seconds * 1'000'000'000 + micros * 1'000};
   while (!line.empty() && line.front() == ' ') line.remove_prefix(1);
   const std::size_t space = line.find(' ');

@@ -25,6 +25,8 @@ packages=(
   rt-tests            # cyclictest: the peer for the RT loop's latency
   python3             # test helpers: an independent VCD/JUnit reader
   clang-format        # the committed .clang-format
+  clang               # the fuzzers' compiler (build-fuzz/, make fuzz-smoke and make fuzz)
+  libclang-rt-14-dev  # libFuzzer and the ASan/UBSan runtimes clang links the fuzzers with
 )
 
 # The RT VM lane (rt-config/vm/, `make test-vm`) needs more: `install-deps.sh --vm`.

@@ -429,7 +429,10 @@ const CheckKind* find_check_kind(std::string_view name) {
 std::vector<std::string> validate_check_params(const CheckKind& kind, const json& params) {
   std::vector<std::string> errors;
   if (!params.is_object()) return {"parameters must be a table"};
-  for (const auto& [key, value] : params.items()) {
+  for (const auto& item : params.items()) {
+    // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    const std::string& key = item.key();
+    const json& value = item.value();
     const auto it = std::find_if(kind.params.begin(), kind.params.end(),
                                  [&](const ParamSpec& s) { return s.name == key; });
     if (it == kind.params.end()) {

@@ -124,6 +124,12 @@ TEST(CandumpReader, RefusesWhatIsNotALogLine) {
     EXPECT_FALSE(read_candump_line(bad).has_value()) << bad;
   }
   EXPECT_TRUE(read_candump_line("(12.345678) can0 123#").has_value()); // the seconds may be short
+  // The most seconds 64-bit nanoseconds hold, and one more (it overflowed: found by fuzz_candump).
+  const auto last = read_candump_line("(9223372035.999999) can0 123#");
+  ASSERT_TRUE(last.has_value());
+  EXPECT_EQ(last->time, Nanos{9'223'372'035'999'999'000});
+  EXPECT_FALSE(read_candump_line("(9223372036.000000) can0 123#").has_value());
+  EXPECT_FALSE(read_candump_line("(9466084800.000250) can0 123#").has_value());
 }
 
 // Property: every frame the writer can write reads back equal (seeded, every kind of frame).
