@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "rig/results/run_log.hpp"
 #include <unistd.h>
@@ -163,9 +164,13 @@ RunResult run_from_json(const json& j) {
   return r;
 }
 
-json to_json(const CampaignResult& r) {
+namespace {
+
+// The document; its runs array only when with_runs (to_json_text splices them in one by one).
+json document(const CampaignResult& r, bool with_runs) {
   json runs = json::array();
-  for (const auto& run : r.runs) runs.push_back(run_to_json(run));
+  if (with_runs)
+    for (const auto& run : r.runs) runs.push_back(run_to_json(run));
   json faults = json::array();
   for (const auto& f : r.faults) {
     faults.push_back(json{{"fault", f.fault},
@@ -207,6 +212,10 @@ json to_json(const CampaignResult& r) {
   return j;
 }
 
+} // namespace
+
+json to_json(const CampaignResult& r) { return document(r, true); }
+
 CampaignResult campaign_from_json(const json& j) {
   const char* w = "results";
   if (get<std::string>(j, "format", w) != kResultsFormat)
@@ -230,7 +239,24 @@ CampaignResult campaign_from_json(const json& j) {
   return r;
 }
 
-std::string to_json_text(const CampaignResult& r) { return to_json(r).dump(2) + "\n"; }
+std::string to_json_text(const CampaignResult& r) {
+  // The same bytes as to_json(r).dump(2), but each run's DOM is built and dumped alone and
+  // spliced in (the runs are nearly all of the file): writing a long campaign's results.json
+  // holds one run's DOM, not the whole document's.
+  std::string text = document(r, false).dump(2);
+  const std::string empty = "\n  \"runs\": []";
+  const std::size_t at = text.find(empty);
+  if (at == std::string::npos) throw std::logic_error("results: no runs array to fill");
+  std::string runs = "\n  \"runs\": [";
+  for (std::size_t i = 0; i < r.runs.size(); ++i) {
+    runs += i == 0 ? "\n    " : ",\n    ";
+    const std::string run = run_to_json(r.runs[i]).dump(2);
+    for (char ch : run) runs += ch == '\n' ? std::string_view("\n    ") : std::string_view(&ch, 1);
+  }
+  runs += r.runs.empty() ? "]" : "\n  ]";
+  text.replace(at, empty.size(), runs);
+  return text + "\n";
+}
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
   const std::filesystem::path tmp = path.string() + ".tmp";

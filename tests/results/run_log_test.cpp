@@ -70,6 +70,19 @@ TEST(RunLog, FoldIsByteIdenticalToTheWholeFileWriter) {
   }
 }
 
+// to_json_text splices each run's own dump into the document: the same bytes as dumping the
+// whole document at once, for no run, one, many, and names that JSON must escape.
+TEST(RunLog, StreamedResultsTextIsTheWholeDocumentDump) {
+  for (std::size_t n : {0U, 1U, 2U, 5U, 30U}) {
+    CampaignResult r = test::sample_campaign(n);
+    if (n == 2) {
+      r.runs[0].name = "line\nbreak \"quoted\" \\ tab\t \u00b5s";
+      r.runs[1].error = "{\n  \"runs\": []\n}";
+    }
+    EXPECT_EQ(to_json_text(r), to_json(r).dump(2) + "\n") << n;
+  }
+}
+
 // A process killed (SIGKILL: no handler, no flush) after N appended runs leaves a log of N whole
 // records, which folds into an incomplete result with exactly those runs.
 TEST(RunLog, KillAfterNRunsLeavesNWholeRecords) {
