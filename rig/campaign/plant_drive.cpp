@@ -1,5 +1,6 @@
 #include "rig/campaign/plant_drive.hpp"
 
+#include "rig/campaign/rig_drive.hpp"
 #include "rig/campaign/scenario_reader.hpp"
 
 namespace hilrig::campaign {
@@ -7,9 +8,8 @@ namespace hilrig::campaign {
 PlantDrive::PlantDrive(Scheduler& scheduler, const Scenario& scenario)
     : sched_(scheduler), s_(scenario), spec_(*scenario.plant),
       motion_(spec_, scenario.encoder.counts_per_turn(), scenario.end),
+      encoder_(rig_encoder(scenario.encoder)),
       valve_(spec_.kind != PlantKind::Press || spec_.press_start.valve) {
-  encoder_.lines_per_turn = static_cast<std::uint32_t>(s_.encoder.lines);
-  encoder_.units_per_turn = s_.encoder.counts_per_turn(); // the plan is in counts
   count_ = encoder_.count_at(motion_.plan().position(motion_.plan().start_time()));
 }
 

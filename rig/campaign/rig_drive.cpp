@@ -5,9 +5,6 @@
 
 namespace hilrig::campaign {
 
-namespace {
-
-// The campaign's encoder over a profile already in counts (units_per_turn = counts per turn).
 signals::QuadratureEncoder rig_encoder(const EncoderSpec& spec) {
   signals::QuadratureEncoder e;
   e.lines_per_turn = static_cast<std::uint32_t>(spec.lines);
@@ -15,8 +12,6 @@ signals::QuadratureEncoder rig_encoder(const EncoderSpec& spec) {
   e.placement = signals::EdgePlacement::WholeCount;
   return e;
 }
-
-} // namespace
 
 RigDrive::RigDrive(Scheduler& scheduler, const Scenario& scenario, const BuiltMotion& motion)
     : sched_(scheduler), s_(scenario), built_(motion),

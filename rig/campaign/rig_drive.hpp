@@ -23,6 +23,10 @@
 
 namespace hilrig::campaign {
 
+// The campaign's encoder over a profile already in counts (units_per_turn = counts per
+// turn), count = floor(position): what the rig plays, from a motion or a plant.
+[[nodiscard]] signals::QuadratureEncoder rig_encoder(const EncoderSpec& spec);
+
 class RigDrive {
 public:
   // The scheduler, scenario and motion outlive the drive.
