@@ -6,28 +6,48 @@
 namespace hilrig::models::smd23e {
 
 namespace {
-constexpr std::array<std::pair<Fault, std::string_view>, 5> kNames{{
-    {Fault::None, "none"},
-    {Fault::WrongAcceleration, "wrong-acceleration"},
-    {Fault::LostSteps, "lost-steps"},
-    {Fault::IgnoredLimit, "ignored-limit"},
-    {Fault::LateStop, "late-stop"},
+struct FaultName {
+  Fault fault;
+  std::string_view name;
+  std::string_view description;
+};
+constexpr std::array<FaultName, 5> kNames{{
+    {Fault::None, "none", "as specified"},
+    {Fault::WrongAcceleration, "wrong-acceleration",
+     "ramps run at wrong_accel_factor (0.5) x the programmed acceleration and deceleration"},
+    {Fault::LostSteps, "lost-steps",
+     "the shaft misses one step in every lost_step_interval (100) issued; the position register does not "
+     "know"},
+    {Fault::IgnoredLimit, "ignored-limit",
+     "the CW/CCW limit inputs have no effect (moves and homing drive on)"},
+    {Fault::LateStop, "late-stop",
+     "stops from the limit, E-Stop and Stop Jog inputs and from Hold/Immediate Stop act late_stop_delay (20 "
+     "ms) late"},
 }};
 } // namespace
 
 std::string_view fault_name(Fault f) {
-  for (const auto& [fault, name] : kNames) {
-    if (fault == f) {
-      return name;
+  for (const auto& n : kNames) {
+    if (n.fault == f) {
+      return n.name;
     }
   }
   return "none";
 }
 
+std::string_view fault_description(Fault f) {
+  for (const auto& n : kNames) {
+    if (n.fault == f) {
+      return n.description;
+    }
+  }
+  return "as specified";
+}
+
 std::optional<Fault> fault_from_name(std::string_view name) {
-  for (const auto& [fault, n] : kNames) {
-    if (n == name) {
-      return fault;
+  for (const auto& n : kNames) {
+    if (n.name == name) {
+      return n.fault;
     }
   }
   return std::nullopt;
@@ -35,9 +55,9 @@ std::optional<Fault> fault_from_name(std::string_view name) {
 
 std::vector<std::string_view> fault_names() {
   std::vector<std::string_view> out;
-  for (const auto& [fault, name] : kNames) {
-    if (fault != Fault::None) {
-      out.push_back(name);
+  for (const auto& n : kNames) {
+    if (n.fault != Fault::None) {
+      out.push_back(n.name);
     }
   }
   return out;

@@ -21,6 +21,7 @@ enum class Fault : std::uint8_t {
 };
 
 [[nodiscard]] std::string_view fault_name(Fault f);
+[[nodiscard]] std::string_view fault_description(Fault f); // what the variant does wrong
 [[nodiscard]] std::optional<Fault> fault_from_name(std::string_view name);
 [[nodiscard]] std::vector<std::string_view> fault_names(); // every variant except None
 

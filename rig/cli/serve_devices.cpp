@@ -17,7 +17,9 @@
 #include "models/ssi7361/registers.hpp"
 #include "models/ssi7361/ssi7361.hpp"
 #include "rig/duts/amci4501_dut.hpp"
+#include "rig/duts/ans1_adapter.hpp"
 #include "rig/duts/pls2700_dut.hpp"
+#include "rig/duts/smd23e_dut.hpp"
 #include "rig/duts/ssi7361_dut.hpp"
 #include "rig/far/far_side.hpp"
 #include "signals/resolver.hpp"
@@ -35,23 +37,17 @@ std::string_view nominal_if_none(const std::string& fault) {
   throw std::invalid_argument("unknown fault variant '" + fault + "' for " + std::string(device));
 }
 
-// Devices whose serve builder does not read ServeModelOptions::params yet.
-void refuse_params(std::string_view device, const ServeModelOptions& o) {
-  if (o.params_given) {
-    throw std::invalid_argument("--param is not taken by " + std::string(device) + " (served: its defaults)");
-  }
-}
-
 ServedModel build_smd23e(Scheduler& scheduler, const ServeModelOptions& o) {
-  refuse_params("smd23e", o);
   const auto fault = models::smd23e::fault_from_name(o.fault);
   if (!fault) {
     unknown_fault("smd23e", o.fault);
   }
-  models::smd23e::Params params;
+  // Every [MODEL] choice by its campaign name (rig/duts/smd23e_dut.cpp); --m12 and
+  // --no-encoder are shorthands that win over them.
+  models::smd23e::Params params = o.params_given ? duts::smd23e_params(o.params) : models::smd23e::Params{};
   params.fault = *fault;
-  params.m12 = o.m12;
-  params.has_encoder = !o.no_encoder;
+  params.m12 = params.m12 || o.m12;
+  params.has_encoder = params.has_encoder && !o.no_encoder;
   auto device = std::make_shared<models::smd23e::Smd23e>(scheduler, params);
   RegisterMap* map = device.get();
   return {std::move(device), map, {}};
@@ -61,7 +57,6 @@ ServedModel build_smd23e(Scheduler& scheduler, const ServeModelOptions& o) {
 // drives them), inputs off. Its host words are fully served. A far side gives it the pins
 // its config names (encoder, inputs, outputs, stators); the rest stay unwired.
 ServedModel build_ans1(Scheduler& scheduler, const ServeModelOptions& o) {
-  refuse_params("ans1", o);
   const auto variant = models::ans1::variant_from_name(nominal_if_none(o.fault));
   if (!variant) {
     unknown_fault("ans1", o.fault);
@@ -72,7 +67,8 @@ ServedModel build_ans1(Scheduler& scheduler, const ServeModelOptions& o) {
     models::ans1::Ans1 device;
     models::ans1::Ans1RegisterMap map;
   };
-  models::ans1::Params params;
+  // Every [MODEL] choice by its campaign name (rig/duts/ans1_adapter.cpp); --scan wins.
+  models::ans1::Params params = o.params_given ? duts::ans1_params(o.params) : models::ans1::Params{};
   if (o.scan_period) {
     params.master_scan_period = *o.scan_period;
   }

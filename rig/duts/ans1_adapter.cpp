@@ -1,9 +1,12 @@
 #include "rig/duts/ans1_adapter.hpp"
 
+#include <array>
+#include <span>
 #include <stdexcept>
 
 #include "drivers/virtual/virtual_bus.hpp"
 #include "models/ans1/ans1.hpp"
+#include "rig/duts/param_fields.hpp"
 
 namespace hilrig::duts {
 
@@ -66,7 +69,42 @@ private:
   a::Ans1 device_;
 };
 
+// Every [MODEL] choice of models/ans1/README.md that is a field of Params, by the name a
+// campaign's dut.params and `hilrig serve --param` use. Ranges: a scan of 10 us (master) or
+// 50 us throughput (slave), spec/ans1.md L187 (manual L572-L576); a model may scan 1 us .. 1 ms
+// around them, not faster (a 1 ns scan is 10^9 events per virtual second). Speed update
+// 14.6 ms (L820): 1 ms .. 1 s. Excitation: the band the ANS1 accepts from a resolver,
+// 2.2 .. 7 kHz (spec/ans1.md L60, manual L1455). The fault ratios bracket 1 (TR 0.9..1.0 is
+// valid, L1456).
+using F = ParamField<a::Params>;
+const std::array kAns1Fields{
+    F{"scan", &a::Params::master_scan_period, "master position-and-output scan period (10 us, 4.0)",
+      between(1_us, 1_ms)},
+    F{"slave_scan", &a::Params::slave_scan_period, "scan period as a slave (40 us: 50 us throughput, L576)",
+      between(1_us, 1_ms)},
+    F{"output_delay", &a::Params::output_delay, "scan to output pin (10 us: 10-20 us throughput, L572)",
+      between(0_us, 1_ms)},
+    F{"speed_update", &a::Params::speed_update_period, "speed value update period (14.6 ms, L820)",
+      between(1_ms, 1_s)},
+    F{"excitation_hz", &a::Params::excitation_hz,
+      "resolver excitation frequency (5 kHz; A35, L1455 2.2-7 kHz)", between(2'200.0, 7'000.0)},
+    F{"excitation_amplitude", &a::Params::excitation_amplitude,
+      "resolver reference peak, in the stator signals' unit (1.0)", between(0.001, 1000.0)},
+    F{"resolver_min_ratio", &a::Params::resolver_min_ratio,
+      "stator amplitude / reference below this is a Resolver Fault (0.75; an open coil drops below)",
+      between(0.0, 1.0)},
+    F{"resolver_max_ratio", &a::Params::resolver_max_ratio,
+      "stator amplitude / reference above this is a Resolver Fault (1.25; TR 0.9-1.0 is valid, L1456)",
+      between(1.0, 10.0)},
+    F{"time_only_retrigger_restarts", &a::Params::time_only_retrigger_restarts,
+      "a Time-Only output's From edge during its time restarts the timer (true, A39)"},
+};
+
 } // namespace
+
+a::Params ans1_params(const DutParams& values) {
+  return params_from(std::span<const F>(kAns1Fields), values);
+}
 
 DutInfo ans1_info() {
   DutInfo info;
@@ -84,35 +122,14 @@ DutInfo ans1_info() {
         {a::input_pin_name(i), PinDirection::Input, "discrete input " + std::to_string(i), false});
   for (int i = 1; i <= a::kOutputCount; ++i)
     info.pins.push_back({a::output_pin_name(i), PinDirection::Output, "output " + std::to_string(i), false});
-  const a::Params d{};
-  // Ranges: a scan of 10 us (master) or 50 us throughput (slave), spec/ans1.md L187 (manual
-  // L572-L576); a model may scan 1 us .. 1 ms around them, not faster (a 1 ns scan is 10^9 events
-  // per virtual second). Speed update 14.6 ms (L820): 1 ms .. 1 s. Excitation: the band the ANS1
-  // accepts from a resolver, 2.2 .. 7 kHz (spec/ans1.md L60, manual L1455).
-  info.params = {
-      {"scan", ParamKind::Duration, d.master_scan_period, "master position-and-output scan period",
-       between(1_us, 1_ms)},
-      {"slave_scan", ParamKind::Duration, d.slave_scan_period, "scan period as a slave", between(1_us, 1_ms)},
-      {"output_delay", ParamKind::Duration, d.output_delay, "scan to output pin", between(0_us, 1_ms)},
-      {"speed_update", ParamKind::Duration, d.speed_update_period, "speed value update period",
-       between(1_ms, 1_s)},
-      {"excitation_hz", ParamKind::Number, d.excitation_hz, "resolver excitation frequency",
-       between(2'200.0, 7'000.0)},
-  };
+  info.params = param_infos(std::span<const F>(kAns1Fields));
   for (const auto& v : a::kVariantNames)
-    info.variants.push_back({std::string(v.name), v.variant == a::Variant::Correct
-                                                      ? "as specified"
-                                                      : "wrong on purpose (models/ans1/variants.hpp)"});
+    info.variants.push_back({std::string(v.name), std::string(v.description)});
   info.host = HostInterface{static_cast<std::size_t>(a::kHostWords), static_cast<std::size_t>(a::kHostWords),
                             true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
-    a::Params p;
-    p.master_scan_period = params.duration("scan");
-    p.slave_scan_period = params.duration("slave_scan");
-    p.output_delay = params.duration("output_delay");
-    p.speed_update_period = params.duration("speed_update");
-    p.excitation_hz = params.number("excitation_hz");
+    const a::Params p = ans1_params(params);
     const auto v = a::variant_from_name(variant);
     if (!v) throw std::invalid_argument("ans1 has no variant " + std::string(variant));
     return std::make_unique<Ans1Dut>(scheduler, p, *v);

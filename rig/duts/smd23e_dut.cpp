@@ -2,10 +2,12 @@
 
 #include <array>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 #include "drivers/virtual/virtual_bus.hpp"
 #include "models/smd23e/smd23e.hpp"
+#include "rig/duts/param_fields.hpp"
 
 namespace hilrig::duts {
 
@@ -100,7 +102,58 @@ private:
   EventId wake_{};
 };
 
+// Every [MODEL] choice of models/smd23e/README.md (Params), by the name a campaign's
+// dut.params and `hilrig serve --param` use. Ranges: the homing pause is 2 s (spec/smd23e.md
+// T2, manual L1327): 0 .. 60 s; the heartbeat ~500 ms (T3, L2888) and the idle delay 1.5 s
+// (T1, L781) within what a run observes; an input delay [A] 0 .. 1 s; the S-ramp fraction is
+// a fraction; a stall threshold up to one encoder turn (1024 counts); the fault knobs within
+// what keeps a move a move (1 lost step in 1 .. 1,000,000; ramps at 0.01 .. 100 x A and D;
+// stops 0 .. 10 s late).
+using F = ParamField<m::Params>;
+const std::array kSmd23eFields{
+    F{"has_encoder", &m::Params::has_encoder, "an E unit with the internal 1024-count encoder (1.1)"},
+    F{"m12", &m::Params::m12, "an M12 unit: inputs 1 and 2 only (1.1)"},
+    F{"heartbeat_half_period", &m::Params::heartbeat_half_period,
+      "SW2 bit 11 heartbeat half period (T3, 500 ms)", between(1_ms, 10_s)},
+    F{"homing_pause", &m::Params::homing_pause, "pause after each homing stop (T2, 2 s)",
+      between(0_us, 60_s)},
+    F{"idle_current_delay", &m::Params::idle_current_delay,
+      "no motion this long drops to the idle current (T1, 1.5 s)", between(0_us, 60_s)},
+    F{"input_delay", &m::Params::input_delay, "input edge to its effect [A 2.2] (0)", between(0_us, 1_s)},
+    F{"scurve_linear_fraction", &m::Params::scurve_linear_fraction,
+      "linear fraction of a trapezoidal S-ramp, J = 2..5000 [U 3.3] (0.5: the manual's +33 %)",
+      between(0.0, 1.0)},
+    F{"stop_input_level_sensitive", &m::Params::stop_input_level_sensitive,
+      "Stop Jog/Registration input acts on its level at the minimum distance (true) or on an edge only [U 9 "
+      "#4]"},
+    F{"capture_on_any_transition", &m::Params::capture_on_any_transition,
+      "Start Indexed captures the encoder on every transition (true) or rising only [U 9 #5]"},
+    F{"stall_threshold_counts", &m::Params::stall_threshold_counts,
+      "stall when the shaft lags the steps by more than this many encoder counts [U 2.3] (16)",
+      between(0.0, 1024.0)},
+    F{"dwell_after_last_segment", &m::Params::dwell_after_last_segment,
+      "a Dwell move also dwells after its last segment [U 9 #9] (false)"},
+    F{"report_present_current", &m::Params::report_present_current,
+      "input word 8 shows the idle-reduced current (true) or the configured one [U 6.6]"},
+    F{"sw2_bit13_as_figure", &m::Params::sw2_bit13_as_figure,
+      "SW2 bit 13 as the example dump's figure shows it, not as the text [U 9 #1] (false)"},
+    F{"netloss_at_powerup", &m::Params::netloss_at_powerup,
+      "Network Lost set at power-up, as the example dump [U 9 #34] (false)"},
+    F{"flash_config_valid", &m::Params::flash_config_valid,
+      "power up configured from flash: v_s 100, 2048 steps/turn, encoder on, 2.0 A, 50 % idle (false)"},
+    F{"wrong_accel_factor", &m::Params::wrong_accel_factor,
+      "variant wrong-acceleration: ramps at this x the programmed A and D (0.5)", between(0.01, 100.0)},
+    F{"lost_step_interval", &m::Params::lost_step_interval,
+      "variant lost-steps: the shaft misses one step in this many issued (100)", between(1.0, 1'000'000.0)},
+    F{"late_stop_delay", &m::Params::late_stop_delay, "variant late-stop: how late stops act (20 ms)",
+      between(0_us, 10_s)},
+};
+
 } // namespace
+
+m::Params smd23e_params(const DutParams& values) {
+  return params_from(std::span<const F>(kSmd23eFields), values);
+}
 
 DutInfo smd23e_info() {
   DutInfo info;
@@ -113,41 +166,14 @@ DutInfo smd23e_info() {
                        "shaft sensor: one edge (either level) per step the shaft turns", false});
   info.pins.push_back({kSmd23eDirPin, PinDirection::Output,
                        "shaft sensor: High while the shaft steps CW, Low CCW (Low at power-up)", false});
-  const m::Params d{};
-  // Ranges: the homing pause is 2 s (spec/smd23e.md T2, L136; manual L1327): 0 .. 60 s; an input
-  // delay [A] 0 .. 1 s; the fault knobs within what keeps a move a move (1 lost step in 1 ..
-  // 1,000,000; ramps at 0.01 .. 100 x A and D; stops 0 .. 10 s late).
-  info.params = {
-      {"homing_pause", ParamKind::Duration, d.homing_pause, "pause between homing stops (T2, 2 s)",
-       between(0_us, 60_s)},
-      {"input_delay", ParamKind::Duration, d.input_delay, "input edge to effect [A] (0)", between(0_us, 1_s)},
-      {"has_encoder", ParamKind::Boolean, d.has_encoder, "an E unit (internal 1024-count encoder)", {}},
-      {"flash_config_valid",
-       ParamKind::Boolean,
-       d.flash_config_valid,
-       "power up configured from flash (v_s 100, 2048 steps/turn)",
-       {}},
-      {"late_stop_delay", ParamKind::Duration, d.late_stop_delay, "variant late-stop: how late stops act",
-       between(0_us, 10_s)},
-      {"lost_step_interval", ParamKind::Integer, d.lost_step_interval,
-       "variant lost-steps: one step lost in this many", between(1.0, 1'000'000.0)},
-      {"wrong_accel_factor", ParamKind::Number, d.wrong_accel_factor,
-       "variant wrong-acceleration: ramps at this x A and D", between(0.01, 100.0)},
-  };
+  info.params = param_infos(std::span<const F>(kSmd23eFields));
   info.variants.push_back({"nominal", "as specified"});
   for (const std::string_view v : m::fault_names())
-    info.variants.push_back({std::string(v), "wrong on purpose (models/smd23e/README.md)"});
+    info.variants.push_back({std::string(v), std::string(m::fault_description(*m::fault_from_name(v)))});
   info.host = HostInterface{m::kWords, m::kWords, false, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
-    m::Params p;
-    p.homing_pause = params.duration("homing_pause");
-    p.input_delay = params.duration("input_delay");
-    p.has_encoder = params.boolean("has_encoder");
-    p.flash_config_valid = params.boolean("flash_config_valid");
-    p.late_stop_delay = params.duration("late_stop_delay");
-    p.lost_step_interval = params.integer("lost_step_interval");
-    p.wrong_accel_factor = params.number("wrong_accel_factor");
+    m::Params p = smd23e_params(params);
     if (variant != "nominal") {
       const auto f = m::fault_from_name(variant);
       if (!f) throw std::invalid_argument("smd23e has no variant " + std::string(variant));

@@ -8,6 +8,7 @@
 // words 1..9 are staged and a write of word 0 sends the whole block as one Modbus write
 // (FC 16), as a PLC does. Variants: "nominal" and the model's fault names.
 
+#include "models/smd23e/params.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::duts {
@@ -17,5 +18,8 @@ inline constexpr const char* kSmd23eDirPin = "DIR";
 
 // The registry entry (name "smd23e").
 [[nodiscard]] DutInfo smd23e_info();
+// The model's Params from every parameter of smd23e_info() (a campaign's or a served one's);
+// the fault variant is set apart, by name.
+[[nodiscard]] models::smd23e::Params smd23e_params(const DutParams& values);
 
 } // namespace hilrig::duts
