@@ -11,12 +11,11 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "core/line.hpp"
 #include "core/time.hpp"
 #include "rig/campaign/campaign_error.hpp"
 #include "rig/campaign/plant_spec.hpp"
+#include "rig/checks/check_params.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::campaign {
@@ -130,13 +129,12 @@ struct HostAction {
   SourcePos where;
 };
 
-// A check: its kind and name, and its parameters as written (the TOML table converted to
-// JSON, as rig/checks/registry.hpp takes them), with where each parameter was written.
+// A check: its kind and name, and its typed parameters, built and range-checked once by the
+// parser (rig/checks/registry.hpp: build_check_params).
 struct CheckSpec {
   std::string kind;
   std::string name;
-  nlohmann::json params = nlohmann::json::object();
-  std::map<std::string, SourcePos, std::less<>> param_where;
+  checks::CheckParams params;
   Nanos probe_at{0}; // bisection checks (debounce): when each probe pulse starts
   SourcePos where;
 };

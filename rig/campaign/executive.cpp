@@ -1,10 +1,10 @@
 #include "rig/campaign/executive.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <utility>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "rig/campaign/virtual_run.hpp"
 #include "rig/checks/debounce.hpp"
@@ -14,12 +14,12 @@ namespace hilrig::campaign {
 
 namespace {
 
-// Whether `name` is a string anywhere in a check's parameters (checks name their lines so).
-bool names_line(const nlohmann::json& params, const std::string& name) {
-  if (params.is_string()) return params.get_ref<const std::string&>() == name;
-  if (params.is_structured())
-    for (const auto& p : params)
-      if (names_line(p, name)) return true;
+// Whether some check reads the rig line `name`.
+bool names_line(const Scenario& s, const std::string& name) {
+  for (const CheckSpec& check : s.checks) {
+    const auto lines = checks::lines_of(check.params);
+    if (std::find(lines.begin(), lines.end(), name) != lines.end()) return true;
+  }
   return false;
 }
 
@@ -29,11 +29,7 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
   checks::Capture c;
   std::vector<std::string> named;
   for (const Wire& w : s.wiring)
-    for (const CheckSpec& check : s.checks)
-      if (names_line(check.params, w.rig)) {
-        named.push_back(w.rig);
-        break;
-      }
+    if (names_line(s, w.rig)) named.push_back(w.rig);
   c.lines = v.trace->edges_of(named);
   const signals::MotionProfile* profile = &v.profile;
   c.position = [profile](Nanos t) { return profile->position(t); };
@@ -74,7 +70,8 @@ RunOutput Executive::run(const RunSpec& spec) const {
   in.record_motion = false;
   in.host_link = host_link_ ? &host_link_ : nullptr;
   in.stop = stop_;
-  for (const CheckSpec& c : s.checks) in.record_motion = in.record_motion || c.kind == "brake_stop_time";
+  for (const CheckSpec& c : s.checks)
+    in.record_motion = in.record_motion || std::holds_alternative<checks::BrakeParams>(c.params);
   if (spec.fault) {
     const FaultSpec& f = campaign_.faults.at(*spec.fault);
     r.fault = f.name;
@@ -98,10 +95,9 @@ RunOutput Executive::run(const RunSpec& spec) const {
     out.trace = v.trace; // kept when a probe run below is stopped
     checks::Capture capture = capture_of(s, v);
     for (const CheckSpec& c : s.checks) {
-      const checks::CheckKind* kind = checks::find_check_kind(c.kind);
-      if (kind != nullptr && kind->needs_bisection) {
+      if (const auto* debounce = std::get_if<checks::DebounceParams>(&c.params)) {
         // Each probe is a fresh run of the same scenario with one more pulse on the input.
-        const checks::BisectionPlan plan = checks::debounce_plan(c.params);
+        const checks::BisectionPlan& plan = debounce->plan;
         const checks::PulseProbe probe = [&](Nanos width) {
           RunInputs p = in;
           p.probe = Stimulus{StimulusKind::Pulse, c.probe_at, plan.input, plan.level, width, Nanos{0}, 0, 1,
@@ -116,7 +112,7 @@ RunOutput Executive::run(const RunSpec& spec) const {
       } else {
         capture.bisection.reset();
       }
-      r.checks.push_back(checks::run_check(c.name, c.kind, capture, c.params));
+      r.checks.push_back(checks::run_check(c.name, c.params, capture));
     }
     if (!v.handshakes.empty()) {
       rig::CheckResult host;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "rig/campaign/limits.hpp"
 #include "rig/campaign/motion.hpp"
@@ -550,36 +551,30 @@ private:
         c.probe_at = r.opt_duration("probe_at").value_or(Nanos{0});
         if (c.probe_at < Nanos{0} || c.probe_at >= s.end) r.fail("probe_at", "a time within the run");
       }
+      nlohmann::json table = nlohmann::json::object();
       for (const auto& [k, v] : *t) {
         const std::string key(k.str());
         if (key == "kind" || key == "name" || (kind->needs_bisection && key == "probe_at")) continue;
         (void)r.node(key);
-        c.params[key] = to_json(v);
-        c.param_where[key] = pos_of(v);
+        table[key] = to_json(v);
         if (is_line_param(key)) {
           const auto* line = v.as_string();
           if (line != nullptr && s.wire_for_rig(line->get()) == nullptr)
             r.fail(key, fmt::format("a wired rig line (\"{}\" is not in [[wiring]])", line->get()));
         }
       }
-      const std::vector<std::string> problems = checks::validate_check_params(*kind, c.params);
-      if (!problems.empty()) {
-        // Point at the parameter the sentence names ('name'), if any.
-        const std::string& why = problems.front();
-        SourcePos at = c.where;
-        std::string key = path;
-        const std::size_t open = why.find('\'');
-        const std::size_t close = open == std::string::npos ? open : why.find('\'', open + 1);
-        if (close != std::string::npos) {
-          const std::string named = why.substr(open + 1, close - open - 1);
-          key = r.key(named);
-          if (const auto it = c.param_where.find(named); it != c.param_where.end()) at = it->second;
-        }
-        fail(at, key, why);
+      try {
+        c.params = checks::build_check_params(*kind, c.name, table);
+      } catch (const checks::ParamError& e) {
+        if (e.key().empty()) fail(c.where, path, e.what());
+        r.fail(e.key(), e.what());
       }
       r.finish();
       s.checks.push_back(std::move(c));
     }
+    // A campaign that judges nothing would pass whatever the board does.
+    if (s.checks.empty())
+      fail(root_.where(), "check", "at least one [[check]]: a campaign with no checks judges nothing");
   }
 
   void read_faults(ScenarioFile& out) {

@@ -42,12 +42,13 @@ CheckResult check_brake_stop(Nanos applied, std::span<const PositionSample> moti
                                      TraceWindow{applied, trace_end}));
     return r;
   }
-  const double measured = to_ms(*still - applied);
+  const Nanos stop = *still - applied;
+  const double measured = to_ms(stop);
   const double limit = to_ms(spec.limit);
-  r.measurements.push_back(
-      measure(spec.name + ".stop_time", measured, "ms", std::nullopt, limit,
-              fmt::format("brake applied at {} ns, standstill at {} ns", applied.count(), still->count()),
-              TraceWindow{applied, *still}, *still));
+  r.measurements.push_back(measure_time(
+      spec.name + ".stop_time", stop, TimeUnit::Ms, std::nullopt, spec.limit,
+      fmt::format("brake applied at {} ns, standstill at {} ns", applied.count(), still->count()),
+      TraceWindow{applied, *still}, *still));
   if (spec.reported_ms) {
     r.measurements.push_back(measure(spec.name + ".reported", *spec.reported_ms, "ms",
                                      measured - spec.report_tolerance_ms, measured + spec.report_tolerance_ms,
@@ -55,8 +56,13 @@ CheckResult check_brake_stop(Nanos applied, std::span<const PositionSample> moti
                                                  *spec.reported_ms, measured, spec.report_tolerance_ms)));
   }
   if (spec.check_fault) {
-    const double basis = spec.fault_from_reported && spec.reported_ms ? *spec.reported_ms : measured;
-    const double expected = basis > limit ? 1.0 : 0.0;
+    // Over the limit by the one comparison rule: the reported time (ms, a word) with its
+    // epsilon, the measured time exactly in ns.
+    const bool from_reported = spec.fault_from_reported && spec.reported_ms;
+    const double basis = from_reported ? *spec.reported_ms : measured;
+    const bool over = from_reported ? rig::judge(basis, std::nullopt, limit) == Outcome::Fail
+                                    : rig::judge(stop, std::nullopt, spec.limit) == Outcome::Fail;
+    const double expected = over ? 1.0 : 0.0;
     const auto e = next_edge(fault_output, applied, Nanos::max(), spec.fault_level);
     const double seen = e ? 1.0 : 0.0;
     r.measurements.push_back(measure(

@@ -34,8 +34,8 @@ Bisection bisect_boundary(const PulseProbe& accepted, Nanos narrow, Nanos wide, 
 CheckResult check_debounce(const Bisection& bisection, const DebounceSpec& spec) {
   CheckResult r;
   r.kind = "debounce";
-  const double lo = to_us(spec.filter - spec.tolerance);
-  const double hi = to_us(spec.filter + spec.tolerance);
+  const Nanos lo = spec.filter - spec.tolerance;
+  const Nanos hi = spec.filter + spec.tolerance;
   if (!bisection.bracketed) {
     r.measurements.push_back(failure(
         spec.name + ".boundary",
@@ -46,19 +46,18 @@ CheckResult check_debounce(const Bisection& bisection, const DebounceSpec& spec)
                     bisection.probes.size() < 2 || bisection.probes[1].accepted ? "accepted" : "rejected")));
   } else {
     r.measurements.push_back(
-        measure(spec.name + ".boundary", to_us(bisection.accepted), "us", lo, hi,
-                fmt::format("pulses of {} us rejected, {} us accepted; filter {} us ± {} us",
-                            to_us(bisection.rejected), to_us(bisection.accepted), to_us(spec.filter),
-                            to_us(spec.tolerance))));
-    r.measurements.push_back(measure(spec.name + ".resolution",
-                                     to_us(bisection.accepted - bisection.rejected), "us", std::nullopt,
-                                     std::nullopt, "width of the final bracket"));
+        measure_time(spec.name + ".boundary", bisection.accepted, TimeUnit::Us, lo, hi,
+                     fmt::format("pulses of {} us rejected, {} us accepted; filter {} us ± {} us",
+                                 to_us(bisection.rejected), to_us(bisection.accepted), to_us(spec.filter),
+                                 to_us(spec.tolerance))));
+    r.measurements.push_back(measure_time(spec.name + ".resolution", bisection.accepted - bisection.rejected,
+                                          TimeUnit::Us, std::nullopt, std::nullopt,
+                                          "width of the final bracket"));
   }
   std::size_t misjudged = 0;
   std::string first = "every probe judged as the filter says";
   for (const auto& p : bisection.probes) {
-    const bool wrong = (p.accepted && p.width < spec.filter - spec.tolerance) ||
-                       (!p.accepted && p.width > spec.filter + spec.tolerance);
+    const bool wrong = (p.accepted && p.width < lo) || (!p.accepted && p.width > hi);
     if (wrong && misjudged++ == 0) {
       first = fmt::format("a {} us pulse was {}", to_us(p.width), p.accepted ? "accepted" : "rejected");
     }

@@ -50,6 +50,11 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
                 window, e.time));
     ++n;
   }
+  if (n == 0 && c.min_edges == 0) {
+    r.measurements.push_back(error(
+        c.name + ".edges", fmt::format("nothing judged: no {} edge on the output", level_name(c.level))));
+    return r;
+  }
   r.measurements.insert(
       r.measurements.begin(),
       measure(c.name + ".edges", static_cast<double>(n), "", static_cast<double>(c.min_edges), std::nullopt,

@@ -22,6 +22,10 @@ CheckResult check_frames_decode(std::span<const RawFrame> frames, const FrameDec
       where = TraceWindow{f.time, f.time};
     }
   }
+  if (n == 0 && spec.min_frames == 0) {
+    r.measurements.push_back(error(spec.name + ".frames", "nothing judged: no frame captured"));
+    return r;
+  }
   r.measurements.push_back(measure(
       spec.name + ".frames", static_cast<double>(n), "", static_cast<double>(spec.min_frames), std::nullopt,
       n == 0 ? std::string("missing frame: none captured") : fmt::format("{} frames", n)));

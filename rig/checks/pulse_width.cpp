@@ -23,22 +23,23 @@ CheckResult check_pulse_width(std::span<const Edge> line, const PulseWidthSpec& 
       start.reset();
     }
   }
+  if (count == 0 && spec.min_pulses == 0) {
+    r.measurements.push_back(error(
+        spec.name + ".count", fmt::format("nothing judged: no complete {} pulse", level_name(spec.level))));
+    return r;
+  }
   r.measurements.push_back(
       measure(spec.name + ".count", static_cast<double>(count), "", static_cast<double>(spec.min_pulses),
               std::nullopt,
               count == 0 ? fmt::format("missing edge: no complete {} pulse", level_name(spec.level))
                          : fmt::format("{} {} pulses", count, level_name(spec.level))));
   if (count == 0) return r;
-  const auto opt_us = [](std::optional<Nanos> t) {
-    return t ? std::optional<double>{to_us(*t)} : std::nullopt;
-  };
   const auto pulse = [&](const char* what, const TraceWindow& w, std::optional<Nanos> lo,
                          std::optional<Nanos> hi) {
-    r.measurements.push_back(measure(spec.name + "." + what, to_us(w.end - w.begin), "us", opt_us(lo),
-                                     opt_us(hi),
-                                     fmt::format("{} {} pulse: {} ns to {} ns", what, level_name(spec.level),
-                                                 w.begin.count(), w.end.count()),
-                                     w, w.end));
+    r.measurements.push_back(measure_time(spec.name + "." + what, w.end - w.begin, TimeUnit::Us, lo, hi,
+                                          fmt::format("{} {} pulse: {} ns to {} ns", what,
+                                                      level_name(spec.level), w.begin.count(), w.end.count()),
+                                          w, w.end));
   };
   pulse("shortest", *shortest, spec.min, std::nullopt);
   pulse("longest", *longest, std::nullopt, spec.max);

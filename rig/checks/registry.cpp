@@ -3,51 +3,403 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <nlohmann/json.hpp>
 
-#include "rig/checks/crossings.hpp"
-#include "rig/checks/edge_position.hpp"
-#include "rig/checks/pulse_width.hpp"
-#include "rig/checks/shaft_move.hpp"
-#include "rig/checks/throughput.hpp"
 #include "rig/checks/word_bits.hpp"
-#include "rig/checks/words.hpp"
 
 namespace hilrig::checks {
 namespace {
 
 using nlohmann::json;
 
-// Thrown inside a check's run function for a problem the schema cannot see (no such line);
-// run_check turns it into an Error measurement.
+// A check's table after validation: every key known, of its declared type, finite and in
+// range. Read only while the parser builds the typed parameters.
+class Table {
+public:
+  explicit Table(const json& p) : p_(p) {}
+  [[nodiscard]] bool has(const char* k) const { return p_.contains(k); }
+  [[nodiscard]] double num(const char* k, double def = 0.0) const {
+    return has(k) ? p_.at(k).get<double>() : def;
+  }
+  [[nodiscard]] std::optional<double> opt_num(const char* k) const {
+    return has(k) ? std::optional<double>{num(k)} : std::nullopt;
+  }
+  [[nodiscard]] std::int64_t integer(const char* k, std::int64_t def) const {
+    return has(k) ? p_.at(k).get<std::int64_t>() : def;
+  }
+  [[nodiscard]] std::size_t count(const char* k, std::size_t def) const {
+    return static_cast<std::size_t>(integer(k, static_cast<std::int64_t>(def)));
+  }
+  [[nodiscard]] std::string str(const char* k, std::string def = {}) const {
+    return has(k) ? p_.at(k).get<std::string>() : def;
+  }
+  [[nodiscard]] bool flag(const char* k) const { return has(k) && p_.at(k).get<bool>(); }
+  [[nodiscard]] Level level(const char* k, Level def) const {
+    return has(k) ? level_of(p_.at(k).get<std::string>() == "high") : def;
+  }
+  [[nodiscard]] Nanos us(const char* k, Nanos def = Nanos{0}) const {
+    return has(k) ? time(k, num(k), 1e3) : def;
+  }
+  [[nodiscard]] Nanos ms(const char* k, Nanos def = Nanos{0}) const {
+    return has(k) ? time(k, num(k), 1e6) : def;
+  }
+  [[nodiscard]] std::optional<Nanos> opt_us(const char* k) const {
+    return has(k) ? std::optional<Nanos>{us(k)} : std::nullopt;
+  }
+  [[nodiscard]] std::optional<Nanos> opt_ms(const char* k) const {
+    return has(k) ? std::optional<Nanos>{ms(k)} : std::nullopt;
+  }
+  [[nodiscard]] std::vector<Nanos> us_list(const char* k) const {
+    std::vector<Nanos> out;
+    for (const auto& v : p_.at(k)) out.push_back(time(k, v.get<double>(), 1e3));
+    return out;
+  }
+
+  // A time in whole ns: the unit's value rounded once, so 20.3 us is exactly 20'300 ns.
+  static Nanos time(const char* k, double v, double ns_per_unit) {
+    const double ns = std::round(v * ns_per_unit);
+    if (!(std::abs(ns) < 9.2e18)) throw ParamError(k, "a time that fits in 64-bit nanoseconds (< 292 years)");
+    return Nanos{static_cast<std::int64_t>(ns)};
+  }
+
+private:
+  const json& p_;
+};
+
+ParamRange any() { return {}; }
+ParamRange at_least(double v) { return {v, false, std::nullopt}; }
+ParamRange above(double v) { return {v, true, std::nullopt}; }
+ParamRange between(double lo, double hi) { return {lo, false, hi}; }
+
+ParamSpec P(std::string name, ParamType t, bool required, std::string help, ParamRange range = any()) {
+  return ParamSpec{std::move(name), t, required, std::move(help), range};
+}
+constexpr auto Num = ParamType::Number;
+constexpr auto Int = ParamType::Integer;
+constexpr auto Str = ParamType::String;
+constexpr auto Lvl = ParamType::Level;
+
+void one_of(const Table& t, const char* a, const char* b) {
+  if (t.has(a) == t.has(b)) throw ParamError("", fmt::format("exactly one of '{}' and '{}'", a, b));
+}
+void ordered(const Table& t, const char* lo, const char* hi) {
+  if (t.has(lo) && t.has(hi) && t.num(lo) > t.num(hi))
+    throw ParamError(hi, fmt::format("a value >= {} ({})", lo, t.num(lo)));
+}
+
+WordSpec word_spec(std::string_view name, const Table& t) {
+  WordSpec s;
+  s.name = name;
+  s.observation = t.str("observation");
+  s.lower = t.opt_num("lower");
+  s.upper = t.opt_num("upper");
+  s.at = t.opt_ms("at_ms");
+  return s;
+}
+
+CheckParams throughput(std::string_view name, const Table& t) {
+  one_of(t, "crossings_us", "setpoint");
+  ThroughputParams p;
+  p.output = t.str("output");
+  p.spec.name = name;
+  p.spec.expected = t.level("level", Level::High);
+  p.spec.limit = t.us("limit_us");
+  p.spec.p99_limit = t.opt_us("p99_limit_us");
+  p.spec.timeout = t.us("timeout_us", Nanos::max());
+  p.spec.min_count = t.count("min_count", 1);
+  if (t.has("crossings_us")) {
+    p.crossings = t.us_list("crossings_us");
+  } else {
+    CrossingScan s;
+    s.setpoint = t.num("setpoint");
+    const std::string d = t.str("direction", "both");
+    if (d != "rising" && d != "falling" && d != "both")
+      throw ParamError("direction", "\"rising\", \"falling\" or \"both\"");
+    s.direction = d == "rising" ? Direction::Rising : d == "falling" ? Direction::Falling : Direction::Both;
+    s.from = t.opt_us("from_us");
+    s.to = t.opt_us("to_us");
+    ordered(t, "from_us", "to_us");
+    s.step = t.us("step_us", Nanos{100'000});
+    if (s.step <= Nanos{0}) throw ParamError("step_us", "a step of at least 1 ns (0.001 us)");
+    s.modulus = t.num("modulus");
+    p.crossings = s;
+  }
+  return p;
+}
+
+CheckParams debounce(std::string_view name, const Table& t) {
+  DebounceParams p;
+  p.spec = DebounceSpec{std::string(name), t.us("filter_us"), t.us("tolerance_us")};
+  p.plan = BisectionPlan{t.us("narrow_us"), t.us("wide_us"), t.us("resolution_us", Nanos{1000}),
+                         t.str("input"),    t.str("output"), t.level("level", Level::High)};
+  if (p.plan.narrow >= p.plan.wide)
+    throw ParamError("wide_us", fmt::format("a width > narrow_us ({})", t.num("narrow_us")));
+  if (p.plan.resolution <= Nanos{0})
+    throw ParamError("resolution_us", "a resolution of at least 1 ns (0.001 us)");
+  return p;
+}
+
+CheckParams advance(std::string_view name, const Table& t) {
+  AdvanceParams p;
+  p.output = t.str("output");
+  p.spec.name = name;
+  p.spec.level = t.level("level", Level::High);
+  p.spec.setpoint = t.num("setpoint");
+  p.spec.advance = t.ms("advance_ms");
+  p.spec.advance_counts = t.opt_num("advance_counts");
+  p.spec.tolerance = t.num("tolerance_counts", 1.0);
+  p.spec.modulus = t.num("modulus");
+  p.spec.min_edges = t.count("min_edges", 1);
+  return p;
+}
+
+CheckParams edge_at(std::string_view name, const Table& t) {
+  EdgeAtPositionParams p;
+  p.output = t.str("output");
+  p.spec.name = name;
+  p.spec.level = t.level("level", Level::High);
+  p.spec.position = t.num("position");
+  p.spec.tolerance = t.num("tolerance_counts", 1.0);
+  p.spec.modulus = t.num("modulus");
+  p.spec.min_edges = t.count("min_edges", 1);
+  return p;
+}
+
+CheckParams brake(std::string_view name, const Table& t) {
+  one_of(t, "brake_line", "applied_ms");
+  BrakeParams p;
+  p.spec.name = name;
+  p.spec.limit = t.ms("limit_ms");
+  p.spec.report_tolerance_ms = t.num("report_tolerance_ms", 2.0);
+  p.spec.fault_level = t.level("fault_level", Level::Low);
+  p.spec.fault_from_reported = t.flag("fault_from_reported");
+  p.applied = t.opt_ms("applied_ms");
+  p.brake_line = t.str("brake_line");
+  p.applied_level = t.level("applied_level", Level::Low);
+  if (t.has("reported")) p.reported = t.str("reported");
+  if (t.has("fault_output")) p.fault_output = t.str("fault_output");
+  p.spec.check_fault = p.fault_output.has_value();
+  return p;
+}
+
+CheckParams pulse(std::string_view name, const Table& t) {
+  ordered(t, "min_us", "max_us");
+  PulseWidthParams p;
+  p.line = t.str("line");
+  p.spec.name = name;
+  p.spec.level = t.level("level", Level::High);
+  p.spec.min = t.opt_us("min_us");
+  p.spec.max = t.opt_us("max_us");
+  p.spec.min_pulses = t.count("min_pulses", 1);
+  return p;
+}
+
+CheckParams word_equals(std::string_view name, const Table& t) {
+  return WordEqualsParams{word_spec(name, t), t.num("value")};
+}
+
+CheckParams word_within(std::string_view name, const Table& t) {
+  if (!t.has("lower") && !t.has("upper")) throw ParamError("", "lower, upper or both");
+  ordered(t, "lower", "upper");
+  return WordWithinParams{word_spec(name, t)};
+}
+
+CheckParams word_bits(std::string_view name, const Table& t) {
+  const auto mask = static_cast<std::uint16_t>(t.integer("mask", 0));
+  const auto value = static_cast<std::uint16_t>(t.integer("value", 0));
+  if ((value & ~mask) != 0)
+    throw ParamError("value", fmt::format("a value with no bit outside the mask 0x{:04X}", mask));
+  return WordBitsParams{word_spec(name, t), mask, value};
+}
+
+CheckParams frames(std::string_view name, const Table& t) {
+  FrameDecodesParams p;
+  p.source = t.str("source");
+  p.decoder = t.str("decoder");
+  p.spec.name = name;
+  if (t.has("id")) p.spec.id = static_cast<std::uint32_t>(t.integer("id", 0));
+  p.spec.min_frames = t.count("min_frames", 1);
+  return p;
+}
+
+CheckParams shaft(std::string_view name, const Table& t) {
+  bool judged = false;
+  for (const char* key : {"steps", "duration_min_ms", "duration_max_ms", "peak_min", "peak_max", "reversals"})
+    judged = judged || t.has(key);
+  if (!judged)
+    throw ParamError(
+        "", "at least one of steps, duration_min_ms, duration_max_ms, peak_min, peak_max, reversals");
+  ordered(t, "from_ms", "to_ms");
+  ordered(t, "duration_min_ms", "duration_max_ms");
+  ordered(t, "peak_min", "peak_max");
+  ShaftMoveParams p;
+  p.step_line = t.str("step_line");
+  p.dir_line = t.str("dir_line");
+  p.spec.name = name;
+  p.spec.from = t.ms("from_ms");
+  p.to_given = t.has("to_ms");
+  if (p.to_given) p.spec.to = t.ms("to_ms");
+  p.spec.dir_initial = t.level("dir_initial", Level::Low);
+  p.spec.steps = t.opt_num("steps");
+  p.spec.steps_tolerance = t.num("steps_tolerance");
+  p.spec.duration_min = t.opt_ms("duration_min_ms");
+  p.spec.duration_max = t.opt_ms("duration_max_ms");
+  p.spec.peak_min = t.opt_num("peak_min");
+  p.spec.peak_max = t.opt_num("peak_max");
+  if (t.has("reversals")) p.spec.reversals = static_cast<double>(t.integer("reversals", 0));
+  return p;
+}
+
+using Builder = CheckParams (*)(std::string_view, const Table&);
+
+CheckKind kind(std::string name, std::string summary, std::vector<ParamSpec> params, Builder b) {
+  return CheckKind{std::move(name), std::move(summary), std::move(params),
+                   [b](std::string_view check, const json& table) { return b(check, Table(table)); },
+                   b == &debounce};
+}
+
+std::vector<CheckKind> make_kinds() {
+  const ParamRange time = at_least(0.0);   // a time or a limit on one
+  const ParamRange width = above(0.0);     // a pulse width, a step, a timeout
+  const ParamRange counts = at_least(1.0); // fewest items judged: at least one
+  std::vector<CheckKind> k;
+  k.push_back(kind(
+      "throughput", "latency from each setpoint crossing to the output edge: count, min, median, p99, max",
+      {P("output", Str, true, "the output line"), P("level", Lvl, false, "expected edge level (high)"),
+       P("limit_us", Num, true, "upper limit on the max latency (inclusive)", time),
+       P("p99_limit_us", Num, false, "upper limit on p99 (default limit_us)", time),
+       P("timeout_us", Num, false, "longest wait for an edge, inclusive (default: until the next crossing)",
+         width),
+       P("min_count", Int, false, "fewest latencies (1)", counts),
+       P("crossings_us", ParamType::NumberList, false, "stimulus crossing times; or setpoint", time),
+       P("setpoint", Num, false, "counts: crossings derived from the position function"),
+       P("direction", Str, false, "rising, falling or both (both)"),
+       P("step_us", Num, false, "scan step for crossings (100); shorter than the shortest dwell", width),
+       P("modulus", Num, false, "full-scale count: setpoint + k * modulus are crossings too (0: none)", time),
+       P("from_us", Num, false, "scan start", time), P("to_us", Num, false, "scan end", time)},
+      throughput));
+  k.push_back(kind("debounce",
+                   "pulses shorter than the filter rejected, longer accepted; boundary by bisection",
+                   {P("filter_us", Num, true, "the spec's filter time", width),
+                    P("tolerance_us", Num, true, "allowed boundary error, either side (inclusive)", time),
+                    P("narrow_us", Num, true, "narrowest probe (must be rejected)", width),
+                    P("wide_us", Num, true, "widest probe (must be accepted)", width),
+                    P("resolution_us", Num, false, "bisection stops at this bracket (1)", width),
+                    P("input", Str, true, "the line the pulse is driven on"),
+                    P("output", Str, true, "the line whose edge means accepted"),
+                    P("level", Lvl, false, "the pulse's active level (high)")},
+                   debounce));
+  k.push_back(kind("advance_counts", "each output edge at speed S fires at setpoint - S*advance, in counts",
+                   {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
+                    P("setpoint", Num, true, "counts"), P("advance_ms", Num, false, "advance time (0)", time),
+                    P("advance_counts", Num, false, "fixed advance in counts instead of speed*advance_ms"),
+                    P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
+                    P("modulus", Num, false, "full-scale count for wrapping positions (0: none)", time),
+                    P("min_edges", Int, false, "fewest edges (1)", counts)},
+                   advance));
+  k.push_back(
+      kind("brake_stop_time", "brake applied to standstill against the limit; reported time and fault output",
+           {P("limit_ms", Num, true, "stop time limit (inclusive)", time),
+            P("brake_line", Str, false, "the brake input line; or applied_ms"),
+            P("applied_level", Lvl, false, "level of brake_line that applies the brake (low)"),
+            P("applied_ms", Num, false, "when the brake was applied", time),
+            P("reported", Str, false, "observation holding the board's stop time, ms"),
+            P("report_tolerance_ms", Num, false, "|reported - measured| allowed (2)", time),
+            P("fault_output", Str, false, "the stop-time fault output line"),
+            P("fault_level", Lvl, false, "the fault output's level on a fault (low)"),
+            P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time")},
+           brake));
+  k.push_back(kind("edge_at_position", "every edge of an output at a position, within a tolerance",
+                   {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
+                    P("position", Num, true, "counts"),
+                    P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
+                    P("modulus", Num, false, "full-scale count (0: none)", time),
+                    P("min_edges", Int, false, "fewest edges (1)", counts)},
+                   edge_at));
+  k.push_back(kind("pulse_width", "every pulse on a line between a minimum and a maximum width",
+                   {P("line", Str, true, "the line"), P("level", Lvl, false, "the pulse level (high)"),
+                    P("min_us", Num, false, "shortest allowed (inclusive)", time),
+                    P("max_us", Num, false, "longest allowed (inclusive)", time),
+                    P("min_pulses", Int, false, "fewest pulses (1)", counts)},
+                   pulse));
+  k.push_back(
+      kind("word_equals", "an observed word equals a value",
+           {P("observation", Str, true, "the observation's name"), P("value", Num, true, "expected value"),
+            P("at_ms", Num, false, "judge the latest observation by then (default: the last)", time)},
+           word_equals));
+  k.push_back(kind("word_within", "an observed word within limits",
+                   {P("observation", Str, true, "the observation's name"),
+                    P("lower", Num, false, "inclusive"), P("upper", Num, false, "inclusive"),
+                    P("at_ms", Num, false, "judge the latest observation by then", time)},
+                   word_within));
+  k.push_back(kind("frame_decodes", "every captured CAN frame or serial message decodes with no named error",
+                   {P("source", Str, true, "the bus or link"), P("decoder", Str, true, "the decoder's name"),
+                    P("id", Int, false, "only frames with this id", between(0, 0x1FFFFFFF)),
+                    P("min_frames", Int, false, "fewest frames (1)", counts)},
+                   frames));
+  k.push_back(kind(
+      "shaft_move",
+      "a stepper shaft seen by its step and direction lines: net steps, duration, peak speed, reversals",
+      {P("step_line", Str, true, "one edge per step"), P("dir_line", Str, true, "High = CW"),
+       P("dir_initial", Lvl, false, "dir_line before its first edge (low)"),
+       P("from_ms", Num, true, "window start: the command or the stop trigger; steps after it count", time),
+       P("to_ms", Num, false, "window end (the run's end)", time),
+       P("steps", Num, false, "expected net steps, CW +"),
+       P("steps_tolerance", Num, false, "either side, inclusive (0)", time),
+       P("duration_min_ms", Num, false, "from from_ms to the last step (0 with no step)", time),
+       P("duration_max_ms", Num, false, "upper limit on that", time),
+       P("peak_min", Num, false, "steps/s: 1 / shortest step interval, lower limit", time),
+       P("peak_max", Num, false, "steps/s: upper limit", time),
+       P("reversals", Int, false, "exact count of direction changes", at_least(0))},
+      shaft));
+  k.push_back(kind("word_bits", "an observed word's bits under a mask equal a value",
+                   {P("observation", Str, true, "the observation's name"),
+                    P("mask", Int, true, "bits judged, never none", between(1, 0xFFFF)),
+                    P("value", Int, true, "expected (word & mask)", between(0, 0xFFFF)),
+                    P("at_ms", Num, false, "judge the latest observation by then (default: the last)", time)},
+                   word_bits));
+  return k;
+}
+
+bool type_ok(const json& v, ParamType t) {
+  switch (t) {
+  case ParamType::Number:
+    return v.is_number();
+  case ParamType::Integer:
+    return v.is_number_integer();
+  case ParamType::Boolean:
+    return v.is_boolean();
+  case ParamType::String:
+    return v.is_string();
+  case ParamType::Level:
+    return v.is_string() && (v == "high" || v == "low");
+  case ParamType::NumberList:
+    return v.is_array() && !v.empty() &&
+           std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); });
+  }
+  return false;
+}
+
+bool in_range(double v, const ParamRange& r) {
+  if (!std::isfinite(v)) return false;
+  if (r.min && (r.min_open ? v <= *r.min : v < *r.min)) return false;
+  if (r.max && v > *r.max) return false;
+  return true;
+}
+
+// Every number of a value (one, or each of a list) finite and in range.
+bool value_ok(const json& v, const ParamSpec& s) {
+  if (s.type == ParamType::Number || s.type == ParamType::Integer) return in_range(v.get<double>(), s.range);
+  if (s.type == ParamType::NumberList)
+    return std::all_of(v.begin(), v.end(), [&](const json& e) { return in_range(e.get<double>(), s.range); });
+  return true;
+}
+
+// Run-time lookups: a line, observation or decoder the capture lacks.
 struct CaptureError {
   std::string what;
 };
-
-bool has(const json& p, const char* k) { return p.contains(k); }
-double num(const json& p, const char* k, double def) { return has(p, k) ? p.at(k).get<double>() : def; }
-std::optional<double> opt_num(const json& p, const char* k) {
-  return has(p, k) ? std::optional<double>{p.at(k).get<double>()} : std::nullopt;
-}
-std::string str(const json& p, const char* k, std::string def = {}) {
-  return has(p, k) ? p.at(k).get<std::string>() : def;
-}
-std::size_t count(const json& p, const char* k, std::size_t def) {
-  return has(p, k) ? p.at(k).get<std::size_t>() : def;
-}
-Level level(const json& p, const char* k, Level def) {
-  return has(p, k) ? level_of(p.at(k).get<std::string>() == "high") : def;
-}
-Nanos from_unit(double v, double ns_per_unit) { return Nanos{std::llround(v * ns_per_unit)}; }
-Nanos us(const json& p, const char* k, Nanos def = Nanos{0}) {
-  return has(p, k) ? from_unit(p.at(k).get<double>(), 1e3) : def;
-}
-Nanos ms(const json& p, const char* k, Nanos def = Nanos{0}) {
-  return has(p, k) ? from_unit(p.at(k).get<double>(), 1e6) : def;
-}
-std::optional<Nanos> opt_us(const json& p, const char* k) {
-  return has(p, k) ? std::optional<Nanos>{us(p, k)} : std::nullopt;
-}
 
 std::span<const Edge> line(const Capture& c, const std::string& name) {
   const auto it = c.lines.find(name);
@@ -59,340 +411,105 @@ const PositionFn& position_fn(const Capture& c) {
   return c.position;
 }
 
-ParamSpec P(std::string name, ParamType t, bool required, std::string help) {
-  return ParamSpec{std::move(name), t, required, std::move(help)};
-}
-constexpr auto Num = ParamType::Number;
-constexpr auto Int = ParamType::Integer;
-constexpr auto Str = ParamType::String;
-constexpr auto Lvl = ParamType::Level;
-
-CheckResult throughput(std::string_view name, const Capture& c, const json& p) {
-  ThroughputSpec s;
-  s.name = name;
-  s.expected = level(p, "level", Level::High);
-  s.limit = us(p, "limit_us");
-  s.p99_limit = opt_us(p, "p99_limit_us");
-  s.timeout = us(p, "timeout_us", Nanos::max());
-  s.min_count = count(p, "min_count", 1);
+CheckResult run(const ThroughputParams& p, const Capture& c) {
   std::vector<Nanos> crossings;
-  if (has(p, "crossings_us")) {
-    for (const auto& v : p.at("crossings_us")) crossings.push_back(from_unit(v.get<double>(), 1e3));
+  if (const auto* given = std::get_if<std::vector<Nanos>>(&p.crossings)) {
+    crossings = *given;
   } else {
-    const std::string d = str(p, "direction", "both");
-    const Direction dir = d == "rising"    ? Direction::Rising
-                          : d == "falling" ? Direction::Falling
-                                           : Direction::Both;
-    crossings =
-        find_crossings(position_fn(c), num(p, "setpoint", 0.0), us(p, "from_us", c.begin),
-                       us(p, "to_us", c.end), us(p, "step_us", Nanos{100'000}), dir, num(p, "modulus", 0.0));
+    const auto& s = std::get<CrossingScan>(p.crossings);
+    crossings = find_crossings(position_fn(c), s.setpoint, s.from.value_or(c.begin), s.to.value_or(c.end),
+                               s.step, s.direction, s.modulus);
   }
-  return check_throughput(crossings, line(c, str(p, "output")), s);
+  return check_throughput(crossings, line(c, p.output), p.spec);
 }
 
-CheckResult debounce(std::string_view name, const Capture& c, const json& p) {
-  if (!c.bisection) throw CaptureError{"no bisection: the executive must run debounce_plan() probes first"};
-  return check_debounce(*c.bisection,
-                        DebounceSpec{std::string(name), us(p, "filter_us"), us(p, "tolerance_us")});
+CheckResult run(const DebounceParams& p, const Capture& c) {
+  if (!c.bisection) throw CaptureError{"no bisection: the executive must run the plan's probes first"};
+  return check_debounce(*c.bisection, p.spec);
 }
 
-CheckResult advance(std::string_view name, const Capture& c, const json& p) {
-  AdvanceSpec s;
-  s.name = name;
-  s.level = level(p, "level", Level::High);
-  s.setpoint = num(p, "setpoint", 0.0);
-  s.advance = ms(p, "advance_ms");
-  s.advance_counts = opt_num(p, "advance_counts");
-  s.tolerance = num(p, "tolerance_counts", 1.0);
-  s.modulus = num(p, "modulus", 0.0);
-  s.min_edges = count(p, "min_edges", 1);
-  if (!c.speed && !s.advance_counts) throw CaptureError{"the capture has no speed function"};
-  return check_advance(line(c, str(p, "output")), position_fn(c), c.speed, s);
+CheckResult run(const AdvanceParams& p, const Capture& c) {
+  if (!c.speed && !p.spec.advance_counts) throw CaptureError{"the capture has no speed function"};
+  return check_advance(line(c, p.output), position_fn(c), c.speed, p.spec);
 }
 
-CheckResult edge_at(std::string_view name, const Capture& c, const json& p) {
-  EdgeAtPositionSpec s;
-  s.name = name;
-  s.level = level(p, "level", Level::High);
-  s.position = num(p, "position", 0.0);
-  s.tolerance = num(p, "tolerance_counts", 1.0);
-  s.modulus = num(p, "modulus", 0.0);
-  s.min_edges = count(p, "min_edges", 1);
-  return check_edge_at_position(line(c, str(p, "output")), position_fn(c), c.speed, s);
+CheckResult run(const EdgeAtPositionParams& p, const Capture& c) {
+  return check_edge_at_position(line(c, p.output), position_fn(c), c.speed, p.spec);
 }
 
-CheckResult brake(std::string_view name, const Capture& c, const json& p) {
-  BrakeSpec s;
-  s.name = name;
-  s.limit = ms(p, "limit_ms");
-  s.report_tolerance_ms = num(p, "report_tolerance_ms", 2.0);
-  s.fault_level = level(p, "fault_level", Level::Low);
-  s.fault_from_reported = has(p, "fault_from_reported") && p.at("fault_from_reported").get<bool>();
+CheckResult run(const BrakeParams& p, const Capture& c) {
+  BrakeSpec s = p.spec;
+  const auto failed = [&](const char* what, std::string why) {
+    CheckResult r;
+    r.measurements.push_back(failure(s.name + what, std::move(why)));
+    return r;
+  };
   Nanos applied{0};
-  if (has(p, "applied_ms")) {
-    applied = ms(p, "applied_ms");
+  if (p.applied) {
+    applied = *p.applied;
   } else {
-    const auto e = next_edge(line(c, str(p, "brake_line")), c.begin, Nanos::max(),
-                             level(p, "applied_level", Level::Low));
-    if (!e) {
-      CheckResult r;
-      r.kind = "brake_stop_time";
-      r.measurements.push_back(failure(
-          std::string(name) + ".stop_time",
-          fmt::format("missing edge: the brake line '{}' never applied the brake", str(p, "brake_line"))));
-      return r;
-    }
+    const auto e = next_edge(line(c, p.brake_line), c.begin, Nanos::max(), p.applied_level);
+    if (!e)
+      return failed(".stop_time",
+                    fmt::format("missing edge: the brake line '{}' never applied the brake", p.brake_line));
     applied = e->time;
   }
-  if (has(p, "reported")) {
-    const std::string obs = str(p, "reported");
+  if (p.reported) {
     const rig::Observation* last = nullptr;
-    for (const auto& o : c.observations) {
-      if (o.name == obs && (!last || o.time >= last->time)) last = &o;
-    }
-    if (!last) {
-      CheckResult r;
-      r.kind = "brake_stop_time";
-      r.measurements.push_back(failure(std::string(name) + ".reported",
-                                       fmt::format("missing word: no observation named '{}'", obs)));
-      return r;
-    }
+    for (const auto& o : c.observations)
+      if (o.name == *p.reported && (!last || o.time >= last->time)) last = &o;
+    if (!last)
+      return failed(".reported", fmt::format("missing word: no observation named '{}'", *p.reported));
     s.reported_ms = last->value;
   }
   std::span<const Edge> fault;
-  if (has(p, "fault_output")) {
-    s.check_fault = true;
-    fault = line(c, str(p, "fault_output"));
-  }
+  if (p.fault_output) fault = line(c, *p.fault_output);
   return check_brake_stop(applied, c.motion, c.end, fault, s);
 }
 
-CheckResult pulse(std::string_view name, const Capture& c, const json& p) {
-  PulseWidthSpec s;
-  s.name = name;
-  s.level = level(p, "level", Level::High);
-  s.min = opt_us(p, "min_us");
-  s.max = opt_us(p, "max_us");
-  s.min_pulses = count(p, "min_pulses", 1);
-  return check_pulse_width(line(c, str(p, "line")), s);
+CheckResult run(const PulseWidthParams& p, const Capture& c) {
+  return check_pulse_width(line(c, p.line), p.spec);
+}
+CheckResult run(const WordEqualsParams& p, const Capture& c) {
+  return check_word_equals(c.observations, p.spec, p.value);
+}
+CheckResult run(const WordWithinParams& p, const Capture& c) {
+  return check_word_within(c.observations, p.spec);
+}
+CheckResult run(const WordBitsParams& p, const Capture& c) {
+  return check_word_bits(c.observations, p.spec, p.mask, p.value);
 }
 
-WordSpec word_spec(std::string_view name, const json& p) {
-  WordSpec s;
-  s.name = name;
-  s.observation = str(p, "observation");
-  s.lower = opt_num(p, "lower");
-  s.upper = opt_num(p, "upper");
-  if (has(p, "at_ms")) s.at = ms(p, "at_ms");
-  return s;
-}
-
-CheckResult frames(std::string_view name, const Capture& c, const json& p) {
-  FrameSpec s;
-  s.name = name;
-  if (has(p, "id")) s.id = p.at("id").get<std::uint32_t>();
-  s.min_frames = count(p, "min_frames", 1);
-  const auto src = c.frames.find(str(p, "source"));
-  const auto dec = c.decoders.find(str(p, "decoder"));
-  if (dec == c.decoders.end()) throw CaptureError{fmt::format("no decoder named '{}'", str(p, "decoder"))};
+CheckResult run(const FrameDecodesParams& p, const Capture& c) {
+  const auto src = c.frames.find(p.source);
+  const auto dec = c.decoders.find(p.decoder);
+  if (dec == c.decoders.end()) throw CaptureError{fmt::format("no decoder named '{}'", p.decoder)};
   static const std::vector<RawFrame> none;
   return check_frames_decode(src == c.frames.end() ? std::span<const RawFrame>(none) : src->second,
-                             dec->second, s);
+                             dec->second, p.spec);
 }
 
-CheckResult shaft(std::string_view name, const Capture& c, const json& p) {
-  ShaftMoveSpec s;
-  s.name = name;
-  s.from = ms(p, "from_ms");
-  s.to = has(p, "to_ms") ? ms(p, "to_ms") : c.end;
-  s.dir_initial = level(p, "dir_initial", Level::Low);
-  s.steps = opt_num(p, "steps");
-  s.steps_tolerance = num(p, "steps_tolerance", 0.0);
-  s.duration_min_ms = opt_num(p, "duration_min_ms");
-  s.duration_max_ms = opt_num(p, "duration_max_ms");
-  s.peak_min = opt_num(p, "peak_min");
-  s.peak_max = opt_num(p, "peak_max");
-  s.reversals = opt_num(p, "reversals");
-  return check_shaft_move(line(c, str(p, "step_line")), line(c, str(p, "dir_line")), s);
+CheckResult run(const ShaftMoveParams& p, const Capture& c) {
+  ShaftMoveSpec s = p.spec;
+  if (!p.to_given) s.to = c.end;
+  return check_shaft_move(line(c, p.step_line), line(c, p.dir_line), s);
 }
 
-std::vector<std::string> one_of(const json& p, const char* a, const char* b) {
-  if (has(p, a) == has(p, b)) return {fmt::format("give exactly one of '{}' and '{}'", a, b)};
-  return {};
-}
-
-std::vector<CheckKind> make_kinds() {
-  const auto bind = [](CheckResult (*f)(std::string_view, const Capture&, const json&)) {
-    // The check's name is filled in by run_check; the function gets it through params["__name"].
-    return [f](const Capture& c, const json& p) { return f(p.value("__name", std::string()), c, p); };
-  };
-  std::vector<CheckKind> k;
-  k.push_back(
-      {"throughput",
-       "latency from each setpoint crossing to the output edge: count, min, median, p99, max",
-       {P("output", Str, true, "the output line"), P("level", Lvl, false, "expected edge level (high)"),
-        P("limit_us", Num, true, "upper limit on the max latency"),
-        P("p99_limit_us", Num, false, "upper limit on p99 (default limit_us)"),
-        P("timeout_us", Num, false, "longest wait for an edge (default: until the next crossing)"),
-        P("min_count", Int, false, "fewest latencies (1)"),
-        P("crossings_us", ParamType::NumberList, false, "stimulus crossing times; or setpoint"),
-        P("setpoint", Num, false, "counts: crossings derived from the position function"),
-        P("direction", Str, false, "rising, falling or both (both)"),
-        P("step_us", Num, false, "scan step for crossings (100); shorter than the shortest dwell"),
-        P("modulus", Num, false, "full-scale count: setpoint + k * modulus are crossings too (0: none)"),
-        P("from_us", Num, false, "scan start"), P("to_us", Num, false, "scan end")},
-       bind(throughput),
-       false,
-       [](const json& p) { return one_of(p, "crossings_us", "setpoint"); }});
-  k.push_back({"debounce",
-               "pulses shorter than the filter rejected, longer accepted; boundary by bisection",
-               {P("filter_us", Num, true, "the spec's filter time"),
-                P("tolerance_us", Num, true, "allowed boundary error"),
-                P("narrow_us", Num, true, "narrowest probe (must be rejected)"),
-                P("wide_us", Num, true, "widest probe (must be accepted)"),
-                P("resolution_us", Num, false, "bisection stops at this bracket (1)"),
-                P("input", Str, true, "the line the pulse is driven on"),
-                P("output", Str, true, "the line whose edge means accepted"),
-                P("level", Lvl, false, "the pulse's active level (high)")},
-               bind(debounce),
-               true,
-               nullptr});
-  k.push_back({"advance_counts",
-               "each output edge at speed S fires at setpoint - S*advance, in counts",
-               {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
-                P("setpoint", Num, true, "counts"), P("advance_ms", Num, false, "advance time (0)"),
-                P("advance_counts", Num, false, "fixed advance in counts instead of speed*advance_ms"),
-                P("tolerance_counts", Num, false, "either side (1)"),
-                P("modulus", Num, false, "full-scale count for wrapping positions (0: none)"),
-                P("min_edges", Int, false, "fewest edges (1)")},
-               bind(advance),
-               false,
-               nullptr});
-  k.push_back(
-      {"brake_stop_time",
-       "brake applied to standstill against the limit; reported time and fault output",
-       {P("limit_ms", Num, true, "stop time limit"),
-        P("brake_line", Str, false, "the brake input line; or applied_ms"),
-        P("applied_level", Lvl, false, "level of brake_line that applies the brake (low)"),
-        P("applied_ms", Num, false, "when the brake was applied"),
-        P("reported", Str, false, "observation holding the board's stop time, ms"),
-        P("report_tolerance_ms", Num, false, "|reported - measured| allowed (2)"),
-        P("fault_output", Str, false, "the stop-time fault output line"),
-        P("fault_level", Lvl, false, "the fault output's level on a fault (low)"),
-        P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time")},
-       bind(brake),
-       false,
-       [](const json& p) { return one_of(p, "brake_line", "applied_ms"); }});
-  k.push_back({"edge_at_position",
-               "every edge of an output at a position, within a tolerance",
-               {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
-                P("position", Num, true, "counts"), P("tolerance_counts", Num, false, "either side (1)"),
-                P("modulus", Num, false, "full-scale count (0: none)"),
-                P("min_edges", Int, false, "fewest edges (1)")},
-               bind(edge_at),
-               false,
-               nullptr});
-  k.push_back({"pulse_width",
-               "every pulse on a line between a minimum and a maximum width",
-               {P("line", Str, true, "the line"), P("level", Lvl, false, "the pulse level (high)"),
-                P("min_us", Num, false, "shortest allowed"), P("max_us", Num, false, "longest allowed"),
-                P("min_pulses", Int, false, "fewest pulses (1)")},
-               bind(pulse),
-               false,
-               nullptr});
-  k.push_back(
-      {"word_equals",
-       "an observed word equals a value",
-       {P("observation", Str, true, "the observation's name"), P("value", Num, true, "expected value"),
-        P("at_ms", Num, false, "judge the latest observation by then (default: the last)")},
-       [](const Capture& c, const json& p) {
-         return check_word_equals(c.observations, word_spec(p.value("__name", std::string()), p),
-                                  p.at("value").get<double>());
-       },
-       false,
-       nullptr});
-  k.push_back(
-      {"word_within",
-       "an observed word within limits",
-       {P("observation", Str, true, "the observation's name"), P("lower", Num, false, "inclusive"),
-        P("upper", Num, false, "inclusive"), P("at_ms", Num, false, "judge the latest observation by then")},
-       [](const Capture& c, const json& p) {
-         return check_word_within(c.observations, word_spec(p.value("__name", std::string()), p));
-       },
-       false,
-       [](const json& p) {
-         return has(p, "lower") || has(p, "upper") ? std::vector<std::string>{}
-                                                   : std::vector<std::string>{"give lower, upper or both"};
-       }});
-  k.push_back(
-      {"frame_decodes",
-       "every captured CAN frame or serial message decodes with no named error",
-       {P("source", Str, true, "the bus or link"), P("decoder", Str, true, "the decoder's name"),
-        P("id", Int, false, "only frames with this id"), P("min_frames", Int, false, "fewest frames (1)")},
-       bind(frames),
-       false,
-       nullptr});
-  k.push_back(
-      {"shaft_move",
-       "a stepper shaft seen by its step and direction lines: net steps, duration, peak speed, reversals",
-       {P("step_line", Str, true, "one edge per step"), P("dir_line", Str, true, "High = CW"),
-        P("dir_initial", Lvl, false, "dir_line before its first edge (low)"),
-        P("from_ms", Num, true, "window start: the command or the stop trigger; steps after it count"),
-        P("to_ms", Num, false, "window end (the run's end)"),
-        P("steps", Num, false, "expected net steps, CW +"),
-        P("steps_tolerance", Num, false, "either side (0)"),
-        P("duration_min_ms", Num, false, "from from_ms to the last step (0 with no step)"),
-        P("duration_max_ms", Num, false, "upper limit on that"),
-        P("peak_min", Num, false, "steps/s: 1 / shortest step interval, lower limit"),
-        P("peak_max", Num, false, "steps/s: upper limit"),
-        P("reversals", Int, false, "exact count of direction changes")},
-       bind(shaft),
-       false,
-       [](const json& p) {
-         for (const char* key :
-              {"steps", "duration_min_ms", "duration_max_ms", "peak_min", "peak_max", "reversals"})
-           if (has(p, key)) return std::vector<std::string>{};
-         return std::vector<std::string>{"give at least one of steps, duration_*, peak_*, reversals"};
-       }});
-  k.push_back(
-      {"word_bits",
-       "an observed word's bits under a mask equal a value",
-       {P("observation", Str, true, "the observation's name"), P("mask", Int, true, "bits judged (0..65535)"),
-        P("value", Int, true, "expected (word & mask)"),
-        P("at_ms", Num, false, "judge the latest observation by then (default: the last)")},
-       [](const Capture& c, const json& p) {
-         return check_word_bits(c.observations, word_spec(p.value("__name", std::string()), p),
-                                static_cast<std::uint16_t>(p.at("mask").get<std::uint64_t>() & 0xFFFFU),
-                                static_cast<std::uint16_t>(p.at("value").get<std::uint64_t>() & 0xFFFFU));
-       },
-       false,
-       [](const json& p) {
-         if (p.at("mask").get<std::uint64_t>() > 0xFFFFU || p.at("value").get<std::uint64_t>() > 0xFFFFU)
-           return std::vector<std::string>{"mask and value are 16-bit words (0..65535)"};
-         if ((p.at("value").get<std::uint64_t>() & ~p.at("mask").get<std::uint64_t>()) != 0U)
-           return std::vector<std::string>{"value has bits outside the mask"};
-         return std::vector<std::string>{};
-       }});
-  return k;
-}
-
-bool type_ok(const json& v, ParamType t) {
-  switch (t) {
-  case ParamType::Number:
-    return v.is_number();
-  case ParamType::Integer:
-    return v.is_number_integer() && !(v.is_number_integer() && v.get<std::int64_t>() < 0);
-  case ParamType::Boolean:
-    return v.is_boolean();
-  case ParamType::String:
-    return v.is_string();
-  case ParamType::Level:
-    return v.is_string() && (v == "high" || v == "low");
-  case ParamType::NumberList:
-    return v.is_array() && std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); });
+struct Lines {
+  std::vector<std::string> operator()(const ThroughputParams& p) const { return {p.output}; }
+  std::vector<std::string> operator()(const DebounceParams& p) const { return {p.plan.input, p.plan.output}; }
+  std::vector<std::string> operator()(const AdvanceParams& p) const { return {p.output}; }
+  std::vector<std::string> operator()(const EdgeAtPositionParams& p) const { return {p.output}; }
+  std::vector<std::string> operator()(const BrakeParams& p) const {
+    std::vector<std::string> out;
+    if (!p.applied) out.push_back(p.brake_line);
+    if (p.fault_output) out.push_back(*p.fault_output);
+    return out;
   }
-  return false;
-}
+  std::vector<std::string> operator()(const PulseWidthParams& p) const { return {p.line}; }
+  std::vector<std::string> operator()(const ShaftMoveParams& p) const { return {p.step_line, p.dir_line}; }
+  std::vector<std::string> operator()(const auto&) const { return {}; }
+};
 
 } // namespace
 
@@ -401,7 +518,7 @@ const char* to_string(ParamType t) {
   case ParamType::Number:
     return "number";
   case ParamType::Integer:
-    return "non-negative integer";
+    return "integer";
   case ParamType::Boolean:
     return "boolean";
   case ParamType::String:
@@ -414,72 +531,85 @@ const char* to_string(ParamType t) {
   return "?";
 }
 
+std::string expected_text(ParamType t, const ParamRange& r) {
+  std::string what;
+  switch (t) {
+  case ParamType::Number:
+    what = "a finite number";
+    break;
+  case ParamType::Integer:
+    what = "an integer";
+    break;
+  case ParamType::NumberList:
+    what = "a non-empty list of finite numbers";
+    break;
+  case ParamType::Boolean:
+    return "true or false";
+  case ParamType::String:
+    return "a string";
+  case ParamType::Level:
+    return "\"high\" or \"low\"";
+  }
+  if (r.min && r.max) return fmt::format("{} {} .. {}", what, *r.min, *r.max);
+  if (r.min) return fmt::format("{} {} {}", what, r.min_open ? ">" : ">=", *r.min);
+  if (r.max) return fmt::format("{} <= {}", what, *r.max);
+  return what;
+}
+
 const std::vector<CheckKind>& check_kinds() {
   static const std::vector<CheckKind> kinds = make_kinds();
   return kinds;
 }
 
 const CheckKind* find_check_kind(std::string_view name) {
-  for (const auto& k : check_kinds()) {
+  for (const auto& k : check_kinds())
     if (k.name == name) return &k;
-  }
   return nullptr;
 }
 
-std::vector<std::string> validate_check_params(const CheckKind& kind, const json& params) {
-  std::vector<std::string> errors;
-  if (!params.is_object()) return {"parameters must be a table"};
-  for (const auto& item : params.items()) {
+CheckParams build_check_params(const CheckKind& kind, std::string_view check, const json& table) {
+  if (!table.is_object()) throw ParamError("", "a table of parameters");
+  for (const auto& item : table.items()) {
     // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
     const std::string& key = item.key();
     const json& value = item.value();
     const auto it = std::find_if(kind.params.begin(), kind.params.end(),
                                  [&](const ParamSpec& s) { return s.name == key; });
     if (it == kind.params.end()) {
-      errors.push_back(fmt::format("{}: unknown parameter '{}'", kind.name, key));
-    } else if (!type_ok(value, it->type)) {
-      errors.push_back(fmt::format("{}: parameter '{}' must be a {}", kind.name, key, to_string(it->type)));
+      std::string names;
+      for (const auto& s : kind.params) names += (names.empty() ? "" : ", ") + s.name;
+      throw ParamError(key, fmt::format("a parameter of {} (one of {})", kind.name, names));
     }
+    if (!type_ok(value, it->type) || !value_ok(value, *it))
+      throw ParamError(key, expected_text(it->type, it->range));
   }
-  for (const auto& s : kind.params) {
-    if (s.required && !params.contains(s.name)) {
-      errors.push_back(fmt::format("{}: missing parameter '{}' ({})", kind.name, s.name, s.help));
-    }
-  }
-  if (errors.empty() && kind.cross_check) {
-    for (auto& e : kind.cross_check(params)) errors.push_back(fmt::format("{}: {}", kind.name, e));
-  }
-  return errors;
+  for (const auto& s : kind.params)
+    if (s.required && !table.contains(s.name))
+      throw ParamError(s.name, fmt::format("missing: {} ({})", expected_text(s.type, s.range), s.help));
+  return kind.build(check, table);
 }
 
-CheckResult run_check(std::string_view check, std::string_view kind, const Capture& capture,
-                      const json& params) {
-  const auto fail_with = [&](std::string why) {
-    CheckResult r;
-    r.check = check;
-    r.kind = kind;
-    r.measurements.push_back(error(std::string(check), std::move(why)));
-    return r;
-  };
-  const CheckKind* k = find_check_kind(kind);
-  if (!k) return fail_with(fmt::format("unknown check kind '{}'", kind));
-  const auto errors = validate_check_params(*k, params);
-  if (!errors.empty()) return fail_with(errors.front());
-  json named = params;
-  named["__name"] = std::string(check);
+std::string_view kind_of(const CheckParams& params) {
+  static constexpr std::string_view names[] = {
+      "throughput",  "debounce",    "advance_counts", "edge_at_position", "brake_stop_time", "pulse_width",
+      "word_equals", "word_within", "word_bits",      "frame_decodes",    "shaft_move"};
+  static_assert(std::size(names) == std::variant_size_v<CheckParams>);
+  return names[params.index()];
+}
+
+std::vector<std::string> lines_of(const CheckParams& params) { return std::visit(Lines{}, params); }
+
+CheckResult run_check(std::string_view check, const CheckParams& params, const Capture& capture) {
+  CheckResult r;
   try {
-    CheckResult r = k->run(capture, named);
-    r.check = check;
-    r.kind = kind;
-    return r;
+    r = std::visit([&](const auto& p) { return run(p, capture); }, params);
   } catch (const CaptureError& e) {
-    return fail_with(e.what);
+    r = CheckResult{};
+    r.measurements.push_back(error(std::string(check), e.what));
   }
-}
-
-BisectionPlan debounce_plan(const json& p) {
-  return BisectionPlan{us(p, "narrow_us"), us(p, "wide_us"), us(p, "resolution_us", Nanos{1000}),
-                       str(p, "input"),    str(p, "output"), level(p, "level", Level::High)};
+  r.check = check;
+  r.kind = kind_of(params);
+  return r;
 }
 
 } // namespace hilrig::checks

@@ -1,22 +1,21 @@
 #pragma once
-// The registry of check kinds: name -> function + parameter schema. The campaign parser
-// validates a check's parameters with validate_check_params(); the executive runs it with
-// run_check() on the run's Capture; `hilrig list` names them from check_kinds().
-// Parameters are a JSON object (the campaign's TOML table converted); units are in the names
-// (limit_us, advance_ms, tolerance_counts).
+// The registry of check kinds: name -> parameter table + builder. The campaign parser builds
+// each check's typed parameters once with build_check_params() (every range and finiteness
+// rule checked there); the executive runs them with run_check() on the run's Capture;
+// `hilrig list` names the kinds and their parameters from check_kinds(). Units are in the
+// parameter names (limit_us, advance_ms, tolerance_counts).
 
 #include <functional>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "rig/checks/brake.hpp"
-#include "rig/checks/debounce.hpp"
-#include "rig/checks/frames.hpp"
+#include "rig/checks/check_params.hpp"
 #include "rig/checks/support.hpp"
 
 namespace hilrig::checks {
@@ -32,55 +31,64 @@ struct Capture {
   std::map<std::string, FrameDecoder, std::less<>> decoders;        // by decoder name
   Nanos begin{0};
   Nanos end{0};
-  // Debounce only: the bisection the executive ran with bisect_boundary() and debounce_plan().
+  // Debounce only: the bisection the executive ran with bisect_boundary() and the check's plan.
   std::optional<Bisection> bisection{};
 };
 
 enum class ParamType { Number, Integer, Boolean, String, Level, NumberList };
 [[nodiscard]] const char* to_string(ParamType t);
 
+// The valid range of a number (every number must be finite besides).
+struct ParamRange {
+  std::optional<double> min{};
+  bool min_open = false; // min itself is out of range ("> 0")
+  std::optional<double> max{};
+};
+// "a finite number > 0", "an integer 1 .. 65535", "\"high\" or \"low\"", ...
+[[nodiscard]] std::string expected_text(ParamType t, const ParamRange& range);
+
 struct ParamSpec {
   std::string name{};
   ParamType type = ParamType::Number;
   bool required = false;
   std::string help{}; // one line, with the default
+  ParamRange range{};
 };
 
-using CheckFn = std::function<CheckResult(const Capture& capture, const nlohmann::json& params)>;
+// A problem with one check parameter: the key ("" for the check as a whole) and the valid
+// range, for the campaign parser's file:line:col: key: expected.
+class ParamError : public std::invalid_argument {
+public:
+  ParamError(std::string key, const std::string& expected)
+      : std::invalid_argument(expected), key_(std::move(key)) {}
+  [[nodiscard]] const std::string& key() const { return key_; }
+
+private:
+  std::string key_;
+};
 
 struct CheckKind {
   std::string name{};    // "throughput", "debounce", "advance_counts", ...
   std::string summary{}; // one line for `hilrig list`
   std::vector<ParamSpec> params{};
-  CheckFn run;
-  bool needs_bisection = false; // the executive runs debounce_plan() probes before run()
-  // Rules across parameters (e.g. "crossings_us or setpoint"); returns error sentences.
-  std::function<std::vector<std::string>(const nlohmann::json&)> cross_check;
+  // Typed parameters from a table whose keys and types already match `params`; throws
+  // ParamError for a rule across parameters.
+  std::function<CheckParams(std::string_view check, const nlohmann::json& table)> build;
+  bool needs_bisection = false; // the executive runs the plan's probes before run_check (debounce)
 };
 
 [[nodiscard]] const std::vector<CheckKind>& check_kinds();
 [[nodiscard]] const CheckKind* find_check_kind(std::string_view name);
 
-// Every problem with the parameters, one sentence each: unknown names, missing required
-// ones, wrong types, cross-parameter rules. Empty when valid.
-[[nodiscard]] std::vector<std::string> validate_check_params(const CheckKind& kind,
-                                                             const nlohmann::json& params);
+// The typed parameters of check `check` of `kind` from its table as written (the TOML table
+// converted to JSON). Throws ParamError for the first problem: an unknown or missing key, a
+// wrong type, a number not finite or out of its range, a rule across parameters.
+[[nodiscard]] CheckParams build_check_params(const CheckKind& kind, std::string_view check,
+                                             const nlohmann::json& table);
 
-// Runs the check named `check` of kind `kind`; sets CheckResult::check. Unknown kinds and
-// invalid parameters give a result whose only measurement is an Error naming the problem.
-[[nodiscard]] CheckResult run_check(std::string_view check, std::string_view kind, const Capture& capture,
-                                    const nlohmann::json& params);
-
-// Debounce: the probe plan from a check's parameters (narrow_us, wide_us, resolution_us,
-// input, output) for the executive's bisect_boundary() call.
-struct BisectionPlan {
-  Nanos narrow{0};
-  Nanos wide{0};
-  Nanos resolution{0};
-  std::string input{};       // the line the pulse is driven on
-  std::string output{};      // the line whose edge means "accepted"
-  Level level = Level::High; // the pulse's active level on the input
-};
-[[nodiscard]] BisectionPlan debounce_plan(const nlohmann::json& params);
+// Runs check `check`; sets CheckResult::check and ::kind. A line, observation or decoder the
+// capture lacks gives a result whose only measurement is an Error naming it.
+[[nodiscard]] CheckResult run_check(std::string_view check, const CheckParams& params,
+                                    const Capture& capture);
 
 } // namespace hilrig::checks

@@ -56,9 +56,9 @@ CheckResult check_shaft_move(std::span<const Edge> step, std::span<const Edge> d
         *spec.steps + spec.steps_tolerance,
         fmt::format("net steps (CW +) after {} ns: {} steps counted", spec.from.count(), count), window));
   }
-  if (spec.duration_min_ms || spec.duration_max_ms) {
-    r.measurements.push_back(measure(
-        spec.name + ".duration", to_ms(last - spec.from), "ms", spec.duration_min_ms, spec.duration_max_ms,
+  if (spec.duration_min || spec.duration_max) {
+    r.measurements.push_back(measure_time(
+        spec.name + ".duration", last - spec.from, TimeUnit::Ms, spec.duration_min, spec.duration_max,
         count == 0 ? std::string("no step in the window")
                    : fmt::format("from {} ns to the last step", spec.from.count()),
         window, last));

@@ -19,10 +19,10 @@ struct ShaftMoveSpec {
   Nanos from{0};           // steps strictly after this count
   Nanos to = Nanos::max(); // ... and at or before this
   Level dir_initial = Level::Low;
-  std::optional<double> steps{}; // expected net steps (CW +)
-  double steps_tolerance = 0.0;  // either side
-  std::optional<double> duration_min_ms{};
-  std::optional<double> duration_max_ms{};
+  std::optional<double> steps{};       // expected net steps (CW +)
+  double steps_tolerance = 0.0;        // either side
+  std::optional<Nanos> duration_min{}; // from `from` to the last step, judged in ns
+  std::optional<Nanos> duration_max{};
   std::optional<double> peak_min{}; // steps/s
   std::optional<double> peak_max{};
   std::optional<double> reversals{}; // exact count of direction changes

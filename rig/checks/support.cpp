@@ -22,39 +22,6 @@ std::optional<Edge> next_edge(std::span<const Edge> edges, Nanos from, Nanos unt
   return std::nullopt;
 }
 
-Measurement measure(std::string name, double value, std::string unit, std::optional<double> lower,
-                    std::optional<double> upper, std::string detail, std::optional<TraceWindow> window,
-                    std::optional<Nanos> at) {
-  Measurement m;
-  m.name = std::move(name);
-  m.value = value;
-  m.unit = std::move(unit);
-  m.lower = lower;
-  m.upper = upper;
-  m.outcome = std::isfinite(value) ? rig::judge(value, lower, upper) : Outcome::Error;
-  m.detail = std::isfinite(value) ? std::move(detail) : "not a number: " + detail;
-  m.window = window;
-  m.at = at;
-  return m;
-}
-
-Measurement failure(std::string name, std::string reason, std::optional<TraceWindow> window) {
-  Measurement m;
-  m.name = std::move(name);
-  m.outcome = Outcome::Fail;
-  m.detail = std::move(reason);
-  m.window = window;
-  return m;
-}
-
-Measurement error(std::string name, std::string reason) {
-  Measurement m;
-  m.name = std::move(name);
-  m.outcome = Outcome::Error;
-  m.detail = std::move(reason);
-  return m;
-}
-
 const char* level_name(Level l) { return is_high(l) ? "high" : "low"; }
 
 } // namespace hilrig::checks

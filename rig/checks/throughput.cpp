@@ -18,13 +18,21 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
                              const ThroughputSpec& spec) {
   CheckResult r;
   r.kind = "throughput";
+  if (crossings.empty()) {
+    // No crossing, no latency: the check judged nothing, whatever min_count says.
+    r.measurements.push_back(
+        error(spec.name + ".count", "nothing judged: the stimulus never crossed the setpoint"));
+    return r;
+  }
   std::vector<Sample> samples;
   samples.reserve(crossings.size());
   std::size_t missing = 0;
   std::optional<TraceWindow> first_missing;
   for (std::size_t i = 0; i < crossings.size(); ++i) {
     const Nanos c = crossings[i];
-    Nanos until = spec.timeout == Nanos::max() ? Nanos::max() : c + spec.timeout;
+    // An edge exactly timeout after the crossing is in time (limits are inclusive); an edge at
+    // the next crossing belongs to that crossing.
+    Nanos until = spec.timeout == Nanos::max() ? Nanos::max() : c + spec.timeout + Nanos{1};
     if (i + 1 < crossings.size()) until = std::min(until, crossings[i + 1]);
     if (const auto e = next_edge(output, c, until, spec.expected)) {
       samples.push_back({e->time - c, c});
@@ -48,13 +56,11 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
                      [](const Sample& a, const Sample& b) { return a.latency < b.latency; });
     const auto stat = [&](const std::string& what, std::size_t idx, std::optional<Nanos> upper) {
       const Sample& s = samples[idx];
-      std::optional<double> up;
-      if (upper) up = to_us(*upper);
-      r.measurements.push_back(
-          measure(spec.name + "." + what, to_us(s.latency), "us", std::nullopt, up,
-                  fmt::format("{} latency: crossing at {} ns to {} edge at {} ns", what, s.crossing.count(),
-                              level_name(spec.expected), (s.crossing + s.latency).count()),
-                  TraceWindow{s.crossing, s.crossing + s.latency}, s.crossing + s.latency));
+      r.measurements.push_back(measure_time(
+          spec.name + "." + what, s.latency, TimeUnit::Us, std::nullopt, upper,
+          fmt::format("{} latency: crossing at {} ns to {} edge at {} ns", what, s.crossing.count(),
+                      level_name(spec.expected), (s.crossing + s.latency).count()),
+          TraceWindow{s.crossing, s.crossing + s.latency}, s.crossing + s.latency));
     };
     const std::size_t n = samples.size();
     stat("min", 0, std::nullopt);

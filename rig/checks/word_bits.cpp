@@ -10,6 +10,10 @@ CheckResult check_word_bits(std::span<const Observation> observations, const Wor
                             std::uint16_t mask, std::uint16_t value) {
   CheckResult r;
   r.kind = "word_bits";
+  if (mask == 0) {
+    r.measurements.push_back(error(spec.name, "nothing judged: mask 0 selects no bit"));
+    return r;
+  }
   const Observation* chosen = nullptr;
   for (const auto& o : observations) {
     if (o.name != spec.observation) continue;

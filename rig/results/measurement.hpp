@@ -2,6 +2,8 @@
 // A measurement, as in OpenHTF: a named value with a unit, optional limits, a
 // three-valued outcome, and the window of the trace that proves it.
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,8 +53,25 @@ struct Observation {
   Nanos time;
 };
 
-// Judges value against the limits: Pass when inside (inclusive), Fail otherwise.
+// The one comparison rule (docs/campaigns.md, "How limits are compared"): every limit is
+// inclusive, so a value exactly at a limit passes and one a hair beyond fails.
+//  - Times are judged in integer nanoseconds, exactly (judge(Nanos, ...)).
+//  - Every other value (counts, words, rates) is judged with one epsilon: a value within
+//    kCompareEpsilon * max(1, |limit|) of a limit is at the limit. It absorbs the rounding of
+//    double arithmetic (101.00000000000003 against 101) and nothing a board could show: a
+//    nanosecond at 10^6 counts/s is already 10^-3 counts.
+//  - A value that is not a finite number is an Error: nothing was judged.
+inline constexpr double kCompareEpsilon = 1e-9;
+
 [[nodiscard]] inline Outcome judge(double value, std::optional<double> lower, std::optional<double> upper) {
+  if (!std::isfinite(value)) return Outcome::Error;
+  const auto slack = [](double limit) { return kCompareEpsilon * std::max(1.0, std::abs(limit)); };
+  if (lower && value < *lower - slack(*lower)) return Outcome::Fail;
+  if (upper && value > *upper + slack(*upper)) return Outcome::Fail;
+  return Outcome::Pass;
+}
+
+[[nodiscard]] inline Outcome judge(Nanos value, std::optional<Nanos> lower, std::optional<Nanos> upper) {
   if (lower && value < *lower) return Outcome::Fail;
   if (upper && value > *upper) return Outcome::Fail;
   return Outcome::Pass;

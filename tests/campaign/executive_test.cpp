@@ -217,6 +217,10 @@ kind = "glitch"
 line = "en"
 at = "5ms"
 width = "10us"
+[[check]]
+kind = "pulse_width"
+name = "en"
+line = "en"
 )",
                                     "t.toml");
   const RunOutput out = Executive(c).run(c.runs[0]);

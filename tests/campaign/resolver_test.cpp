@@ -188,7 +188,9 @@ board = "COS2"
 rig = "ls1"
 board = "OUT1"
 )";
-  const std::string resolver = "[resolver]\nsin = \"res.sin\"\ncos = \"res.cos\"\nphase_deg = 90\n";
+  // Every campaign judges something: a pulse_width check on the output.
+  const std::string resolver = "[resolver]\nsin = \"res.sin\"\ncos = \"res.cos\"\nphase_deg = 90\n"
+                               "[[check]]\nkind = \"pulse_width\"\nname = \"out\"\nline = \"ls1\"\n";
   const Campaign c = parse_campaign(head + resolver, "t.toml");
   EXPECT_EQ(c.points[0].wiring.size(), 5U);
   EXPECT_EQ(c.points[0].resolver.phase_deg, 90.0);

@@ -106,6 +106,13 @@ pins = { A = "input", OUT = "output" }
 [[wiring]]
 rig = "enc.A"
 board = "A"
+[[wiring]]
+rig = "ls1"
+board = "OUT"
+[[check]]
+kind = "pulse_width"
+name = "out"
+line = "ls1"
 )";
   std::string err;
   EXPECT_EQ(run(write_file(dir, "ext.toml", text).string(), dir / "out", &err), 3);

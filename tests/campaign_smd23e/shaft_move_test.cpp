@@ -43,8 +43,8 @@ TEST(ShaftMove, CountsNetStepsDurationPeakAndReversals) {
   ShaftMoveSpec s;
   s.name = "m";
   s.steps = 3;
-  s.duration_min_ms = 5.9;
-  s.duration_max_ms = 6.1;
+  s.duration_min = 5900_us;
+  s.duration_max = 6100_us;
   s.peak_min = 1999;
   s.peak_max = 2001;
   s.reversals = 1;
@@ -72,7 +72,7 @@ TEST(ShaftMove, NoStepMeansZeroDurationAndNoSpeed) {
   s.name = "stop";
   s.from = 10_ms;
   s.steps = 0;
-  s.duration_max_ms = 1.0;
+  s.duration_max = 1_ms;
   s.peak_max = 10.0;
   const CheckResult r = check_shaft_move({}, {}, s);
   EXPECT_EQ(find(r, "stop.steps")->outcome, Outcome::Pass);
@@ -122,24 +122,26 @@ TEST(WordBits, ASignedReadKeepsItsSixteenBits) {
   EXPECT_EQ(check_word_bits(obs, s, 0xC000, 0xC000).outcome(), Outcome::Pass);
 }
 
+// The key a ParamError names, or "ok" when the table builds.
+std::string problem(const char* kind, const json& table) {
+  try {
+    (void)build_check_params(*find_check_kind(kind), "c", table);
+    return "ok";
+  } catch (const ParamError& e) {
+    return e.key().empty() ? "(check)" : e.key();
+  }
+}
+
 TEST(Smd23eCheckKinds, RegistryValidatesTheirParameters) {
-  const CheckKind* shaft = find_check_kind("shaft_move");
-  ASSERT_NE(shaft, nullptr);
-  EXPECT_TRUE(
-      validate_check_params(*shaft, json{{"step_line", "s"}, {"dir_line", "d"}, {"from_ms", 0}, {"steps", 3}})
-          .empty());
+  EXPECT_EQ(problem("shaft_move", json{{"step_line", "s"}, {"dir_line", "d"}, {"from_ms", 0}, {"steps", 3}}),
+            "ok");
   // Nothing to judge.
-  EXPECT_EQ(validate_check_params(*shaft, json{{"step_line", "s"}, {"dir_line", "d"}, {"from_ms", 0}}).size(),
-            1U);
-  const CheckKind* bits = find_check_kind("word_bits");
-  ASSERT_NE(bits, nullptr);
-  EXPECT_TRUE(
-      validate_check_params(*bits, json{{"observation", "sw1"}, {"mask", 4224}, {"value", 128}}).empty());
-  // A value bit outside the mask, and a mask wider than a word.
-  EXPECT_EQ(validate_check_params(*bits, json{{"observation", "sw1"}, {"mask", 128}, {"value", 4096}}).size(),
-            1U);
-  EXPECT_EQ(validate_check_params(*bits, json{{"observation", "sw1"}, {"mask", 70000}, {"value", 0}}).size(),
-            1U);
+  EXPECT_EQ(problem("shaft_move", json{{"step_line", "s"}, {"dir_line", "d"}, {"from_ms", 0}}), "(check)");
+  EXPECT_EQ(problem("word_bits", json{{"observation", "sw1"}, {"mask", 4224}, {"value", 128}}), "ok");
+  // A value bit outside the mask, a mask wider than a word, and a mask that judges no bit.
+  EXPECT_EQ(problem("word_bits", json{{"observation", "sw1"}, {"mask", 128}, {"value", 4096}}), "value");
+  EXPECT_EQ(problem("word_bits", json{{"observation", "sw1"}, {"mask", 70000}, {"value", 0}}), "mask");
+  EXPECT_EQ(problem("word_bits", json{{"observation", "sw1"}, {"mask", 0}, {"value", 0}}), "mask");
 }
 
 } // namespace

@@ -1,0 +1,119 @@
+#pragma once
+// Every check kind's parameters, typed: built once by the campaign parser from the check's
+// table (registry.hpp: build_check_params, ranges and finiteness validated there) and read
+// by the executive and the checks as fields, never looked up by name.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "core/line.hpp"
+#include "core/time.hpp"
+#include "rig/checks/brake.hpp"
+#include "rig/checks/crossings.hpp"
+#include "rig/checks/debounce.hpp"
+#include "rig/checks/edge_position.hpp"
+#include "rig/checks/frames.hpp"
+#include "rig/checks/pulse_width.hpp"
+#include "rig/checks/shaft_move.hpp"
+#include "rig/checks/throughput.hpp"
+#include "rig/checks/words.hpp"
+
+namespace hilrig::checks {
+
+// Where a throughput check's crossings come from: the setpoint on the position function.
+struct CrossingScan {
+  double setpoint = 0.0; // counts
+  Direction direction = Direction::Both;
+  std::optional<Nanos> from{}; // default: the capture's begin
+  std::optional<Nanos> to{};   // default: the capture's end
+  Nanos step{100'000};
+  double modulus = 0.0;
+};
+
+struct ThroughputParams {
+  std::string output;
+  ThroughputSpec spec;
+  std::variant<std::vector<Nanos>, CrossingScan> crossings; // crossings_us as written, or a scan
+};
+
+// Debounce: the probe plan from a check's parameters for the executive's bisect_boundary().
+struct BisectionPlan {
+  Nanos narrow{0};
+  Nanos wide{0};
+  Nanos resolution{1000};
+  std::string input{};       // the line the pulse is driven on
+  std::string output{};      // the line whose edge means "accepted"
+  Level level = Level::High; // the pulse's active level on the input
+};
+
+struct DebounceParams {
+  DebounceSpec spec;
+  BisectionPlan plan;
+};
+
+struct AdvanceParams {
+  std::string output;
+  AdvanceSpec spec;
+};
+
+struct EdgeAtPositionParams {
+  std::string output;
+  EdgeAtPositionSpec spec;
+};
+
+struct BrakeParams {
+  BrakeSpec spec;                 // reported_ms is filled from the capture's observation
+  std::optional<Nanos> applied{}; // applied_ms; or the first edge of brake_line to applied_level
+  std::string brake_line{};
+  Level applied_level = Level::Low;
+  std::optional<std::string> reported{}; // the observation holding the board's stop time, ms
+  std::optional<std::string> fault_output{};
+};
+
+struct PulseWidthParams {
+  std::string line;
+  PulseWidthSpec spec;
+};
+
+struct WordEqualsParams {
+  WordSpec spec;
+  double value = 0.0;
+};
+
+struct WordWithinParams {
+  WordSpec spec;
+};
+
+struct WordBitsParams {
+  WordSpec spec;
+  std::uint16_t mask = 0xFFFF; // never 0: the parser refuses a mask that judges nothing
+  std::uint16_t value = 0;
+};
+
+struct FrameDecodesParams {
+  std::string source;
+  std::string decoder;
+  FrameSpec spec;
+};
+
+struct ShaftMoveParams {
+  std::string step_line;
+  std::string dir_line;
+  ShaftMoveSpec spec; // spec.to is the capture's end when to_ms is not given
+  bool to_given = false;
+};
+
+using CheckParams = std::variant<ThroughputParams, DebounceParams, AdvanceParams, EdgeAtPositionParams,
+                                 BrakeParams, PulseWidthParams, WordEqualsParams, WordWithinParams,
+                                 WordBitsParams, FrameDecodesParams, ShaftMoveParams>;
+
+// The check kind's name ("throughput", ...).
+[[nodiscard]] std::string_view kind_of(const CheckParams& params);
+// Every rig line the check reads from the capture (so the executive copies only those).
+[[nodiscard]] std::vector<std::string> lines_of(const CheckParams& params);
+
+} // namespace hilrig::checks

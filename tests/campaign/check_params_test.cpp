@@ -1,0 +1,82 @@
+// Issue 16 item 5: check parameters are validated where the campaign is read. NaN, inf and
+// negatives where a limit, tolerance or duration is expected, minimums of 0, a word_bits mask
+// of 0 and a campaign with no check are bad input: "file:line:column: key: valid range".
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rig/campaign/campaign_parser.hpp"
+
+namespace hilrig::campaign {
+namespace {
+
+// A valid campaign; the check's table is lines 23..27 and cases append to it.
+const std::string kBase = R"([campaign]
+name = "t"
+end = "100ms"
+[dut]
+model = "reference_pls"
+[dut.params]
+on = 10
+off = 20
+[[wiring]]
+rig = "enc.A"
+board = "A"
+[[wiring]]
+rig = "enc.B"
+board = "B"
+[[wiring]]
+rig = "ls1"
+board = "OUT"
+[motion]
+[[motion.move]]
+kind = "constant"
+speed_rpm = 60
+duration = "100ms"
+[[check]]
+kind = "throughput"
+name = "on"
+output = "ls1"
+setpoint = 10
+)";
+
+std::string error_of(const std::string& text) {
+  try {
+    (void)parse_campaign(text, "t.toml");
+    return "accepted";
+  } catch (const CampaignError& e) {
+    return e.what();
+  }
+}
+
+TEST(CheckParams, AValidLimitIsAccepted) { EXPECT_EQ(error_of(kBase + "limit_us = 20.3\n"), "accepted"); }
+
+TEST(CheckParams, NotFiniteOrNegativeLimitIsBadInputAtItsValue) {
+  // Line 28 is the appended key; its value starts at column 12.
+  for (const char* bad : {"nan", "+inf", "-inf", "-0.5"}) {
+    SCOPED_TRACE(bad);
+    EXPECT_EQ(error_of(kBase + "limit_us = " + bad + "\n"),
+              "t.toml:28:12: check[0].limit_us: a finite number >= 0");
+  }
+  EXPECT_EQ(error_of(kBase + "limit_us = 20\ntimeout_us = 0\n"),
+            "t.toml:29:14: check[0].timeout_us: a finite number > 0");
+  EXPECT_EQ(error_of(kBase + "limit_us = 20\nsetpoint_x = nan\n")
+                .rfind("t.toml:29:14: check[0].setpoint_x: a parameter of throughput", 0),
+            0U);
+}
+
+TEST(CheckParams, MinimumOfZeroIsBadInput) {
+  EXPECT_EQ(error_of(kBase + "limit_us = 20\nmin_count = 0\n"),
+            "t.toml:29:13: check[0].min_count: an integer >= 1");
+}
+
+TEST(CheckParams, ACampaignWithNoCheckIsBadInput) {
+  const std::string no_check = kBase.substr(0, kBase.find("[[check]]"));
+  const std::string got = error_of(no_check);
+  EXPECT_NE(got.find("check: at least one [[check]]"), std::string::npos) << got;
+  EXPECT_EQ(got.rfind("t.toml:", 0), 0U) << got;
+}
+
+} // namespace
+} // namespace hilrig::campaign

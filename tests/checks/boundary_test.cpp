@@ -1,0 +1,201 @@
+// Issue 16 items 4 and 5: one inclusive comparison rule for every limit, in exact units
+// (integer ns for times; other values with rig::kCompareEpsilon), tested by sweeping a value
+// across each limit with numbers that do not round exactly; and a check that judged nothing
+// is an error, never a pass.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "check_test_support.hpp"
+#include "rig/checks/registry.hpp"
+#include "rig/checks/word_bits.hpp"
+
+namespace hilrig::checks {
+namespace {
+
+using namespace hilrig::literals;
+using nlohmann::json;
+using rig::Outcome;
+using test::find;
+
+PositionFn constant(double counts) {
+  return [counts](Nanos) { return counts; };
+}
+
+TEST(Boundary, EdgeAtPositionIsInclusiveAtTheToleranceAfterRounding) {
+  // Issue 16: 101.00000000000003 against 99..101 failed. One ulp over the limit is rounding,
+  // not the board: it passes; a millionth of a count over fails.
+  EdgeAtPositionSpec s;
+  s.position = 100.0;
+  s.tolerance = 1.0;
+  const std::vector<Edge> out = {{1_ms, Level::High}};
+  EXPECT_EQ(check_edge_at_position(out, constant(std::nextafter(101.0, 200.0)), {}, s).outcome(),
+            Outcome::Pass);
+  EXPECT_EQ(check_edge_at_position(out, constant(101.00000000000003), {}, s).outcome(), Outcome::Pass);
+  // Tolerance 0.1 counts (not exact in binary), swept across both limits in 1e-6 count steps.
+  s.tolerance = 0.1;
+  for (int k = -3; k <= 3; ++k) {
+    SCOPED_TRACE(k);
+    const Outcome want = k <= 0 ? Outcome::Pass : Outcome::Fail;
+    EXPECT_EQ(check_edge_at_position(out, constant(100.0 + 0.1 + k * 1e-6), {}, s).outcome(), want);
+    EXPECT_EQ(check_edge_at_position(out, constant(99.9 - k * 1e-6), {}, s).outcome(), want);
+  }
+  // The same limit reached by sums that round differently.
+  EXPECT_EQ(check_edge_at_position(out, constant(0.7 + 99.4), {}, s).outcome(), Outcome::Pass);
+  EXPECT_EQ(check_edge_at_position(out, constant(100.3 - 0.2), {}, s).outcome(), Outcome::Pass);
+}
+
+TEST(Boundary, AdvanceCountsIsInclusiveAtTheTolerance) {
+  AdvanceSpec s;
+  s.setpoint = 100.3;
+  s.advance_counts = 0.2; // expected 100.1, itself rounded
+  s.tolerance = 0.1;
+  const std::vector<Edge> out = {{1_ms, Level::High}};
+  for (int k = -3; k <= 3; ++k) {
+    SCOPED_TRACE(k);
+    const Outcome want = k <= 0 ? Outcome::Pass : Outcome::Fail;
+    EXPECT_EQ(check_advance(out, constant(100.2 + k * 1e-6), {}, s).outcome(), want);
+    EXPECT_EQ(check_advance(out, constant(100.0 - k * 1e-6), {}, s).outcome(), want);
+  }
+}
+
+// ans1 manual (seeds/000_08a2edf5547d4d1e.txt:572): master throughput 10 to 20 us. A limit
+// written 20.3 us is 20'300 ns exactly; latencies are judged in whole ns.
+TEST(Boundary, ThroughputLimitSweptInNanoseconds) {
+  const auto p = std::get<ThroughputParams>(
+      build_check_params(*find_check_kind("throughput"), "t",
+                         json{{"output", "o"}, {"limit_us", 20.3}, {"crossings_us", {1000}}}));
+  for (int d = -3; d <= 3; ++d) {
+    SCOPED_TRACE(d);
+    const std::vector<Edge> out = {{1_ms + 20'300_ns + Nanos{d}, Level::High}};
+    const auto r = check_throughput(std::get<std::vector<Nanos>>(p.crossings), out, p.spec);
+    EXPECT_EQ(find(r, "t.max").outcome, d <= 0 ? Outcome::Pass : Outcome::Fail);
+    EXPECT_EQ(r.outcome(), d <= 0 ? Outcome::Pass : Outcome::Fail);
+  }
+}
+
+TEST(Boundary, ThroughputTimeoutIsInclusive) {
+  // Issue 16: timeout_us was exclusive, so an edge exactly timeout after its crossing was
+  // "missing". An edge at the timeout is in time; one ns later it is missing.
+  const auto p = std::get<ThroughputParams>(build_check_params(
+      *find_check_kind("throughput"), "t",
+      json{{"output", "o"}, {"limit_us", 100}, {"timeout_us", 20.3}, {"crossings_us", {1000}}}));
+  const std::vector<Nanos> crossings = {1_ms};
+  for (int d = -2; d <= 2; ++d) {
+    SCOPED_TRACE(d);
+    const std::vector<Edge> out = {{1_ms + 20'300_ns + Nanos{d}, Level::High}};
+    const auto r = check_throughput(crossings, out, p.spec);
+    EXPECT_EQ(find(r, "t.missing").value, d <= 0 ? 0.0 : 1.0);
+    EXPECT_EQ(r.outcome(), d <= 0 ? Outcome::Pass : Outcome::Fail);
+  }
+}
+
+TEST(Boundary, PulseWidthLimitsSweptInNanoseconds) {
+  PulseWidthSpec s;
+  s.min = 20'300_ns;
+  s.max = 30'700_ns;
+  for (int d = -3; d <= 3; ++d) {
+    SCOPED_TRACE(d);
+    const std::vector<Edge> shorter = {{1_ms, Level::High}, {1_ms + 20'300_ns - Nanos{d}, Level::Low}};
+    EXPECT_EQ(check_pulse_width(shorter, s).outcome(), d <= 0 ? Outcome::Pass : Outcome::Fail);
+    const std::vector<Edge> longer = {{1_ms, Level::High}, {1_ms + 30'700_ns + Nanos{d}, Level::Low}};
+    EXPECT_EQ(check_pulse_width(longer, s).outcome(), d <= 0 ? Outcome::Pass : Outcome::Fail);
+  }
+}
+
+TEST(Boundary, DebounceBoundaryInclusiveAtFilterPlusTolerance) {
+  DebounceSpec s{"d", 500_us, 300_ns}; // boundary in [499.7, 500.3] us
+  for (int d = -3; d <= 3; ++d) {
+    SCOPED_TRACE(d);
+    const Nanos edge = 500'300_ns + Nanos{d};
+    Bisection b;
+    b.bracketed = true;
+    b.rejected = edge - 1_ns;
+    b.accepted = edge;
+    b.probes = {{b.rejected, false}, {b.accepted, true}};
+    EXPECT_EQ(find(check_debounce(b, s), "d.boundary").outcome, d <= 0 ? Outcome::Pass : Outcome::Fail);
+  }
+}
+
+TEST(Boundary, ShaftMoveDurationSweptInNanoseconds) {
+  ShaftMoveSpec s;
+  s.from = 0_ms;
+  s.duration_max = 6'100'000_ns; // duration_max_ms = 6.1
+  for (int d = -2; d <= 2; ++d) {
+    SCOPED_TRACE(d);
+    const std::vector<Edge> step = {{1_ms, Level::High}, {6'100'000_ns + Nanos{d}, Level::Low}};
+    EXPECT_EQ(check_shaft_move(step, {}, s).outcome(), d <= 0 ? Outcome::Pass : Outcome::Fail);
+  }
+}
+
+TEST(Boundary, WordWithinLimitsComparedWithTheOneEpsilon) {
+  // 0.1 * 3 is 0.30000000000000004: a limit written so is the same limit as 0.3.
+  WordSpec s;
+  s.observation = "w";
+  s.upper = 0.1 * 3;
+  s.lower = 0.1 * 3;
+  EXPECT_EQ(check_word_within(std::vector<rig::Observation>{{"w", 0.3, "", 1_ms}}, s).outcome(),
+            Outcome::Pass);
+  EXPECT_EQ(check_word_within(std::vector<rig::Observation>{{"w", 0.300001, "", 1_ms}}, s).outcome(),
+            Outcome::Fail);
+  EXPECT_EQ(check_word_within(std::vector<rig::Observation>{{"w", 0.299999, "", 1_ms}}, s).outcome(),
+            Outcome::Fail);
+}
+
+TEST(Boundary, TheRuleItself) {
+  EXPECT_EQ(rig::judge(20'300_ns, std::nullopt, 20'300_ns), Outcome::Pass);
+  EXPECT_EQ(rig::judge(20'301_ns, std::nullopt, 20'300_ns), Outcome::Fail);
+  EXPECT_EQ(rig::judge(20'300_ns, 20'300_ns, std::nullopt), Outcome::Pass);
+  EXPECT_EQ(rig::judge(20'299_ns, 20'300_ns, std::nullopt), Outcome::Fail);
+  // The epsilon scales with the limit: at 10^6 counts one part in 10^9 is 10^-3 counts.
+  EXPECT_EQ(rig::judge(1e6 + 5e-4, std::nullopt, 1e6), Outcome::Pass);
+  EXPECT_EQ(rig::judge(1e6 + 2e-3, std::nullopt, 1e6), Outcome::Fail);
+  EXPECT_EQ(rig::judge(std::nan(""), std::nullopt, std::nullopt), Outcome::Error);
+}
+
+// Item 5: a check that judged no measurement is an error, never a pass (the parser refuses
+// these parameters; the checks stand on their own too).
+TEST(JudgedNothing, ZeroMinimumsWithNothingCapturedAreErrors) {
+  EdgeAtPositionSpec e;
+  e.min_edges = 0;
+  EXPECT_EQ(check_edge_at_position({}, constant(0.0), {}, e).outcome(), Outcome::Error);
+  AdvanceSpec a;
+  a.min_edges = 0;
+  a.advance_counts = 0.0;
+  EXPECT_EQ(check_advance({}, constant(0.0), {}, a).outcome(), Outcome::Error);
+  PulseWidthSpec p;
+  p.min_pulses = 0;
+  EXPECT_EQ(check_pulse_width({}, p).outcome(), Outcome::Error);
+  ThroughputSpec t;
+  t.min_count = 0;
+  t.limit = 20_us;
+  EXPECT_EQ(check_throughput({}, {}, t).outcome(), Outcome::Error);
+  FrameSpec f;
+  f.min_frames = 0;
+  EXPECT_EQ(check_frames_decode(
+                {}, [](const RawFrame&) { return std::string(); }, f)
+                .outcome(),
+            Outcome::Error);
+}
+
+TEST(JudgedNothing, ThroughputWithNoCrossingIsAnErrorEvenWithMinCountOne) {
+  ThroughputSpec t;
+  t.limit = 20_us;
+  const std::vector<Edge> out = {{1_ms, Level::High}};
+  const auto r = check_throughput({}, out, t);
+  EXPECT_EQ(r.outcome(), Outcome::Error);
+  EXPECT_NE(r.measurements[0].detail.find("nothing judged"), std::string::npos);
+}
+
+TEST(JudgedNothing, WordBitsWithMaskZeroIsAnError) {
+  WordSpec s;
+  s.observation = "w";
+  EXPECT_EQ(check_word_bits(std::vector<rig::Observation>{{"w", 0x1234, "", 1_ms}}, s, 0, 0).outcome(),
+            Outcome::Error);
+}
+
+} // namespace
+} // namespace hilrig::checks
