@@ -14,11 +14,12 @@
 #include "rig/cli/run_command.hpp"
 #include "rig/cli/serve_command.hpp"
 #include "rig/cli/synth_command.hpp"
+#include "rig/results/results_json.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"hilrig: a real-time hardware-in-the-loop test rig for AMCI boards"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "hilrig 0.1.0");
+  app.set_version_flag("--version", std::string("hilrig ") + hilrig::rig::tool_version());
   hilrig::cli::add_synth_command(app);
   hilrig::cli::add_run_command(app);
   hilrig::cli::add_list_command(app);

@@ -191,6 +191,7 @@ struct RunSpec {
 
 struct Campaign {
   std::string file;
+  std::string sha256; // of the file's bytes, lower-case hex: written into results.json
   std::string name;
   std::string description;
   std::uint64_t seed = 1;

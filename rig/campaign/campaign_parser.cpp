@@ -1,4 +1,5 @@
 #include "rig/campaign/campaign_parser.hpp"
+#include "rig/campaign/file_digest.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -157,6 +158,7 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
 
   Campaign c;
   c.file = file_name;
+  c.sha256 = sha256_hex(text);
 
   // The sweep is read from the file as written; every point is the file with the swept
   // keys replaced, read and checked whole, so a bad sweep value is caught before any run.

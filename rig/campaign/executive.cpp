@@ -9,6 +9,7 @@
 #include "rig/campaign/virtual_run.hpp"
 #include "rig/checks/debounce.hpp"
 #include "rig/checks/registry.hpp"
+#include "rig/results/results_json.hpp"
 
 namespace hilrig::campaign {
 
@@ -136,6 +137,8 @@ rig::CampaignResult Executive::planned(const std::vector<RunSpec>& runs, std::ui
   rig::CampaignResult result;
   result.campaign = campaign_.name;
   result.device = campaign_.points.empty() ? std::string() : campaign_.points.front().dut.model;
+  result.campaign_sha256 = campaign_.sha256;
+  result.tool_version = rig::tool_version();
   result.seed = seed;
   result.shard = shard;
   result.planned_runs = runs.size();

@@ -18,6 +18,15 @@ bool caught(const RunResult& run) {
   });
 }
 
+Judgement judgement_in(const RunResult& run, const CheckResult& check) {
+  const Outcome o = check.outcome();
+  if (run.fault.empty())
+    return o == Outcome::Pass ? Judgement::Pass : o == Outcome::Fail ? Judgement::Fail : Judgement::Error;
+  if (!is_must_catch(run, check.check)) return Judgement::NotJudged;
+  if (caught(run)) return o == Outcome::Fail ? Judgement::Caught : Judgement::NotJudged;
+  return o == Outcome::Error ? Judgement::Error : Judgement::Fail; // passed: the fault went unnoticed
+}
+
 Outcome run_outcome(const RunResult& run) {
   if (!run.error.empty()) return Outcome::Error;
   if (!run.fault.empty()) {
@@ -41,9 +50,11 @@ void finalize(CampaignResult& r) {
                    [](const RunResult& a, const RunResult& b) { return a.index < b.index; });
   std::map<std::string, FaultRow> rows;
   Totals t;
-  for (const auto& run : r.runs) {
+  for (auto& run : r.runs) {
     ++t.runs;
-    switch (run_outcome(run)) {
+    run.outcome = run_outcome(run);
+    for (auto& c : run.checks) c.judgement = judgement_in(run, c);
+    switch (run.outcome) {
     case Outcome::Pass:
       ++t.runs_passed;
       break;
@@ -57,14 +68,20 @@ void finalize(CampaignResult& r) {
     for (const auto& c : run.checks) {
       ++t.checks;
       t.measurements += c.measurements.size();
-      switch (c.outcome()) {
-      case Outcome::Pass:
+      switch (c.judgement) {
+      case Judgement::Pass:
         ++t.checks_passed;
         break;
-      case Outcome::Fail:
+      case Judgement::Fail:
         ++t.checks_failed;
         break;
-      case Outcome::Error:
+      case Judgement::Caught:
+        ++t.checks_caught;
+        break;
+      case Judgement::NotJudged:
+        ++t.checks_not_judged;
+        break;
+      case Judgement::Error:
         ++t.checks_errored;
         break;
       }

@@ -23,6 +23,7 @@ struct RunResult {
   bool interrupted = false;            // stopped by a stop request (SIGINT/SIGTERM); error says when
   std::vector<CheckResult> checks;
   std::vector<Observation> observations;
+  Outcome outcome = Outcome::Error; // derived by finalize(): run_outcome()
 };
 
 // Nominal run: passes when every check passes. Fault run: passes when a must_catch check
@@ -31,6 +32,8 @@ struct RunResult {
 [[nodiscard]] Outcome run_outcome(const RunResult& run);
 // Whether a fault run's fault was caught: a must_catch check has outcome Fail.
 [[nodiscard]] bool caught(const RunResult& run);
+// The word a check of `run` reads (Judgement); finalize() stores it in CheckResult::judgement.
+[[nodiscard]] Judgement judgement_in(const RunResult& run, const CheckResult& check);
 
 // One row of the fault detection matrix: fault -> the checks that must catch it -> caught?
 struct FaultRow {
@@ -43,7 +46,9 @@ struct FaultRow {
 
 struct Totals {
   std::size_t runs = 0, runs_passed = 0, runs_failed = 0, runs_errored = 0;
-  std::size_t checks = 0, checks_passed = 0, checks_failed = 0, checks_errored = 0;
+  // Checks counted by the word they read: passed + failed + caught + not_judged + errored = checks.
+  std::size_t checks = 0, checks_passed = 0, checks_failed = 0, checks_caught = 0, checks_not_judged = 0,
+              checks_errored = 0;
   std::size_t measurements = 0;
   std::size_t faults = 0, faults_caught = 0;
   friend bool operator==(const Totals&, const Totals&) = default;
@@ -55,8 +60,10 @@ struct Shard {
 };
 
 struct CampaignResult {
-  std::string campaign; // the campaign's name
-  std::string device;   // "ans1", "pls2700", ...
+  std::string campaign;        // the campaign's name
+  std::string device;          // "ans1", "pls2700", ...
+  std::string campaign_sha256; // SHA-256 of the campaign file's bytes (hex): merge refuses a mismatch
+  std::string tool_version;    // the hilrig that ran it (kToolVersion): merge refuses a mismatch
   std::uint64_t seed = 0;
   Shard shard;
   std::size_t planned_runs = 0; // runs this result should hold when complete
@@ -73,7 +80,8 @@ struct CampaignResult {
   std::optional<std::string> host;
 };
 
-// Sorts runs by index and derives faults, totals, verdict and complete. The verdict is Pass
+// Sorts runs by index and derives each run's outcome and each check's judgement, faults,
+// totals, verdict and complete. The verdict is Pass
 // when the result is complete, every run passes and every fault is caught; Error when any
 // run erred (or the result is incomplete); Fail otherwise.
 void finalize(CampaignResult& result);

@@ -21,7 +21,7 @@ struct Case {
 std::string measurements_text(const CheckResult& c) {
   std::string out;
   for (const auto& m : c.measurements) {
-    out += fmt::format("{} = {} {} [{} .. {}] {}: {}\n", m.name, m.value, m.unit,
+    out += fmt::format("{} = {} {} [{} .. {}] measured {}: {}\n", m.name, m.value, m.unit,
                        m.lower ? fmt::format("{}", *m.lower) : "-",
                        m.upper ? fmt::format("{}", *m.upper) : "-", to_string(m.outcome), m.detail);
   }
@@ -35,34 +35,48 @@ std::string first_bad(const CheckResult& c) {
   return {};
 }
 
+// The checks of a run that caught its fault, named for the skipped checks' message.
+std::string catchers(const RunResult& run) {
+  std::string out;
+  for (const auto& c : run.checks)
+    if (c.judgement == Judgement::Caught) out += (out.empty() ? "" : ", ") + c.check;
+  return out;
+}
+
+// One testcase per check, from the word results.json holds for it (CheckResult::judgement).
 std::vector<Case> cases_of(const RunResult& run) {
   std::vector<Case> cases;
-  const bool fault_run = !run.fault.empty();
   bool any_must_catch = false;
   for (const auto& c : run.checks) {
     Case k{c.check, Verdict::Passed, {}, measurements_text(c)};
-    const Outcome o = c.outcome();
-    const bool must =
-        std::find(run.must_catch.begin(), run.must_catch.end(), c.check) != run.must_catch.end();
-    if (fault_run && must) {
-      any_must_catch = true;
-      if (o == Outcome::Pass) {
-        k.verdict = Verdict::Failed;
-        k.message = fmt::format("fault '{}' not caught: the check passed", run.fault);
-      } else if (o == Outcome::Error) {
-        k.verdict = Verdict::Errored;
-        k.message = first_bad(c);
-      }
-    } else if (fault_run) {
+    any_must_catch = any_must_catch ||
+                     std::find(run.must_catch.begin(), run.must_catch.end(), c.check) != run.must_catch.end();
+    switch (c.judgement) {
+    case Judgement::Pass:
+      break;
+    case Judgement::Caught:
+      k.body = fmt::format("caught fault '{}'\n{}", run.fault, k.body);
+      break;
+    case Judgement::NotJudged:
       k.verdict = Verdict::Skipped;
-      k.message = fmt::format("not judged in a fault run (fault '{}'; outcome {})", run.fault, to_string(o));
-    } else if (o != Outcome::Pass) {
-      k.verdict = o == Outcome::Fail ? Verdict::Failed : Verdict::Errored;
+      k.message = run.outcome == Outcome::Pass
+                      ? fmt::format("not judged: fault '{}' was caught by {}", run.fault, catchers(run))
+                      : fmt::format("not judged in the run of fault '{}'", run.fault);
+      break;
+    case Judgement::Fail:
+      k.verdict = Verdict::Failed;
+      k.message = run.fault.empty() ? first_bad(c)
+                                    : fmt::format("fault '{}' not caught: the check passed", run.fault);
+      break;
+    case Judgement::Error:
+      k.verdict = Verdict::Errored;
       k.message = first_bad(c);
+      if (k.message.empty()) k.message = "nothing judged: the check has no measurement";
+      break;
     }
     cases.push_back(std::move(k));
   }
-  if (fault_run && !any_must_catch) {
+  if (!run.fault.empty() && !any_must_catch) {
     cases.push_back(Case{"catch " + run.fault,
                          Verdict::Failed,
                          fmt::format("fault '{}' not caught: none of its must_catch checks ran", run.fault),
@@ -116,7 +130,7 @@ std::string to_junit_xml(const CampaignResult& r) {
                     run.index, xml_escape(r.campaign));
     suites += "    <properties>\n";
     suites += fmt::format("      <property name=\"seed\" value=\"{}\"/>\n", run.seed);
-    suites += fmt::format("      <property name=\"outcome\" value=\"{}\"/>\n", to_string(run_outcome(run)));
+    suites += fmt::format("      <property name=\"outcome\" value=\"{}\"/>\n", to_string(run.outcome));
     if (!run.fault.empty())
       suites += fmt::format("      <property name=\"fault\" value=\"{}\"/>\n", xml_escape(run.fault));
     suites += "    </properties>\n";

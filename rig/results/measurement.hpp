@@ -77,12 +77,37 @@ inline constexpr double kCompareEpsilon = 1e-9;
   return Outcome::Pass;
 }
 
+// A check's outcome in its run: the words every output uses (results.json, junit.xml,
+// report.html; docs/campaigns.md "Outcome words"). A nominal run's check passes, fails or
+// errs. In a fault run a named (caught_by) check that failed "caught" the fault; once the
+// fault is caught every other check is "not judged"; when no named check caught it, the
+// named checks that passed read "fail" (the fault went unnoticed) and the others "not judged".
+enum class Judgement { Pass, Fail, Caught, NotJudged, Error };
+
+[[nodiscard]] constexpr const char* to_string(Judgement j) {
+  switch (j) {
+  case Judgement::Pass:
+    return "pass";
+  case Judgement::Fail:
+    return "fail";
+  case Judgement::Caught:
+    return "caught";
+  case Judgement::NotJudged:
+    return "not judged";
+  case Judgement::Error:
+    return "error";
+  }
+  return "error";
+}
+
 // One check's result: its measurements, all of which must pass for the check to pass.
 struct CheckResult {
   std::string check; // the check's name in the campaign
   std::string kind;  // "throughput", "debounce", ...
   std::vector<Measurement> measurements;
   std::vector<Series> series;
+  Judgement judgement = Judgement::Error; // in its run; derived by finalize()
+  // The measurements' outcome: Error when there is none (a check that judged nothing).
   [[nodiscard]] Outcome outcome() const {
     Outcome o = Outcome::Pass;
     for (const auto& m : measurements) {

@@ -23,6 +23,14 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards) {
           fmt::format("merge: shard {} is from campaign '{}' ({}, seed {}), not '{}' ({}, seed {})",
                       s.shard.index, s.campaign, s.device, s.seed, first.campaign, first.device, first.seed));
     }
+    if (s.campaign_sha256 != first.campaign_sha256 || s.tool_version != first.tool_version) {
+      throw std::invalid_argument(
+          fmt::format("merge: shard {} ran campaign file sha256 {} with hilrig {}, shard {} ran sha256 {} "
+                      "with hilrig {}: "
+                      "shards of different campaign revisions or tool versions do not merge",
+                      s.shard.index, s.campaign_sha256, s.tool_version, first.shard.index,
+                      first.campaign_sha256, first.tool_version));
+    }
     if (s.shard.count != count) {
       throw std::invalid_argument(
           fmt::format("merge: shard counts differ ({} and {})", s.shard.count, count));
@@ -38,6 +46,8 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards) {
   CampaignResult out;
   out.campaign = first.campaign;
   out.device = first.device;
+  out.campaign_sha256 = first.campaign_sha256;
+  out.tool_version = first.tool_version;
   out.seed = first.seed;
   out.shard = Shard{0, 1};
   out.started_at = first.started_at;

@@ -95,7 +95,8 @@ json check_json(const CheckResult& c) {
   for (const auto& s : c.series) ss.push_back(json{{"name", s.name}, {"unit", s.unit}, {"values", s.values}});
   return json{{"check", c.check},
               {"kind", c.kind},
-              {"outcome", to_string(c.outcome())},
+              {"outcome", to_string(c.judgement)},
+              {"measured", to_string(c.outcome())},
               {"measurements", ms},
               {"series", ss}};
 }
@@ -128,7 +129,7 @@ json run_to_json(const RunResult& r) {
          {"fault", opt_str(r.fault)},
          {"must_catch", r.must_catch},
          {"error", opt_str(r.error)},
-         {"outcome", to_string(run_outcome(r))},
+         {"outcome", to_string(r.outcome)},
          {"caught", r.fault.empty() ? json(nullptr) : json(caught(r))},
          {"checks", checks},
          {"observations", obs}};
@@ -184,6 +185,8 @@ json document(const CampaignResult& r, bool with_runs) {
          {"version", kResultsVersion},
          {"campaign", r.campaign},
          {"device", r.device},
+         {"campaign_sha256", r.campaign_sha256},
+         {"tool_version", r.tool_version},
          {"seed", r.seed},
          {"shard", json{{"index", r.shard.index}, {"count", r.shard.count}}},
          {"planned_runs", r.planned_runs},
@@ -197,6 +200,8 @@ json document(const CampaignResult& r, bool with_runs) {
                          {"checks", t.checks},
                          {"checks_passed", t.checks_passed},
                          {"checks_failed", t.checks_failed},
+                         {"checks_caught", t.checks_caught},
+                         {"checks_not_judged", t.checks_not_judged},
                          {"checks_errored", t.checks_errored},
                          {"measurements", t.measurements},
                          {"faults", t.faults},
@@ -224,6 +229,8 @@ CampaignResult campaign_from_json(const json& j) {
   CampaignResult r;
   r.campaign = get<std::string>(j, "campaign", w);
   r.device = get<std::string>(j, "device", w);
+  r.campaign_sha256 = get<std::string>(j, "campaign_sha256", w);
+  r.tool_version = get<std::string>(j, "tool_version", w);
   r.seed = get<std::uint64_t>(j, "seed", w);
   const json& shard = field(j, "shard", w);
   r.shard = Shard{get<std::uint32_t>(shard, "index", "shard"), get<std::uint32_t>(shard, "count", "shard")};
@@ -238,6 +245,8 @@ CampaignResult campaign_from_json(const json& j) {
   finalize(r);
   return r;
 }
+
+const char* tool_version() { return HILRIG_VERSION; }
 
 std::string to_json_text(const CampaignResult& r) {
   // The same bytes as to_json(r).dump(2), but each run's DOM is built and dumped alone and

@@ -13,7 +13,10 @@
 namespace hilrig::rig {
 
 inline constexpr const char* kResultsFormat = "hilrig-results";
-inline constexpr int kResultsVersion = 1;
+inline constexpr int kResultsVersion = 2; // 2: outcome words, campaign_sha256, tool_version
+
+// The hilrig version (the CMake project's), written into every results.json.
+[[nodiscard]] const char* tool_version();
 
 [[nodiscard]] nlohmann::json to_json(const CampaignResult& result);
 // Throws std::runtime_error naming the first missing or mistyped field. Derived fields

@@ -14,13 +14,25 @@ constexpr double kWidth = 520.0;
 constexpr double kLeft = 10.0;
 constexpr double kPlot = 500.0;
 
-const char* outcome_colour(Outcome o) {
-  return o == Outcome::Pass ? "#1a7f37" : o == Outcome::Fail ? "#cf222e" : "#9a6700";
+const char* outcome_colour(Judgement j) {
+  switch (j) {
+  case Judgement::Pass:
+    return "#1a7f37";
+  case Judgement::Fail:
+    return "#cf222e";
+  case Judgement::Caught:
+    return "#0969da";
+  case Judgement::NotJudged:
+    return "#57606a";
+  case Judgement::Error:
+    return "#9a6700";
+  }
+  return "#9a6700";
 }
 
 } // namespace
 
-std::string timing_diagram_svg(const Measurement& m) {
+std::string timing_diagram_svg(const Measurement& m, Judgement shown) {
   if (!m.window || !m.at) return {};
   const double t0 = static_cast<double>(m.window->begin.count());
   const double w0 = 0.0;
@@ -42,13 +54,13 @@ std::string timing_diagram_svg(const Measurement& m) {
       fmt::format("<line x1=\"{}\" y1=\"42\" x2=\"{}\" y2=\"42\" stroke=\"#57606a\"/>", kLeft, kLeft + kPlot);
   s += fmt::format(
       "<line x1=\"{0:.1f}\" y1=\"6\" x2=\"{0:.1f}\" y2=\"46\" stroke=\"{1}\" stroke-width=\"2\"/>", x(e),
-      outcome_colour(m.outcome));
+      outcome_colour(shown));
   s += fmt::format(
       "<text x=\"{:.1f}\" y=\"58\" font-size=\"10\" text-anchor=\"middle\">window {:.3f}..{:.3f} us</text>",
       (x(w0) + x(w1)) / 2.0, w0 / 1e3, w1 / 1e3);
   s += fmt::format(
       "<text x=\"{:.1f}\" y=\"68\" font-size=\"10\" text-anchor=\"middle\" fill=\"{}\">edge {:.3f} us</text>",
-      x(e), outcome_colour(m.outcome), e / 1e3);
+      x(e), outcome_colour(shown), e / 1e3);
   s += "</svg>";
   return s;
 }

@@ -209,6 +209,13 @@ end = "10ms"
 model = "pls2700"
 [dut.params]
 model = "2742"
+[[wiring]]
+rig = "ls1"
+board = "OUT1"
+[[check]]
+kind = "pulse_width"
+name = "out"
+line = "ls1"
 )";
 
 TEST(CampaignLimits, UnknownSeries2700ModelIsBadInputNotARigFault) {

@@ -34,9 +34,15 @@ TEST(CampaignResult, TotalsMatrixAndVerdictWorkedByHand) {
   // Runs: 0 pass, 1 pass (caught), 2 pass (caught), 3 fail (missed).
   EXPECT_EQ(c.totals.runs_passed, 3U);
   EXPECT_EQ(c.totals.runs_failed, 1U);
-  // Checks: 2 per run = 8; throughput fails in runs 1 and 2 (35 us > 20), the rest pass.
+  // Checks: 2 per run = 8, counted by their word. Throughput fails in runs 1 and 2 (35 us >
+  // 20): it caught the fault there (caught, not fail). In run 3 it passed, so the fault went
+  // unnoticed: fail. Every advance check of a fault run is not judged; run 0's two pass.
   EXPECT_EQ(c.totals.checks, 8U);
-  EXPECT_EQ(c.totals.checks_failed, 2U);
+  EXPECT_EQ(c.totals.checks_passed, 2U);
+  EXPECT_EQ(c.totals.checks_failed, 1U);
+  EXPECT_EQ(c.totals.checks_caught, 2U);
+  EXPECT_EQ(c.totals.checks_not_judged, 3U);
+  EXPECT_EQ(c.totals.checks_errored, 0U);
   EXPECT_EQ(c.totals.measurements, 12U); // 3 per run
   // Matrix sorted by fault: glitch in runs 2, 3 caught once -> not caught; slow_output caught.
   ASSERT_EQ(c.faults.size(), 2U);

@@ -71,11 +71,11 @@ TEST(Svg, TimingDiagramPlacesTheEdgeInsideTheWindowBand) {
   m.window = TraceWindow{Nanos{0}, Nanos{2000}};
   m.at = Nanos{1000};
   m.outcome = Outcome::Pass;
-  const std::string svg = timing_diagram_svg(m);
+  const std::string svg = timing_diagram_svg(m, Judgement::Pass);
   EXPECT_NE(svg.find("<rect x=\"135.0\" y=\"12\" width=\"250.0\""), std::string::npos) << svg;
   EXPECT_NE(svg.find("x1=\"260.0\""), std::string::npos) << svg;
   m.at.reset();
-  EXPECT_TRUE(timing_diagram_svg(m).empty());
+  EXPECT_TRUE(timing_diagram_svg(m, Judgement::Pass).empty());
 }
 
 TEST(Svg, HistogramBinsWorkedByHand) {
