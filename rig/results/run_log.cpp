@@ -37,7 +37,13 @@ RunLog::~RunLog() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-void RunLog::append(const RunResult& run) { write_record(json{{"run", run_to_json(run)}}.dump() + "\n"); }
+void RunLog::append(const RunResult& run) {
+  // The record carries the words finalize() would derive, so a log read on its own agrees.
+  RunResult judged = run;
+  judged.outcome = run_outcome(judged);
+  for (auto& c : judged.checks) c.judgement = judgement_in(judged, c);
+  write_record(json{{"run", run_to_json(judged)}}.dump() + "\n");
+}
 
 void RunLog::write_record(const std::string& line) {
   // One write() of the whole line: a short write only happens at a size limit or a full disk,
