@@ -14,6 +14,7 @@
 #include "rig/cli/run_command.hpp"
 #include "rig/cli/serve_command.hpp"
 #include "rig/cli/synth_command.hpp"
+#include "rig/cli/usage_hints.hpp"
 #include "rig/results/results_json.hpp"
 
 int main(int argc, char** argv) {
@@ -27,6 +28,10 @@ int main(int argc, char** argv) {
   hilrig::cli::add_merge_command(app);
   hilrig::cli::add_serve_command(app);
   hilrig::cli::add_latency_command(app);
+  if (const auto problem = hilrig::cli::unknown_word(app, argc, argv)) {
+    std::fprintf(stderr, "%s\n", problem->c_str());
+    return 2; // bad input, as every usage error
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {

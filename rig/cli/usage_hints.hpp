@@ -1,0 +1,18 @@
+#pragma once
+// What CLI11 says of a mistyped command line is misleading: `hilrig rn` is "the following
+// argument was not expected", `hilrig run x.toml --ot d` is "--out is required". Before CLI11
+// parses, an unknown subcommand or option is named with the closest valid ones.
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace hilrig::cli {
+
+// "hilrig: rn: no such command (did you mean \"run\"?); commands: ..." or
+// "hilrig run: --ot: no such option (did you mean \"--out\"?)"; nullopt when the words are
+// all known (CLI11 then parses them and judges the rest).
+[[nodiscard]] std::optional<std::string> unknown_word(const CLI::App& app, int argc, const char* const* argv);
+
+} // namespace hilrig::cli
