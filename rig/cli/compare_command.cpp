@@ -35,6 +35,17 @@ int run_compare(const CompareArgs& a) {
     std::fprintf(stderr, "hilrig compare: %s\n", e.what());
     return kBadInput;
   }
+  // A baseline is the same campaign on the same device: anything else would compare strangers
+  // measurement by measurement and call the difference a drift.
+  if (base.campaign != now.campaign || base.device != now.device) {
+    std::fputs(
+        fmt::format("hilrig compare: {} is campaign \"{}\" on {}, {} is campaign \"{}\" on {}: a baseline "
+                    "must be the same campaign on the same device\n",
+                    a.base, base.campaign, base.device, a.now, now.campaign, now.device)
+            .c_str(),
+        stderr);
+    return kBadInput;
+  }
   const rig::Comparison c = rig::compare_results(base, now, options);
   std::fputs(rig::format_comparison(c, a.all).c_str(), stdout);
   return c.regression() ? kCheckFailed : kPassed;

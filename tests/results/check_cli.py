@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """`hilrig compare` and `hilrig merge` exit codes on the sample results (written by
 write_sample_results): merge of the one shard equals the input, compare against itself
-passes (0), a drift beyond 5 % is a regression (1), unreadable input is bad input (2)."""
+passes (0), a drift beyond 5 % is a regression (1), unreadable input and a baseline of another
+campaign or device are bad input (2)."""
 import json
 import os
 import subprocess
@@ -43,6 +44,18 @@ if "DRIFT" not in r.stdout:
 expect(0, "compare", base, drifted, "--threshold", "max=1")
 expect(2, "compare", base, os.path.join(sample, "absent.json"))
 expect(2, "compare", base, drifted, "--threshold", "max")
+
+# A baseline of another campaign, or of the same campaign on another device, is refused (2).
+for key, value in (("campaign", "another-campaign"), ("device", "smd23e")):
+    with open(base) as f:
+        other = json.load(f)
+    other[key] = value
+    stranger = os.path.join(sample, f"other-{key}.json")
+    with open(stranger, "w") as f:
+        json.dump(other, f)
+    r = expect(2, "compare", stranger, base)
+    if "a baseline must be the same campaign on the same device" not in r.stderr or value not in r.stderr:
+        problems.append(f"another {key}: no clear refusal:\n{r.stderr}")
 
 for p in problems:
     print(p)
