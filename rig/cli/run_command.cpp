@@ -252,7 +252,12 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("file", options->file, "the campaign file (.toml)")->required();
   cmd->add_option("--out", options->out, "directory for results.json, junit.xml, report.html, trace.vcd")
       ->required();
-  cmd->add_option("--seed", options->seed, "base seed (overrides [campaign] seed)");
+  cmd->add_option("--seed", options->seed, "base seed (overrides [campaign] seed; 0 or more)")
+      ->check(CLI::Validator(
+          [](const std::string& v) {
+            return v.starts_with("-") ? std::string("a seed is 0 or more (an unsigned 64-bit integer)") : "";
+          },
+          "SEED>=0"));
   cmd->add_option("--shard", options->shard, "K/N: run only the runs whose index mod N is K (0-based)");
   cmd->add_option("--host-link", options->host_link,
                   "how host actions reach the DUT: in-process (default) or modbus-rtu-pty (Modbus RTU on a "

@@ -33,8 +33,11 @@ std::string_view nominal_if_none(const std::string& fault) {
   return fault == "none" ? std::string_view("nominal") : std::string_view(fault);
 }
 
+// Names the choices: a person who typed a fault wrong needs the list, not a second command.
 [[noreturn]] void unknown_fault(std::string_view device, const std::string& fault) {
-  throw std::invalid_argument("unknown fault variant '" + fault + "' for " + std::string(device));
+  const ServedDevice* d = find_served_device(device);
+  throw std::invalid_argument("unknown fault variant '" + fault + "' for " + std::string(device) +
+                              (d != nullptr ? " (one of: " + std::string(d->faults) + ")" : std::string()));
 }
 
 ServedModel build_smd23e(Scheduler& scheduler, const ServeModelOptions& o) {

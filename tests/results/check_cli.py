@@ -57,6 +57,16 @@ for key, value in (("campaign", "another-campaign"), ("device", "smd23e")):
     if "a baseline must be the same campaign on the same device" not in r.stderr or value not in r.stderr:
         problems.append(f"another {key}: no clear refusal:\n{r.stderr}")
 
+# A negative --seed is refused before anything runs; serve --fault names the choices.
+campaign = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "campaigns", "reference",
+                        "reference_pls_pass.toml")
+r = expect(2, "run", campaign, "--out", os.path.join(sample, "negative-seed"), "--seed", "-1")
+if "a seed is 0 or more" not in r.stderr or os.path.exists(os.path.join(sample, "negative-seed", "results.json")):
+    problems.append("--seed -1 not refused clearly:\n" + r.stderr)
+r = expect(2, "serve", "smd23e", "--pty", "--fault", "lost-step")
+if "(one of: none, wrong-acceleration, lost-steps, ignored-limit, late-stop)" not in r.stderr:
+    problems.append("serve --fault does not list the choices:\n" + r.stderr)
+
 for p in problems:
     print(p)
 sys.exit(1 if problems else 0)
