@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "rig/cli/check_command.hpp"
 #include "rig/cli/compare_command.hpp"
 #include "rig/cli/latency_command.hpp"
 #include "rig/cli/list_command.hpp"
@@ -23,6 +24,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("hilrig ") + hilrig::rig::tool_version());
   hilrig::cli::add_synth_command(app);
   hilrig::cli::add_run_command(app);
+  hilrig::cli::add_check_command(app);
   hilrig::cli::add_list_command(app);
   hilrig::cli::add_compare_command(app);
   hilrig::cli::add_merge_command(app);

@@ -25,6 +25,8 @@ packages=(
   can-utils           # candump/log2asc/canplayer: read the rig's CAN logs
   rt-tests            # cyclictest: the peer for the RT loop's latency
   python3             # test helpers: an independent VCD/JUnit reader
+  libxml2-utils       # xmllint: junit.xml validated against Jenkins' JUnit schema (tests/results)
+  parallel            # GNU parallel: docs/ci.md's sharding recipe, run as a test
   clang-format        # the committed .clang-format
   clang               # the fuzzers' compiler (build-fuzz/, make fuzz-smoke and make fuzz)
   libclang-rt-14-dev  # libFuzzer and the ASan/UBSan runtimes clang links the fuzzers with

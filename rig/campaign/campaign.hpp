@@ -135,7 +135,8 @@ struct CheckSpec {
   std::string kind;
   std::string name;
   checks::CheckParams params;
-  Nanos probe_at{0}; // bisection checks (debounce): when each probe pulse starts
+  std::vector<std::string> tags; // `tags = [...]`: what `hilrig run --tag T` selects by
+  Nanos probe_at{0};             // bisection checks (debounce): when each probe pulse starts
   SourcePos where;
 };
 

@@ -547,6 +547,16 @@ private:
         for (const auto& k : checks::check_kinds()) names.push_back(k.name);
         r.fail("kind", fmt::format("a check kind: one of {}", join(names)));
       }
+      if (const toml::node* tags = r.node("tags")) {
+        const auto* arr = tags->as_array();
+        if (arr == nullptr) r.fail("tags", "an array of tag names, e.g. [\"nightly\", \"timing\"]");
+        for (const toml::node& n : *arr) {
+          const auto* tag = n.as_string();
+          if (tag == nullptr || tag->get().empty())
+            fail(pos_of(n), r.key("tags"), "a tag name (a non-empty string)");
+          c.tags.push_back(tag->get());
+        }
+      }
       if (kind->needs_bisection) {
         c.probe_at = r.opt_duration("probe_at").value_or(Nanos{0});
         if (c.probe_at < Nanos{0} || c.probe_at >= s.end) r.fail("probe_at", "a time within the run");
@@ -554,7 +564,8 @@ private:
       nlohmann::json table = nlohmann::json::object();
       for (const auto& [k, v] : *t) {
         const std::string key(k.str());
-        if (key == "kind" || key == "name" || (kind->needs_bisection && key == "probe_at")) continue;
+        if (key == "kind" || key == "name" || key == "tags" || (kind->needs_bisection && key == "probe_at"))
+          continue;
         (void)r.node(key);
         table[key] = to_json(v);
         if (is_line_param(key)) {

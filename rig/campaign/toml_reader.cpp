@@ -1,5 +1,7 @@
 #include "rig/campaign/toml_reader.hpp"
 
+#include "core/did_you_mean.hpp"
+
 #include <cmath>
 
 #include <fmt/format.h>
@@ -160,9 +162,11 @@ void TableReader::finish() const {
     if (asked_.contains(k.str())) continue;
     std::string known;
     for (const auto& a : asked_) known += (known.empty() ? "" : ", ") + a;
+    const std::vector<std::string> valid(asked_.begin(), asked_.end());
     throw CampaignError(file_, pos_of(k.source()), key(k.str()),
                         known.empty() ? "unknown key"
-                                      : fmt::format("unknown key (expected one of: {})", known));
+                                      : fmt::format("unknown key (expected one of: {}){}", known,
+                                                    did_you_mean(k.str(), valid)));
   }
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "core/did_you_mean.hpp"
 #include "rig/checks/word_bits.hpp"
 
 namespace hilrig::checks {
@@ -577,8 +578,13 @@ CheckParams build_check_params(const CheckKind& kind, std::string_view check, co
                                  [&](const ParamSpec& s) { return s.name == key; });
     if (it == kind.params.end()) {
       std::string names;
-      for (const auto& s : kind.params) names += (names.empty() ? "" : ", ") + s.name;
-      throw ParamError(key, fmt::format("a parameter of {} (one of {})", kind.name, names));
+      std::vector<std::string> valid;
+      for (const auto& s : kind.params) {
+        names += (names.empty() ? "" : ", ") + s.name;
+        valid.push_back(s.name);
+      }
+      throw ParamError(
+          key, fmt::format("a parameter of {} (one of {}){}", kind.name, names, did_you_mean(key, valid)));
     }
     if (!type_ok(value, it->type) || !value_ok(value, *it))
       throw ParamError(key, expected_text(it->type, it->range));

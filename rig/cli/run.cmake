@@ -3,5 +3,8 @@ hilrig_library(hilrig_cli_run
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/run_command.cpp
     ${CMAKE_CURRENT_LIST_DIR}/output_dir.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/run_progress.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/suite_files.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/wall_clock.cpp
     ${CMAKE_CURRENT_LIST_DIR}/stop_signals.cpp
   DEPS hilrig_campaign hilrig_results hilrig_cli_serve hilrig_hardware CLI11::CLI11 fmt::fmt Boost::boost Threads::Threads)

@@ -2,28 +2,40 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include <fmt/format.h>
 
+#include "core/did_you_mean.hpp"
 #include "core/trace.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
 #include "rig/campaign/modbus_host_link.hpp"
 #include "rig/cli/exit_status.hpp"
 #include "rig/cli/output_dir.hpp"
+#include "rig/cli/run_progress.hpp"
 #include "rig/cli/serve_devices.hpp"
 #include "rig/cli/stop_signals.hpp"
+#include "rig/cli/suite_files.hpp"
+#include "rig/cli/wall_clock.hpp"
 #include "rig/hardware/hardware_backend.hpp"
 #include "rig/results/junit.hpp"
 #include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
 #include "rig/results/run_log.hpp"
+#include "rig/results/suite_index.hpp"
 
 namespace hilrig::cli {
 
@@ -92,14 +104,16 @@ int choose_backend(const RunOptions& o, campaign::Campaign& c, std::optional<har
       for (campaign::Scenario& s : points) s.dut.backend = "virtual";
     return kPassed;
   }
+  // Hardware asked for (by --backend or by the campaign) without saying which rig: the
+  // command line is incomplete, whichever asked, so it is bad input and nothing runs.
   if (o.rig.empty()) {
-    if (o.backend == "hardware") {
+    if (o.backend == "hardware")
       err << "hilrig run: --backend hardware needs --rig RIG.toml (docs/rig-config.md)\n";
-      return kBadInput;
-    }
-    err << fmt::format("hilrig run: rig fault: [dut] backend \"{}\" runs on a rig: give --rig RIG.toml\n",
-                       asked);
-    return kRigFault;
+    else
+      err << fmt::format("hilrig run: {}: [dut] backend \"{}\" runs on a rig: it needs --rig RIG.toml "
+                         "(docs/rig-config.md), or --backend virtual\n",
+                         c.file, asked);
+    return kBadInput;
   }
   try {
     rig = hardware::load_rig_config(o.rig);
@@ -127,6 +141,300 @@ std::optional<std::pair<std::size_t, std::size_t>> parse_shard(const std::string
   return std::make_pair(k, n);
 }
 
+namespace {
+
+// A campaign read, checked, planned and placed on its backend: nothing has run yet.
+struct Prepared {
+  campaign::Campaign c;
+  std::uint64_t seed = 0;
+  std::pair<std::size_t, std::size_t> shard{0, 1};
+  std::vector<campaign::RunSpec> runs;
+  campaign::HostLinkFactory link;
+  std::optional<hardware::RigConfig> rig;
+};
+
+// --only and --tag: names this campaign does not have are bad input (with the closest names).
+// Returns false (message on err) when the selection leaves nothing to run.
+bool select(const RunOptions& o, campaign::Campaign& c, bool in_suite, std::ostream& err) {
+  if (o.checks.all()) return true;
+  bool known = true;
+  if (!in_suite) {
+    const std::vector<std::string> names = campaign::check_names(c);
+    for (const std::string& n : o.checks.only)
+      if (std::find(names.begin(), names.end(), n) == names.end()) {
+        err << fmt::format("hilrig run: --only {}: {} has no check of this name{}\n", n, c.file,
+                           did_you_mean(n, names));
+        known = false;
+      }
+    const std::vector<std::string> tags = campaign::check_tags(c);
+    for (const std::string& t : o.checks.tags)
+      if (std::find(tags.begin(), tags.end(), t) == tags.end()) {
+        err << fmt::format("hilrig run: --tag {}: {} has no check with this tag{}\n", t, c.file,
+                           did_you_mean(t, tags));
+        known = false;
+      }
+  }
+  // In a suite, a campaign the selection does not touch is left out.
+  return known && campaign::select_checks(c, o.checks) > 0;
+}
+
+// Everything a run checks before anything moves. Returns an exit status (kPassed: go on).
+int prepare(const RunOptions& o, const std::string& file, bool in_suite, Prepared& p, bool& selected,
+            std::ostream& err) {
+  const auto shard = parse_shard(o.shard);
+  if (!shard) {
+    err << fmt::format("hilrig run: --shard {}: expected K/N with 0 <= K < N (e.g. 0/4)\n", o.shard);
+    return kBadInput;
+  }
+  p.shard = *shard;
+  try {
+    p.c = campaign::load_campaign(file);
+  } catch (const campaign::CampaignError& e) {
+    err << e.what() << '\n';
+    return kBadInput;
+  }
+  selected = select(o, p.c, in_suite, err);
+  if (!selected) return in_suite ? kPassed : kBadInput;
+  p.seed = o.seed.value_or(p.c.seed);
+  p.c.runs = campaign::plan_runs(p.c, p.seed);
+  p.runs = campaign::shard(p.c.runs, shard->first, shard->second);
+  std::optional<campaign::HostLinkFactory> link = host_link_for(o, p.c, err);
+  if (!link) return kBadInput;
+  p.link = std::move(*link);
+  return choose_backend(o, p.c, p.rig, err);
+}
+
+// What a campaign's run leaves for the suite: its result (when one was written), the
+// wall-clock facts for junit.xml, and its exit status.
+struct Ran {
+  int status = kPassed;
+  std::optional<rig::CampaignResult> result;
+  rig::JunitClock clock;
+};
+
+// Runs a prepared campaign into dir. The summary goes to out, the rest to err.
+Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, campaign::StopRequest* stop,
+            RunProgress& progress, std::ostream& out, std::ostream& err) {
+  Ran ran;
+  ran.clock.started_at = iso8601_utc(std::chrono::system_clock::now());
+  ran.clock.hostname = host_name();
+  std::optional<OutputDirectory> out_dir;
+  try {
+    out_dir.emplace(dir);
+  } catch (const ForeignOutput& e) {
+    err << "hilrig run: " << e.what() << '\n';
+    ran.status = kBadInput;
+    return ran;
+  } catch (const std::exception& e) {
+    err << "hilrig run: rig fault: " << e.what() << '\n';
+    ran.status = kRigFault;
+    return ran;
+  }
+  try {
+    campaign::Executive exec(p.c, p.rig ? hardware::hardware_backend(*p.rig, p.c.file, o.rig_ports)
+                                        : campaign::RunBackend{});
+    exec.use_host_link(p.link);
+    if (stop != nullptr) exec.stop_on(stop);
+    bool can_used = false;
+    std::size_t failure_traces = 0;
+    std::ofstream can_log;
+    std::chrono::steady_clock::time_point run_start;
+    const auto started = [&](std::size_t, std::size_t, const campaign::RunSpec& run) {
+      progress.started(p.c.name, run);
+      run_start = std::chrono::steady_clock::now();
+    };
+    const auto sink = [&](const campaign::RunSpec& run, const campaign::RunOutput& output) {
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
+      ran.clock.run_seconds[run.index] = wall;
+      progress.finished(p.c.name, run, rig::run_outcome(output.result), wall);
+      if (!output.trace) return;
+      if (&run == &p.runs.front()) write_trace_files(dir, "trace", *output.trace);
+      if (rig::run_outcome(output.result) != rig::Outcome::Pass && failure_traces < kMaxFailureTraces) {
+        ++failure_traces;
+        write_trace_files(dir, fmt::format("trace-run{}", run.index), *output.trace);
+      }
+      if (!output.trace->can_frames().empty()) {
+        if (!can_used) can_log.open(dir / "can.log", std::ios::binary);
+        can_used = true;
+        // Virtual time starts at 0, and log2asc takes a frame at second 0 for the start of a new
+        // log: stamp frames as virtual time after a fixed epoch (2000-01-01T00:00:00Z), which
+        // keeps the log deterministic and readable by can-utils.
+        CandumpOptions options;
+        options.epoch = seconds(946'684'800);
+        write_candump(*output.trace, can_log, options);
+        can_log.flush();
+        if (!can_log) throw campaign::RigFault(fmt::format("cannot write {}", (dir / "can.log").string()));
+      }
+    };
+    const rig::Shard part{static_cast<std::uint32_t>(p.shard.first),
+                          static_cast<std::uint32_t>(p.shard.second)};
+    // Each run is appended to the run log as it finishes (and not kept), so a campaign costs the
+    // same per run however long it is, and a crash or SIGKILL leaves every finished run; the
+    // log is folded into results.json below.
+    rig::RunLog log(dir / rig::kRunLogName, exec.planned(p.runs, p.seed, part));
+    const rig::CampaignResult done = exec.run_all(p.runs, p.seed, part, started, sink,
+                                                  [&](const rig::RunResult& run) { log.append(run); });
+    rig::CampaignResult result = rig::read_run_log(log.path());
+    result.interrupted = done.interrupted;
+    rig::finalize(result);
+    rig::write_results_file(dir / "results.json", result);
+    rig::write_file_atomically(dir / "junit.xml", rig::to_junit_xml(result, ran.clock));
+    rig::write_file_atomically(dir / "report.html", rig::to_report_html(result));
+
+    const auto& t = result.totals;
+    out << fmt::format("{}: {} run(s), {} passed, {} failed, {} errored; faults caught {}/{}; verdict {}\n",
+                       p.c.name, t.runs, t.runs_passed, t.runs_failed, t.runs_errored, t.faults_caught,
+                       t.faults, rig::to_string(result.verdict));
+    for (const auto& run : result.runs)
+      if (!run.error.empty())
+        err << fmt::format("run {} ({}): rig fault: {}\n", run.index, run.name, run.error);
+    if (result.interrupted) {
+      err << interruption_text(result, dir.string()) << '\n';
+      ran.status = kRigFault;
+    } else if (std::any_of(result.runs.begin(), result.runs.end(),
+                           [](const rig::RunResult& r) { return !r.error.empty(); })) {
+      ran.status = kRigFault;
+    } else {
+      ran.status = result.verdict == rig::Outcome::Pass ? kPassed : kCheckFailed;
+    }
+    ran.result = std::move(result);
+  } catch (const std::exception& e) {
+    err << "hilrig run: rig fault: " << e.what() << '\n';
+    ran.status = kRigFault;
+  }
+  return ran;
+}
+
+RunProgress::Mode progress_mode(const RunOptions& o) {
+  if (o.progress_lines) return RunProgress::Mode::Lines;
+  return o.progress ? RunProgress::Mode::InPlace : RunProgress::Mode::Quiet;
+}
+
+const char* status_word(int status) {
+  switch (status) {
+  case kPassed:
+    return "passed";
+  case kCheckFailed:
+    return "a check failed";
+  case kBadInput:
+    return "bad input";
+  default:
+    return "rig fault";
+  }
+}
+
+// A suite: every campaign read and checked, then run (N at a time) into OUT/<subdir>/, then
+// the aggregated junit.xml and index report.html.
+int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
+  std::vector<SuiteEntry> entries;
+  try {
+    entries = collect_campaigns(o.files);
+  } catch (const std::invalid_argument& e) {
+    err << "hilrig run: " << e.what() << '\n';
+    return kBadInput;
+  }
+  // Every campaign is checked before the first one runs: one bad file stops the suite with
+  // every problem listed, as a single campaign stops before its first run.
+  std::vector<std::unique_ptr<Prepared>> prepared;
+  std::vector<SuiteEntry> chosen;
+  int status = kPassed;
+  for (const SuiteEntry& e : entries) {
+    auto p = std::make_unique<Prepared>();
+    bool selected = true;
+    status = worst_status(status, prepare(o, e.file, true, *p, selected, err));
+    if (!selected) continue;
+    prepared.push_back(std::move(p));
+    chosen.push_back(e);
+  }
+  if (status != kPassed) return status;
+  if (prepared.empty()) {
+    std::vector<std::string> names;
+    for (const SuiteEntry& e : entries) {
+      const campaign::Campaign c = campaign::load_campaign(e.file);
+      for (auto& n : campaign::check_names(c)) names.push_back(std::move(n));
+      for (auto& t : campaign::check_tags(c)) names.push_back(std::move(t));
+    }
+    std::string what;
+    for (const std::string& n : o.checks.only) what += fmt::format(" --only {}{}", n, did_you_mean(n, names));
+    for (const std::string& t : o.checks.tags) what += fmt::format(" --tag {}{}", t, did_you_mean(t, names));
+    err << fmt::format("hilrig run:{}: no campaign of the suite has such a check\n", what);
+    return kBadInput;
+  }
+
+  std::size_t total_runs = 0;
+  for (const auto& p : prepared) total_runs += p->runs.size();
+  RunProgress progress(err, progress_mode(o), total_runs, true);
+  campaign::StopRequest stop;
+  std::optional<StopSignals> signals;
+  if (o.handle_signals) signals.emplace(stop);
+
+  // Each campaign writes its own directory and its messages into its own buffers, printed in
+  // suite order as soon as every campaign before it is done: the same text for any --jobs.
+  const std::size_t n = prepared.size();
+  std::vector<Ran> ran(n);
+  std::vector<std::ostringstream> outs(n);
+  std::vector<std::ostringstream> errs(n);
+  std::vector<bool> finished(n, false);
+  std::size_t printed = 0;
+  std::mutex print_mutex;
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t i = next++; i < n; i = next++) {
+      if (stop.requested()) {
+        errs[i] << fmt::format("hilrig run: {}: not run (stopped by {})\n", chosen[i].file, stop.reason());
+        ran[i].status = kRigFault;
+      } else {
+        ran[i] = execute(o, *prepared[i], o.out / chosen[i].subdir, &stop, progress, outs[i], errs[i]);
+      }
+      const std::lock_guard lock(print_mutex);
+      finished[i] = true;
+      for (; printed < n && finished[printed]; ++printed) {
+        err << errs[printed].str() << std::flush;
+        out << outs[printed].str() << std::flush;
+      }
+    }
+  };
+  const std::size_t jobs = std::clamp<std::size_t>(o.jobs, 1, n);
+  std::vector<std::thread> threads;
+  for (std::size_t j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  progress.close();
+  signals.reset();
+
+  std::vector<rig::JunitCampaign> junit;
+  std::vector<rig::SuiteRow> rows;
+  for (std::size_t i = 0; i < n; ++i) {
+    status = worst_status(status, ran[i].status);
+    rig::SuiteRow row{chosen[i].file, chosen[i].subdir, ran[i].status, ran[i].result, {}};
+    if (!ran[i].result) row.message = "no results: see the command's messages";
+    rows.push_back(std::move(row));
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (rows[i].result) junit.push_back({&*rows[i].result, chosen[i].file, ran[i].clock});
+  const std::string title = "hilrig suite: " + [&] {
+    std::string names;
+    for (const std::string& f : o.files) names += (names.empty() ? "" : " ") + f;
+    return names;
+  }();
+  try {
+    rig::write_file_atomically(o.out / "junit.xml", rig::to_junit_suite_xml(title, junit));
+    rig::write_file_atomically(o.out / "report.html", rig::to_suite_index_html(title, rows, status));
+  } catch (const std::exception& e) {
+    err << "hilrig run: rig fault: " << e.what() << '\n';
+    return kRigFault;
+  }
+  std::size_t by_status[4] = {0, 0, 0, 0};
+  for (const Ran& r : ran) ++by_status[std::clamp(r.status, 0, 3)];
+  out << fmt::format("suite: {} campaign(s), {} passed, {} with a failed check, {} rig fault; exit {} ({})\n",
+                     n, by_status[kPassed], by_status[kCheckFailed], by_status[kRigFault], status,
+                     status_word(status));
+  out << fmt::format("report: {}\n", (o.out / "report.html").string());
+  return status;
+}
+
+} // namespace
+
 std::string interruption_text(const rig::CampaignResult& result, const std::string& out_dir) {
   // The signal stopped a run in the middle, or landed between two runs (the run before it
   // finished whole and the next never started).
@@ -139,118 +447,49 @@ std::string interruption_text(const rig::CampaignResult& result, const std::stri
                      out_dir);
 }
 
-int run_campaign(const RunOptions& o, std::ostream& err) {
-  const auto shard = parse_shard(o.shard);
-  if (!shard) {
-    err << fmt::format("hilrig run: --shard {}: expected K/N with 0 <= K < N (e.g. 0/4)\n", o.shard);
-    return kBadInput;
-  }
-  campaign::Campaign c;
-  try {
-    c = campaign::load_campaign(o.file);
-  } catch (const campaign::CampaignError& e) {
-    err << e.what() << '\n';
-    return kBadInput;
-  }
-  const std::uint64_t seed = o.seed.value_or(c.seed);
-  c.runs = campaign::plan_runs(c, seed);
-  const std::vector<campaign::RunSpec> runs = campaign::shard(c.runs, shard->first, shard->second);
-  const std::optional<campaign::HostLinkFactory> link = host_link_for(o, c, err);
-  if (!link) return kBadInput;
-  std::optional<hardware::RigConfig> rig;
-  if (const int status = choose_backend(o, c, rig, err); status != kPassed) return status;
+int worst_status(int a, int b) {
+  // Exit statuses rank by how much of the evidence can be trusted: a rig fault (3) means a run
+  // did not happen as planned, bad input (2) that nothing ran, a failed check (1) a real verdict.
+  return std::max(a, b);
+}
 
-  std::optional<OutputDirectory> out_dir;
-  try {
-    out_dir.emplace(o.out);
-  } catch (const ForeignOutput& e) {
-    err << "hilrig run: " << e.what() << '\n';
-    return kBadInput;
-  } catch (const std::exception& e) {
-    err << "hilrig run: rig fault: " << e.what() << '\n';
-    return kRigFault;
-  }
-  try {
-    campaign::Executive exec(c, rig ? hardware::hardware_backend(*rig, c.file, o.rig_ports)
-                                    : campaign::RunBackend{});
-    exec.use_host_link(*link);
-    campaign::StopRequest stop;
-    std::optional<StopSignals> signals;
-    if (o.handle_signals) {
-      signals.emplace(stop);
-      exec.stop_on(&stop);
-    }
-    bool can_used = false;
-    std::size_t failure_traces = 0;
-    std::ofstream can_log;
-    const auto progress = [&](std::size_t done, std::size_t total, const campaign::RunSpec& run) {
-      if (o.progress)
-        err << fmt::format("\r[{}/{}] run {} {}\x1b[K", done + 1, total, run.index, run.label) << std::flush;
-      else if (o.progress_lines)
-        err << fmt::format("[{}/{}] run {} {}\n", done + 1, total, run.index, run.label) << std::flush;
-    };
-    const auto sink = [&](const campaign::RunSpec& run, const campaign::RunOutput& out) {
-      if (!out.trace) return;
-      if (&run == &runs.front()) write_trace_files(o.out, "trace", *out.trace);
-      if (rig::run_outcome(out.result) != rig::Outcome::Pass && failure_traces < kMaxFailureTraces) {
-        ++failure_traces;
-        write_trace_files(o.out, fmt::format("trace-run{}", run.index), *out.trace);
-      }
-      if (!out.trace->can_frames().empty()) {
-        if (!can_used) can_log.open(o.out / "can.log", std::ios::binary);
-        can_used = true;
-        // Virtual time starts at 0, and log2asc takes a frame at second 0 for the start of a new
-        // log: stamp frames as virtual time after a fixed epoch (2000-01-01T00:00:00Z), which
-        // keeps the log deterministic and readable by can-utils.
-        CandumpOptions options;
-        options.epoch = seconds(946'684'800);
-        write_candump(*out.trace, can_log, options);
-        can_log.flush();
-        if (!can_log) throw campaign::RigFault(fmt::format("cannot write {}", (o.out / "can.log").string()));
-      }
-    };
-    const rig::Shard part{static_cast<std::uint32_t>(shard->first),
-                          static_cast<std::uint32_t>(shard->second)};
-    // Each run is appended to the run log as it finishes (and not kept), so a campaign costs the
-    // same per run however long it is, and a crash or SIGKILL leaves every finished run; the
-    // log is folded into results.json below.
-    rig::RunLog log(o.out / rig::kRunLogName, exec.planned(runs, seed, part));
-    const rig::CampaignResult done =
-        exec.run_all(runs, seed, part, progress, sink, [&](const rig::RunResult& run) { log.append(run); });
-    rig::CampaignResult result = rig::read_run_log(log.path());
-    result.interrupted = done.interrupted;
-    rig::finalize(result);
-    if (o.progress) err << '\n';
-    rig::write_results_file(o.out / "results.json", result);
-    rig::write_file_atomically(o.out / "junit.xml", rig::to_junit_xml(result));
-    rig::write_file_atomically(o.out / "report.html", rig::to_report_html(result));
+int run_campaign(const RunOptions& o, std::ostream& out, std::ostream& err) {
+  Prepared p;
+  bool selected = true;
+  if (const int status = prepare(o, o.file, false, p, selected, err); status != kPassed) return status;
+  campaign::StopRequest stop;
+  std::optional<StopSignals> signals;
+  if (o.handle_signals) signals.emplace(stop);
+  RunProgress progress(err, progress_mode(o), p.runs.size(), false);
+  const Ran ran = execute(o, p, o.out, o.handle_signals ? &stop : nullptr, progress, out, err);
+  progress.close();
+  signals.reset(); // the outputs are written: SIGINT/SIGTERM act as usual again
+  if (ran.result) out << fmt::format("report: {}\n", (o.out / "report.html").string());
+  return ran.status;
+}
 
-    signals.reset(); // the outputs are written: SIGINT/SIGTERM act as usual again
-    const auto& t = result.totals;
-    err << fmt::format("{}: {} run(s), {} passed, {} failed, {} errored; faults caught {}/{}; verdict {}\n",
-                       c.name, t.runs, t.runs_passed, t.runs_failed, t.runs_errored, t.faults_caught,
-                       t.faults, rig::to_string(result.verdict));
-    for (const auto& run : result.runs)
-      if (!run.error.empty())
-        err << fmt::format("run {} ({}): rig fault: {}\n", run.index, run.name, run.error);
-    if (result.interrupted) {
-      err << interruption_text(result, o.out.string()) << '\n';
-      return kRigFault;
-    }
-    for (const auto& run : result.runs)
-      if (!run.error.empty()) return kRigFault;
-    return result.verdict == rig::Outcome::Pass ? kPassed : kCheckFailed;
-  } catch (const std::exception& e) {
-    err << "hilrig run: rig fault: " << e.what() << '\n';
-    return kRigFault;
+int run_campaign(const RunOptions& o, std::ostream& err) { return run_campaign(o, err, err); }
+
+int run_campaigns(const RunOptions& o, std::ostream& out, std::ostream& err) {
+  if (o.files.size() == 1 && std::filesystem::is_regular_file(o.files.front())) {
+    RunOptions one = o;
+    one.file = o.files.front();
+    return run_campaign(one, out, err);
   }
+  return run_suite(o, out, err);
 }
 
 void add_run_command(CLI::App& app) {
   auto options = std::make_shared<RunOptions>();
-  CLI::App* cmd = app.add_subcommand("run", "run a campaign file and write its results");
-  cmd->add_option("file", options->file, "the campaign file (.toml)")->required();
-  cmd->add_option("--out", options->out, "directory for results.json, junit.xml, report.html, trace.vcd")
+  CLI::App* cmd = app.add_subcommand(
+      "run", "run campaign files (or directories of them: a suite) and write their results");
+  cmd->add_option("files", options->files,
+                  "campaign files (.toml) and directories (every *.toml under one, sorted); one file: its "
+                  "outputs in --out, several: a suite, each campaign in --out/<name>/")
+      ->required();
+  cmd->add_option("--out", options->out,
+                  "directory for results.json, junit.xml, report.html, trace.vcd (a suite: junit.xml, "
+                  "report.html and a directory per campaign)")
       ->required();
   cmd->add_option("--seed", options->seed, "base seed (overrides [campaign] seed; 0 or more)")
       ->check(CLI::Validator(
@@ -259,6 +498,11 @@ void add_run_command(CLI::App& app) {
           },
           "SEED>=0"));
   cmd->add_option("--shard", options->shard, "K/N: run only the runs whose index mod N is K (0-based)");
+  cmd->add_option("--jobs,-j", options->jobs, "campaigns of a suite run at once (outputs as with 1)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--only", options->checks.only, "run only this check (by name; repeatable)");
+  cmd->add_option("--tag", options->checks.tags,
+                  "run only the checks with this tag (`tags = [...]`; repeatable)");
   cmd->add_option("--host-link", options->host_link,
                   "how host actions reach the DUT: in-process (default) or modbus-rtu-pty (Modbus RTU on a "
                   "pty pair, served as `hilrig serve` maps the device)")
@@ -270,11 +514,12 @@ void add_run_command(CLI::App& app) {
          "[dut] backend")
       ->check(CLI::IsMember({std::string("virtual"), std::string("hardware")}));
   cmd->add_option("--rig", options->rig, "the rig config of a hardware run (docs/rig-config.md)");
-  cmd->add_flag("--progress", options->progress_lines,
-                "a progress line per run on stderr, also when it is not a terminal");
+  cmd->add_flag(
+      "--progress", options->progress_lines,
+      "a line per finished run on stderr (outcome, wall time, ETA), also when it is not a terminal");
   cmd->callback([options] {
     options->progress = isatty(fileno(stderr)) != 0;
-    const int status = run_campaign(*options, std::cerr);
+    const int status = run_campaigns(*options, std::cout, std::cerr);
     if (status != kPassed) exit_with(status);
   });
 }

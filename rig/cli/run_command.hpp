@@ -4,6 +4,13 @@
 // shard's first run; also trace-run<i>.vcd for up to 20 runs that did not pass) and
 // can.log when CAN was used. Exit: 0 all passed, 1 a check failed, 2 bad input, 3 a rig fault
 // (also a run stopped by SIGINT/SIGTERM: what ran is written, the stopped run marked interrupted).
+//
+// `hilrig run A.toml B.toml DIR ... --out OUT [--jobs N]`: a suite (a directory stands for
+// every *.toml under it, sorted): each campaign's outputs in OUT/<its name>/, one junit.xml
+// with a testsuite per campaign and an index report.html linking each campaign's report in
+// OUT; exit status the worst of the campaigns' (3 > 2 > 1 > 0). Every campaign is read and
+// checked before the first one runs. --jobs N runs N campaigns at once; their outputs are the
+// same as with --jobs 1 (but for junit.xml's wall-clock attributes).
 
 #include <cstddef>
 #include <cstdint>
@@ -11,10 +18,13 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "rig/campaign/check_selection.hpp"
 #include "rig/campaign/host_link.hpp"
+#include "rig/campaign/stop_request.hpp"
 #include "rig/hardware/rig_ports.hpp"
 #include "rig/results/campaign_result.hpp"
 
@@ -23,10 +33,13 @@ namespace hilrig::cli {
 void add_run_command(CLI::App& app);
 
 struct RunOptions {
-  std::string file;
+  std::string file;               // one campaign (run_campaign)
+  std::vector<std::string> files; // campaign files and directories (run_campaigns)
   std::filesystem::path out;
   std::optional<std::uint64_t> seed; // overrides [campaign] seed
   std::string shard = "0/1";         // K/N, K in 0..N-1: runs whose index mod N is K
+  std::size_t jobs = 1;              // campaigns of a suite run at once
+  campaign::CheckSelection checks;   // --only NAME, --tag T: a subset of the checks
   bool progress = false;             // a progress line on err (a terminal: rewritten in place)
   bool progress_lines = false;       // --progress: one line per run, also when err is not a terminal
   std::string host_link{campaign::kInProcessLink}; // --host-link: in-process or modbus-rtu-pty
@@ -38,12 +51,22 @@ struct RunOptions {
   hardware::RigPortsFactory rig_ports; // set by a caller: the rig's ports instead of its drivers
 };
 
-// Does the whole command and returns its exit status; messages go to err.
+// One campaign (options.file) into options.out. Returns the exit status; the summary line
+// and the report's path go to out, everything else (errors, progress) to err.
+[[nodiscard]] int run_campaign(const RunOptions& options, std::ostream& out, std::ostream& err);
+// The same, with the summary on err as well (callers that read one stream).
 [[nodiscard]] int run_campaign(const RunOptions& options, std::ostream& err);
+
+// The command: options.files as one campaign (a single file: its outputs in options.out, as
+// run_campaign) or as a suite (anything else). Returns the exit status.
+[[nodiscard]] int run_campaigns(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 // What `hilrig run` says of a campaign a signal stopped: how many runs are done, and whether
 // the last was stopped early or the signal landed between runs.
 [[nodiscard]] std::string interruption_text(const rig::CampaignResult& result, const std::string& out_dir);
+
+// The worst of two exit statuses: 3 (rig fault) > 2 (bad input) > 1 (a check failed) > 0.
+[[nodiscard]] int worst_status(int a, int b);
 
 // "K/N" -> (K, N); nullopt unless 0 <= K < N.
 [[nodiscard]] std::optional<std::pair<std::size_t, std::size_t>> parse_shard(const std::string& text);

@@ -86,64 +86,128 @@ std::vector<Case> cases_of(const RunResult& run) {
   return cases;
 }
 
+// Jenkins splits a classname at its last dot into package and class: the campaign is the
+// package, the run the class, so neither may hold a dot of its own (sweep keys and values do).
+std::string dotless(std::string text) {
+  std::replace(text.begin(), text.end(), '.', '_');
+  return text;
+}
+
+std::string seconds_text(double s) { return fmt::format("{:.3f}", s); }
+
+struct Counts {
+  std::size_t tests = 0, failed = 0, errored = 0, skipped = 0;
+  double seconds = 0.0;
+  void add(const Counts& o) {
+    tests += o.tests;
+    failed += o.failed;
+    errored += o.errored;
+    skipped += o.skipped;
+    seconds += o.seconds;
+  }
+};
+
+// The <testcase> elements of one run. The run's checks are judged from one simulation, so
+// each of its testcases carries an equal share of the run's wall time: the times add up.
+std::string testcases_xml(const CampaignResult& r, const RunResult& run, const JunitClock& clock,
+                          Counts& counts) {
+  const auto cases = cases_of(run);
+  const auto wall = clock.run_seconds.find(run.index);
+  const double run_seconds = wall == clock.run_seconds.end() ? 0.0 : wall->second;
+  const double share = cases.empty() ? 0.0 : run_seconds / static_cast<double>(cases.size());
+  counts.seconds += run_seconds;
+  const std::string classname = xml_escape(dotless(r.campaign) + "." + dotless(run.name));
+  std::string body;
+  for (const auto& k : cases) {
+    ++counts.tests;
+    body += fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{}\"", xml_escape(k.name),
+                        classname, seconds_text(share));
+    switch (k.verdict) {
+    case Verdict::Passed:
+      body += k.body.empty() ? "/>\n"
+                             : fmt::format(">\n      <system-out>{}</system-out>\n    </testcase>\n",
+                                           xml_escape(k.body));
+      break;
+    case Verdict::Failed:
+      ++counts.failed;
+      body += fmt::format(">\n      <failure message=\"{}\" type=\"fail\">{}</failure>\n    </testcase>\n",
+                          xml_escape(k.message), xml_escape(k.body));
+      break;
+    case Verdict::Errored:
+      ++counts.errored;
+      body += fmt::format(">\n      <error message=\"{}\" type=\"error\">{}</error>\n    </testcase>\n",
+                          xml_escape(k.message), xml_escape(k.body));
+      break;
+    case Verdict::Skipped:
+      ++counts.skipped;
+      body += fmt::format(">\n      <skipped message=\"{}\"/>\n    </testcase>\n", xml_escape(k.message));
+      break;
+    }
+  }
+  return body;
+}
+
+std::string testsuite_open(const std::string& name, const Counts& c, const JunitClock& clock,
+                           const std::string& id, const std::string& package) {
+  return fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" skipped=\"{}\" "
+                     "time=\"{}\" timestamp=\"{}\" hostname=\"{}\" id=\"{}\" package=\"{}\">\n",
+                     xml_escape(name), c.tests, c.failed, c.errored, c.skipped, seconds_text(c.seconds),
+                     xml_escape(clock.started_at), xml_escape(clock.hostname), xml_escape(id),
+                     xml_escape(package));
+}
+
+std::string property(const std::string& name, const std::string& value) {
+  return fmt::format("      <property name=\"{}\" value=\"{}\"/>\n", xml_escape(name), xml_escape(value));
+}
+
+std::string testsuites_xml(const std::string& name, const Counts& all, const std::string& suites) {
+  return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                     "<testsuites name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" time=\"{}\">\n"
+                     "{}</testsuites>\n",
+                     xml_escape(name), all.tests, all.failed, all.errored, seconds_text(all.seconds), suites);
+}
+
 } // namespace
 
-std::string to_junit_xml(const CampaignResult& r) {
-  const std::string stamp = r.started_at.value_or("1970-01-01T00:00:00");
-  const std::string host = r.host.value_or("localhost");
+std::string to_junit_xml(const CampaignResult& r, const JunitClock& clock) {
   std::string suites;
-  std::size_t all = 0, all_failed = 0, all_errored = 0;
+  Counts all;
   for (const auto& run : r.runs) {
-    const auto cases = cases_of(run);
-    std::size_t failed = 0, errored = 0, skipped = 0;
-    std::string body;
-    const std::string classname = xml_escape(fmt::format("{}.{}", r.campaign, run.name));
-    for (const auto& k : cases) {
-      body +=
-          fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"0\"", xml_escape(k.name), classname);
-      switch (k.verdict) {
-      case Verdict::Passed:
-        body += k.body.empty() ? "/>\n"
-                               : fmt::format(">\n      <system-out>{}</system-out>\n    </testcase>\n",
-                                             xml_escape(k.body));
-        break;
-      case Verdict::Failed:
-        ++failed;
-        body += fmt::format(">\n      <failure message=\"{}\" type=\"fail\">{}</failure>\n    </testcase>\n",
-                            xml_escape(k.message), xml_escape(k.body));
-        break;
-      case Verdict::Errored:
-        ++errored;
-        body += fmt::format(">\n      <error message=\"{}\" type=\"error\">{}</error>\n    </testcase>\n",
-                            xml_escape(k.message), xml_escape(k.body));
-        break;
-      case Verdict::Skipped:
-        ++skipped;
-        body += fmt::format(">\n      <skipped message=\"{}\"/>\n    </testcase>\n", xml_escape(k.message));
-        break;
-      }
-    }
-    suites +=
-        fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" skipped=\"{}\" "
-                    "time=\"0\" timestamp=\"{}\" hostname=\"{}\" id=\"{}\" package=\"{}\">\n",
-                    classname, cases.size(), failed, errored, skipped, xml_escape(stamp), xml_escape(host),
-                    run.index, xml_escape(r.campaign));
+    Counts counts;
+    const std::string body = testcases_xml(r, run, clock, counts);
+    suites += testsuite_open(dotless(r.campaign) + "." + dotless(run.name), counts, clock,
+                             std::to_string(run.index), dotless(r.campaign));
     suites += "    <properties>\n";
-    suites += fmt::format("      <property name=\"seed\" value=\"{}\"/>\n", run.seed);
-    suites += fmt::format("      <property name=\"outcome\" value=\"{}\"/>\n", to_string(run.outcome));
-    if (!run.fault.empty())
-      suites += fmt::format("      <property name=\"fault\" value=\"{}\"/>\n", xml_escape(run.fault));
+    suites += property("seed", std::to_string(run.seed));
+    suites += property("outcome", to_string(run.outcome));
+    if (!run.fault.empty()) suites += property("fault", run.fault);
     suites += "    </properties>\n";
     suites += body;
     suites += "    <system-out/>\n    <system-err/>\n  </testsuite>\n";
-    all += cases.size();
-    all_failed += failed;
-    all_errored += errored;
+    all.add(counts);
   }
-  return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                     "<testsuites name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" time=\"0\">\n"
-                     "{}</testsuites>\n",
-                     xml_escape(r.campaign), all, all_failed, all_errored, suites);
+  return testsuites_xml(r.campaign, all, suites);
+}
+
+std::string to_junit_suite_xml(const std::string& name, const std::vector<JunitCampaign>& campaigns) {
+  std::string suites;
+  Counts all;
+  for (std::size_t i = 0; i < campaigns.size(); ++i) {
+    const CampaignResult& r = *campaigns[i].result;
+    Counts counts;
+    std::string body;
+    for (const auto& run : r.runs) body += testcases_xml(r, run, campaigns[i].clock, counts);
+    suites += testsuite_open(r.campaign, counts, campaigns[i].clock, std::to_string(i), dotless(r.campaign));
+    suites += "    <properties>\n";
+    suites += property("campaign_file", campaigns[i].file);
+    suites += property("seed", std::to_string(r.seed));
+    suites += property("verdict", to_string(r.verdict));
+    suites += "    </properties>\n";
+    suites += body;
+    suites += "    <system-out/>\n    <system-err/>\n  </testsuite>\n";
+    all.add(counts);
+  }
+  return testsuites_xml(name, all, suites);
 }
 
 } // namespace hilrig::rig

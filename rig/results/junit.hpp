@@ -4,17 +4,42 @@
 // name, tests, failures, errors (required), skipped, time, timestamp, hostname, id, package;
 // testcase name, classname, time; failure/error/skipped with message and type.
 
+#include <cstdint>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "rig/results/campaign_result.hpp"
 
 namespace hilrig::rig {
 
 // Nominal run: a failed check is a <failure>, an unmeasurable one an <error>.
-// Fault run: a must_catch check passes when it failed (the fault was caught) and is a
-// <failure> "fault not caught" otherwise; the other checks are <skipped> (not judged).
-// A run's rig error is one more testcase "rig" with an <error>.
-// Times are virtual and not recorded: time="0"; timestamp is started_at or the epoch.
-[[nodiscard]] std::string to_junit_xml(const CampaignResult& result);
+// Fault run: a must_catch check passes when it failed (the fault was caught), or when
+// another must_catch check caught it, and is a <failure> "fault not caught" otherwise; the other checks are
+// <skipped> (not judged). A run's rig error is one more testcase "rig" with an <error>. Classnames are
+// "<campaign>.<run>" with every other dot made '_' (Jenkins splits the classname at its last dot into package
+// and class; sweep keys and values hold dots).
+//
+// Wall-clock facts (timestamp, hostname, time) come from the clock and nowhere else: they are
+// the only attributes that differ between two runs of the same campaign and seed, and the
+// determinism tests ignore exactly these three.
+struct JunitClock {
+  std::string started_at = "1970-01-01T00:00:00Z"; // the campaign's start, ISO 8601 UTC
+  std::string hostname = "localhost";
+  std::map<std::uint64_t, double> run_seconds; // run index -> wall seconds it took
+};
+// A testcase's time is an equal share of its run's wall seconds (the run's checks are judged
+// from one simulation), so testcase, testsuite and testsuites times add up.
+[[nodiscard]] std::string to_junit_xml(const CampaignResult& result, const JunitClock& clock = {});
+
+// A suite of campaigns (`hilrig run DIR`): one <testsuite> per campaign holding every
+// testcase of its runs (classname "<campaign>.<run>"), its file, seed and verdict as properties.
+struct JunitCampaign {
+  const CampaignResult* result = nullptr;
+  std::string file; // the campaign file as given
+  JunitClock clock;
+};
+[[nodiscard]] std::string to_junit_suite_xml(const std::string& name,
+                                             const std::vector<JunitCampaign>& campaigns);
 
 } // namespace hilrig::rig

@@ -206,7 +206,10 @@ TEST(Interrupt, SigkillAfterARunLeavesTheRunsDoneReadable) {
 
   Hilrig hilrig(file, out);
   ASSERT_EQ(hilrig.line().rfind("[1/2] run 0", 0), 0U);
-  const std::string second = hilrig.line(); // run 0 is done and its results written
+  // Run 0 ends ("[1/2] run 0: fail in ..."), its results are written, then run 1 starts.
+  const std::string ended = hilrig.line();
+  ASSERT_EQ(ended.rfind("[1/2] run 0: ", 0), 0U) << ended;
+  const std::string second = hilrig.line();
   ASSERT_EQ(second.rfind("[2/2] run 1", 0), 0U) << second;
   ASSERT_EQ(::kill(hilrig.pid, SIGKILL), 0);
   const int status = hilrig.wait();

@@ -1,19 +1,26 @@
 // `hilrig run` as a user meets it: the exit status (0 passed, 1 a check failed, 2 bad
-// input, 3 rig fault), the files it writes, and --shard.
+// input, 3 rig fault), the files it writes, --shard, suites of campaigns (--jobs), --only and
+// --tag, and `hilrig check`.
 
 #include <gtest/gtest.h>
 
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <regex>
+#include <set>
 #include <sstream>
 
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
 #include "rig/campaign/stop_request.hpp"
 
+#include "rig/cli/check_command.hpp"
 #include "rig/cli/output_dir.hpp"
 #include "rig/cli/run_command.hpp"
+#include "rig/cli/run_progress.hpp"
+#include "rig/cli/suite_files.hpp"
 #include "rig/results/results_json.hpp"
 #include "rig/results/run_log.hpp"
 #include "test_support.hpp"
@@ -93,7 +100,7 @@ TEST(RunCommand, ShardRunsOnlyItsRuns) {
   EXPECT_EQ(r.shard.count, 3U);
 }
 
-TEST(RunCommand, MissingBackendIsARigFaultExitThree) {
+TEST(RunCommand, HardwareWithoutARigIsBadInputExitTwo) {
   const fs::path dir = scratch("rigfault");
   // An external board needs a hardware backend this build does not drive.
   const std::string text = R"([campaign]
@@ -114,9 +121,12 @@ kind = "pulse_width"
 name = "out"
 line = "ls1"
 )";
+  // The campaign asks for a rig and the command line names none: the same status as
+  // `--backend hardware` without --rig (bad input, nothing runs).
   std::string err;
-  EXPECT_EQ(run(write_file(dir, "ext.toml", text).string(), dir / "out", &err), 3);
-  EXPECT_NE(err.find("rig fault"), std::string::npos) << err;
+  EXPECT_EQ(run(write_file(dir, "ext.toml", text).string(), dir / "out", &err), 2);
+  EXPECT_NE(err.find("needs --rig RIG.toml"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "results.json"));
 }
 
 TEST(RunCommand, ParseShard) {
@@ -269,6 +279,372 @@ TEST(RunCommand, RunEvidenceIsWhatHilrigWrites) {
   for (const char* name :
        {"notes.txt", "campaign.toml", "results.json.bak", "trace.vcd.orig", "tmp", ".tmp", "my.vcd"})
     EXPECT_FALSE(is_run_evidence(name)) << name;
+}
+
+TEST(RunCommand, UnknownKeyAndCheckParameterNameTheClosest) {
+  const fs::path dir = scratch("did_you_mean");
+  std::string text = campaign::test::kPlsCampaign;
+  text.replace(text.find("[motion]"), 8, "[motoin]");
+  std::string err;
+  EXPECT_EQ(run(write_file(dir, "key.toml", text).string(), dir / "out", &err), 2);
+  EXPECT_NE(err.find(": motoin: unknown key (expected one of: "), std::string::npos) << err;
+  EXPECT_NE(err.find(") (did you mean \"motion\"?)"), std::string::npos) << err;
+  text = campaign::test::kPlsCampaign;
+  text.replace(text.find("limit_us = 250"), 14, "limt_us = 250");
+  EXPECT_EQ(run(write_file(dir, "param.toml", text).string(), dir / "out", &err), 2);
+  EXPECT_NE(err.find("check[0].limt_us: a parameter of throughput (one of "), std::string::npos) << err;
+  EXPECT_NE(err.find(") (did you mean \"limit_us\"?)"), std::string::npos) << err;
+}
+
+// ---- suites ----------------------------------------------------------------------------
+
+// kPlsCampaign as the late variant: every latency is over the 250 us limit (exit 1).
+std::string late_campaign(const std::string& name) {
+  std::string text = campaign::test::kPlsCampaign;
+  text.replace(text.find("name = \"inline\""), 15, "name = \"" + name + "\"");
+  text.replace(text.find("model = \"reference_pls\""), 23, "model = \"reference_pls\"\nvariant = \"late\"");
+  return text;
+}
+
+std::string passing_campaign(const std::string& name) {
+  std::string text = campaign::test::kPlsCampaign;
+  text.replace(text.find("name = \"inline\""), 15, "name = \"" + name + "\"");
+  return text;
+}
+
+struct SuiteRun {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+SuiteRun run_suite(const std::vector<std::string>& files, const fs::path& out_dir, std::size_t jobs = 1,
+                   const campaign::CheckSelection& checks = {}) {
+  RunOptions o;
+  o.files = files;
+  o.out = out_dir;
+  o.jobs = jobs;
+  o.checks = checks;
+  std::ostringstream out;
+  std::ostringstream err;
+  SuiteRun r;
+  r.status = run_campaigns(o, out, err);
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
+std::size_t count_of(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
+TEST(RunSuite, DirectoryRunsEveryCampaignSortedIntoItsOwnDirectory) {
+  const fs::path dir = scratch("suite_dir");
+  fs::create_directories(dir / "in" / "sub");
+  write_file(dir / "in", "b_pass.toml", passing_campaign("b"));
+  write_file(dir / "in" / "sub", "a_pass.toml", passing_campaign("a"));
+  write_file(dir / "in", "notes.txt", "not a campaign");
+  const SuiteRun r = run_suite({(dir / "in").string()}, dir / "out");
+  EXPECT_EQ(r.status, 0) << r.err;
+  for (const char* sub : {"b_pass", "sub/a_pass"})
+    for (const char* f : {"results.json", "junit.xml", "report.html", "trace.vcd"})
+      EXPECT_TRUE(fs::exists(dir / "out" / sub / f)) << sub << "/" << f;
+  // One testsuite per campaign, in path order ("b_pass" < "sub/a_pass").
+  const std::string junit = hilrig::test::read_file(dir / "out" / "junit.xml");
+  EXPECT_EQ(count_of(junit, "<testsuite "), 2U);
+  EXPECT_LT(junit.find("<testsuite name=\"b\""), junit.find("<testsuite name=\"a\""));
+  // The index links each campaign's own report.
+  const std::string index = hilrig::test::read_file(dir / "out" / "report.html");
+  EXPECT_NE(index.find("href=\"b_pass/report.html\""), std::string::npos);
+  EXPECT_NE(index.find("href=\"sub/a_pass/report.html\""), std::string::npos);
+  // The summary lines and the report's path go to stdout.
+  EXPECT_NE(r.out.find("a: 1 run(s), 1 passed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("suite: 2 campaign(s), 2 passed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("report: " + (dir / "out" / "report.html").string() + "\n"), std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.err, "");
+}
+
+TEST(RunSuite, ExitStatusIsTheWorstOfTheCampaigns) {
+  const fs::path dir = scratch("suite_worst");
+  const std::string pass = write_file(dir, "pass.toml", passing_campaign("pass")).string();
+  const std::string late = write_file(dir, "late.toml", late_campaign("late")).string();
+  const std::string blocked = write_file(dir, "blocked.toml", passing_campaign("blocked")).string();
+  // pass + a failed check -> 1, and the failing campaign is first in the index.
+  SuiteRun r = run_suite({pass, late}, dir / "out1");
+  EXPECT_EQ(r.status, 1) << r.err;
+  const std::string index = hilrig::test::read_file(dir / "out1" / "report.html");
+  EXPECT_LT(index.find("late/report.html"), index.find("pass/report.html"));
+  // + a campaign whose output directory cannot be made (a file is in the way): a rig fault, 3,
+  // and the other two still ran and wrote their results.
+  fs::create_directories(dir / "out3");
+  write_file(dir / "out3", "blocked", "in the way");
+  r = run_suite({late, blocked, pass}, dir / "out3");
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "out3" / "late" / "results.json"));
+  EXPECT_TRUE(fs::exists(dir / "out3" / "pass" / "results.json"));
+  EXPECT_NE(r.err.find("rig fault"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("exit 3 (rig fault)"), std::string::npos) << r.out;
+  // + a malformed campaign -> 2, and nothing runs at all (every file is checked first).
+  std::string text = passing_campaign("bad");
+  text.replace(text.find("board = \"OUT\""), 13, "board = \"OUT9\"");
+  const std::string bad = write_file(dir, "bad.toml", text).string();
+  r = run_suite({pass, late, bad}, dir / "out2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind(bad + ":19:9: wiring[2].board:", 0), 0U) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out2" / "pass"));
+  EXPECT_FALSE(fs::exists(dir / "out2" / "junit.xml"));
+}
+
+TEST(RunSuite, WorstStatusRanksRigFaultOverBadInputOverFailure) {
+  EXPECT_EQ(worst_status(0, 0), 0);
+  EXPECT_EQ(worst_status(0, 1), 1);
+  EXPECT_EQ(worst_status(2, 1), 2);
+  EXPECT_EQ(worst_status(2, 3), 3);
+  EXPECT_EQ(worst_status(3, 0), 3);
+}
+
+TEST(RunSuite, TwoCampaignsWritingOneDirectoryAreBadInput) {
+  const fs::path dir = scratch("suite_clash");
+  fs::create_directories(dir / "x");
+  const std::string a = write_file(dir / "x", "same.toml", passing_campaign("x")).string();
+  fs::create_directories(dir / "y");
+  const std::string b = write_file(dir / "y", "same.toml", passing_campaign("y")).string();
+  EXPECT_THROW((void)collect_campaigns({a, b}), std::invalid_argument);
+  const SuiteRun r = run_suite({a, b}, dir / "out");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("would both write to same/"), std::string::npos) << r.err;
+  EXPECT_EQ(run_suite({(dir / "nowhere").string()}, dir / "out").status, 2);
+}
+
+// Every byte of a directory tree, by relative path.
+std::map<std::string, std::string> tree_of(const fs::path& root) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(root))
+    if (e.is_regular_file())
+      files[e.path().lexically_relative(root).generic_string()] = hilrig::test::read_file(e.path());
+  return files;
+}
+
+// junit.xml's wall-clock attributes, and only those, blanked (rig/results/junit.hpp).
+std::string without_wall_clock(const std::string& junit) {
+  static const std::regex wall(R"re(\b(timestamp|hostname|time)="[^"]*")re");
+  return std::regex_replace(junit, wall, "$1=\"\"");
+}
+
+TEST(RunSuite, JobsRunInParallelWithTheSameOutputsAsOneJob) {
+  const fs::path dir = scratch("suite_jobs");
+  std::vector<std::string> files = {campaign::test::shipped("reference_pls_pass.toml"),
+                                    campaign::test::shipped("reference_pls_faults.toml"),
+                                    write_file(dir, "late.toml", late_campaign("late")).string(),
+                                    write_file(dir, "other.toml", passing_campaign("other")).string()};
+  const SuiteRun one = run_suite(files, dir / "jobs1", 1);
+  const SuiteRun four = run_suite(files, dir / "jobs4", 4);
+  EXPECT_EQ(one.status, 1);
+  EXPECT_EQ(four.status, 1);
+  // The summary lines in suite order, whatever finished first.
+  EXPECT_EQ(one.out.substr(0, one.out.find("report: ")), four.out.substr(0, four.out.find("report: ")));
+  auto a = tree_of(dir / "jobs1");
+  auto b = tree_of(dir / "jobs4");
+  ASSERT_EQ(a.size(), b.size());
+  std::size_t junit_files = 0;
+  for (auto& [path, text] : a) {
+    ASSERT_TRUE(b.count(path)) << path;
+    if (path.ends_with("junit.xml")) {
+      ++junit_files;
+      EXPECT_EQ(without_wall_clock(text), without_wall_clock(b[path])) << path;
+    } else {
+      EXPECT_EQ(text, b[path]) << path; // byte-identical
+    }
+  }
+  EXPECT_EQ(junit_files, 5U); // four campaigns and the suite's
+}
+
+TEST(RunSuite, JunitCarriesWallClockOnlyInTimestampHostnameAndTime) {
+  const fs::path dir = scratch("suite_wall");
+  const SuiteRun r = run_suite({campaign::test::shipped("reference_pls_pass.toml"),
+                                write_file(dir, "late.toml", late_campaign("late")).string()},
+                               dir / "out");
+  EXPECT_EQ(r.status, 1);
+  const std::string junit = hilrig::test::read_file(dir / "out" / "junit.xml");
+  // A real start time, ISO 8601 UTC to the second, on every testsuite.
+  const std::regex stamp(R"re(timestamp="(\d{4})-\d\d-\d\dT\d\d:\d\d:\d\dZ")re");
+  EXPECT_EQ(std::distance(std::sregex_iterator(junit.begin(), junit.end(), stamp), std::sregex_iterator()),
+            2);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(junit, m, stamp));
+  EXPECT_GE(std::stoi(m[1]), 2024);
+  EXPECT_EQ(junit.find("hostname=\"\""), std::string::npos);
+  // Classnames: "<campaign>.<run>" with no other dot, though the sweep key and value have some
+  // ("dut.params.delay='50us'" -> "dut_params_delay='50us'").
+  const std::regex classname(R"re(classname="([^"]*)")re");
+  std::set<std::string> names;
+  for (auto it = std::sregex_iterator(junit.begin(), junit.end(), classname); it != std::sregex_iterator();
+       ++it)
+    names.insert((*it)[1]);
+  EXPECT_TRUE(names.count("reference-pls-pass.dut_params_delay=&#39;50us&#39; rep 0")) << *names.begin();
+  for (const std::string& n : names) EXPECT_EQ(count_of(n, "."), 1U) << n;
+  // The failing campaign's testsuite says so, and the counts agree with exit status 1.
+  EXPECT_NE(junit.find("<testsuite name=\"late\" tests=\"1\" failures=\"1\" errors=\"0\""),
+            std::string::npos);
+  EXPECT_NE(junit.find("<testsuites name=\"hilrig suite: "), std::string::npos);
+}
+
+TEST(RunSuite, SingleFileKeepsItsOutputsInOut) {
+  const fs::path dir = scratch("suite_single");
+  const SuiteRun r = run_suite({campaign::test::shipped("reference_pls_pass.toml")}, dir / "out");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_TRUE(fs::exists(dir / "out" / "results.json"));
+  EXPECT_EQ(r.out,
+            "reference-pls-pass: 4 run(s), 4 passed, 0 failed, 0 errored; faults caught 0/0; verdict pass\n"
+            "report: " +
+                (dir / "out" / "report.html").string() + "\n");
+}
+
+// ---- --only and --tag --------------------------------------------------------------------
+
+// kPlsCampaign with a second check, off_latency, tagged "nightly".
+std::string two_checks() {
+  return campaign::test::kPlsCampaign + R"(
+[[check]]
+kind = "throughput"
+name = "off_latency"
+output = "ls1"
+setpoint = 300
+direction = "rising"
+level = "low"
+limit_us = 250
+min_count = 2
+tags = ["nightly", "timing"]
+)";
+}
+
+std::set<std::string> checks_run(const fs::path& results) {
+  std::set<std::string> names;
+  for (const auto& run : rig::read_results_file(results).runs)
+    for (const auto& c : run.checks) names.insert(c.check);
+  return names;
+}
+
+TEST(RunSelection, OnlyAndTagRunASubsetOfTheChecks) {
+  const fs::path dir = scratch("only");
+  const std::string file = write_file(dir, "two.toml", two_checks()).string();
+  EXPECT_EQ(run_suite({file}, dir / "all").status, 0);
+  EXPECT_EQ(checks_run(dir / "all" / "results.json"), (std::set<std::string>{"on_latency", "off_latency"}));
+  EXPECT_EQ(run_suite({file}, dir / "only", 1, {{"on_latency"}, {}}).status, 0);
+  EXPECT_EQ(checks_run(dir / "only" / "results.json"), (std::set<std::string>{"on_latency"}));
+  EXPECT_EQ(run_suite({file}, dir / "tag", 1, {{}, {"nightly"}}).status, 0);
+  EXPECT_EQ(checks_run(dir / "tag" / "results.json"), (std::set<std::string>{"off_latency"}));
+}
+
+TEST(RunSelection, UnknownCheckOrTagIsBadInputWithTheClosestName) {
+  const fs::path dir = scratch("only_bad");
+  const std::string file = write_file(dir, "two.toml", two_checks()).string();
+  SuiteRun r = run_suite({file}, dir / "out", 1, {{"on_latncy"}, {}});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(
+      r.err.find("--only on_latncy: " + file + " has no check of this name (did you mean \"on_latency\"?)"),
+      std::string::npos)
+      << r.err;
+  r = run_suite({file}, dir / "out", 1, {{}, {"nightlly"}});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("(did you mean \"nightly\"?)"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "results.json"));
+  // A tag that is not a list of names is refused where it is written.
+  std::string text = two_checks();
+  text.replace(text.find("tags = [\"nightly\", \"timing\"]"), 28, "tags = \"nightly\"");
+  r = run_suite({write_file(dir, "badtag.toml", text).string()}, dir / "out");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("check[1].tags: an array of tag names"), std::string::npos) << r.err;
+}
+
+TEST(RunSelection, FaultsWhoseCatchersAreDroppedAreNotRun) {
+  // reference_pls_faults: late is caught by on_latency or off_latency; the other three faults by
+  // on_latency alone. --only off_latency keeps the nominal run and the "late" fault run.
+  const fs::path dir = scratch("only_faults");
+  EXPECT_EQ(
+      run_suite({campaign::test::shipped("reference_pls_faults.toml")}, dir / "out", 1, {{"off_latency"}, {}})
+          .status,
+      0);
+  const rig::CampaignResult r = rig::read_results_file(dir / "out" / "results.json");
+  ASSERT_EQ(r.runs.size(), 2U);
+  EXPECT_EQ(r.runs[1].fault, "late");
+  EXPECT_EQ(r.runs[1].must_catch, std::vector<std::string>{"off_latency"});
+}
+
+TEST(RunSelection, InASuiteCampaignsWithoutTheTagAreLeftOut) {
+  const fs::path dir = scratch("only_suite");
+  const std::string tagged = write_file(dir, "tagged.toml", two_checks()).string();
+  const std::string plain = write_file(dir, "plain.toml", passing_campaign("plain")).string();
+  SuiteRun r = run_suite({tagged, plain}, dir / "out", 1, {{}, {"timing"}});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "out" / "tagged" / "results.json"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "plain"));
+  r = run_suite({tagged, plain}, dir / "none", 1, {{}, {"timng"}});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--tag timng (did you mean \"timing\"?)"), std::string::npos) << r.err;
+}
+
+// ---- hilrig check ------------------------------------------------------------------------
+
+TEST(CheckCommand, ValidatesWithoutRunningWithTheMessagesOfRun) {
+  const fs::path dir = scratch("check");
+  std::string text = campaign::test::kPlsCampaign;
+  text.replace(text.find("board = \"OUT\""), 13, "board = \"OUT9\"");
+  const std::string bad = write_file(dir, "bad.toml", text).string();
+  std::ostringstream out;
+  std::ostringstream err;
+  EXPECT_EQ(check_campaigns({campaign::test::shipped("reference_pls_pass.toml"), bad}, out, err), 2);
+  EXPECT_EQ(out.str(), campaign::test::shipped("reference_pls_pass.toml") +
+                           ": ok (4 run(s), 5 check(s) a run)\n"); // its five [[check]] tables
+  std::string run_err;
+  EXPECT_EQ(run(bad, dir / "out", &run_err), 2);
+  EXPECT_EQ(err.str(), run_err); // word for word what `hilrig run` says
+  std::ostringstream out2;
+  std::ostringstream err2;
+  EXPECT_EQ(check_campaigns({campaign::test::campaign_dir("reference")}, out2, err2), 0) << err2.str();
+  EXPECT_EQ(count_of(out2.str(), ": ok ("), 2U);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// ---- --progress --------------------------------------------------------------------------
+
+TEST(RunProgressLines, EachRunWithOutcomeWallTimeAndEta) {
+  const fs::path dir = scratch("progress");
+  RunOptions o;
+  o.files = {campaign::test::shipped("reference_pls_pass.toml"),
+             write_file(dir, "late.toml", late_campaign("late")).string()};
+  o.out = dir / "out";
+  o.progress_lines = true;
+  std::ostringstream out;
+  std::ostringstream err;
+  EXPECT_EQ(run_campaigns(o, out, err), 1);
+  const std::string text = err.str();
+  // Each run as it starts, then as it ends: outcome, wall time, the estimate of what is left.
+  const std::regex started(R"re(\[(\d)/5\] (\S+): run (\d+) ([^:\n]*)\n)re");
+  const std::regex ended(
+      R"re(\[(\d)/5\] (\S+): run (\d+): (pass|fail|error) in \d+\.\d\d s; ETA \d+:\d\d\n)re");
+  std::vector<std::string> starts;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), started); it != std::sregex_iterator(); ++it)
+    starts.push_back((*it)[1].str() + " " + (*it)[2].str() + " " + (*it)[3].str());
+  std::vector<std::string> outcomes;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), ended); it != std::sregex_iterator(); ++it)
+    outcomes.push_back((*it)[2].str() + ":" + (*it)[5 - 1].str());
+  EXPECT_EQ(starts,
+            (std::vector<std::string>{"1 reference-pls-pass 0", "2 reference-pls-pass 1",
+                                      "3 reference-pls-pass 2", "4 reference-pls-pass 3", "5 late 0"}))
+      << text;
+  EXPECT_EQ(outcomes,
+            (std::vector<std::string>{"reference-pls-pass:pass", "reference-pls-pass:pass",
+                                      "reference-pls-pass:pass", "reference-pls-pass:pass", "late:fail"}))
+      << text;
+  // Nothing but progress on stderr; the summaries are on stdout.
+  EXPECT_EQ(count_of(text, "\n"), 10U) << text;
+  EXPECT_EQ(clock_text(7.4), "0:07");
+  EXPECT_EQ(clock_text(750), "12:30");
+  EXPECT_EQ(clock_text(3723), "1:02:03");
 }
 
 } // namespace

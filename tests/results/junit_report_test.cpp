@@ -35,6 +35,22 @@ TEST(Junit, OneTestcasePerCheckPerRunWithCountsThatAddUp) {
   EXPECT_NE(x.find("fault &#39;slow&#39; not caught"), std::string::npos);
 }
 
+TEST(Junit, AFaultCaughtByOneOfItsCheckersHasNoFailure) {
+  // Caught by ls1-throughput (it failed); ls1-advance, also a must_catch check, passed: the
+  // run passes, so junit.xml must be clean (it agrees with the exit status, 0).
+  CampaignResult c;
+  c.campaign = "x";
+  c.planned_runs = 2;
+  c.runs = {test::fault_run(0, "slow", true), test::fault_run(1, "slow", false)};
+  for (auto& run : c.runs) run.must_catch = {"ls1-throughput", "ls1-advance"};
+  finalize(c);
+  ASSERT_EQ(run_outcome(c.runs[0]), Outcome::Pass);
+  const std::string x = to_junit_xml(c);
+  // Run 1 missed it: both of its must_catch checks passed, both are failures.
+  EXPECT_EQ(count_of(x, "<failure "), 2U);
+  EXPECT_EQ(count_of(x, "<testsuite name=\"x.ls1/run0\" tests=\"2\" failures=\"0\""), 1U) << x;
+}
+
 TEST(Junit, RigErrorIsAnErrorTestcase) {
   CampaignResult c;
   c.campaign = "x";

@@ -1,0 +1,50 @@
+#include "rig/cli/suite_files.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace hilrig::cli {
+
+namespace fs = std::filesystem;
+
+std::vector<SuiteEntry> collect_campaigns(const std::vector<std::string>& paths) {
+  std::vector<SuiteEntry> entries;
+  for (const std::string& path : paths) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    if (fs::is_directory(st)) {
+      std::vector<SuiteEntry> found;
+      for (const auto& e : fs::recursive_directory_iterator(path)) {
+        if (!e.is_regular_file() || e.path().extension() != ".toml") continue;
+        const fs::path rel = e.path().lexically_relative(path);
+        found.push_back({e.path().string(), fs::path(rel).replace_extension().generic_string()});
+      }
+      if (found.empty())
+        throw std::invalid_argument(fmt::format("{}: a directory without any *.toml campaign", path));
+      std::sort(found.begin(), found.end(),
+                [](const SuiteEntry& a, const SuiteEntry& b) { return a.subdir < b.subdir; });
+      entries.insert(entries.end(), found.begin(), found.end());
+    } else if (fs::is_regular_file(st)) {
+      if (fs::path(path).extension() != ".toml")
+        throw std::invalid_argument(fmt::format("{}: a campaign file (*.toml) or a directory of them", path));
+      entries.push_back({path, fs::path(path).stem().string()});
+    } else {
+      throw std::invalid_argument(fmt::format("{}: no such file or directory", path));
+    }
+  }
+  std::map<std::string, std::string> by_subdir;
+  for (const SuiteEntry& e : entries) {
+    const auto [it, fresh] = by_subdir.emplace(e.subdir, e.file);
+    if (!fresh)
+      throw std::invalid_argument(fmt::format("{} and {} would both write to {}/ (give one of them, or their "
+                                              "directory)",
+                                              it->second, e.file, e.subdir));
+  }
+  return entries;
+}
+
+} // namespace hilrig::cli

@@ -1,0 +1,101 @@
+// The hilrig program as a person types it: mistyped subcommands and options are named with the
+// closest valid ones (exit 2), a negative seed is refused, `serve --fault` lists the choices,
+// and `run` puts its summary and report path on stdout, the rest on stderr.
+
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "tests/tools/scratch_files.hpp"
+
+namespace hilrig {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string out; // stdout
+  std::string err; // stderr
+};
+
+// Runs `hilrig ARGS` (arguments are plain words here: no quoting needed) with stderr to a file.
+Result hilrig(const std::string& args) {
+  const fs::path dir = test::scratch_dir("campaign", "command_line_io");
+  const fs::path err = dir / "stderr";
+  const std::string command = std::string(HILRIG_EXE) + " " + args + " 2>" + err.string();
+  Result r;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = test::read_file(err);
+  return r;
+}
+
+const std::string kPass = std::string(HILRIG_SOURCE_DIR) + "/campaigns/reference/reference_pls_pass.toml";
+
+TEST(CommandLine, UnknownSubcommandNamesTheClosest) {
+  const Result r = hilrig("rn " + kPass);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("hilrig: rn: no such command (did you mean \"run\"?); commands: ", 0), 0U) << r.err;
+  EXPECT_NE(r.err.find("check"), std::string::npos) << r.err;
+}
+
+TEST(CommandLine, UnknownOptionNamesTheClosestInsteadOfAMissingOne) {
+  // CLI11 alone says "--out is required" here.
+  const Result r = hilrig("run " + kPass + " --ot somewhere");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("hilrig run: --ot: no such option (did you mean \"--out\"?)", 0), 0U) << r.err;
+  const Result seed = hilrig("run " + kPass + " --out x --sed 3");
+  EXPECT_NE(seed.err.find("--sed: no such option (did you mean \"--seed\"?)"), std::string::npos) << seed.err;
+  // Negative numbers are values, not options.
+  EXPECT_EQ(hilrig("compare a.json b.json --default-rel -1").err.find("no such option"), std::string::npos);
+}
+
+TEST(CommandLine, NegativeSeedIsRefused) {
+  const fs::path out = test::scratch_dir("campaign", "negative_seed");
+  const Result r = hilrig("run " + kPass + " --out " + out.string() + " --seed -1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--seed: a seed is 0 or more"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "results.json"));
+}
+
+TEST(CommandLine, ServeFaultListsTheChoices) {
+  const Result r = hilrig("serve smd23e --pty --fault lost-step");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("unknown fault variant 'lost-step' for smd23e (one of: none, wrong-acceleration, "
+                       "lost-steps, ignored-limit, late-stop)"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(CommandLine, SummaryAndReportPathOnStdoutTheRestOnStderr) {
+  const fs::path out = test::scratch_dir("campaign", "stdout_summary");
+  const Result r = hilrig("run " + kPass + " --out " + out.string() + " --progress");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out,
+            "reference-pls-pass: 4 run(s), 4 passed, 0 failed, 0 errored; faults caught 0/0; verdict pass\n"
+            "report: " +
+                (out / "report.html").string() + "\n");
+  EXPECT_NE(r.err.find("[4/4] run 3: pass in "), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("verdict"), std::string::npos) << r.err;
+}
+
+TEST(CommandLine, CheckValidatesADirectory) {
+  const Result r = hilrig("check " + std::string(HILRIG_SOURCE_DIR) + "/campaigns/reference");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("reference_pls_faults.toml: ok (5 run(s), 2 check(s) a run)"), std::string::npos)
+      << r.out;
+}
+
+} // namespace
+} // namespace hilrig
