@@ -29,7 +29,7 @@ Amci4501::Amci4501(Scheduler& scheduler, const Pins& pins, Params params)
   if (pins_.z != nullptr) pins_.z->on_edge([this](const Edge& e) { on_index(e); });
   pins_.start.on_edge([this](const Edge& e) { on_start(e); });
   pins_.latch.on_edge([this](const Edge& e) { on_latch(e); });
-  scheduler_.after(params_.velocity_window, [this] { on_velocity_window(); });
+  scheduler_.after(params_.velocity_window - params_.velocity_phase, [this] { on_velocity_window(); });
 }
 
 // ---------------------------------------------------------------- host words

@@ -28,6 +28,9 @@ struct Params {
   Nanos timer_resolution = microseconds(1);
   // Velocity words: counts per window, refreshed every window (L114).
   Nanos velocity_window = milliseconds(50);
+  // [MODEL] Where the first velocity window ends after power-up, in (0, velocity_window]:
+  // velocity_window - velocity_phase. The rig draws the phase from the run's seed.
+  Nanos velocity_phase{0};
   // Timeout word 0 means this (L169).
   Nanos default_timeout = seconds(10);
 

@@ -57,7 +57,7 @@ Ans1::Ans1(Scheduler& scheduler, const Params& params, Variant variant)
       excitation_(params.excitation_hz, params.excitation_amplitude), quad_(std::make_shared<QuadState>()),
       monitors_(monitor_faults(variant)) {
   monitors_.configure(MonitorSetup{}, position_.full_scale_count);
-  schedule_scan(scheduler_.now());
+  schedule_scan(scheduler_.now() + params_.scan_phase);
   speed_event_ = scheduler_.at(scheduler_.now() + params_.speed_update_period, [this] { speed_update(); });
 }
 

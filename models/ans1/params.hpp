@@ -15,6 +15,9 @@ struct Params {
   // A slave's throughput is 50 us (L576): 40 us scan + 10 us output delay.
   Nanos slave_scan_period = microseconds(40);
   Nanos output_delay = microseconds(10);
+  // [MODEL] Where the first scan falls after power-up (the manual gives none: the scan clock
+  // free-runs against the machine). The rig draws it from the run's seed, in [0, scan).
+  Nanos scan_phase{0};
 
   // §4.2: the speed value is updated every 14.6 ms (L820).
   Nanos speed_update_period = microseconds(14'600);

@@ -31,6 +31,9 @@ struct Params {
   bool m12 = false;
   // Heartbeat (SW2 bit 11) half period [M ≈ 500 ms].
   Nanos heartbeat_half_period = milliseconds(500);
+  // [MODEL] Where the heartbeat's square wave stands at power-up, in [0, 2 half periods):
+  // the rig draws it from the run's seed.
+  Nanos heartbeat_phase{0};
   // Homing pause between search stops [M 2 s].
   Nanos homing_pause = seconds(2);
   // Idle current reduction delay [M 1.5 s].

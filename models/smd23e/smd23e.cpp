@@ -17,7 +17,8 @@ constexpr std::uint16_t kMoveBits = msw::kAbsolute | msw::kRelative | msw::kHome
                                     msw::kJogCw | msw::kJogCcw | msw::kRunAssembled;
 } // namespace
 
-Smd23e::Smd23e(Scheduler& scheduler, Params params) : sched_(scheduler), p_(params), epoch_(scheduler.now()) {
+Smd23e::Smd23e(Scheduler& scheduler, Params params)
+    : sched_(scheduler), p_(params), epoch_(scheduler.now() - params.heartbeat_phase) {
   net_loss_ = p_.netloss_at_powerup;
   if (p_.flash_config_valid) {
     // A typical saved configuration: v_s 100, 2048 steps/turn, encoder on, 2.0 A, 50 % idle.

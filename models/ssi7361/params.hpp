@@ -28,6 +28,9 @@ enum class SampleInstant : std::uint8_t {
 struct Params {
   // ---- SSI master (§2.1) ----
   Nanos first_frame = Nanos{0}; // F1 of the first frame after construction
+  // [MODEL] The frame clock's power-up phase, added to first_frame: the rig draws it from
+  // the run's seed, in [0, frame period at 125 kHz), unless the campaign pins first_frame.
+  Nanos frame_phase{0};
   SampleInstant sample_instant = SampleInstant::HalfPeriodAfterRising;
   bool read_all_ones_without_supply = true; // no +24 V on pins 1/2: every bit reads 1 (L2182-2184)
 

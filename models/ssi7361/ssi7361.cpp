@@ -16,7 +16,7 @@ Ssi7361::Ssi7361(Scheduler& scheduler, LineOutput& clock, LineInput& data, Param
   clock_.set(Level::High); // the clock idles high: a frame starts with a falling edge (§2.1)
   recompute();
   restart_rate_window();
-  start_frame(std::max(params_.first_frame, scheduler_.now()));
+  start_frame(std::max(params_.first_frame + params_.frame_phase, scheduler_.now()));
 }
 
 Ssi7361::~Ssi7361() {

@@ -10,6 +10,7 @@
 #include "rig/checks/debounce.hpp"
 #include "rig/checks/registry.hpp"
 #include "rig/results/results_json.hpp"
+#include "signals/standstill.hpp"
 
 namespace hilrig::campaign {
 
@@ -36,6 +37,16 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
   c.position = [profile](Nanos t) { return profile->position(t); };
   c.speed = [profile](Nanos t) { return profile->velocity(t); };
   c.motion = v.motion;
+  if (v.exact_motion) {
+    if (s.plant) {
+      // A plant located its own standstill: the last change of its motion samples.
+      c.standstill = [samples = v.motion, end = s.end](Nanos from) {
+        return checks::standstill_after(samples, from, end);
+      };
+    } else {
+      c.standstill = [profile](Nanos from) { return signals::standstill_after(*profile, from); };
+    }
+  }
   c.observations = v.observations;
   c.begin = Nanos{0};
   c.end = s.end;

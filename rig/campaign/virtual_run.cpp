@@ -104,15 +104,20 @@ private:
     }
   }
 
-  // Plays the events to the end; returns the time the run ended. A stop request (checked
-  // before each event) or a failure inside an event (a host link that lost a transaction, a
-  // model that threw) ends it early: every line the rig drives goes to its inactive level at
-  // that virtual time (so the trace shows it), and out_.rig_fault says why.
+  // Plays the events to the end; returns the time the run ended. A stop request or a
+  // tripped guard (both checked before each event: run_guards.hpp) or a failure inside an event (a host link
+  // that lost a transaction, a model that threw) ends it early: every line the rig drives goes to its
+  // inactive level at that virtual time (so the trace shows it), and out_.rig_fault says why.
   Nanos play() {
+    ProgressGuard guard(in_.guards);
     try {
-      while (sched_.next_time() <= s_.end) {
+      for (Nanos next = sched_.next_time(); next <= s_.end; next = sched_.next_time()) {
         if (in_.stop != nullptr && in_.stop->requested()) {
           stop_early("interrupted by " + in_.stop->reason(), true);
+          return sched_.now();
+        }
+        if (const auto fault = guard.check(next, trace_->sample_count())) {
+          stop_early(*fault, false);
           return sched_.now();
         }
         sched_.step();

@@ -11,6 +11,7 @@
 #include "core/trace.hpp"
 #include "rig/campaign/campaign.hpp"
 #include "rig/campaign/host_link.hpp"
+#include "rig/campaign/run_guards.hpp"
 #include "rig/campaign/stop_request.hpp"
 #include "rig/checks/brake.hpp"
 #include "rig/results/measurement.hpp"
@@ -27,6 +28,7 @@ struct RunInputs {
   bool record_motion = true;                  // follow every count change (brake checks need it)
   const HostLinkFactory* host_link = nullptr; // how host actions reach the DUT (null: in process)
   const StopRequest* stop = nullptr;          // when requested, the run stops at its next event
+  RunGuards guards{};                         // a stalled or flooding run stops with a rig fault
 };
 
 struct VirtualRun {
@@ -39,6 +41,10 @@ struct VirtualRun {
   std::vector<rig::Measurement> handshakes;   // host writes: time to Acknowledge
   std::vector<rig::Measurement> rig_timing;   // hardware runs: the rig's own timing (wake-ups, edges)
   std::string rig_fault;                      // hardware runs: why the run stopped early ("" when it did not)
+  // Virtual time: the board saw exactly the profile's edges, so its standstill is known
+  // exactly. A hardware run sets it false: the edges went out with the RT loop's jitter and
+  // only the count changes are evidence.
+  bool exact_motion = true;
   // The run stopped early (a stop request, or a host-link or model failure in the middle):
   // what was captured up to then is kept, every rig-driven line was driven to its inactive
   // level at that time, and rig_fault says why. interrupted: it was a stop request.

@@ -30,6 +30,14 @@ void append_motion(std::vector<PositionSample>& motion, PositionSample sample);
 [[nodiscard]] std::optional<Nanos> standstill_after(std::span<const PositionSample> motion, Nanos from,
                                                     Nanos trace_end);
 
+// When the shaft stood still: exact (earliest == latest, the rig knew the trajectory) or an
+// interval read from count changes (rig/checks/standstill.hpp builds both).
+struct Standstill {
+  Nanos earliest; // the shaft stopped no sooner
+  Nanos latest;   // ... and no later
+  [[nodiscard]] bool exact() const { return earliest == latest; }
+};
+
 struct BrakeSpec {
   std::string name = "brake";
   Nanos limit{0};                      // Stop Time Limit: measured stop time must be <= limit
@@ -45,8 +53,14 @@ struct BrakeSpec {
 // "<name>.fault_output" (when check_fault: 1 when an edge to fault_level happened after
 // `applied`, expected 1 exactly when the stop time exceeds the limit).
 // trace_end: when the capture ended (standstill must be followed by trace to be proven).
+// From count changes alone (standstill_interval): judged on the interval's upper end.
 [[nodiscard]] CheckResult check_brake_stop(Nanos applied, std::span<const PositionSample> motion,
                                            Nanos trace_end, std::span<const Edge> fault_output,
                                            const BrakeSpec& spec);
+// With the standstill already known (nullopt: the shaft never stood still in the trace). The
+// stop time is judged conservatively on `latest`: it fails when the interval's upper end is
+// over the limit, and the detail says when it was an interval.
+[[nodiscard]] CheckResult check_brake_stop(Nanos applied, std::optional<Standstill> still,
+                                           std::span<const Edge> fault_output, const BrakeSpec& spec);
 
 } // namespace hilrig::checks

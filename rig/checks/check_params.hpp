@@ -3,6 +3,7 @@
 // table (registry.hpp: build_check_params, ranges and finiteness validated there) and read
 // by the executive and the checks as fields, never looked up by name.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -34,10 +35,18 @@ struct CrossingScan {
   double modulus = 0.0;
 };
 
+// The board's scan period the crossings' phase coverage is reported against (scan_us,
+// phase_bins): informational, rig/checks/phase_coverage.hpp.
+struct PhaseScan {
+  Nanos scan{0};         // > 0
+  std::size_t bins = 10; // >= 1
+};
+
 struct ThroughputParams {
   std::string output;
   ThroughputSpec spec;
   std::variant<std::vector<Nanos>, CrossingScan> crossings; // crossings_us as written, or a scan
+  std::optional<PhaseScan> phase{};                         // scan_us given
 };
 
 // Debounce: the probe plan from a check's parameters for the executive's bisect_boundary().

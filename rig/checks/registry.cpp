@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/did_you_mean.hpp"
+#include "rig/checks/phase_coverage.hpp"
+#include "rig/checks/standstill.hpp"
 #include "rig/checks/word_bits.hpp"
 
 namespace hilrig::checks {
@@ -126,6 +128,8 @@ CheckParams throughput(std::string_view name, const Table& t) {
     s.modulus = t.num("modulus");
     p.crossings = s;
   }
+  if (t.has("phase_bins") && !t.has("scan_us")) throw ParamError("phase_bins", "only with scan_us");
+  if (t.has("scan_us")) p.phase = PhaseScan{t.us("scan_us"), t.count("phase_bins", 10)};
   return p;
 }
 
@@ -278,7 +282,10 @@ std::vector<CheckKind> make_kinds() {
        P("direction", Str, false, "rising, falling or both (both)"),
        P("step_us", Num, false, "scan step for crossings (100); shorter than the shortest dwell", width),
        P("modulus", Num, false, "full-scale count: setpoint + k * modulus are crossings too (0: none)", time),
-       P("from_us", Num, false, "scan start", time), P("to_us", Num, false, "scan end", time)},
+       P("from_us", Num, false, "scan start", time), P("to_us", Num, false, "scan end", time),
+       P("scan_us", Num, false, "the board's scan period: reports the crossings' phase coverage of it",
+         between(0.001, 1e6)),
+       P("phase_bins", Int, false, "phase coverage bins over scan_us (10)", between(1.0, 1000.0))},
       throughput));
   k.push_back(kind("debounce",
                    "pulses shorter than the filter rejected, longer accepted; boundary by bisection",
@@ -421,7 +428,11 @@ CheckResult run(const ThroughputParams& p, const Capture& c) {
     crossings = find_crossings(position_fn(c), s.setpoint, s.from.value_or(c.begin), s.to.value_or(c.end),
                                s.step, s.direction, s.modulus);
   }
-  return check_throughput(crossings, line(c, p.output), p.spec);
+  CheckResult r = check_throughput(crossings, line(c, p.output), p.spec);
+  if (p.phase)
+    r.measurements.push_back(
+        phase_coverage_measurement(p.spec.name + ".phase_coverage", crossings, p.phase->scan, p.phase->bins));
+  return r;
 }
 
 CheckResult run(const DebounceParams& p, const Capture& c) {
@@ -465,7 +476,11 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
   }
   std::span<const Edge> fault;
   if (p.fault_output) fault = line(c, *p.fault_output);
-  return check_brake_stop(applied, c.motion, c.end, fault, s);
+  // Virtual time: the rig knows the trajectory and hands the exact standstill; on hardware
+  // only the count changes are evidence, an interval judged on its upper end.
+  const auto still = c.standstill ? exact_standstill(c.standstill(applied), c.end)
+                                  : standstill_interval(c.motion, applied, c.end);
+  return check_brake_stop(applied, still, fault, s);
 }
 
 CheckResult run(const PulseWidthParams& p, const Capture& c) {

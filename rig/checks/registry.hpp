@@ -26,6 +26,10 @@ struct Capture {
   PositionFn position;                  // stimulus position, counts (e.g. the motion profile)
   PositionFn speed;                     // counts/s
   std::vector<PositionSample> motion{}; // the shaft's position trace (brake checks)
+  // When the rig knows the trajectory (virtual time): the exact standstill at or after a
+  // time (nullopt: still moving at the end). Empty on hardware, where only count changes
+  // are evidence (checks/standstill.hpp: an interval).
+  std::function<std::optional<Nanos>(Nanos)> standstill{};
   std::vector<rig::Observation> observations{};
   std::map<std::string, std::vector<RawFrame>, std::less<>> frames; // by bus or link name
   std::map<std::string, FrameDecoder, std::less<>> decoders;        // by decoder name

@@ -1,4 +1,5 @@
 #include "rig/duts/amci4501_dut.hpp"
+#include "rig/duts/seed_phase.hpp"
 
 #include <array>
 #include <memory>
@@ -168,8 +169,9 @@ DutInfo amci4501_info() {
     info.variants.push_back({std::string(v.name), std::string(v.description)});
   info.host = HostInterface{m::kWords, m::kWords, true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
-                 std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
+                 std::uint64_t seed) -> std::unique_ptr<Dut> {
     m::Params p = amci4501_params(params);
+    p.velocity_phase = phase_from_seed(seed, p.velocity_window);
     const auto v = m::variant_from_string(variant);
     if (!v) throw std::invalid_argument("amci4501 has no variant " + std::string(variant));
     p.variant = *v;

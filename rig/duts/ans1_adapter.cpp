@@ -1,4 +1,5 @@
 #include "rig/duts/ans1_adapter.hpp"
+#include "rig/duts/seed_phase.hpp"
 
 #include <array>
 #include <span>
@@ -128,8 +129,9 @@ DutInfo ans1_info() {
   info.host = HostInterface{static_cast<std::size_t>(a::kHostWords), static_cast<std::size_t>(a::kHostWords),
                             true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
-                 std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
-    const a::Params p = ans1_params(params);
+                 std::uint64_t seed) -> std::unique_ptr<Dut> {
+    a::Params p = ans1_params(params);
+    p.scan_phase = phase_from_seed(seed, p.master_scan_period);
     const auto v = a::variant_from_name(variant);
     if (!v) throw std::invalid_argument("ans1 has no variant " + std::string(variant));
     return std::make_unique<Ans1Dut>(scheduler, p, *v);

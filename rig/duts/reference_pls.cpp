@@ -1,4 +1,5 @@
 #include "rig/duts/reference_pls.hpp"
+#include "rig/duts/seed_phase.hpp"
 
 #include <stdexcept>
 
@@ -188,7 +189,7 @@ DutInfo reference_pls_info() {
     c.filter = params.duration("filter");
     c.preset = params.integer("preset");
     if (c.scan <= Nanos{0}) throw std::invalid_argument("reference_pls: scan must be > 0");
-    c.phase = Nanos{static_cast<std::int64_t>(seed % static_cast<std::uint64_t>(c.scan.count()))};
+    c.phase = phase_from_seed(seed, c.scan);
     if (variant == "nominal")
       c.variant = ReferencePls::Variant::Nominal;
     else if (variant == "late")

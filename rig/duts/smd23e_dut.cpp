@@ -1,4 +1,5 @@
 #include "rig/duts/smd23e_dut.hpp"
+#include "rig/duts/seed_phase.hpp"
 
 #include <array>
 #include <cmath>
@@ -172,8 +173,9 @@ DutInfo smd23e_info() {
     info.variants.push_back({std::string(v), std::string(m::fault_description(*m::fault_from_name(v)))});
   info.host = HostInterface{m::kWords, m::kWords, false, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
-                 std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
+                 std::uint64_t seed) -> std::unique_ptr<Dut> {
     m::Params p = smd23e_params(params);
+    p.heartbeat_phase = phase_from_seed(seed, 2 * p.heartbeat_half_period);
     if (variant != "nominal") {
       const auto f = m::fault_from_name(variant);
       if (!f) throw std::invalid_argument("smd23e has no variant " + std::string(variant));

@@ -1,4 +1,5 @@
 #include "rig/duts/ssi7361_dut.hpp"
+#include "rig/duts/seed_phase.hpp"
 
 #include <memory>
 #include <stdexcept>
@@ -97,6 +98,11 @@ DutInfo ssi7361_info() {
   // within 0 .. 1 s (a frame every 250/500 us, L53); ACK within 0 .. 1 s.
   info.params = {
       {"first_frame", ParamKind::Duration, d.first_frame, "F1 of the first frame", between(0_us, 1_s)},
+      {"frame_phase_from_seed",
+       ParamKind::Boolean,
+       true,
+       "[MODEL] F1 of the first frame also moves by the seed's phase within a 125 kHz frame period",
+       {}},
       {"sample_at_rising_edge",
        ParamKind::Boolean,
        false,
@@ -141,8 +147,11 @@ DutInfo ssi7361_info() {
     info.variants.push_back({std::string(v.name), std::string(v.description)});
   info.host = HostInterface{s::kCommandWords, s::kStatusWords, true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
-                 std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
+                 std::uint64_t seed) -> std::unique_ptr<Dut> {
     s::Params p = ssi7361_params(params);
+    if (params.boolean("frame_phase_from_seed"))
+      p.frame_phase =
+          phase_from_seed(seed, signals::SsiMaster(signals::ssi7361_master(false)).frame_period());
     const auto v = s::variant_from_string(variant);
     if (!v) throw std::invalid_argument("ssi7361 has no variant " + std::string(variant));
     p.variant = *v;

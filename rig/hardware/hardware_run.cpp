@@ -271,6 +271,7 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
     for (const auto& [t, frame] : aux.frames) trace->can(ports.resolver()->bus(), t, frame);
 
   VirtualRun v;
+  v.exact_motion = false;
   v.trace = trace;
   v.profile = schedule.motion.profile;
   v.motion = schedule.positions;

@@ -5,11 +5,15 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include <fmt/format.h>
 
 #include "models/ans1/variants.hpp"
 #include "rig/campaign/campaign_parser.hpp"
@@ -80,6 +84,60 @@ TEST(Ans1Campaigns, AdvancesFollowW13AtEverySpeed) {
   }
 }
 
+// Issue 16 (2): ans1 manual (seeds/000_08a2edf5547d4d1e.txt:572): master throughput "10 to
+// 20 microseconds"; the board scans every 10 us (spec/ans1.md §4.0), so the latency is the
+// output delay plus up to one scan. An output delay of 11 us makes the worst case 21 us: the
+// shipped throughput campaign must fail it, whatever the board's power-up scan phase (the
+// run's seed), and pass a board whose worst case is exactly 20 us (10 us delay), with every
+// crossing phase of the scan covered.
+TEST(Ans1Campaigns, ThroughputFailsAWorstCaseOf21usAndPassesExactly20usAtAnyScanPhase) {
+  const std::string path = ans1_dir() + "/ans1_throughput.toml";
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  for (const int delay_us : {9, 10, 11, 12}) {
+    std::string t = text.str();
+    const std::string dut = "[dut]\nmodel = \"ans1\"\n";
+    ASSERT_NE(t.find(dut), std::string::npos);
+    t.replace(t.find(dut), dut.size(),
+              dut + fmt::format("[dut.params]\noutput_delay = \"{}us\"\n", delay_us));
+    const Campaign c = parse_campaign(t, path);
+    for (const std::uint64_t base : {1ULL, 2ULL, 3ULL, 77ULL}) {
+      RunSpec run = c.runs[0];
+      run.seed = run_seed(base, run.index);
+      const rig::RunResult r = Executive(c).run(run).result;
+      const auto* max_on = test::find(r, "on.max");
+      const auto* max_off = test::find(r, "off.max");
+      ASSERT_NE(max_on, nullptr);
+      ASSERT_NE(max_off, nullptr);
+      const Outcome want = delay_us <= 10 ? Outcome::Pass : Outcome::Fail;
+      EXPECT_EQ(max_on->outcome, want) << delay_us << " us, seed " << base << ": " << max_on->value;
+      EXPECT_EQ(max_off->outcome, want) << delay_us << " us, seed " << base << ": " << max_off->value;
+      EXPECT_LE(max_on->value, delay_us + 10.0);
+      EXPECT_GT(max_on->value, delay_us + 9.0); // one crossing within 1 us after a scan
+      const auto* cov = test::find(r, "on.phase_coverage");
+      ASSERT_NE(cov, nullptr);
+      EXPECT_EQ(cov->value, 10.0) << cov->detail;
+    }
+  }
+}
+
+// --seed moves the virtual ANS1's power-up scan phase: the latency series differ.
+TEST(Ans1Campaigns, TheSeedMovesTheBoardsScanPhase) {
+  const Campaign c = load_campaign(ans1_dir() + "/ans1_throughput.toml");
+  RunSpec a = c.runs[0];
+  RunSpec b = c.runs[0];
+  a.seed = run_seed(1, 0);
+  b.seed = run_seed(2, 0);
+  const rig::RunResult ra = Executive(c).run(a).result;
+  const rig::RunResult rb = Executive(c).run(b).result;
+  ASSERT_FALSE(ra.checks.empty());
+  ASSERT_FALSE(rb.checks.empty());
+  ASSERT_FALSE(ra.checks[0].series.empty());
+  ASSERT_FALSE(rb.checks[0].series.empty());
+  EXPECT_NE(ra.checks[0].series[0].values, rb.checks[0].series[0].values);
+}
+
 TEST(Ans1Campaigns, ASlowBrakeTripsTheBoardsStopOverrunAndFailsTheLimit) {
   // ans1_brake.toml: brake applied at 125 ms; 6000 RPM/s stops in 100 ms, 1500 RPM/s in
   // 400 ms; the board's limit and the check's are 150 ms.
@@ -88,8 +146,7 @@ TEST(Ans1Campaigns, ASlowBrakeTripsTheBoardsStopOverrunAndFailsTheLimit) {
   ASSERT_EQ(r.runs.size(), 2U);
   const auto* fast = test::find(r.runs[0], "stop.stop_time");
   ASSERT_NE(fast, nullptr);
-  EXPECT_GE(fast->value, 92.9); // the last count change: sqrt(2 / (400 * 100)) s before the stop
-  EXPECT_LE(fast->value, 100.0);
+  EXPECT_EQ(fast->value, 100.0); // standstill from the motion: 10 turn/s / 100 turn/s²
   EXPECT_EQ(test::find(r.runs[0], "stop.fault_output")->value, 0.0);
   EXPECT_EQ(test::find(r.runs[0], "stop.reported")->outcome, Outcome::Pass);
   // The slow brake: the rig's stop time is over the limit (the fault is caught) and the
@@ -97,8 +154,7 @@ TEST(Ans1Campaigns, ASlowBrakeTripsTheBoardsStopOverrunAndFailsTheLimit) {
   ASSERT_EQ(r.runs[1].fault, "slow_brake");
   const auto* slow = test::find(r.runs[1], "stop.stop_time");
   ASSERT_NE(slow, nullptr);
-  EXPECT_GE(slow->value, 385.8); // sqrt(2 / (400 * 25)) s = 14.1 ms before the 400 ms stop
-  EXPECT_LE(slow->value, 400.0);
+  EXPECT_EQ(slow->value, 400.0); // 10 turn/s / 25 turn/s²
   EXPECT_EQ(slow->outcome, Outcome::Fail);
   const auto* fired = test::find(r.runs[1], "stop.fault_output");
   ASSERT_NE(fired, nullptr);

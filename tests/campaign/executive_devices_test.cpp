@@ -3,6 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include <fmt/format.h>
+
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
 #include "test_support.hpp"
@@ -91,8 +97,8 @@ TEST(Executive, Ans1ThroughputWithinSpecAndLateOutputsCaught) {
 // A press stroke: 600 rpm (10 turn/s), brake at 90 degrees after 1 full stroke, braking at
 // 6000 rpm/s (100 turn/s^2): stop time 10/100 = 100 ms. The brake line (wired to a board
 // input, here the reference PLS's EN) goes low when the brake is applied. The last count
-// change comes before the exact standstill by at most sqrt(2 * 1 count / 40000 counts/s^2)
-// = 7.1 ms (400 counts/turn), so the measured stop time is in [92.9, 100] ms.
+// change comes before the standstill by up to sqrt(2 * 1 count / 40000 counts/s^2) = 7.1 ms
+// (400 counts/turn); the rig measures to the standstill of the motion itself.
 const std::string kPress = R"([campaign]
 name = "press"
 end = "400ms"
@@ -124,6 +130,30 @@ brake_line = "brake"
 limit_ms = 120
 )";
 
+// Issue 16 (1): standstill comes from the motion, not from the last count change. A press
+// stroke at 600 rpm (10 turn/s) braked at a rpm/s stops after v0/a = 10 / (a / 60) s; the
+// deceleration is swept so that this crosses the 150 ms limit. The stop time measured must
+// be that closed form (to the ns the rig rounds the braking segment to) and the verdict must
+// flip exactly past the limit (a 157.9 ms stop used to read short and pass).
+TEST(Executive, BrakeStopTimeIsTheClosedFormAndFlipsExactlyAtTheLimit) {
+  for (const double stop_ms : {149.9, 149.999999, 150.0, 150.000001, 150.1, 157.9}) {
+    const double decel_rpm_s = 600.0 / (stop_ms / 1000.0);
+    std::string text = kPress;
+    text.replace(text.find("decel_rpm_s = 6000"), std::string("decel_rpm_s = 6000").size(),
+                 fmt::format("decel_rpm_s = {:.17g}", decel_rpm_s));
+    text.replace(text.find("limit_ms = 120"), std::string("limit_ms = 120").size(), "limit_ms = 150");
+    const Campaign c = parse_campaign(text, "t.toml");
+    const RunOutput out = Executive(c).run(c.runs[0]);
+    ASSERT_TRUE(out.result.error.empty()) << out.result.error;
+    const auto* stop = find(out.result, "stop.stop_time");
+    ASSERT_NE(stop, nullptr);
+    const double closed_form_s = 10.0 / (decel_rpm_s / 60.0); // v0 / a, turns/s over turns/s²
+    const auto closed_form_ns = static_cast<std::int64_t>(std::llround(closed_form_s * 1e9));
+    EXPECT_EQ(stop->value, static_cast<double>(closed_form_ns) / 1e6) << stop_ms;
+    EXPECT_EQ(stop->outcome, stop_ms <= 150.0 ? Outcome::Pass : Outcome::Fail) << stop_ms;
+  }
+}
+
 TEST(Executive, PressStrokeBrakeStopTime) {
   const Campaign c = parse_campaign(kPress, "t.toml");
   const RunOutput out = Executive(c).run(c.runs[0]);
@@ -134,8 +164,7 @@ TEST(Executive, PressStrokeBrakeStopTime) {
   EXPECT_EQ(brake[0], (Edge{125_ms, Level::Low}));
   const auto* stop = find(out.result, "stop.stop_time");
   ASSERT_NE(stop, nullptr);
-  EXPECT_GE(stop->value, 92.9);
-  EXPECT_LE(stop->value, 100.0);
+  EXPECT_EQ(stop->value, 100.0); // standstill from the motion: v0/a = 10 / 100 s exactly
   EXPECT_EQ(stop->outcome, Outcome::Pass);
 }
 

@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 #include "check_test_support.hpp"
 #include "rig/checks/brake.hpp"
+#include "rig/checks/standstill.hpp"
 
 namespace hilrig::checks {
 namespace {
@@ -64,19 +66,50 @@ TEST(BrakeStop, StandstillIsTheLastCountChange) {
   EXPECT_EQ(standstill_after(s, 400_ms, 600_ms), 400_ms);
 }
 
+Standstill exactly_at(Nanos t) { return Standstill{t, t}; }
+
 TEST(BrakeStop, PassesAtTheLimitAndFailsOneMillisecondOrOneNanosecondOver) {
-  // Applied 100 ms, standstill 300 ms: 200 ms stop time.
+  // Applied 100 ms, exact standstill 300 ms: 200 ms stop time.
   const BrakeSpec spec{.name = "brake", .limit = 200_ms};
-  auto r = check_brake_stop(100_ms, shaft_stopping_at(300_ms), 600_ms, {}, spec);
+  auto r = check_brake_stop(100_ms, exactly_at(300_ms), {}, spec);
   EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
   EXPECT_EQ(find(r, "brake.stop_time").value, 200.0);
   EXPECT_EQ(find(r, "brake.stop_time").unit, "ms");
   ASSERT_TRUE(find(r, "brake.stop_time").window);
   EXPECT_EQ(find(r, "brake.stop_time").window->end, 300_ms);
   for (const Nanos stop : {301_ms, 300_ms + 1_ns}) {
-    r = check_brake_stop(100_ms, shaft_stopping_at(stop), 600_ms, {}, spec);
+    r = check_brake_stop(100_ms, exactly_at(stop), {}, spec);
     EXPECT_EQ(r.outcome(), rig::Outcome::Fail) << stop.count();
   }
+}
+
+// From count changes alone (hardware): the shaft counts every 10 ms and its last change is
+// at 300 ms, so it is no faster than 1 count / 10 ms after it and has stopped by 310 ms:
+// standstill in [300, 310] ms, a stop time of 200 .. 210 ms judged on 210 ms.
+TEST(BrakeStop, FromCountChangesTheIntervalIsJudgedOnItsUpperEnd) {
+  const auto motion = shaft_stopping_at(300_ms);
+  const auto still = standstill_interval(motion, 100_ms, 600_ms);
+  ASSERT_TRUE(still);
+  EXPECT_EQ(still->earliest, 300_ms);
+  EXPECT_EQ(still->latest, 310_ms);
+  for (const auto& [limit, outcome] :
+       {std::pair{209_ms, rig::Outcome::Fail}, std::pair{210_ms - 1_ns, rig::Outcome::Fail},
+        std::pair{210_ms, rig::Outcome::Pass}, std::pair{211_ms, rig::Outcome::Pass}}) {
+    const auto r = check_brake_stop(100_ms, motion, 600_ms, {}, {.name = "b", .limit = limit});
+    EXPECT_EQ(find(r, "b.stop_time").outcome, outcome) << limit.count();
+    EXPECT_EQ(find(r, "b.stop_time").value, 210.0);
+    EXPECT_NE(find(r, "b.stop_time").detail.find("judged on the upper end"), std::string::npos);
+  }
+  // The interval must end inside the trace to prove the shaft stayed still.
+  EXPECT_EQ(standstill_interval(motion, 100_ms, 305_ms), std::nullopt);
+  // Already still before the brake: [from, from].
+  EXPECT_EQ(standstill_interval(motion, 400_ms, 600_ms)->latest, 400_ms);
+}
+
+TEST(BrakeStop, ExactStandstillPastTheTraceIsNoStandstill) {
+  EXPECT_EQ(exact_standstill(601_ms, 600_ms), std::nullopt);
+  EXPECT_EQ(exact_standstill(std::nullopt, 600_ms), std::nullopt);
+  EXPECT_EQ(exact_standstill(600_ms, 600_ms)->latest, 600_ms);
 }
 
 TEST(BrakeStop, StillMovingAtTheEndOfTheTraceIsANamedFailure) {
@@ -100,21 +133,30 @@ TEST(BrakeStop, ReportedStopTimeAgainstMeasured) {
 
 TEST(BrakeStop, FaultOutputMustAssertExactlyWhenTheLimitIsExceeded) {
   // Fault output normally high, low = fault ([MODEL], ANS1 chapter 3). Stop time 200 ms.
-  const auto motion = shaft_stopping_at(300_ms);
+  const auto motion = exactly_at(300_ms);
   const std::vector<Edge> fault{{300_ms + 125_ms, Level::Low}};
   const std::vector<Edge> none;
   BrakeSpec spec{.name = "b", .limit = 150_ms, .check_fault = true};
   // Over the limit: the fault must assert.
-  EXPECT_EQ(find(check_brake_stop(100_ms, motion, 600_ms, fault, spec), "b.fault_output").outcome,
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, fault, spec), "b.fault_output").outcome,
             rig::Outcome::Pass);
-  EXPECT_EQ(find(check_brake_stop(100_ms, motion, 600_ms, none, spec), "b.fault_output").outcome,
-            rig::Outcome::Fail);
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, none, spec), "b.fault_output").outcome, rig::Outcome::Fail);
   // Exactly at the limit: no fault expected; one asserted is a failure.
   spec.limit = 200_ms;
-  EXPECT_EQ(find(check_brake_stop(100_ms, motion, 600_ms, none, spec), "b.fault_output").outcome,
-            rig::Outcome::Pass);
-  EXPECT_EQ(find(check_brake_stop(100_ms, motion, 600_ms, fault, spec), "b.fault_output").outcome,
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, none, spec), "b.fault_output").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, fault, spec), "b.fault_output").outcome,
             rig::Outcome::Fail);
+}
+
+// An interval that straddles the limit (stop time 200 .. 210 ms, limit 205 ms) cannot say
+// whether the board had to assert its fault: either answer passes, the stop time fails.
+TEST(BrakeStop, FaultOutputFromAnIntervalAcrossTheLimitAcceptsEither) {
+  const Standstill still{300_ms, 310_ms};
+  const std::vector<Edge> fault{{400_ms, Level::Low}};
+  const BrakeSpec spec{.name = "b", .limit = 205_ms, .check_fault = true};
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, fault, spec), "b.fault_output").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, {}, spec), "b.fault_output").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, {}, spec), "b.stop_time").outcome, rig::Outcome::Fail);
 }
 
 } // namespace

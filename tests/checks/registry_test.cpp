@@ -230,9 +230,58 @@ TEST(Registry, BrakeFromTheBrakeLineAndTheReportedWord) {
                             {"fault_output", "dut.stop_fault"}},
                        "brake");
   EXPECT_EQ(lines_of(p), (std::vector<std::string>{"rig.brake", "dut.stop_fault"}));
-  const auto r = run_check("brake", p, c);
+  // Virtual time: the executive hands the exact standstill (here 250 ms) in the capture.
+  c.standstill = [](Nanos) { return std::optional<Nanos>{250_ms}; };
+  auto r = run_check("brake", p, c);
+  EXPECT_EQ(find(r, "brake.stop_time").value, 150.0);
   EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  // Hardware: only the count changes; the last count took 50 ms, so standstill lies in
+  // [250, 300] ms and the stop time is judged on its upper end, 200 ms: exactly at the limit.
+  c.standstill = nullptr;
+  r = run_check("brake", p, c);
+  EXPECT_EQ(find(r, "brake.stop_time").value, 200.0);
   EXPECT_EQ(find(r, "brake.stop_time").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  // A hair beyond: the same interval against a limit 1 ns shorter fails.
+  const auto tight = build(
+      "brake_stop_time",
+      json{{"limit_ms", 199.999999}, {"brake_line", "rig.brake"}, {"reported", "dut.stop_time"}}, "brake");
+  EXPECT_EQ(find(run_check("brake", tight, c), "brake.stop_time").outcome, rig::Outcome::Fail);
+}
+
+TEST(Registry, ThroughputPhaseCoverageIsTypedAndInformational) {
+  const json base{{"output", "o"}, {"limit_us", 20}, {"crossings_us", json::array({0, 3, 7, 11})}};
+  auto with = [&](json extra) {
+    json t = base;
+    t.update(extra);
+    return t;
+  };
+  const auto p = std::get<ThroughputParams>(build("throughput", with({{"scan_us", 10}}), "tp"));
+  ASSERT_TRUE(p.phase.has_value());
+  EXPECT_EQ(p.phase->scan, 10_us);
+  EXPECT_EQ(p.phase->bins, 10U);
+  EXPECT_FALSE(std::get<ThroughputParams>(build("throughput", base)).phase.has_value());
+  // Ranges checked when the campaign is parsed.
+  EXPECT_EQ(problem("throughput", with({{"scan_us", 0}})), "scan_us");
+  EXPECT_EQ(problem("throughput", with({{"scan_us", -1}})), "scan_us");
+  EXPECT_EQ(problem("throughput", with({{"scan_us", 10}, {"phase_bins", 0}})), "phase_bins");
+  EXPECT_EQ(problem("throughput", with({{"scan_us", 10}, {"phase_bins", 1.5}})), "phase_bins");
+  EXPECT_EQ(problem("throughput", with({{"phase_bins", 4}})), "phase_bins");
+  EXPECT_EQ(problem("throughput", with({{"scan_us", 10}, {"phase_bins", 1000}})), "ok");
+  // Crossings at 0, 3, 7, 11 us in a 10 us scan land in bins 0, 3, 7 and 1 of 10: 4 covered.
+  // The coverage has no limit: it is reported, never a reason to fail.
+  Capture c;
+  c.lines["o"] = {{2_us, Level::High}, {5_us, Level::High}, {9_us, Level::High}, {13_us, Level::High}};
+  c.end = 100_us;
+  const auto r = run_check("tp", p, c);
+  const auto& cov = find(r, "tp.phase_coverage");
+  EXPECT_EQ(cov.value, 4.0);
+  EXPECT_EQ(cov.unit, "bins");
+  EXPECT_FALSE(cov.lower.has_value());
+  EXPECT_FALSE(cov.upper.has_value());
+  EXPECT_EQ(cov.outcome, rig::Outcome::Pass);
+  EXPECT_NE(cov.detail.find("4/10 bins"), std::string::npos) << cov.detail;
+  EXPECT_NE(cov.detail.find("incomplete"), std::string::npos) << cov.detail;
 }
 
 } // namespace
