@@ -26,7 +26,11 @@ struct Result {
 
 // Runs `hilrig ARGS` (arguments are plain words here: no quoting needed) with stderr to a file.
 Result hilrig(const std::string& args) {
-  const fs::path dir = test::scratch_dir("campaign", "command_line_io");
+  // One directory per test: ctest runs the tests of this file in parallel processes, and a
+  // shared stderr file would hand one test another's messages.
+  const fs::path dir =
+      test::scratch_dir("campaign", std::string("command_line_io_") +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
   const fs::path err = dir / "stderr";
   const std::string command = std::string(HILRIG_EXE) + " " + args + " 2>" + err.string();
   Result r;
