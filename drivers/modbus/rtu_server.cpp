@@ -13,6 +13,10 @@
 #include <stdexcept>
 
 namespace hilrig::drivers::modbus {
+namespace {
+// How long a frame of known length waits for its missing bytes (libmodbus waits 500 ms).
+constexpr Nanos kByteTimeout = milliseconds(100);
+} // namespace
 
 namespace {
 
@@ -94,7 +98,13 @@ void RtuServer::serve_once() {
   while (pending_ > 0) {
     RtuFrame frame = next_rtu_frame(std::span(in_.data(), pending_), false);
     if (frame.kind == RtuFrameKind::Incomplete) {
-      if (wait_readable(silence_) && read_more()) {
+      // A frame whose function fixes its length waits up to kByteTimeout for its last byte: a
+      // USB adapter or an emulated UART delivers bytes in bursts with gaps longer than 3.5
+      // characters (seen in the RT VM lane), and cutting there lost whole requests. A frame of
+      // unknown length ends at the silence.
+      const std::optional<std::size_t> expected = rtu_request_length(std::span(in_.data(), pending_));
+      const Nanos wait = expected && *expected > pending_ ? kByteTimeout : silence_;
+      if (wait_readable(wait) && read_more()) {
         continue;
       }
       frame = next_rtu_frame(std::span(in_.data(), pending_), true); // the line fell silent
