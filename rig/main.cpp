@@ -12,6 +12,7 @@
 #include "rig/cli/latency_command.hpp"
 #include "rig/cli/list_command.hpp"
 #include "rig/cli/merge_command.hpp"
+#include "rig/cli/power_command.hpp"
 #include "rig/cli/run_command.hpp"
 #include "rig/cli/serve_command.hpp"
 #include "rig/cli/synth_command.hpp"
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   hilrig::cli::add_merge_command(app);
   hilrig::cli::add_serve_command(app);
   hilrig::cli::add_latency_command(app);
+  hilrig::cli::add_power_command(app);
   if (const auto problem = hilrig::cli::unknown_word(app, argc, argv)) {
     std::fprintf(stderr, "%s\n", problem->c_str());
     return 2; // bad input, as every usage error

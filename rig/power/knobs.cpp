@@ -1,0 +1,52 @@
+#include "rig/power/knobs.hpp"
+
+#include <array>
+
+namespace hilrig::power {
+namespace {
+
+struct Row {
+  std::string_view model;
+  std::string_view kind;
+  std::string_view param;
+  KnobDirection direction;
+};
+
+// The detection-power knobs, each a parameter documented in its model's README. An output
+// that reaches its pin later makes every timing an output edge carries worse: the crossing to
+// output latency (throughput), the position at which the edge falls (edge_at_position) and the
+// advance the board achieves (advance_counts).
+constexpr std::array kKnobs{
+    Row{"ans1", "throughput", "output_delay", KnobDirection::Up},
+    Row{"ans1", "edge_at_position", "output_delay", KnobDirection::Up},
+    Row{"ans1", "advance_counts", "output_delay", KnobDirection::Up},
+    Row{"ans1", "debounce", "brake_debounce", KnobDirection::Up},
+    Row{"pls2700", "throughput", "output_delay", KnobDirection::Up},
+    Row{"pls2700", "advance_counts", "output_delay", KnobDirection::Up},
+    Row{"amci4501", "throughput", "throughput", KnobDirection::Up},
+    Row{"reference_pls", "throughput", "delay", KnobDirection::Up},
+};
+
+bool value_check(std::string_view kind) {
+  return kind == "word_equals" || kind == "word_within" || kind == "word_bits" || kind == "frame_decodes";
+}
+
+} // namespace
+
+Knob knob_for(std::string_view model, std::string_view kind) {
+  for (const Row& r : kKnobs)
+    if (r.model == model && r.kind == kind) return Knob{std::string(r.param), r.direction, {}};
+  Knob k;
+  if (value_check(kind))
+    k.no_knob = "no knob: a value check (a word or a frame), not a timing with a deviation to sweep";
+  else if (kind == "brake_stop_time")
+    k.no_knob = "no knob: the stop time is the scenario's brake (motion decel_rpm_s), not a board parameter";
+  else if (kind == "shaft_move")
+    k.no_knob = "no knob: the " + std::string(model) + " model has no step-timing deviation parameter";
+  else
+    k.no_knob = "no knob: the " + std::string(model) + " model has no parameter that moves a " +
+                std::string(kind) + " measurement";
+  return k;
+}
+
+} // namespace hilrig::power

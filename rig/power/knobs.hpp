@@ -1,0 +1,24 @@
+#pragma once
+// Which deviation of a virtual board each check kind judges: the model parameter (a named
+// row of the model's parameter table, `hilrig list`) that `hilrig power` sweeps away from its
+// nominal value until the check fails, and in which direction. A check kind a model has no
+// such parameter for has a named reason instead (docs/power.md).
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace hilrig::power {
+
+enum class KnobDirection { Up, Down }; // which way from the nominal value the board gets worse
+
+struct Knob {
+  std::string param; // the model's parameter; "" when there is none (see no_knob)
+  KnobDirection direction = KnobDirection::Up;
+  std::string no_knob; // why there is none: "no knob: ..."
+};
+
+// The knob for a check of `kind` on the model `model`.
+[[nodiscard]] Knob knob_for(std::string_view model, std::string_view kind);
+
+} // namespace hilrig::power

@@ -1,0 +1,231 @@
+#include "rig/power/power.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "rig/campaign/check_selection.hpp"
+#include "rig/campaign/executive.hpp"
+#include "rig/duts/dut.hpp"
+#include "rig/power/bisect.hpp"
+#include "rig/power/knobs.hpp"
+
+namespace hilrig::power {
+namespace {
+
+// How far a measurement lies beyond the limit it broke, as a fraction of that limit (of 1 when
+// the limit is 0); nullopt when it broke none (a failure without a value).
+struct Excess {
+  double fraction = 0.0;
+  double limit = 0.0;
+};
+std::optional<Excess> excess(const rig::Measurement& m) {
+  const auto over = [](double by, double limit) {
+    return Excess{by / std::max(std::abs(limit), 1e-300), limit};
+  };
+  if (m.upper && m.value > *m.upper)
+    return *m.upper == 0.0 ? Excess{m.value, 0.0} : over(m.value - *m.upper, *m.upper);
+  if (m.lower && m.value < *m.lower)
+    return *m.lower == 0.0 ? Excess{-m.value, 0.0} : over(*m.lower - m.value, *m.lower);
+  return std::nullopt;
+}
+
+// One probe's finding: the check's outcome over every nominal run, and its most failing measurement.
+struct Finding {
+  Probe probe = Probe::Pass;
+  std::optional<rig::Measurement> worst;
+  std::optional<Excess> worst_excess;
+  std::string error;
+};
+
+Finding judge_check(const rig::CampaignResult& result, const std::string& check) {
+  Finding f;
+  bool judged = false;
+  for (const rig::RunResult& run : result.runs) {
+    if (!run.error.empty()) {
+      f.probe = Probe::Error;
+      f.error = run.error;
+      return f;
+    }
+    for (const rig::CheckResult& c : run.checks) {
+      if (c.check != check) continue;
+      judged = true;
+      const rig::Outcome o = c.outcome();
+      if (o == rig::Outcome::Error) {
+        f.probe = Probe::Error;
+        f.error = c.measurements.empty() ? "nothing judged" : c.measurements.front().detail;
+        return f;
+      }
+      if (o != rig::Outcome::Fail) continue;
+      f.probe = Probe::Fail;
+      for (const rig::Measurement& m : c.measurements) {
+        if (m.outcome != rig::Outcome::Fail) continue;
+        const auto e = excess(m);
+        if (!f.worst || (e && (!f.worst_excess || e->fraction > f.worst_excess->fraction))) {
+          f.worst = m;
+          f.worst_excess = e;
+        }
+      }
+    }
+  }
+  if (!judged) {
+    f.probe = Probe::Error;
+    f.error = "the check judged nothing";
+  }
+  return f;
+}
+
+// The knob as the bisection sees it: a deviation from the nominal value in the knob's own
+// unit (ns for a duration, exact integers), and how the campaign's dut.params take a value.
+struct KnobScale {
+  duts::ParamKind kind = duts::ParamKind::Duration;
+  double nominal = 0.0; // ns or the number
+  double min = 0.0;
+  double max = 0.0;
+  int sign = 1;
+  [[nodiscard]] double value_at(double deviation) const { return nominal + sign * deviation; }
+  [[nodiscard]] duts::ParamValue param_at(double deviation) const {
+    const double v = value_at(deviation);
+    if (kind == duts::ParamKind::Duration) return Nanos{static_cast<std::int64_t>(std::llround(v))};
+    if (kind == duts::ParamKind::Integer) return static_cast<std::int64_t>(std::llround(v));
+    return v;
+  }
+  // Written in us for a duration, as is for a number.
+  [[nodiscard]] double shown(double deviation) const {
+    return kind == duts::ParamKind::Duration ? value_at(deviation) / 1e3 : value_at(deviation);
+  }
+};
+
+std::optional<double> numeric(const duts::ParamValue& v) {
+  if (const auto* n = std::get_if<Nanos>(&v)) return static_cast<double>(n->count());
+  if (const auto* d = std::get_if<double>(&v)) return *d;
+  if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
+  return std::nullopt;
+}
+
+std::string kind_of_check(const campaign::Campaign& c, const std::string& name) {
+  for (const campaign::Scenario& s : c.points)
+    if (const campaign::CheckSpec* k = s.check(name)) return k->kind;
+  return {};
+}
+
+PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std::uint64_t seed,
+                       const PowerOptions& options) {
+  PowerRow row;
+  row.check = name;
+  row.kind = kind_of_check(c, name);
+  const std::string& model = c.points.front().dut.model;
+  const Knob knob = knob_for(model, row.kind);
+  if (knob.param.empty()) {
+    row.reason = knob.no_knob;
+    return row;
+  }
+  const duts::DutInfo* dut = duts::find_dut(model);
+  const duts::ParamInfo* info = dut != nullptr ? dut->param(knob.param) : nullptr;
+  const auto given = c.points.front().dut.params.find(knob.param);
+  if (info == nullptr || given == c.points.front().dut.params.end() || !numeric(given->second.value)) {
+    row.reason = fmt::format("no knob: the {} model has no numeric parameter {}", model, knob.param);
+    return row;
+  }
+  row.knob = knob.param;
+  row.direction = knob.direction == KnobDirection::Up ? "up" : "down";
+  KnobScale scale;
+  scale.kind = info->kind;
+  scale.nominal = *numeric(given->second.value);
+  scale.min = info->range.min;
+  scale.max = info->range.max;
+  scale.sign = knob.direction == KnobDirection::Up ? 1 : -1;
+  const bool duration = info->kind == duts::ParamKind::Duration;
+  row.knob_unit = duration ? "us" : "";
+  row.nominal = scale.shown(0.0);
+
+  BisectSpec spec;
+  spec.integer = duration || info->kind == duts::ParamKind::Integer;
+  spec.resolution = spec.integer ? 1.0 : std::max(std::abs(scale.nominal), 1.0) * 1e-6;
+  spec.first_step = std::max(spec.resolution, std::abs(scale.nominal) / 100.0);
+  if (spec.integer) spec.first_step = std::ceil(spec.first_step);
+  const double room =
+      knob.direction == KnobDirection::Up ? scale.max - scale.nominal : scale.nominal - scale.min;
+  spec.max_deviation =
+      std::isfinite(room) ? room : 1000.0 * std::max(std::abs(scale.nominal), spec.first_step);
+  spec.max_probes = 48;
+  if (spec.max_deviation <= 0.0) {
+    row.reason = fmt::format("never fails within knob range: {} is already at its range's end", knob.param);
+    return row;
+  }
+
+  // The campaign's nominal runs with only this check, every fault left out: the knob set in
+  // every scenario point, then run through the executive as `hilrig run` runs them.
+  campaign::Campaign base = c;
+  campaign::select_checks(base, campaign::CheckSelection{{name}, {}});
+  base.faults.clear();
+  base.fault_points.clear();
+  std::map<double, Finding> findings;
+  const auto probe = [&](double deviation) {
+    campaign::Campaign probe_campaign = base;
+    for (campaign::Scenario& s : probe_campaign.points)
+      s.dut.params[knob.param].value = scale.param_at(deviation);
+    probe_campaign.runs = campaign::plan_runs(probe_campaign, seed);
+    const campaign::Executive exec(probe_campaign);
+    const rig::CampaignResult result = exec.run_all(probe_campaign.runs, seed, rig::Shard{});
+    Finding f = judge_check(result, name);
+    const Probe p = f.probe;
+    if (options.progress)
+      options.progress(fmt::format("power: {}: {}: {} = {:.6g}{}: {}", c.name, name, knob.param,
+                                   scale.shown(deviation), row.knob_unit.empty() ? "" : " " + row.knob_unit,
+                                   p == Probe::Pass   ? "pass"
+                                   : p == Probe::Fail ? "fail"
+                                                      : "error"));
+    findings[deviation] = std::move(f);
+    return p;
+  };
+  const BisectResult b = bisect_threshold(spec, probe);
+  row.probes = b.probes;
+  row.last_pass = scale.shown(b.last_pass);
+  if (!b.threshold) {
+    row.reason = b.reason;
+    if (b.reason.rfind("never fails", 0) == 0)
+      row.reason =
+          fmt::format("never fails within knob range {} {:.6g} .. {:.6g}{}", knob.param, scale.shown(0.0),
+                      scale.shown(spec.max_deviation), row.knob_unit.empty() ? "" : " " + row.knob_unit);
+    for (const auto& [deviation, f] : findings)
+      if (f.probe == Probe::Error) row.reason += fmt::format(" ({})", f.error);
+    return row;
+  }
+  row.threshold = scale.shown(*b.threshold);
+  const Finding& at = findings.at(*b.threshold);
+  if (at.worst) {
+    row.measurement = at.worst->name;
+    row.unit = at.worst->unit;
+    row.detail = at.worst->detail;
+    if (at.worst_excess) {
+      row.measured = at.worst->value;
+      row.limit = at.worst_excess->limit;
+      row.margin_pct = at.worst_excess->fraction * 100.0;
+    }
+  }
+  return row;
+}
+
+} // namespace
+
+PowerResult measure_power(const campaign::Campaign& c, const PowerOptions& options) {
+  PowerResult out;
+  out.campaign = c.name;
+  out.device = c.points.empty() ? std::string() : c.points.front().dut.model;
+  out.seed = options.seed.value_or(c.seed);
+  for (const std::string& name : campaign::check_names(c)) {
+    if (!options.checks.empty() &&
+        std::find(options.checks.begin(), options.checks.end(), name) == options.checks.end())
+      continue;
+    out.rows.push_back(measure_check(c, name, out.seed, options));
+  }
+  return out;
+}
+
+bool over_margin(const PowerRow& row, double max_pct) { return !row.margin_pct || *row.margin_pct > max_pct; }
+
+} // namespace hilrig::power

@@ -1,0 +1,57 @@
+#pragma once
+// Detection power: for each check of a campaign's nominal runs, the smallest deviation of the
+// virtual board (the check kind's knob, knobs.hpp) at which the check fails, found by
+// bisection (bisect.hpp) on the campaign's own runs through the executive, and what the check
+// measured there against its spec limit. docs/power.md.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rig/campaign/campaign.hpp"
+
+namespace hilrig::power {
+
+struct PowerRow {
+  std::string check;
+  std::string kind;
+  std::string knob;                // the model parameter swept; "" with a no-knob reason
+  std::string knob_unit;           // "us" for a duration knob, "" for a number
+  std::string direction;           // "up" or "down"
+  std::optional<double> nominal;   // knob value, knob_unit
+  std::optional<double> threshold; // the smallest failing knob value found, knob_unit
+  std::optional<double> last_pass; // the largest passing knob value seen, knob_unit
+  std::size_t probes = 0;
+  // What the check measured at the threshold: its most failing measurement.
+  std::string measurement;
+  std::optional<double> measured;
+  std::optional<double> limit;
+  std::string unit;
+  std::optional<double> margin_pct; // (measured - limit) / |limit| * 100, beyond the limit
+  std::string detail;               // the failing measurement's sentence
+  std::string reason;               // why there is no threshold ("" when there is one)
+};
+
+struct PowerResult {
+  std::string campaign;
+  std::string device;
+  std::uint64_t seed = 0;
+  std::vector<PowerRow> rows; // in check-name order
+};
+
+struct PowerOptions {
+  std::optional<std::uint64_t> seed;                // default: the campaign's
+  std::vector<std::string> checks;                  // only these (default: every check)
+  std::function<void(const std::string&)> progress; // one line per probe
+};
+
+// Measures every (selected) check's detection power. The campaign must be for the virtual backend.
+[[nodiscard]] PowerResult measure_power(const campaign::Campaign& c, const PowerOptions& options);
+
+// Whether a row's margin is over max_pct, or the row has no margin at all.
+[[nodiscard]] bool over_margin(const PowerRow& row, double max_pct);
+
+} // namespace hilrig::power

@@ -1,0 +1,121 @@
+#include "rig/power/power_report.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace hilrig::power {
+namespace {
+
+nlohmann::json optional_number(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+std::string with_unit(const std::optional<double>& v, const std::string& unit) {
+  if (!v) return "-";
+  return unit.empty() ? fmt::format("{:.6g}", *v) : fmt::format("{:.6g} {}", *v, unit);
+}
+
+std::string margin_text(const PowerRow& r) {
+  return r.margin_pct ? fmt::format("{:.4f} %", *r.margin_pct) : "-";
+}
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (const char ch : s) {
+    switch (ch) {
+    case '&':
+      out += "&amp;";
+      break;
+    case '<':
+      out += "&lt;";
+      break;
+    case '>':
+      out += "&gt;";
+      break;
+    case '"':
+      out += "&quot;";
+      break;
+    default:
+      out += ch;
+    }
+  }
+  return out;
+}
+
+} // namespace
+
+std::string to_power_json(const PowerResult& result) {
+  nlohmann::json doc;
+  doc["format"] = "hilrig-power";
+  doc["version"] = kPowerFormatVersion;
+  doc["campaign"] = result.campaign;
+  doc["device"] = result.device;
+  doc["seed"] = result.seed;
+  doc["checks"] = nlohmann::json::array();
+  for (const PowerRow& r : result.rows) {
+    nlohmann::json j;
+    j["check"] = r.check;
+    j["kind"] = r.kind;
+    j["knob"] = r.knob.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.knob);
+    j["knob_unit"] = r.knob_unit;
+    j["direction"] = r.direction;
+    j["nominal"] = optional_number(r.nominal);
+    j["threshold"] = optional_number(r.threshold);
+    j["last_pass"] = optional_number(r.last_pass);
+    j["probes"] = r.probes;
+    j["measurement"] = r.measurement;
+    j["measured"] = optional_number(r.measured);
+    j["limit"] = optional_number(r.limit);
+    j["unit"] = r.unit;
+    j["margin_pct"] = optional_number(r.margin_pct);
+    j["detail"] = r.detail;
+    j["reason"] = r.reason.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.reason);
+    doc["checks"].push_back(std::move(j));
+  }
+  return doc.dump(2) + "\n";
+}
+
+std::string to_power_text(const PowerResult& result) {
+  std::string out =
+      fmt::format("detection power: {} ({}), seed {}\n", result.campaign, result.device, result.seed);
+  out += fmt::format("{:<20} {:<17} {:<15} {:>12} {:>14} {:>14} {:>12} {:>10}\n", "check", "kind", "knob",
+                     "nominal", "threshold", "measured", "limit", "margin");
+  for (const PowerRow& r : result.rows) {
+    if (r.threshold) {
+      out += fmt::format("{:<20} {:<17} {:<15} {:>12} {:>14} {:>14} {:>12} {:>10}\n", r.check, r.kind, r.knob,
+                         with_unit(r.nominal, r.knob_unit), with_unit(r.threshold, r.knob_unit),
+                         with_unit(r.measured, r.unit), with_unit(r.limit, r.unit), margin_text(r));
+      if (!r.margin_pct)
+        out += fmt::format("{:<20} fails without a value beyond a limit: {}\n", "", r.detail);
+    } else {
+      out += fmt::format("{:<20} {:<17} {}\n", r.check, r.kind, r.reason);
+    }
+  }
+  return out;
+}
+
+std::string to_power_html(const PowerResult& result) {
+  std::string out = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>detection power: " +
+                    html_escape(result.campaign) +
+                    "</title>\n<style>body{font-family:sans-serif}table{border-collapse:collapse}"
+                    "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}</style></head><body>\n";
+  out += fmt::format("<h1>Detection power: {} ({}), seed {}</h1>\n", html_escape(result.campaign),
+                     html_escape(result.device), result.seed);
+  out +=
+      "<p>For each check, the smallest deviation of the virtual board's knob at which the check fails, what "
+      "the check measured there and how far beyond its spec limit (docs/power.md).</p>\n";
+  out += "<table id=\"power\"><tr><th>check</th><th>kind</th><th>knob</th><th>nominal</th><th>threshold</th>"
+         "<th>measured</th><th>limit</th><th>margin</th><th>reason</th></tr>\n";
+  for (const PowerRow& r : result.rows)
+    out += fmt::format(
+        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
+        "<td>{}</td></tr>\n",
+        html_escape(r.check), html_escape(r.kind), html_escape(r.knob),
+        html_escape(with_unit(r.nominal, r.knob_unit)), html_escape(with_unit(r.threshold, r.knob_unit)),
+        html_escape(with_unit(r.measured, r.unit)), html_escape(with_unit(r.limit, r.unit)),
+        html_escape(margin_text(r)), html_escape(r.reason.empty() && !r.margin_pct ? r.detail : r.reason));
+  out += "</table>\n</body></html>\n";
+  return out;
+}
+
+} // namespace hilrig::power

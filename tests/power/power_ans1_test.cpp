@@ -1,0 +1,83 @@
+// Detection power measured end to end on the shipped ANS1 throughput campaign: the threshold
+// output delay bisected through the executive's own runs must come out where the manual's
+// arithmetic puts it.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rig/campaign/campaign_parser.hpp"
+#include "rig/power/power.hpp"
+
+namespace hilrig::power {
+namespace {
+
+const std::string kThroughput = std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_throughput.toml";
+
+// ans1 manual (seeds/000_08a2edf5547d4d1e.txt:572): master throughput "10 to 20 microseconds"
+// (spec/ans1.md L157, limit_us = 20); the board scans position and outputs every 10 us
+// (spec/ans1.md L187) and the outputs reach the pins output_delay later, so a crossing's latency
+// is (0 .. 10 us to the next scan) + output_delay. A board with output_delay 10 us has a worst
+// case of exactly 20 us and passes; the campaign's 10 crossings cover all ten 1 us phase bins of
+// the scan, so one crossing waits more than 9 us for its scan, and at output_delay 11 us that
+// crossing's latency is over 20 us. The threshold output delay therefore lies in (10, 11] us,
+// and at the threshold (bisected to 1 ns) the worst latency read is over 20 us by at most 1 ns.
+TEST(PowerAns1, ThroughputThresholdOutputDelayIsWhereTheManualsArithmeticPutsIt) {
+  const campaign::Campaign c = campaign::load_campaign(kThroughput);
+  for (const std::uint64_t seed : {2ULL}) {
+    PowerOptions options;
+    options.seed = seed;
+    const PowerResult r = measure_power(c, options);
+    ASSERT_EQ(r.rows.size(), 2u);
+    for (const PowerRow& row : r.rows) {
+      SCOPED_TRACE(row.check + " seed " + std::to_string(seed));
+      EXPECT_EQ(row.knob, "output_delay");
+      EXPECT_EQ(row.reason, "");
+      ASSERT_TRUE(row.nominal && row.threshold && row.last_pass && row.measured && row.limit &&
+                  row.margin_pct);
+      EXPECT_DOUBLE_EQ(*row.nominal, 10.0);
+      EXPECT_GT(*row.threshold, 10.0);
+      EXPECT_LE(*row.threshold, 11.0);
+      EXPECT_NEAR(*row.threshold - *row.last_pass, 0.001, 1e-9); // one ns apart
+      EXPECT_DOUBLE_EQ(*row.limit, 20.0);
+      EXPECT_GT(*row.measured, 20.0);
+      EXPECT_LE(*row.measured, 20.001 + 1e-9);
+      // margin = (measured - limit) / limit: at most 1 ns in 20 us = 0.005 %
+      EXPECT_GT(*row.margin_pct, 0.0);
+      EXPECT_LE(*row.margin_pct, 0.005 + 1e-9);
+      EXPECT_LE(row.probes, 48u);
+    }
+  }
+}
+
+// The same inputs and seed give the same row (the bisection runs on virtual time only); another
+// seed puts the board's scan phase elsewhere, and the threshold moves within (10, 11] us.
+TEST(PowerAns1, IsDeterministicAndTheSeedMovesTheScanPhase) {
+  const campaign::Campaign c = campaign::load_campaign(kThroughput);
+  PowerOptions options;
+  options.checks = {"on"};
+  options.seed = 1;
+  const PowerResult a = measure_power(c, options);
+  const PowerResult b = measure_power(c, options);
+  ASSERT_EQ(a.rows.size(), 1u);
+  ASSERT_EQ(b.rows.size(), 1u);
+  ASSERT_TRUE(a.rows[0].threshold.has_value());
+  EXPECT_EQ(a.rows[0].threshold, b.rows[0].threshold);
+  EXPECT_EQ(a.rows[0].measured, b.rows[0].measured);
+  EXPECT_EQ(a.rows[0].probes, b.rows[0].probes);
+  EXPECT_GT(*a.rows[0].threshold, 10.0);
+  EXPECT_LE(*a.rows[0].threshold, 11.0);
+}
+
+TEST(PowerRows, AMarginOverTheGateOrNoMarginAtAllIsOver) {
+  PowerRow row;
+  EXPECT_TRUE(over_margin(row, 100.0)); // no threshold: over any gate
+  row.margin_pct = 0.005;
+  EXPECT_FALSE(over_margin(row, 0.005)); // inclusive, as every limit
+  EXPECT_FALSE(over_margin(row, 1.0));
+  EXPECT_TRUE(over_margin(row, 0.004));
+  EXPECT_TRUE(over_margin(row, 0.0));
+}
+
+} // namespace
+} // namespace hilrig::power
