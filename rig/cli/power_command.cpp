@@ -83,7 +83,7 @@ void add_power_command(CLI::App& app) {
   cmd->add_option("--seed", *seed, "base seed (default: the campaign's)");
   cmd->add_option("--max-margin", *max_margin,
                   "exit 1 when a check's margin beyond its limit is over PCT %, or it has none");
-  cmd->add_option("--check", o->checks, "only this check (repeatable)");
+  cmd->add_option("--check", o->checks, "only this check (repeatable)")->allow_extra_args(false);
   cmd->callback([o, seed, max_margin, cmd] {
     if (cmd->count("--seed") > 0) {
       if (*seed < 0) {
