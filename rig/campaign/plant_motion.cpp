@@ -1,5 +1,7 @@
 #include "rig/campaign/plant_motion.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <numbers>
 
 namespace hilrig::campaign {
@@ -62,6 +64,16 @@ void PlantMotion::input(Nanos t, plants::PlantInput which, bool level) {
   const plants::Knot at = checkpoint_->state();
   plan_ = signals::MotionProfile(at.angle * per_rad_, at.time);
   for (const signals::Segment& s : segments) plan_.append(s);
+}
+
+double PlantMotion::position(Nanos t) const {
+  if (history_.empty() || t >= plan_.start_time()) return plan_.position(t);
+  // The history's segments are contiguous and in time order: the last one starting at or
+  // before t holds it.
+  const auto after = std::upper_bound(history_.begin(), history_.end(), t,
+                                      [](Nanos v, const signals::Segment& s) { return v < s.start; });
+  if (after == history_.begin()) return history_.front().position;
+  return std::prev(after)->position_at(t);
 }
 
 signals::MotionProfile PlantMotion::trajectory() const {

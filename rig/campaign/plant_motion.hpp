@@ -32,6 +32,9 @@ public:
   // An input changes at t (>= the last input's time): the plan is redone from t.
   void input(Nanos t, plants::PlantInput which, bool level);
 
+  // The shaft's position at t in counts: the history before the last input, the plan from
+  // it on (what a resolver's stators carry; the board samples at or before now).
+  [[nodiscard]] double position(Nanos t) const;
   // The whole trajectory (committed history, then the plan), in counts.
   [[nodiscard]] signals::MotionProfile trajectory() const;
   // Its knots as the brake check reads the shaft: position changes up to the last one,

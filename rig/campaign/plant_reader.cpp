@@ -192,6 +192,11 @@ std::optional<PlantSpec> read_plant(const std::string& file, const toml::table& 
     s.press_start.speed = start_speed.value_or(0.0);
     s.press_start.valve = r.opt_boolean("start_valve").value_or(true);
     s.press_start.motor = motor;
+    if (const auto fly = r.opt_number("start_flywheel_speed")) {
+      if (!(std::isfinite(*fly) && std::abs(*fly) <= 1e4))
+        r.fail("start_flywheel_speed", "a finite speed within ±1e4 (rad/s)");
+      s.press_start.flywheel_speed = *fly;
+    }
     s.press_changes = read_changes(file, r, kPress, s.press);
     for (const auto& c : s.press_changes)
       if (c.params.crank.rod <= c.params.crank.radius)

@@ -651,8 +651,6 @@ private:
     if (!s.plant) return;
     if (!s.motion.moves.empty())
       fail(s.plant->where, "plant", "no [motion] moves beside it (the plant turns the shaft)");
-    if (!s.resolver.sin_line.empty())
-      fail(s.plant->where, "plant", "no [resolver] beside it (a plant drives the quadrature encoder)");
   }
 
   const std::string& file_;

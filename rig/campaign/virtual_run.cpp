@@ -146,10 +146,18 @@ private:
   void drive_resolver() {
     const ResolverSpec& r = s_.resolver;
     if (r.sin_line.empty()) return;
-    const auto profile = std::make_shared<const signals::MotionProfile>(motion_.profile);
     const double per_turn = s_.encoder.counts_per_turn();
-    bus_.analog(r.sin_line).set_waveform(stator_waveform(profile, per_turn, r, Stator::Sine));
-    bus_.analog(r.cos_line).set_waveform(stator_waveform(profile, per_turn, r, Stator::Cosine));
+    ShaftPosition shaft;
+    if (plant_) {
+      // The plant's angle as it moved: the history before its last input, the plan after
+      // (the board samples its stators at or before now, so what it reads has happened).
+      shaft = [motion = &plant_->motion()](Nanos t) { return motion->position(t); };
+    } else {
+      const auto profile = std::make_shared<const signals::MotionProfile>(motion_.profile);
+      shaft = [profile](Nanos t) { return profile->position(t); };
+    }
+    bus_.analog(r.sin_line).set_waveform(stator_waveform(shaft, per_turn, r, Stator::Sine));
+    bus_.analog(r.cos_line).set_waveform(stator_waveform(shaft, per_turn, r, Stator::Cosine));
   }
 
   const RunInputs& in_;

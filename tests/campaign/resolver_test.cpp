@@ -9,8 +9,10 @@
 #include <random>
 #include <string>
 
+#include "models/pls2700/position.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
+#include "rig/campaign/plant_motion.hpp"
 #include "rig/campaign/resolver_stators.hpp"
 #include "test_support.hpp"
 
@@ -212,6 +214,72 @@ TEST(ResolverStators, AFrequencyOutsideTheRigsBandIsRejected) {
                  std::string("cos = \"res.cos\"\nexcitation_hz = ") + bad);
     EXPECT_NE(error_of(text).find("resolver.excitation_hz: a"), std::string::npos) << bad << error_of(text);
   }
+}
+
+// Round trip, plant angle -> stators -> decoded angle: a press crank at w0 = 20 pi rad/s whose
+// valve drops at 125 ms (a closed-loop input: the plan is redone from then on) stops under a
+// brake that engages d = 20 ms later and rises over r = 30 ms to T = 2000 N·m on J_c = 2 kg·m²
+// (the clutch let go: the flywheel no longer counts). The angle in closed form:
+//   t <= t_v + d:        w0 t
+//   rise (tau = t - t_v - d <= r):  th_d + w0 tau - T tau³ / (6 J_c r)
+//   then (u = tau - r):  th_r + w2 u - T u² / (2 J_c), w2 = w0 - T r / (2 J_c), to rest.
+// At each 5 kHz excitation peak (the boards sample there) the stators, demodulated by the
+// Series 2700's decoder (atan2, 8192 counts a turn, truncated), give that angle back to
+// within one of its counts; the angles before the input come from the plant's history, the
+// ones after from its plan, whichever was asked last.
+TEST(ResolverStators, CarryThePlantsAngleAndDecodeBackToIt) {
+  PlantSpec spec;
+  spec.kind = PlantKind::Press;
+  spec.press.flywheel_inertia = 20.0;
+  spec.press.crank_inertia = 2.0;
+  spec.press.ram_mass = 0.0;
+  spec.press.brake_torque = 2000.0;
+  spec.press.valve_delay = 0.020;
+  spec.press.brake_rise = 0.030;
+  spec.press_start.speed = 20.0 * std::numbers::pi;
+  spec.press_start.motor = false;
+  const double per_turn = 4096.0;
+  const Nanos end{400'000'000};
+  PlantMotion motion(spec, per_turn, end);
+  motion.input(Nanos{125'000'000}, plants::PlantInput::Valve, false);
+
+  const double w0 = 20.0 * std::numbers::pi, jc = 2.0, torque = 2000.0, d = 0.020, r = 0.030, tv = 0.125;
+  const double w2 = w0 - torque * r / (2.0 * jc);
+  const auto angle = [&](double t) {
+    if (t <= tv + d) return w0 * t;
+    const double tau = t - tv - d;
+    const double th_d = w0 * (tv + d);
+    if (tau <= r) return th_d + w0 * tau - torque * tau * tau * tau / (6.0 * jc * r);
+    const double th_r = th_d + w0 * r - torque * r * r / (6.0 * jc);
+    const double u = std::min(tau - r, w2 * jc / torque);
+    return th_r + w2 * u - torque * u * u / (2.0 * jc);
+  };
+  ResolverSpec res;
+  res.phase_deg = 90.0; // the 2700's cosine reference: peaks every 200 us from 0
+  const ShaftPosition shaft = [&motion](Nanos t) { return motion.position(t); };
+  const Waveform sin_w = stator_waveform(shaft, per_turn, res, Stator::Sine);
+  const Waveform cos_w = stator_waveform(shaft, per_turn, res, Stator::Cosine);
+  int compared = 0;
+  for (std::int64_t ns = 0; ns <= end.count(); ns += 200'000) {
+    const Nanos t{ns};
+    const double reference = res.amplitude; // cos(0) at every peak
+    const models::pls2700::StatorReading got =
+        models::pls2700::decode_stators(sin_w(t), cos_w(t), reference, 0.5, 1.5);
+    ASSERT_TRUE(got.valid) << ns;
+    const double turns = angle(t.seconds()) / (2.0 * std::numbers::pi);
+    const double expected = 8192.0 * (turns - std::floor(turns));
+    // Truncation: the decoded count is the one the angle lies in (a hair either side of a
+    // count boundary may read its neighbour; the circle wraps at 8192).
+    const double diff = std::remainder(static_cast<double>(got.raw) - expected, 8192.0);
+    EXPECT_GE(diff, -1.0 - 1e-6) << ns;
+    EXPECT_LE(diff, 1e-6) << ns;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 2001);
+  // The history holds the motion before the input exactly: 100 ms at w0.
+  EXPECT_NEAR(motion.position(Nanos{100'000'000}), w0 * 0.1 * per_turn / (2.0 * std::numbers::pi), 1e-6);
+  // At rest at the closed form's stop angle.
+  EXPECT_NEAR(motion.position(end), angle(1.0) * per_turn / (2.0 * std::numbers::pi), 1e-5);
 }
 
 } // namespace
