@@ -38,7 +38,9 @@ struct Params {
   // Output driver delay d_drv and 2742-18 input delay (T_ON/T_OFF, max 3 ms, L1724) [X].
   Nanos output_delay{0};
   Nanos input_delay{0};
-  // First update tick relative to construction (a real board's phase is arbitrary).
+  // First update tick relative to construction, moved on to the next reference peak (the
+  // update clock is locked to the reference). A real board's phase is arbitrary: the rig
+  // (rig/duts/pls2700_dut.cpp) draws it from the run's seed.
   Nanos update_phase{0};
 };
 

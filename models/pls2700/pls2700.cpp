@@ -18,7 +18,11 @@ Pls2700::Pls2700(Scheduler& scheduler, ModelVariant model, const Params& params,
   for (std::size_t ch = 0; ch < 2; ++ch) {
     restart_tach(ch);
   }
-  schedule_update(scheduler_.now() + params_.update_phase);
+  // The update clock is locked to the reference: each update samples the stators at a
+  // reference peak (README "Decoder"). Sampling at an earlier peak would add its age to every
+  // latency, past the manual's 200/400 us position throughput (L457).
+  first_update_ = excitation_.peak_at_or_after(scheduler_.now() + params_.update_phase);
+  schedule_update(first_update_);
 }
 
 Pls2700::Pls2700(Scheduler& scheduler, const Pls2700Pins& pins, ModelVariant model, const Params& params,
@@ -66,7 +70,7 @@ void Pls2700::restart_tach(std::size_t ch) {
   // The interval starts at the sample its first counted step starts from: the last update, or
   // the first one still to come. Starting it at `now` would also count the step from the last
   // update to `now`, one update too many in the first value.
-  Nanos start = last_update_ >= Nanos{0} ? last_update_ : scheduler_.now() + params_.update_phase;
+  Nanos start = last_update_ >= Nanos{0} ? last_update_ : first_update_;
   if (fault_ == Fault::TachFirstIntervalLong) {
     start = scheduler_.now();
   }

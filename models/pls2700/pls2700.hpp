@@ -37,7 +37,8 @@ inline constexpr std::size_t kMaxBtwWords = 64;
 
 class Pls2700 {
 public:
-  // Updates start at scheduler.now() + params.update_phase. Keep the device alive while
+  // Updates start at the first reference peak at or after scheduler.now() +
+  // params.update_phase. Keep the device alive while
   // the scheduler runs.
   Pls2700(Scheduler& scheduler, ModelVariant model, const Params& params = {}, Fault fault = Fault::Nominal);
   Pls2700(Scheduler& scheduler, const Pls2700Pins& pins, ModelVariant model, const Params& params = {},
@@ -137,6 +138,7 @@ private:
   std::array<bool, 2> fault_latched_{};
   std::array<Tachometer, 2> tach_{};
   std::array<AdvanceSpeed, 2> advance_speed_;
+  Nanos first_update_{0};
   Nanos last_update_{-1};
   std::array<CycleLogic, 2> cycles_{};
   std::shared_ptr<InputState> inputs_;

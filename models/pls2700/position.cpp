@@ -20,6 +20,11 @@ Nanos Excitation::latest_peak(Nanos t) const {
   return half_period_ * (t / half_period_);
 }
 
+Nanos Excitation::peak_at_or_after(Nanos t) const {
+  const Nanos before = latest_peak(t);
+  return before < t ? before + half_period_ : before;
+}
+
 signals::ResolverParams Excitation::resolver_params(double transformation_ratio) const {
   signals::ResolverParams p;
   p.excitation_hz = frequency_hz_;

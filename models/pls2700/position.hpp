@@ -19,6 +19,8 @@ public:
   [[nodiscard]] double value(Nanos t) const;
   // The latest peak (positive or negative) at or before t (t >= 0).
   [[nodiscard]] Nanos latest_peak(Nanos t) const;
+  // The first peak at or after t (t >= 0).
+  [[nodiscard]] Nanos peak_at_or_after(Nanos t) const;
   [[nodiscard]] double frequency_hz() const { return frequency_hz_; }
   [[nodiscard]] double amplitude() const { return amplitude_; }
   // The same reference as signals::Resolver writes it (A sin(2 pi f t + pi/2)), so a rig

@@ -1,4 +1,5 @@
 #include "rig/duts/pls2700_dut.hpp"
+#include "rig/duts/seed_phase.hpp"
 
 #include <array>
 #include <stdexcept>
@@ -99,7 +100,6 @@ p::Params pls2700_params(const DutParams& params) {
   q.power_up_mask = static_cast<std::uint8_t>(params.integer("power_up_mask") & 0xFF);
   q.output_delay = params.duration("output_delay");
   q.input_delay = params.duration("input_delay");
-  q.update_phase = params.duration("update_phase");
   q.advance_speed_window = params.duration("advance_speed_window");
   return q;
 }
@@ -151,8 +151,11 @@ DutInfo pls2700_info() {
        "output mask at power-up", between(0.0, 255.0)},
       {"output_delay", ParamKind::Duration, d.output_delay, "update to output pin", between(0_us, 10_ms)},
       {"input_delay", ParamKind::Duration, d.input_delay, "2742-18 input T_ON/T_OFF", between(0_us, 3_ms)},
-      {"update_phase", ParamKind::Duration, d.update_phase, "first update after power-up",
-       between(0_us, 1_s)},
+      {"update_phase_from_seed",
+       ParamKind::Boolean,
+       true,
+       "the first update falls at the seed's phase within one update period (else at 0)",
+       {}},
       {"advance_speed_window", ParamKind::Duration, d.advance_speed_window,
        "the advances' speed is the motion over this moving window (R-ADV-5)", between(1_ms, 10_s)},
   };
@@ -160,10 +163,14 @@ DutInfo pls2700_info() {
     info.variants.push_back({std::string(f.name), std::string(f.description)});
   info.host = HostInterface{p::kMaxBtwWords + 1, kPls2700SingleTransferWord + 1, false, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
-                 std::uint64_t /*seed*/) -> std::unique_ptr<Dut> {
+                 std::uint64_t seed) -> std::unique_ptr<Dut> {
     const auto fault = p::fault_from_name(variant);
     if (!fault) throw std::invalid_argument("pls2700 has no variant " + std::string(variant));
-    return std::make_unique<Pls2700Dut>(scheduler, pls2700_model(params), pls2700_params(params), *fault);
+    const p::ModelVariant model = pls2700_model(params);
+    p::Params q = pls2700_params(params);
+    if (params.boolean("update_phase_from_seed"))
+      q.update_phase = phase_from_seed(seed, p::traits(model).update_period);
+    return std::make_unique<Pls2700Dut>(scheduler, model, q, *fault);
   };
   return info;
 }

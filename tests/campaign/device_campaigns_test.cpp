@@ -122,8 +122,8 @@ TEST(DeviceCampaigns, Pls2700AdvancesLeadByTheSpeedTimesTheAdvance) {
 }
 
 TEST(DeviceCampaigns, Pls2700TwoChannelUpdateIsSlowerThanOneChannel) {
-  // L377/L457: 200 us on the 2741, 400 us on the 2742. At 1,234.5 rpm the crossings fall
-  // at every phase of the update, so the 2742's slowest edge is past 200 us.
+  // L377/L457: 200 us on the 2741, 400 us on the 2742. The crossings fall at every phase
+  // of the update (100/100 bins), so the 2742's slowest edge is past 200 us.
   const Campaign one = load_campaign(test::campaign_dir("pls2700") + "/pls2700_update_2741.toml");
   const Campaign two = load_campaign(test::campaign_dir("pls2700") + "/pls2700_update_2742.toml");
   const rig::CampaignResult r1 = test::run_everything(one);
