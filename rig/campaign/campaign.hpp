@@ -121,8 +121,14 @@ struct HostAction {
   Kind kind = Kind::Write;
   Nanos at{0};
   std::vector<std::uint16_t> words; // write: output words 0.. (the rig drives Transmit)
-  std::size_t word = 0;             // read: input word index
-  std::string name;                 // read: the observation's name; write: optional label
+  // write: the words alone, no Transmit handshake (the 4501's control bits 0 and 1 act
+  // without a programming cycle, seeds/001 L167).
+  bool raw = false;
+  std::size_t word = 0; // read: input word index
+  // read: inside the handshake of the write above, once Acknowledge is set and before
+  // Transmit is cleared (the 7361's error bits are valid only then, seeds/004 L1298-1299).
+  bool while_acknowledged = false;
+  std::string name; // read: the observation's name; write: optional label
   std::string unit;
   bool is_signed = false;     // read: the word is two's complement
   Nanos timeout{100'000'000}; // write: how long to wait for Acknowledge

@@ -21,16 +21,13 @@ void HostSequence::start() {
 void HostSequence::step() {
   const HostAction& h = s_.host[next_];
   if (h.kind == HostAction::Kind::Read) {
-    const std::uint16_t raw = words_.read(h.word);
-    const double value =
-        h.is_signed ? static_cast<double>(static_cast<std::int16_t>(raw)) : static_cast<double>(raw);
-    observations_.push_back(rig::Observation{h.name, value, h.unit, sched_.now()});
+    read(h);
     done();
     return;
   }
   for (std::size_t w = h.words.size(); w-- > 1;) words_.write(w, h.words[w]);
   words_.write(0, h.words[0]);
-  if (!host_.handshake) {
+  if (!host_.handshake || h.raw) {
     done();
     return;
   }
@@ -41,6 +38,13 @@ void HostSequence::step() {
 
 bool HostSequence::ack() {
   return ((static_cast<unsigned>(words_.read(0)) >> host_.acknowledge_bit) & 1U) != 0U;
+}
+
+void HostSequence::read(const HostAction& h) {
+  const std::uint16_t raw = words_.read(h.word);
+  const double value =
+      h.is_signed ? static_cast<double>(static_cast<std::int16_t>(raw)) : static_cast<double>(raw);
+  observations_.push_back(rig::Observation{h.name, value, h.unit, sched_.now()});
 }
 
 void HostSequence::poll_ack(bool want) {
@@ -55,6 +59,8 @@ void HostSequence::poll_ack(bool want) {
                                             fmt::format("Acknowledge {} after Transmit (polled every {} us)",
                                                         "set", checks::to_us(s_.host_poll)),
                                             rig::TraceWindow{write_started_, sched_.now()}));
+      for (std::size_t k = next_ + 1; k < s_.host.size() && s_.host[k].while_acknowledged; ++k)
+        read(s_.host[k]);
       words_.write(0, h.words[0]);
       write_started_ = sched_.now();
       sched_.after(s_.host_poll, [this] { poll_ack(false); });
@@ -76,8 +82,12 @@ void HostSequence::poll_ack(bool want) {
   sched_.after(s_.host_poll, [this, want] { poll_ack(want); });
 }
 
+// Reads while Acknowledge was set belong to their write's handshake: done with it (or lost
+// with it when Acknowledge never came).
 void HostSequence::done() {
-  if (++next_ >= s_.host.size()) return;
+  ++next_;
+  while (next_ < s_.host.size() && s_.host[next_].while_acknowledged) ++next_;
+  if (next_ >= s_.host.size()) return;
   const Nanos at = std::max(sched_.now(), s_.host[next_].at);
   if (at > s_.end) return;
   sched_.at(at, [this] { step(); });

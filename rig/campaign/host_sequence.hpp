@@ -1,8 +1,8 @@
 #pragma once
 // A scenario's host actions in a Scheduler's time: command writes with the AMCI
-// Transmit/Acknowledge handshake (polled every host_poll) and status reads into
-// observations. The words go through HostWords: the virtual DUT's host interface in a
-// virtual run, a Modbus link in a hardware run.
+// Transmit/Acknowledge handshake (polled every host_poll) or raw, and status reads into
+// observations, at their time or while the write above has Acknowledge set. The words go through HostWords:
+// the virtual DUT's host interface in a virtual run, a Modbus link in a hardware run.
 
 #include <cstddef>
 #include <cstdint>
@@ -40,6 +40,7 @@ public:
 
 private:
   void step();
+  void read(const HostAction& h);
   [[nodiscard]] bool ack();
   void poll_ack(bool want);
   void done();

@@ -19,6 +19,9 @@ inline constexpr Nanos kMaxEnd = seconds(3'600);
 // nothing polls faster), at most 1 s.
 inline constexpr Nanos kMinHostPoll = microseconds(10);
 inline constexpr Nanos kMaxHostPoll = seconds(1);
+// A host word: 0 .. 0xFFFF, or a PLC INT -32768 .. -1 written as its two's complement.
+inline constexpr std::int64_t kMinWord = -32'768;
+inline constexpr std::int64_t kMaxWord = 0xFFFF;
 // A late-edge tolerance beyond 1 s judges nothing.
 inline constexpr Nanos kMaxEdgeTolerance = seconds(1);
 

@@ -460,34 +460,39 @@ private:
       TableReader r(file_, *t, fmt::format("host[{}]", i++));
       HostAction h;
       h.where = r.where();
-      h.at = r.duration("at");
-      if (h.at < Nanos{0} || h.at > s.end) r.fail("at", "a time within the run (0 .. campaign.end)");
-      if (!s.host.empty() && h.at < s.host.back().at)
-        r.fail("at", fmt::format("times in order: this action ({} ns) is before the one above ({} ns)",
-                                 h.at.count(), s.host.back().at.count()));
       const bool write = r.has("write");
       const bool read = r.has("read");
       if (write == read) r.fail(write ? "read" : "write", "exactly one of write = [words] or read = word");
+      h.while_acknowledged = read && r.opt_boolean("while_acknowledged").value_or(false);
+      if (h.while_acknowledged) {
+        read_while_acknowledged(s, r, host);
+        h.at = s.host.back().at;
+      } else {
+        h.at = r.duration("at");
+        if (h.at < Nanos{0} || h.at > s.end) r.fail("at", "a time within the run (0 .. campaign.end)");
+        if (!s.host.empty() && h.at < s.host.back().at)
+          r.fail("at", fmt::format("times in order: this action ({} ns) is before the one above ({} ns)",
+                                   h.at.count(), s.host.back().at.count()));
+      }
       if (write) {
         h.kind = HostAction::Kind::Write;
-        const toml::node* n = r.node("write");
-        const auto* arr = n->as_array();
-        if (arr == nullptr || arr->empty()) r.fail("write", "an array of output words, word 0 first");
-        for (const toml::node& e : *arr) {
-          const auto* v = e.as_integer();
-          if (v == nullptr || v->get() < 0 || v->get() > 0xFFFF)
-            fail(pos_of(e), r.key("write"), "16-bit words (0 .. 0xFFFF)");
-          h.words.push_back(static_cast<std::uint16_t>(v->get()));
-        }
+        h.words = read_words(r, "write");
         if (host != nullptr && h.words.size() > host->output_words)
           r.fail("write", fmt::format("at most {} output words for {}", host->output_words, info_->name));
-        if (host != nullptr && host->handshake &&
+        h.raw = r.opt_boolean("raw").value_or(false);
+        if (h.raw && host != nullptr && !host->handshake)
+          r.fail("raw", fmt::format("no raw = true for {}: it has no Transmit handshake, every write is raw",
+                                    info_->name));
+        if (!h.raw && host != nullptr && host->handshake &&
             ((static_cast<unsigned>(h.words[0]) >> host->transmit_bit) & 1U) != 0U)
           r.fail("write",
                  fmt::format("word 0 with Transmit (bit {}) clear: the rig drives the handshake itself",
                              host->transmit_bit));
         h.name = r.opt_string("name").value_or("");
-        if (auto to = opt_duration_in(r, "timeout", Nanos{1}, limits::kMaxEnd)) h.timeout = *to;
+        if (auto to = opt_duration_in(r, "timeout", Nanos{1}, limits::kMaxEnd)) {
+          if (h.raw) r.fail("timeout", "no timeout on a raw write: it waits for no Acknowledge");
+          h.timeout = *to;
+        }
       } else {
         h.kind = HostAction::Kind::Read;
         const std::int64_t word = r.integer("read");
@@ -505,6 +510,37 @@ private:
       r.finish();
       s.host.push_back(std::move(h));
     }
+  }
+
+  // A read within a handshake has no time of its own: it belongs to the handshake write above
+  // (or follows another such read of it), on a board that has Acknowledge.
+  void read_while_acknowledged(const Scenario& s, TableReader& r, const duts::HostInterface* host) const {
+    if (host != nullptr && !host->handshake)
+      r.fail(
+          "while_acknowledged",
+          fmt::format("no while_acknowledged for {}: it has no Transmit/Acknowledge handshake", info_->name));
+    if (r.has("at"))
+      r.fail("at",
+             "no at with while_acknowledged: the read happens when Acknowledge of the write above is set");
+    auto w = s.host.rbegin();
+    while (w != s.host.rend() && w->kind == HostAction::Kind::Read && w->while_acknowledged) ++w;
+    if (w == s.host.rend() || w->kind != HostAction::Kind::Write || w->raw)
+      r.fail("while_acknowledged", "a [[host]] write with the handshake (not raw) right above this read");
+  }
+
+  // 16-bit words; a negative value is a PLC INT, stored as its two's complement.
+  std::vector<std::uint16_t> read_words(TableReader& r, std::string_view key) const {
+    std::vector<std::uint16_t> words;
+    const auto* arr = r.node(key)->as_array();
+    if (arr == nullptr || arr->empty()) r.fail(key, "an array of output words, word 0 first");
+    for (const toml::node& e : *arr) {
+      const auto* v = e.as_integer();
+      if (v == nullptr || v->get() < limits::kMinWord || v->get() > limits::kMaxWord)
+        fail(pos_of(e), r.key(key),
+             "16-bit words (-32768 .. 0xFFFF; a negative one is a two's complement INT)");
+      words.push_back(static_cast<std::uint16_t>(v->get()));
+    }
+    return words;
   }
 
   static nlohmann::json to_json(const toml::node& n) {

@@ -364,7 +364,8 @@ std::vector<CheckKind> make_kinds() {
   k.push_back(kind("word_bits", "an observed word's bits under a mask equal a value",
                    {P("observation", Str, true, "the observation's name"),
                     P("mask", Int, true, "bits judged, never none", between(1, 0xFFFF)),
-                    P("value", Int, true, "expected (word & mask)", between(0, 0xFFFF)),
+                    P("value", Int, true, "expected (word & mask); a negative one is a two's complement INT",
+                      between(-32768, 0xFFFF)),
                     P("at_ms", Num, false, "judge the latest observation by then (default: the last)", time)},
                    word_bits));
   return k;
