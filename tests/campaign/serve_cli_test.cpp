@@ -1,0 +1,184 @@
+// `hilrig serve pls2700 --model M --motion constant:<rpm>rpm --param KEY=VALUE` as a PLC sees
+// it: the hilrig program serves Modbus TCP on a port the OS chooses (--modbus-tcp
+// 127.0.0.1:0, told back through --port-file) and this test talks to it with libmodbus.
+// Waits are polls with a bounded deadline, never a fixed sleep standing for a time.
+
+#include <fcntl.h>
+#include <modbus.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/tools/scratch_files.hpp"
+
+extern char** environ;
+
+namespace hilrig {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// Long enough for a loaded CI machine to start a process; a pass takes well under a second.
+constexpr auto kDeadline = std::chrono::seconds(30);
+
+// One `hilrig serve pls2700 ...` child process, stopped with SIGTERM when the test is done.
+class Served {
+public:
+  Served(const std::string& name, const std::vector<std::string>& options) {
+    dir_ = test::scratch_dir("campaign", "serve_cli_" + name);
+    const fs::path port_file = dir_ / "port";
+    std::vector<std::string> args{HILRIG_EXE, "serve", "pls2700"};
+    args.insert(args.end(), options.begin(), options.end());
+    for (const char* a : {"--modbus-tcp", "127.0.0.1:0", "--port-file"}) args.emplace_back(a);
+    args.push_back(port_file.string());
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t io;
+    posix_spawn_file_actions_init(&io);
+    posix_spawn_file_actions_addopen(&io, 1, (dir_ / "stdout").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&io, 2, (dir_ / "stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (posix_spawn(&pid_, argv[0], &io, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawn_file_actions_destroy(&io);
+    // The port file is complete once it holds a line.
+    for (const auto until = Clock::now() + kDeadline; pid_ > 0 && Clock::now() < until;) {
+      const std::string text = fs::exists(port_file) ? test::read_file(port_file) : std::string();
+      if (text.find('\n') != std::string::npos) {
+        port_ = std::stoi(text);
+        break;
+      }
+      int status = 0;
+      if (waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1; // it ended: stderr says why
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+  Served(const Served&) = delete;
+  Served& operator=(const Served&) = delete;
+  ~Served() {
+    if (ctx_ != nullptr) {
+      modbus_close(ctx_);
+      modbus_free(ctx_);
+    }
+    if (pid_ > 0) {
+      kill(pid_, SIGTERM);
+      int status = 0;
+      waitpid(pid_, &status, 0);
+    }
+  }
+
+  [[nodiscard]] std::string why_not() const { return test::read_file(dir_ / "stderr"); }
+
+  // A connected client, or null (then why_not() says why).
+  modbus_t* client() {
+    if (ctx_ != nullptr || port_ <= 0) return ctx_;
+    ctx_ = modbus_new_tcp("127.0.0.1", port_);
+    if (ctx_ != nullptr && modbus_connect(ctx_) != 0) {
+      modbus_free(ctx_);
+      ctx_ = nullptr;
+    }
+    return ctx_;
+  }
+
+  // Input registers [address, address + n): the words, or the Modbus exception's errno.
+  struct Read {
+    std::vector<std::uint16_t> words;
+    int error = 0;
+  };
+  Read input_registers(int address, int n) {
+    Read r;
+    r.words.assign(static_cast<std::size_t>(n), 0);
+    if (client() == nullptr) {
+      r.error = -1;
+      return r;
+    }
+    if (modbus_read_input_registers(ctx_, address, n, r.words.data()) != n) r.error = errno;
+    return r;
+  }
+
+private:
+  fs::path dir_;
+  pid_t pid_ = -1;
+  int port_ = 0;
+  modbus_t* ctx_ = nullptr;
+};
+
+// pls2700 manual (seeds/002_46e90574ec92805f.txt:1257-1260): the BTR is 3 words on the
+// 1-channel modules (2731, 2731-04, 2741), 5 on the 2-channel ones (2732, 2732-04, 2742,
+// 2742-18); the served map has exactly those input registers (models/pls2700/README.md).
+TEST(ServeCli, ModelChoosesTheRegisterMap) {
+  for (const auto& [model, words] :
+       {std::pair{"2731", 3}, std::pair{"2741", 3}, std::pair{"2742", 5}, std::pair{"2742-18", 5}}) {
+    Served s(std::string("model_") + model, {"--model", model});
+    const auto all = s.input_registers(0, words);
+    ASSERT_EQ(all.error, 0) << model << ": " << s.why_not();
+    const auto past = s.input_registers(words, 1);
+    EXPECT_EQ(past.error, EMBXILADD) << model; // one word past the BTR
+    const auto longer = s.input_registers(0, words + 1);
+    EXPECT_EQ(longer.error, EMBXILADD) << model;
+  }
+}
+
+// The position word of channel 1 once it is no longer the power-up 0: polled until it has
+// taken `distinct` different values (the module updating), or the deadline.
+std::vector<std::uint16_t> positions(Served& s, std::size_t distinct) {
+  std::vector<std::uint16_t> seen;
+  for (const auto until = Clock::now() + kDeadline; Clock::now() < until && seen.size() < distinct;) {
+    const auto r = s.input_registers(0, 1);
+    if (r.error != 0) break;
+    if (seen.empty() || seen.back() != r.words[0]) seen.push_back(r.words[0]);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return seen;
+}
+
+// With --motion a built-in transducer turns the stators: the position word moves through
+// valid positions (bit 15 clear; 8000h is the transducer-fault pattern, seeds/002:1315).
+// --param min_stator_ratio=1.1 puts the same transducer's ratio (1.0) below the fault limit:
+// a transducer fault, 8000h in position and tach (L1315), while the nominal server moves.
+// Without --motion the stators are open: 8000h as well.
+TEST(ServeCli, MotionTurnsTheTransducerAndAParamFaultsIt) {
+  Served faulted("faulted",
+                 {"--model", "2731", "--motion", "constant:300rpm", "--param", "min_stator_ratio=1.1"});
+  Served open("open", {"--model", "2731"});
+  Served nominal("nominal", {"--model", "2731", "--motion", "constant:300rpm"});
+  const std::vector<std::uint16_t> moved = positions(nominal, 4);
+  ASSERT_EQ(moved.size(), 4U) << nominal.why_not();
+  for (std::size_t i = 1; i < moved.size(); ++i) EXPECT_EQ(moved[i] & 0x8000, 0) << moved[i];
+  // Both others started before the nominal one moved through three updates.
+  for (Served* s : {&faulted, &open}) {
+    const auto r = s->input_registers(0, 2);
+    ASSERT_EQ(r.error, 0) << s->why_not();
+    EXPECT_EQ(r.words[0], 0x8000);
+    EXPECT_EQ(r.words[1], 0x8000);
+  }
+}
+
+TEST(ServeCli, BadMotionOrParamIsRefusedBeforeServing) {
+  for (const auto& opts : {std::vector<std::string>{"--motion", "300rpm"},
+                           std::vector<std::string>{"--param", "min_stator_ratio=11"},
+                           std::vector<std::string>{"--model", "2750"}}) {
+    Served s("refused_" + opts[0].substr(2), opts);
+    EXPECT_EQ(s.client(), nullptr);
+    EXPECT_NE(s.why_not().find("hilrig serve"), std::string::npos) << s.why_not();
+  }
+}
+
+} // namespace
+} // namespace hilrig
