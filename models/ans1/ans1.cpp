@@ -55,7 +55,7 @@ std::uint16_t bit(int point) { return static_cast<std::uint16_t>(1U << static_ca
 Ans1::Ans1(Scheduler& scheduler, const Params& params, Variant variant)
     : scheduler_(scheduler), params_(effective_params(params, variant)), variant_(variant),
       excitation_(params.excitation_hz, params.excitation_amplitude), quad_(std::make_shared<QuadState>()),
-      monitors_(monitor_faults(variant)) {
+      monitors_(monitor_faults(variant), params.brake_sample_start_ms) {
   monitors_.configure(MonitorSetup{}, position_.full_scale_count);
   schedule_scan(scheduler_.now() + params_.scan_phase);
   speed_event_ = scheduler_.at(scheduler_.now() + params_.speed_update_period, [this] { speed_update(); });

@@ -100,14 +100,16 @@ void BrakeMonitor::begin_debounce(Nanos now, std::uint16_t gmp) {
 void BrakeMonitor::debounce(Nanos now, bool released, std::uint16_t gmp) {
   const std::int64_t elapsed = whole_ms(now - t0_);
   bool noise = false;
-  if (elapsed >= kSampleStartMs && elapsed < kDecisionMs) {
+  // The decision falls 16 samples after the first (L1039-L1040): 32 ms with the manual's 16.
+  const std::int64_t decision_ms = sample_start_ms_ + (kDecisionMs - kSampleStartMs);
+  if (elapsed >= sample_start_ms_ && elapsed < decision_ms) {
     // 16 samples at 16..31 ms after the edge; "8 of 16" counted cumulatively [MODEL A9].
     if (released) {
       noise = ++active_samples_ >= kNoiseActiveSamples;
     } else {
       ++inactive_samples_;
     }
-  } else if (elapsed >= kDecisionMs) {
+  } else if (elapsed >= decision_ms) {
     if (inactive_samples_ >= kQualifyInactiveSamples) {
       phase_ = Phase::Stopping;
       return;

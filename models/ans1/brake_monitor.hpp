@@ -51,7 +51,10 @@ public:
   static constexpr std::int64_t kStopWindowMs = 125;         // L1042, L1052
   static constexpr std::uint16_t kStartTimeOverflow = 32768; // L2616 [A8]
 
-  explicit BrakeMonitor(bool never_faults = false) : never_faults_(never_faults) {}
+  // sample_start_ms: when the 16 debounce samples start after the application edge (L1039's
+  // 16 ms; a detection-power knob, models/ans1/README.md).
+  explicit BrakeMonitor(bool never_faults = false, std::int64_t sample_start_ms = kSampleStartMs)
+      : never_faults_(never_faults), sample_start_ms_(sample_start_ms) {}
 
   // A new setup ends any running cycle; measured times and faults are kept unless the monitor
   // is disabled (input 0), which clears them.
@@ -80,6 +83,7 @@ private:
   BrakeSetup setup_{};
   BrakeStatus status_{};
   bool never_faults_;
+  std::int64_t sample_start_ms_;
   Phase phase_ = Phase::Idle;
   bool primed_ = false;   // the first tick after configure only records the level
   bool released_ = false; // level seen at the previous tick

@@ -6,8 +6,8 @@ namespace {
 [[nodiscard]] std::uint16_t bit(int point) { return static_cast<std::uint16_t>(1U << (point - 1)); }
 } // namespace
 
-Monitors::Monitors(MonitorFaults faults)
-    : brake_(faults.brake_never_faults), die_(faults.die_check_never_counts) {}
+Monitors::Monitors(MonitorFaults faults, std::int64_t brake_sample_start_ms)
+    : brake_(faults.brake_never_faults, brake_sample_start_ms), die_(faults.die_check_never_counts) {}
 
 void Monitors::configure(const MonitorSetup& setup, std::uint16_t full_scale_count) {
   setup_ = setup;

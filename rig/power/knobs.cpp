@@ -10,6 +10,8 @@ struct Row {
   std::string_view kind;
   std::string_view param;
   KnobDirection direction;
+  WorstCase worst_case = WorstCase::Unknown;
+  std::string_view plus_param = {};
 };
 
 // The detection-power knobs, each a parameter documented in its model's README. An output
@@ -17,14 +19,17 @@ struct Row {
 // output latency (throughput), the position at which the edge falls (edge_at_position) and the
 // advance the board achieves (advance_counts).
 constexpr std::array kKnobs{
-    Row{"ans1", "throughput", "output_delay", KnobDirection::Up},
+    // models/ans1/params.hpp: latency in [output_delay, scan + output_delay].
+    Row{"ans1", "throughput", "output_delay", KnobDirection::Up, WorstCase::KnobPlusParam, "scan"},
     Row{"ans1", "edge_at_position", "output_delay", KnobDirection::Up},
     Row{"ans1", "advance_counts", "output_delay", KnobDirection::Up},
-    Row{"ans1", "debounce", "brake_debounce", KnobDirection::Up},
+    Row{"ans1", "debounce", "brake_sample_start_ms", KnobDirection::Up},
     Row{"pls2700", "throughput", "output_delay", KnobDirection::Up},
     Row{"pls2700", "advance_counts", "output_delay", KnobDirection::Up},
-    Row{"amci4501", "throughput", "throughput", KnobDirection::Up},
-    Row{"reference_pls", "throughput", "delay", KnobDirection::Up},
+    // models/amci4501/README.md: every response exactly one throughput after its input edge.
+    Row{"amci4501", "throughput", "throughput", KnobDirection::Up, WorstCase::Knob},
+    // rig/duts/reference_pls.cpp: the output is decided at a scan and set `delay` later.
+    Row{"reference_pls", "throughput", "delay", KnobDirection::Up, WorstCase::KnobPlusParam, "scan"},
 };
 
 bool value_check(std::string_view kind) {
@@ -35,7 +40,8 @@ bool value_check(std::string_view kind) {
 
 Knob knob_for(std::string_view model, std::string_view kind) {
   for (const Row& r : kKnobs)
-    if (r.model == model && r.kind == kind) return Knob{std::string(r.param), r.direction, {}};
+    if (r.model == model && r.kind == kind)
+      return Knob{std::string(r.param), r.direction, {}, r.worst_case, std::string(r.plus_param)};
   Knob k;
   if (value_check(kind))
     k.no_knob = "no knob: a value check (a word or a frame), not a timing with a deviation to sweep";

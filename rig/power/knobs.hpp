@@ -12,10 +12,18 @@ namespace hilrig::power {
 
 enum class KnobDirection { Up, Down }; // which way from the nominal value the board gets worse
 
+// What the model says the board's own worst case of the judged time is, from the knob: the knob
+// itself (a response delay), or the knob plus another parameter (a scan period: an event waits
+// up to one scan, then the output delay). The rig reads only the worst case its stimulus met;
+// this is what the board would show at the worst phase.
+enum class WorstCase { Unknown, Knob, KnobPlusParam };
+
 struct Knob {
   std::string param; // the model's parameter; "" when there is none (see no_knob)
   KnobDirection direction = KnobDirection::Up;
   std::string no_knob; // why there is none: "no knob: ..."
+  WorstCase worst_case = WorstCase::Unknown;
+  std::string plus_param; // KnobPlusParam: the parameter added (a duration)
 };
 
 // The knob for a check of `kind` on the model `model`.

@@ -207,6 +207,20 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
       row.margin_pct = at.worst_excess->fraction * 100.0;
     }
   }
+  if (duration && row.unit == "us" && row.limit && *row.limit > 0.0 &&
+      knob.worst_case != WorstCase::Unknown) {
+    double worst_ns = scale.value_at(*b.threshold);
+    if (knob.worst_case == WorstCase::KnobPlusParam) {
+      const auto plus = c.points.front().dut.params.find(knob.plus_param);
+      const Nanos* ns =
+          plus == c.points.front().dut.params.end() ? nullptr : std::get_if<Nanos>(&plus->second.value);
+      worst_ns = ns == nullptr ? std::nan("") : worst_ns + static_cast<double>(ns->count());
+    }
+    if (std::isfinite(worst_ns)) {
+      row.board_worst = worst_ns / 1e3;
+      row.board_margin_pct = (*row.board_worst - *row.limit) / *row.limit * 100.0;
+    }
+  }
   return row;
 }
 
@@ -226,6 +240,9 @@ PowerResult measure_power(const campaign::Campaign& c, const PowerOptions& optio
   return out;
 }
 
-bool over_margin(const PowerRow& row, double max_pct) { return !row.margin_pct || *row.margin_pct > max_pct; }
+bool over_margin(const PowerRow& row, double max_pct) {
+  if (!row.margin_pct) return true;
+  return *row.margin_pct > max_pct || (row.board_margin_pct && *row.board_margin_pct > max_pct);
+}
 
 } // namespace hilrig::power

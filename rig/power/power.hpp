@@ -31,8 +31,12 @@ struct PowerRow {
   std::optional<double> limit;
   std::string unit;
   std::optional<double> margin_pct; // (measured - limit) / |limit| * 100, beyond the limit
-  std::string detail;               // the failing measurement's sentence
-  std::string reason;               // why there is no threshold ("" when there is one)
+  // The board's own worst case at the threshold, where the model states it (knobs.hpp), in
+  // `unit`, and its distance beyond the limit: what the campaign lets through unseen.
+  std::optional<double> board_worst;
+  std::optional<double> board_margin_pct;
+  std::string detail; // the failing measurement's sentence
+  std::string reason; // why there is no threshold ("" when there is one)
 };
 
 struct PowerResult {
@@ -51,7 +55,8 @@ struct PowerOptions {
 // Measures every (selected) check's detection power. The campaign must be for the virtual backend.
 [[nodiscard]] PowerResult measure_power(const campaign::Campaign& c, const PowerOptions& options);
 
-// Whether a row's margin is over max_pct, or the row has no margin at all.
+// Whether a row's margin (or the board's worst-case margin, where known) is over max_pct, or
+// the row has no margin at all.
 [[nodiscard]] bool over_margin(const PowerRow& row, double max_pct);
 
 } // namespace hilrig::power

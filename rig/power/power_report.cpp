@@ -15,9 +15,9 @@ std::string with_unit(const std::optional<double>& v, const std::string& unit) {
   return unit.empty() ? fmt::format("{:.6g}", *v) : fmt::format("{:.6g} {}", *v, unit);
 }
 
-std::string margin_text(const PowerRow& r) {
-  return r.margin_pct ? fmt::format("{:.4f} %", *r.margin_pct) : "-";
-}
+std::string percent(const std::optional<double>& pct) { return pct ? fmt::format("{:.4f} %", *pct) : "-"; }
+
+std::string margin_text(const PowerRow& r) { return percent(r.margin_pct); }
 
 std::string html_escape(const std::string& s) {
   std::string out;
@@ -68,6 +68,8 @@ std::string to_power_json(const PowerResult& result) {
     j["limit"] = optional_number(r.limit);
     j["unit"] = r.unit;
     j["margin_pct"] = optional_number(r.margin_pct);
+    j["board_worst"] = optional_number(r.board_worst);
+    j["board_margin_pct"] = optional_number(r.board_margin_pct);
     j["detail"] = r.detail;
     j["reason"] = r.reason.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.reason);
     doc["checks"].push_back(std::move(j));
@@ -78,13 +80,16 @@ std::string to_power_json(const PowerResult& result) {
 std::string to_power_text(const PowerResult& result) {
   std::string out =
       fmt::format("detection power: {} ({}), seed {}\n", result.campaign, result.device, result.seed);
-  out += fmt::format("{:<20} {:<17} {:<15} {:>12} {:>14} {:>14} {:>12} {:>10}\n", "check", "kind", "knob",
-                     "nominal", "threshold", "measured", "limit", "margin");
+  out +=
+      fmt::format("{:<20} {:<17} {:<15} {:>12} {:>14} {:>14} {:>12} {:>10} {:>14} {:>10}\n", "check", "kind",
+                  "knob", "nominal", "threshold", "measured", "limit", "margin", "board worst", "margin");
   for (const PowerRow& r : result.rows) {
     if (r.threshold) {
-      out += fmt::format("{:<20} {:<17} {:<15} {:>12} {:>14} {:>14} {:>12} {:>10}\n", r.check, r.kind, r.knob,
-                         with_unit(r.nominal, r.knob_unit), with_unit(r.threshold, r.knob_unit),
-                         with_unit(r.measured, r.unit), with_unit(r.limit, r.unit), margin_text(r));
+      out +=
+          fmt::format("{:<20} {:<17} {:<15} {:>12} {:>14} {:>14} {:>12} {:>10} {:>14} {:>10}\n", r.check,
+                      r.kind, r.knob, with_unit(r.nominal, r.knob_unit), with_unit(r.threshold, r.knob_unit),
+                      with_unit(r.measured, r.unit), with_unit(r.limit, r.unit), margin_text(r),
+                      with_unit(r.board_worst, r.unit), percent(r.board_margin_pct));
       if (!r.margin_pct)
         out += fmt::format("{:<20} fails without a value beyond a limit: {}\n", "", r.detail);
     } else {
@@ -103,17 +108,21 @@ std::string to_power_html(const PowerResult& result) {
                      html_escape(result.device), result.seed);
   out +=
       "<p>For each check, the smallest deviation of the virtual board's knob at which the check fails, what "
-      "the check measured there and how far beyond its spec limit (docs/power.md).</p>\n";
+      "the check measured there and how far beyond its spec limit; where the model states it, the board's "
+      "own worst case at that deviation and its distance beyond the limit (docs/power.md).</p>\n";
   out += "<table id=\"power\"><tr><th>check</th><th>kind</th><th>knob</th><th>nominal</th><th>threshold</th>"
-         "<th>measured</th><th>limit</th><th>margin</th><th>reason</th></tr>\n";
+         "<th>measured</th><th>limit</th><th>margin</th><th>board worst case</th><th>board margin</th>"
+         "<th>reason</th></tr>\n";
   for (const PowerRow& r : result.rows)
     out += fmt::format(
         "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
-        "<td>{}</td></tr>\n",
+        "<td>{}</td><td>{}</td><td>{}</td></tr>\n",
         html_escape(r.check), html_escape(r.kind), html_escape(r.knob),
         html_escape(with_unit(r.nominal, r.knob_unit)), html_escape(with_unit(r.threshold, r.knob_unit)),
         html_escape(with_unit(r.measured, r.unit)), html_escape(with_unit(r.limit, r.unit)),
-        html_escape(margin_text(r)), html_escape(r.reason.empty() && !r.margin_pct ? r.detail : r.reason));
+        html_escape(margin_text(r)), html_escape(with_unit(r.board_worst, r.unit)),
+        html_escape(percent(r.board_margin_pct)),
+        html_escape(r.reason.empty() && !r.margin_pct ? r.detail : r.reason));
   out += "</table>\n</body></html>\n";
   return out;
 }

@@ -97,6 +97,7 @@ TEST(DutParams, EveryAns1ReadmeChoiceIsSettableAndListed) {
       {"resolver_min_ratio", [](const P& p) { return ParamValue{p.resolver_min_ratio}; }},
       {"resolver_max_ratio", [](const P& p) { return ParamValue{p.resolver_max_ratio}; }},
       {"time_only_retrigger_restarts", [](const P& p) { return ParamValue{p.time_only_retrigger_restarts}; }},
+      {"brake_sample_start_ms", [](const P& p) { return ParamValue{p.brake_sample_start_ms}; }},
   };
   expect_every_readme_choice_reaches_its_field(*find_dut("ans1"), readme,
                                                [](const DutParams& v) { return ans1_params(v); });

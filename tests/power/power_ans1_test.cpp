@@ -46,6 +46,12 @@ TEST(PowerAns1, ThroughputThresholdOutputDelayIsWhereTheManualsArithmeticPutsIt)
       EXPECT_GT(*row.margin_pct, 0.0);
       EXPECT_LE(*row.margin_pct, 0.005 + 1e-9);
       EXPECT_LE(row.probes, 48u);
+      // The board's own worst case there is scan + output_delay (params.hpp, spec/ans1.md L187):
+      // over 20 us by less than one 1 us phase bin, 5 % of the limit.
+      ASSERT_TRUE(row.board_worst && row.board_margin_pct);
+      EXPECT_NEAR(*row.board_worst, 10.0 + *row.threshold, 1e-9);
+      EXPECT_GT(*row.board_margin_pct, 0.0);
+      EXPECT_LE(*row.board_margin_pct, 5.0 + 1e-9);
     }
   }
 }
@@ -69,6 +75,30 @@ TEST(PowerAns1, IsDeterministicAndTheSeedMovesTheScanPhase) {
   EXPECT_LE(*a.rows[0].threshold, 11.0);
 }
 
+// ans1 manual (seeds/000_08a2edf5547d4d1e.txt:1039-1040, spec/ans1.md §4.10): after the brake
+// application edge (taken on the 1 ms tick, t0) the input is sampled once a ms for 16 ms from
+// t0 + 16 ms, and 12 applied samples qualify it: the 12th sample is at t0 + 27 ms. The shipped
+// ans1_debounce campaign probes from 100.5 ms, so t0 = 101 ms and the narrowest application that
+// counts is 128 - 100.5 = 27.5 ms, judged against filter_us 27500 +- tolerance_us 1000. With
+// the samples starting 17 ms after t0 (brake_sample_start_ms = 17) the 12th is at 129 ms, and
+// only an application longer than 28.5 ms counts: beyond 27.5 + 1 ms, so the threshold is 17 ms
+// (the knob moves in whole ms), and the check read over 28.5 ms by less than its 100 us
+// resolution (resolution_us = 100).
+TEST(PowerAns1, DebounceThresholdIsOneMillisecondLaterSampling) {
+  const campaign::Campaign c =
+      campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_debounce.toml");
+  const PowerResult r = measure_power(c, PowerOptions{});
+  ASSERT_EQ(r.rows.size(), 1u);
+  const PowerRow& row = r.rows[0];
+  EXPECT_EQ(row.knob, "brake_sample_start_ms");
+  ASSERT_TRUE(row.nominal && row.threshold && row.measured && row.limit) << row.reason;
+  EXPECT_EQ(*row.nominal, 16.0);
+  EXPECT_EQ(*row.threshold, 17.0);
+  EXPECT_DOUBLE_EQ(*row.limit, 28500.0);
+  EXPECT_GT(*row.measured, 28500.0);
+  EXPECT_LE(*row.measured, 28600.0);
+}
+
 TEST(PowerRows, AMarginOverTheGateOrNoMarginAtAllIsOver) {
   PowerRow row;
   EXPECT_TRUE(over_margin(row, 100.0)); // no threshold: over any gate
@@ -77,6 +107,9 @@ TEST(PowerRows, AMarginOverTheGateOrNoMarginAtAllIsOver) {
   EXPECT_FALSE(over_margin(row, 1.0));
   EXPECT_TRUE(over_margin(row, 0.004));
   EXPECT_TRUE(over_margin(row, 0.0));
+  row.board_margin_pct = 1.365; // the board's own worst case lies further out: it gates too
+  EXPECT_TRUE(over_margin(row, 1.0));
+  EXPECT_FALSE(over_margin(row, 1.365));
 }
 
 } // namespace
