@@ -479,6 +479,9 @@ private:
         h.words = read_words(r, "write");
         if (host != nullptr && h.words.size() > host->output_words)
           r.fail("write", fmt::format("at most {} output words for {}", host->output_words, info_->name));
+        if (host != nullptr && host->block_length_max != 0 && h.words[0] > host->block_length_max)
+          r.fail("write", fmt::format("word 0 the block-transfer length of {}: 0 .. {} (0 = all {} words)",
+                                      info_->name, host->block_length_max, host->block_length_max));
         h.raw = r.opt_boolean("raw").value_or(false);
         if (h.raw && host != nullptr && !host->handshake)
           r.fail("raw", fmt::format("no raw = true for {}: it has no Transmit handshake, every write is raw",

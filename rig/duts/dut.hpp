@@ -76,6 +76,9 @@ struct HostInterface {
   bool handshake = true;
   unsigned transmit_bit = 15;
   unsigned acknowledge_bit = 15;
+  // Nonzero: output word 0 sends a block transfer whose length it gives, 0 .. this (the
+  // Series 2700's BTW, 0 meaning all 64 words, L1269); a larger word 0 is bad input.
+  std::size_t block_length_max = 0;
 };
 
 // Every parameter of a DUT with its value (the campaign's, or the default).

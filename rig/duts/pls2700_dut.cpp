@@ -31,8 +31,11 @@ public:
 
   void host_write(std::size_t word, std::uint16_t value) override {
     if (word == kPls2700BtwSendWord) {
-      if (value >= 1 && value <= btw_.size())
-        device_.write_btw(std::span<const std::uint16_t>(btw_.data(), value));
+      // Length 0 sends the whole 64-word file (L1269): words never written are 0000h, which
+      // the module rejects as a command word (21h, L1411), its answer to a zero length
+      // used without 64 words. Longer lengths are refused when the campaign is read.
+      const std::size_t length = value == 0 ? btw_.size() : value;
+      if (length <= btw_.size()) device_.write_btw(std::span<const std::uint16_t>(btw_.data(), length));
     } else if (word - 1 < btw_.size()) {
       btw_[word - 1] = value;
     }
@@ -161,7 +164,8 @@ DutInfo pls2700_info() {
   };
   for (const auto& f : p::kFaultNames)
     info.variants.push_back({std::string(f.name), std::string(f.description)});
-  info.host = HostInterface{p::kMaxBtwWords + 1, kPls2700SingleTransferWord + 1, false, 15, 15};
+  info.host =
+      HostInterface{p::kMaxBtwWords + 1, kPls2700SingleTransferWord + 1, false, 15, 15, p::kMaxBtwWords};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t seed) -> std::unique_ptr<Dut> {
     const auto fault = p::fault_from_name(variant);

@@ -297,5 +297,86 @@ TEST(HostActions, ReadWhileAcknowledgedIsLostWhenAcknowledgeNeverComes) {
   EXPECT_EQ(ack->outcome, rig::Outcome::Fail);
 }
 
+// --- block-transfer writes of a bad length (Series 2700) ----------------------------------
+
+// A 2731 turned by its resolver at 300 rpm (no transducer fault, so a BTW is not ignored with
+// 24h, L1413); output word 0 sends the first n buffer words as one BTW and input word 5 is the
+// programming error byte (models/pls2700/README.md, campaign adapter).
+std::string pls2700_btw(const std::string& write) {
+  return R"([campaign]
+name = "btw"
+end = "20ms"
+[dut]
+model = "pls2700"
+[dut.params]
+model = "2731"
+[[wiring]]
+rig = "res.sin"
+board = "SIN1"
+[[wiring]]
+rig = "res.cos"
+board = "COS1"
+[resolver]
+sin = "res.sin"
+cos = "res.cos"
+excitation_hz = 5000
+ratio = 1.0
+phase_deg = 90
+[encoder]
+lines = 1024
+[motion]
+[[motion.move]]
+kind = "constant"
+speed_rpm = 300
+duration = "20ms"
+[[host]]
+at = "5ms"
+)" + write +
+         R"(
+[[host]]
+at = "6ms"
+read = 5
+name = "error_byte"
+[[check]]
+kind = "word_bits"
+name = "error"
+observation = "error_byte"
+mask = 0xFF
+value = 0
+)";
+}
+
+std::uint16_t error_byte_after(const std::string& write) {
+  const Campaign c = parse_campaign(pls2700_btw(write), "t.toml");
+  const rig::RunResult r = Executive(c).run(c.runs[0]).result;
+  for (const auto& o : r.observations)
+    if (o.name == "error_byte") return static_cast<std::uint16_t>(o.value);
+  return 0xDEAD;
+}
+
+// pls2700 manual (seeds/002_46e90574ec92805f.txt): Transducer 1 Setup 8801h carries one data
+// word, the Scale Factor (0360h BCD = 360, L1366-1369).
+//   L1412: too short a length, "the final instruction ... does not contain enough data
+//          words": 22h Invalid Message Length.
+//   L1411: too long, "a Transducer 1 Setup instruction specifies three new parameters and four
+//          are included. The fourth ... will be interpreted as a command word": 21h.
+//   L1269: length 0 is only for 64 words; otherwise "the module will issue an error message":
+//          the words past those written are 0000h, "a Command Word of 0000h": 21h (L1411).
+TEST(HostActions, Pls2700BtwOfABadLengthGetsTheModulesError) {
+  EXPECT_EQ(error_byte_after("write = [2, 0x8801, 0x0360]"), 0x00); // exact: accepted (L1410)
+  EXPECT_EQ(error_byte_after("write = [1, 0x8801, 0x0360]"), 0x22); // one word short
+  EXPECT_EQ(error_byte_after("write = [3, 0x8801, 0x0360]"), 0x21); // one word long: 0000h
+  EXPECT_EQ(error_byte_after("write = [3, 0x8801, 0x0360, 0x0360]"), 0x21);
+  EXPECT_EQ(error_byte_after("write = [0, 0x8801, 0x0360]"), 0x21); // 0 without 64 words
+}
+
+TEST(HostActions, Pls2700BtwLengthPastTheFileIsRefused) {
+  EXPECT_EQ(error_of(pls2700_btw("write = [64, 0x8400]")), "accepted");
+  const std::string e = error_of(pls2700_btw("write = [65, 0x8400]"));
+  EXPECT_NE(e.find("host[0].write: word 0 the block-transfer length of pls2700: 0 .. 64 (0 = all 64 words)"),
+            std::string::npos)
+      << e;
+}
+
 } // namespace
 } // namespace hilrig::campaign
