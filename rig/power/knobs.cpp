@@ -41,12 +41,15 @@ bool value_check(std::string_view kind) {
 Knob knob_for(std::string_view model, std::string_view kind) {
   for (const Row& r : kKnobs)
     if (r.model == model && r.kind == kind)
-      return Knob{std::string(r.param), r.direction, {}, r.worst_case, std::string(r.plus_param)};
+      return Knob{KnobTarget::DutParam, std::string(r.param),     r.direction, {},
+                  r.worst_case,         std::string(r.plus_param)};
+  // The stop time a brake_stop_time check judges is the shaft's: a weaker brake stops later.
+  if (kind == "brake_stop_time")
+    return Knob{
+        KnobTarget::MotionBrakeDecel, "motion decel_rpm_s", KnobDirection::Down, {}, WorstCase::Unknown, {}};
   Knob k;
   if (value_check(kind))
     k.no_knob = "no knob: a value check (a word or a frame), not a timing with a deviation to sweep";
-  else if (kind == "brake_stop_time")
-    k.no_knob = "no knob: the stop time is the scenario's brake (motion decel_rpm_s), not a board parameter";
   else if (kind == "shaft_move")
     k.no_knob = "no knob: the " + std::string(model) + " model has no step-timing deviation parameter";
   else

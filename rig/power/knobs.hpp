@@ -18,7 +18,13 @@ enum class KnobDirection { Up, Down }; // which way from the nominal value the b
 // this is what the board would show at the worst phase.
 enum class WorstCase { Unknown, Knob, KnobPlusParam };
 
+// Where the knob lives: a parameter of the board's model, or (brake stop time, where the time
+// judged is the machine's, not the board's) the brake deceleration of the scenario's
+// press_stroke moves.
+enum class KnobTarget { DutParam, MotionBrakeDecel };
+
 struct Knob {
+  KnobTarget target = KnobTarget::DutParam;
   std::string param; // the model's parameter; "" when there is none (see no_knob)
   KnobDirection direction = KnobDirection::Up;
   std::string no_knob; // why there is none: "no knob: ..."

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 
@@ -123,27 +124,52 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
     row.reason = knob.no_knob;
     return row;
   }
-  const duts::DutInfo* dut = duts::find_dut(model);
-  const duts::ParamInfo* info = dut != nullptr ? dut->param(knob.param) : nullptr;
-  const auto given = c.points.front().dut.params.find(knob.param);
-  if (info == nullptr || given == c.points.front().dut.params.end() || !numeric(given->second.value)) {
-    row.reason = fmt::format("no knob: the {} model has no numeric parameter {}", model, knob.param);
-    return row;
+  KnobScale scale;
+  scale.sign = knob.direction == KnobDirection::Up ? 1 : -1;
+  // How a probe sets the knob at a deviation, in every scenario point.
+  std::function<void(campaign::Scenario&, double)> set;
+  if (knob.target == KnobTarget::MotionBrakeDecel) {
+    const campaign::Move* brake = nullptr;
+    for (const campaign::Move& m : c.points.front().motion.moves)
+      if (m.kind == campaign::MoveKind::PressStroke && brake == nullptr) brake = &m;
+    if (brake == nullptr || c.points.front().plant) {
+      row.reason = "no knob: the stop time is the machine's, and this campaign's brake is not a motion "
+                   "press_stroke (a [plant] brakes the shaft)";
+      return row;
+    }
+    scale.kind = duts::ParamKind::Number;
+    scale.nominal = brake->decel_rpm_s;
+    scale.min = 0.01 * brake->decel_rpm_s; // a brake that still stops the shaft
+    scale.max = brake->decel_rpm_s;
+    row.knob_unit = "rpm/s";
+    set = [scale](campaign::Scenario& s, double deviation) {
+      for (campaign::Move& m : s.motion.moves)
+        if (m.kind == campaign::MoveKind::PressStroke) m.decel_rpm_s = scale.value_at(deviation);
+    };
+  } else {
+    const duts::DutInfo* dut = duts::find_dut(model);
+    const duts::ParamInfo* info = dut != nullptr ? dut->param(knob.param) : nullptr;
+    const auto given = c.points.front().dut.params.find(knob.param);
+    if (info == nullptr || given == c.points.front().dut.params.end() || !numeric(given->second.value)) {
+      row.reason = fmt::format("no knob: the {} model has no numeric parameter {}", model, knob.param);
+      return row;
+    }
+    scale.kind = info->kind;
+    scale.nominal = *numeric(given->second.value);
+    scale.min = info->range.min;
+    scale.max = info->range.max;
+    row.knob_unit = info->kind == duts::ParamKind::Duration ? "us" : "";
+    set = [scale, param = knob.param](campaign::Scenario& s, double deviation) {
+      s.dut.params[param].value = scale.param_at(deviation);
+    };
   }
+  const bool duration = scale.kind == duts::ParamKind::Duration;
   row.knob = knob.param;
   row.direction = knob.direction == KnobDirection::Up ? "up" : "down";
-  KnobScale scale;
-  scale.kind = info->kind;
-  scale.nominal = *numeric(given->second.value);
-  scale.min = info->range.min;
-  scale.max = info->range.max;
-  scale.sign = knob.direction == KnobDirection::Up ? 1 : -1;
-  const bool duration = info->kind == duts::ParamKind::Duration;
-  row.knob_unit = duration ? "us" : "";
   row.nominal = scale.shown(0.0);
 
   BisectSpec spec;
-  spec.integer = duration || info->kind == duts::ParamKind::Integer;
+  spec.integer = duration || scale.kind == duts::ParamKind::Integer;
   spec.resolution = spec.integer ? 1.0 : std::max(std::abs(scale.nominal), 1.0) * 1e-6;
   spec.first_step = std::max(spec.resolution, std::abs(scale.nominal) / 100.0);
   if (spec.integer) spec.first_step = std::ceil(spec.first_step);
@@ -166,8 +192,7 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
   std::map<double, Finding> findings;
   const auto probe = [&](double deviation) {
     campaign::Campaign probe_campaign = base;
-    for (campaign::Scenario& s : probe_campaign.points)
-      s.dut.params[knob.param].value = scale.param_at(deviation);
+    for (campaign::Scenario& s : probe_campaign.points) set(s, deviation);
     probe_campaign.runs = campaign::plan_runs(probe_campaign, seed);
     const campaign::Executive exec(probe_campaign);
     const rig::CampaignResult result = exec.run_all(probe_campaign.runs, seed, rig::Shard{});

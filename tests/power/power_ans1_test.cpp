@@ -99,6 +99,33 @@ TEST(PowerAns1, DebounceThresholdIsOneMillisecondLaterSampling) {
   EXPECT_LE(*row.measured, 28600.0);
 }
 
+// Brake stop time: the knob is the scenario's brake (a press_stroke's decel_rpm_s), down. In
+// ans1_faults.toml the press turns at 100 rpm and brakes at 6000 rpm/s: it stops in
+// 100 / 6000 s = 16.7 ms, and the check's limit_ms is 20 (the CB8 stop limit, spec/ans1.md
+// §4.10). A brake of 100 rpm / 20 ms = 5000 rpm/s stops exactly at the limit (passes, inclusive);
+// any weaker one is over it, so the threshold lies just below 5000 rpm/s and the stop time read
+// there is just over 20 ms (exact in virtual time, to the ns).
+TEST(PowerAns1, BrakeStopTimeThresholdIsTheDecelerationThatStopsAtTheLimit) {
+  const campaign::Campaign c =
+      campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_faults.toml");
+  PowerOptions options;
+  options.checks = {"stop"};
+  const PowerResult r = measure_power(c, options);
+  ASSERT_EQ(r.rows.size(), 1u);
+  const PowerRow& row = r.rows[0];
+  EXPECT_EQ(row.knob, "motion decel_rpm_s");
+  EXPECT_EQ(row.direction, "down");
+  ASSERT_TRUE(row.nominal && row.threshold && row.last_pass && row.measured && row.limit) << row.reason;
+  EXPECT_DOUBLE_EQ(*row.nominal, 6000.0);
+  EXPECT_LT(*row.threshold, 5000.0);
+  EXPECT_GT(*row.threshold, 5000.0 - 0.01); // bisected to 1e-6 of the nominal deceleration
+  EXPECT_GE(*row.last_pass, 5000.0 - 1e-9); // 5000 rpm/s stops at 20 ms: passes
+  EXPECT_EQ(row.measurement, "stop.stop_time");
+  EXPECT_DOUBLE_EQ(*row.limit, 20.0);
+  EXPECT_GT(*row.measured, 20.0);
+  EXPECT_LE(*row.measured, 20.0001);
+}
+
 TEST(PowerRows, AMarginOverTheGateOrNoMarginAtAllIsOver) {
   PowerRow row;
   EXPECT_TRUE(over_margin(row, 100.0)); // no threshold: over any gate

@@ -81,11 +81,11 @@ TEST(PowerCommand, MaxMarginGatesTheExitStatusAndPowerJsonIsWritten) {
   EXPECT_TRUE(std::filesystem::exists(dir / "power.html"));
 }
 
-// A check with no knob (brake stop time: the scenario's brake, not the board) is in the table
+// A check with no knob (brake stop time where a [plant] brakes the shaft) is in the table
 // with its reason, and fails a --max-margin gate.
 TEST(PowerCommand, ACheckWithoutAKnobIsNamedNotOmitted) {
   PowerOptions o;
-  o.file = kSource + "/campaigns/ans1/ans1_brake.toml";
+  o.file = kSource + "/campaigns/ans1/ans1_press_plant.toml";
   o.max_margin_pct = 100.0;
   std::ostringstream out, err;
   EXPECT_EQ(power_campaign(o, out, err), kCheckFailed);
