@@ -39,6 +39,16 @@ TEST_P(Ans1Campaign, PassesOnTheCorrectModelAndCatchesEveryFault) {
   ASSERT_EQ(r.runs.size(), c.runs.size());
   EXPECT_EQ(r.verdict, Outcome::Pass) << failures(r);
   EXPECT_EQ(r.totals.faults_caught, c.faults.size()) << failures(r);
+  // A latency check that reports its phase coverage must have met every phase bin in each
+  // nominal run (docs/campaigns.md "Phase coverage"): a shipped campaign reaches the worst case.
+  for (const auto& run : r.runs) {
+    if (!run.fault.empty()) continue;
+    for (const auto& check : run.checks)
+      for (const auto& m : check.measurements)
+        if (m.name.ends_with(".phase_coverage")) {
+          EXPECT_EQ(m.detail.find("incomplete"), std::string::npos) << run.name << ": " << m.detail;
+        }
+  }
 }
 
 std::string file_stem(const ::testing::TestParamInfo<std::string>& info) {

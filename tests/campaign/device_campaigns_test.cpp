@@ -50,6 +50,13 @@ TEST_P(DeviceCampaign, PassesOnTheCorrectModelAndCatchesEveryFault) {
     if (!run.fault.empty()) continue;
     EXPECT_EQ(rig::run_outcome(run), Outcome::Pass) << run.name;
     EXPECT_FALSE(run.checks.empty()) << run.name;
+    // A latency check that reports its phase coverage must have met every phase bin
+    // (docs/campaigns.md "Phase coverage"): a shipped campaign reaches the worst case.
+    for (const auto& check : run.checks)
+      for (const auto& m : check.measurements)
+        if (m.name.ends_with(".phase_coverage")) {
+          EXPECT_EQ(m.detail.find("incomplete"), std::string::npos) << run.name << ": " << m.detail;
+        }
   }
 }
 
