@@ -111,6 +111,36 @@ TEST(Pls2700Throughput, OutputEdgeWithinOneUpdateOfTheCrossing) {
   }
 }
 
+TEST(Pls2700Throughput, WithinOneUpdateAtAnyPowerUpPhase) {
+  // pls2700 manual (seeds/002_46e90574ec92805f.txt:455-457): "New Position Throughput Time
+  // 200 uSec: 2731, 2731-04, 2741 Modules 400 uSec: 2732, 2732-04, 2742, 2742-18 Modules".
+  // Whatever the power-up phase, the update locks to a reference peak, so the latency stays
+  // below one update (an update sampling an earlier peak would add up to 100 us, 1/(2 f)).
+  std::mt19937 rng(457);
+  std::uniform_real_distribution<double> start(0.0, 0.2);
+  std::uniform_real_distribution<double> rpm(1.0, 600.0);
+  for (ModelVariant model : {ModelVariant::M2741, ModelVariant::M2742}) {
+    const Nanos period = traits(model).update_period;
+    std::uniform_int_distribution<std::int64_t> phase(0, period.count() - 1);
+    for (int trial = 0; trial < 40; ++trial) {
+      Params params;
+      params.update_phase = Nanos{phase(rng)};
+      Bench b(model, params);
+      ASSERT_EQ(b.btw({0x8801, 0x4096, 0xC011, 0x0000, 0x1024, 0x2048}), error::kNone);
+      const double theta0 = start(rng);
+      const double tps = rpm(rng) / 60.0;
+      b.shaft(1, signals::angle_at_constant_speed(theta0, tps));
+      b.hold(2, 0, 360);
+      const Nanos cross = Nanos::from_seconds((0.25 - theta0) / tps);
+      b.run_until(cross + 2_ms);
+      ASSERT_FALSE(b.edges(1).empty());
+      const Nanos delay = b.edges(1)[0].time - cross;
+      EXPECT_GE(delay, -1_ns) << traits(model).name << " phase " << params.update_phase.count();
+      EXPECT_LT(delay, period) << traits(model).name << " phase " << params.update_phase.count();
+    }
+  }
+}
+
 TEST(Pls2700Throughput, TrapezoidMoveSwitchesAtThePositions) {
   // A rest-to-rest move over one turn (profile in turns) on a 2742 (400 us): output 1 on
   // 1024..2047 of SF 4096, i.e. a quarter to a half turn; exactly one on and one off edge,
