@@ -53,6 +53,8 @@ std::string ErrorReport::describe() const {
 }
 
 void BusStateTracker::apply(const ErrorReport& r) {
+  if (r.rx_overflow) ++rx_overflows_;
+  if (r.tx_overflow) ++tx_overflows_;
   if (r.restarted) {
     // After a restart the controller is error-active again.
     ++restarts_;

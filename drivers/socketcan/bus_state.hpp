@@ -51,11 +51,17 @@ public:
   [[nodiscard]] BusState state() const { return state_; }
   [[nodiscard]] std::uint32_t bus_off_count() const { return bus_offs_; }
   [[nodiscard]] std::uint32_t restart_count() const { return restarts_; }
+  // Error frames that said the controller lost frames (CAN_ERR_CRTL_RX/TX_OVERFLOW): one
+  // report each, as the driver raises one per overrun it sees.
+  [[nodiscard]] std::uint32_t rx_overflow_count() const { return rx_overflows_; }
+  [[nodiscard]] std::uint32_t tx_overflow_count() const { return tx_overflows_; }
 
 private:
   BusState state_ = BusState::ErrorActive;
   std::uint32_t bus_offs_ = 0;
   std::uint32_t restarts_ = 0;
+  std::uint32_t rx_overflows_ = 0;
+  std::uint32_t tx_overflows_ = 0;
 };
 
 } // namespace hilrig::socketcan

@@ -2,6 +2,7 @@
 
 #include <linux/can.h>
 #include <linux/can/raw.h>
+#include <linux/sock_diag.h>
 #include <net/if.h>
 #include <poll.h>
 #include <sys/ioctl.h>
@@ -9,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstring>
 #include <ctime>
@@ -55,7 +57,10 @@ CanSocket::CanSocket(const std::string& interface, const CanSocketOptions& optio
   if (options.receive_own && ::setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_RECV_OWN_MSGS, &on, sizeof(on)) < 0) {
     fail("receive own");
   }
-  if (!options.filters.empty()) {
+  if (!options.data_frames) {
+    // An empty filter list: no data frame reaches the socket (error frames still do).
+    if (::setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_FILTER, nullptr, 0) < 0) fail("filters");
+  } else if (!options.filters.empty()) {
     std::vector<can_filter> f;
     for (const CanFilter& c : options.filters) {
       // The IDE bit is always in the mask: a standard filter never matches extended frames.
@@ -71,6 +76,7 @@ CanSocket::CanSocket(const std::string& interface, const CanSocketOptions& optio
     if (::setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &mask, sizeof(mask)) < 0) fail("error filter");
   }
   if (::setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof(on)) < 0) fail("SO_TIMESTAMPNS");
+  if (::setsockopt(fd_, SOL_SOCKET, SO_RXQ_OVFL, &on, sizeof(on)) < 0) fail("SO_RXQ_OVFL");
   sockaddr_can addr{};
   addr.can_family = AF_CAN;
   addr.can_ifindex = ifr.ifr_ifindex;
@@ -107,10 +113,19 @@ SendStatus CanSocket::send(const CanFrame& frame, Nanos deadline) {
   }
 }
 
+std::uint32_t CanSocket::rx_queue_drops() const {
+  std::array<std::uint32_t, SK_MEMINFO_VARS> meminfo{};
+  socklen_t size = sizeof(meminfo);
+  if (::getsockopt(fd_, SOL_SOCKET, SO_MEMINFO, meminfo.data(), &size) == 0 &&
+      size > SK_MEMINFO_DROPS * sizeof(std::uint32_t))
+    return std::max(rx_queue_drops_, meminfo[SK_MEMINFO_DROPS]);
+  return rx_queue_drops_;
+}
+
 std::optional<CanReceived> CanSocket::receive(Nanos timeout) {
   canfd_frame raw{};
   iovec iov{&raw, sizeof(raw)};
-  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec))];
+  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec)) + CMSG_SPACE(sizeof(std::uint32_t))];
   msghdr msg{};
   msg.msg_iov = &iov;
   msg.msg_iovlen = 1;
@@ -134,6 +149,8 @@ std::optional<CanReceived> CanSocket::receive(Nanos timeout) {
       timespec ts{};
       std::memcpy(&ts, CMSG_DATA(c), sizeof(ts));
       r.timestamp = Nanos{static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec};
+    } else if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SO_RXQ_OVFL) {
+      std::memcpy(&rx_queue_drops_, CMSG_DATA(c), sizeof(rx_queue_drops_));
     }
   }
   if ((raw.can_id & CAN_ERR_FLAG) != 0) {

@@ -1,7 +1,8 @@
 #pragma once
 // A raw SocketCAN socket: classic and CAN FD frames, receive filters, error frames, kernel
-// receive timestamps (SO_TIMESTAMPNS: CLOCK_REALTIME, as candump logs them), and transmit
-// with a deadline. Receive and send never allocate, so the RT side may use them.
+// receive timestamps (SO_TIMESTAMPNS: CLOCK_REALTIME, as candump logs them), the socket's
+// receive-queue drop counter (SO_RXQ_OVFL), and transmit with a deadline. Receive and send
+// never allocate, so the RT side may use them.
 
 #include <cstdint>
 #include <optional>
@@ -23,7 +24,8 @@ struct CanFilter {
 
 struct CanSocketOptions {
   bool fd = false;                // accept and send CAN FD frames
-  std::vector<CanFilter> filters; // empty: receive everything
+  std::vector<CanFilter> filters; // empty: receive everything (unless !data_frames)
+  bool data_frames = true;        // false: no data frame at all, only error frames
   bool error_frames = true;       // receive controller error frames
   bool receive_own = false;       // see our own transmitted frames
 };
@@ -59,9 +61,14 @@ public:
   [[nodiscard]] int fd() const { return fd_; }
   [[nodiscard]] const std::string& interface() const { return interface_; }
   [[nodiscard]] int last_errno() const { return last_errno_; }
+  // Frames the kernel dropped because this socket's receive queue was full. SO_RXQ_OVFL
+  // brings the count only on a frame queued after a drop (none comes while the queue stays
+  // full), so the kernel's counter itself is read too (SO_MEMINFO). No allocation.
+  [[nodiscard]] std::uint32_t rx_queue_drops() const;
 
 private:
   int fd_ = -1;
+  std::uint32_t rx_queue_drops_ = 0;
   std::string interface_;
   bool fd_frames_ = false;
   int last_errno_ = 0;

@@ -7,6 +7,20 @@
 
 namespace hilrig::models::resolver_emulator {
 
+CanFrame angle_frame(const signals::MotionProfile& profile, const AngleStreamParams& params, Nanos t,
+                     std::uint64_t n, AngleFlags flags) {
+  const Nanos at = t + params.lead;
+  signals::ResolverAngleFrame f;
+  f.channel = params.channel;
+  f.angle_turns = profile.position(at) / params.units_per_turn;
+  f.speed_turns_per_s = profile.velocity(at) / params.units_per_turn;
+  f.sequence = static_cast<std::uint8_t>(n & 0xFu);
+  f.valid = flags.valid;
+  f.sin_open = flags.sin_open;
+  f.cos_open = flags.cos_open;
+  return signals::encode(f);
+}
+
 AngleStreamer::AngleStreamer(Scheduler& scheduler, CanPort& port, signals::MotionProfile profile,
                              AngleStreamParams params)
     : scheduler_(scheduler), port_(port), profile_(std::move(profile)), params_(params) {
@@ -29,19 +43,11 @@ void AngleStreamer::stop() {
 }
 
 void AngleStreamer::send_at(Nanos t) {
-  const Nanos at = t + params_.lead;
-  signals::ResolverAngleFrame f;
-  f.channel = params_.channel;
-  f.angle_turns = profile_.position(at) / params_.units_per_turn;
-  f.speed_turns_per_s = profile_.velocity(at) / params_.units_per_turn;
-  f.sequence = static_cast<std::uint8_t>(sent_ & 0xFu);
-  f.valid = valid_;
-  f.sin_open = sin_open_;
-  f.cos_open = cos_open_;
+  const CanFrame frame = angle_frame(profile_, params_, t, sent_, flags_);
   ++sent_;
   const Nanos next = t + params_.period;
   next_ = scheduler_.at(next, [this, next] { send_at(next); });
-  port_.send(signals::encode(f));
+  port_.send(frame);
 }
 
 } // namespace hilrig::models::resolver_emulator

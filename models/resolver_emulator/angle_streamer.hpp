@@ -24,6 +24,18 @@ struct AngleStreamParams {
   Nanos lead{0};               // the frame at t carries the profile at t + lead
 };
 
+// What a ResolverAngle frame says besides the angle.
+struct AngleFlags {
+  bool valid = true;
+  bool sin_open = false;
+  bool cos_open = false;
+};
+
+// The frame the stream sends at t as its n-th frame: the profile at t + lead. Allocates
+// nothing, so a real-time thread may build its frames with it.
+[[nodiscard]] CanFrame angle_frame(const signals::MotionProfile& profile, const AngleStreamParams& params,
+                                   Nanos t, std::uint64_t n, AngleFlags flags = {});
+
 class AngleStreamer {
 public:
   // Throws std::invalid_argument for a period <= 0, units_per_turn <= 0 or a channel above 15.
@@ -40,10 +52,10 @@ public:
   [[nodiscard]] bool running() const { return next_.valid(); }
 
   // Flags carried by the frames sent from now on.
-  void set_valid(bool valid) { valid_ = valid; }
+  void set_valid(bool valid) { flags_.valid = valid; }
   void set_open_windings(bool sin_open, bool cos_open) {
-    sin_open_ = sin_open;
-    cos_open_ = cos_open;
+    flags_.sin_open = sin_open;
+    flags_.cos_open = cos_open;
   }
 
   [[nodiscard]] std::uint64_t frames_sent() const { return sent_; }
@@ -58,9 +70,7 @@ private:
   AngleStreamParams params_;
   EventId next_{};
   std::uint64_t sent_ = 0;
-  bool valid_ = true;
-  bool sin_open_ = false;
-  bool cos_open_ = false;
+  AngleFlags flags_;
 };
 
 } // namespace hilrig::models::resolver_emulator

@@ -18,6 +18,7 @@
 #include "rig/checks/support.hpp"
 #include "rig/duts/dut.hpp"
 #include "rig/hardware/edge_schedule.hpp"
+#include "rig/hardware/resolver_stream.hpp"
 #include "rig/rt/rt_loop.hpp"
 #include "rig/rt/rt_thread.hpp"
 
@@ -30,6 +31,7 @@ using campaign::VirtualRun;
 using rig::LoopSample;
 
 constexpr std::size_t kRingCapacity = std::size_t{1} << 16;
+constexpr std::size_t kSentRingCapacity = std::size_t{1} << 14; // 16 s of 1 ms frames between drains
 constexpr Nanos kAuxWake{10'000'000}; // the host/CAN thread looks at the bus state this often
 
 Nanos monotonic_now() noexcept {
@@ -59,44 +61,17 @@ private:
   std::atomic<bool> stop_{false};
 };
 
-// The resolver stream's CAN port: frames go out on the rig's interface and are kept, with
-// the time they were sent, for can.log.
-class StreamPort final : public CanPort {
-public:
-  StreamPort(ResolverCan& can, Nanos start, FaultFlag& fault) : can_(can), start_(start), fault_(fault) {}
-  void send(const CanFrame& frame) override {
-    const Nanos at = monotonic_now() - start_;
-    const std::string why = can_.send(frame);
-    if (!why.empty()) {
-      fault_.raise(why);
-      return;
-    }
-    sent.push_back({at, frame});
-  }
-  void on_receive(CanReceiveHandler /*handler*/) override {} // the stream only sends
-
-  std::vector<std::pair<Nanos, CanFrame>> sent;
-
-private:
-  ResolverCan& can_;
-  Nanos start_;
-  FaultFlag& fault_;
-};
-
-// What the host/CAN thread leaves behind.
+// What the host thread leaves behind.
 struct AuxResult {
   std::vector<rig::Observation> observations;
   std::vector<rig::Measurement> handshakes;
-  std::vector<std::pair<Nanos, CanFrame>> frames;
-  std::int64_t stale_frames = 0; // resolver frames skipped because the thread woke too late
-  bool interrupted = false;      // by the stop request
+  bool interrupted = false; // by the stop request
 };
 
-// The host actions and the resolver stream in real time: a Scheduler whose clock follows
-// CLOCK_MONOTONIC from the run's start, woken at each event (and every kAuxWake to read the
-// bus state) until the scenario's end.
-void run_aux(const campaign::Scenario& s, const DrivePlan& plan, RigPorts& ports,
-             const signals::MotionProfile& profile, const HardwareRunOptions& o, Nanos start,
+// The host actions in real time: a Scheduler whose clock follows CLOCK_MONOTONIC from the
+// run's start, woken at each event (and every kAuxWake to look at the stop request) until
+// the scenario's end.
+void run_aux(const campaign::Scenario& s, const DrivePlan& plan, RigPorts& ports, Nanos start,
              const campaign::StopRequest* stop, FaultFlag& fault, AuxResult& out) {
   Scheduler sched;
   std::unique_ptr<campaign::HostSequence> host;
@@ -106,17 +81,6 @@ void run_aux(const campaign::Scenario& s, const DrivePlan& plan, RigPorts& ports
         sched, s, info != nullptr ? info->host : duts::HostInterface{}, *ports.host());
     host->start();
   }
-  ResolverCan* can = plan.resolver ? ports.resolver() : nullptr;
-  std::unique_ptr<StreamPort> port;
-  std::unique_ptr<models::resolver_emulator::AngleStreamer> stream;
-  if (can != nullptr) {
-    port = std::make_unique<StreamPort>(*can, start, fault);
-    models::resolver_emulator::AngleStreamParams p;
-    p.period = o.resolver_period;
-    p.units_per_turn = s.encoder.counts_per_turn();
-    stream = std::make_unique<models::resolver_emulator::AngleStreamer>(sched, *port, profile, p);
-    stream->start(Nanos{0});
-  }
   try {
     while (!fault.stopped()) {
       if (stop != nullptr && stop->requested()) {
@@ -124,25 +88,8 @@ void run_aux(const campaign::Scenario& s, const DrivePlan& plan, RigPorts& ports
         fault.raise("interrupted by " + stop->reason());
         break;
       }
-      if (can != nullptr) {
-        const std::string why = can->check();
-        if (!why.empty()) {
-          fault.raise(why);
-          break;
-        }
-      }
-      // A late thread still plays every host action due by the end, in order; but a resolver
-      // frame more than a period late would tell the front end an angle the shaft has
-      // already left, so the stream skips to the next period boundary after now instead.
-      Nanos elapsed = monotonic_now() - start;
-      if (stream && elapsed > sched.now() + o.resolver_period && elapsed < s.end) {
-        stream->stop();
-        const Nanos resume = (elapsed / o.resolver_period + 1) * o.resolver_period;
-        out.stale_frames += (resume - sched.now()) / o.resolver_period - 1;
-        sched.run_until(elapsed);
-        stream->start(resume);
-        elapsed = monotonic_now() - start;
-      }
+      // A late thread still plays every host action due by the end, in order.
+      const Nanos elapsed = monotonic_now() - start;
       const Nanos next = sched.next_time();
       if (next > s.end && elapsed >= s.end) break;
       const Nanos wake = std::min({next, std::max(elapsed, Nanos{0}) + kAuxWake, s.end});
@@ -152,12 +99,10 @@ void run_aux(const campaign::Scenario& s, const DrivePlan& plan, RigPorts& ports
   } catch (const std::exception& e) {
     fault.raise(fmt::format("host link: {}", e.what()));
   }
-  if (stream) stream->stop();
   if (host) {
     out.observations = std::move(host->observations());
     out.handshakes = std::move(host->handshakes());
   }
-  if (port) out.frames = std::move(port->sent);
 }
 
 std::vector<rig::Measurement> timing_of(const rig::RtLoopStats& st, Nanos tolerance,
@@ -178,6 +123,31 @@ std::vector<rig::Measurement> timing_of(const rig::RtLoopStats& st, Nanos tolera
   m.push_back(measure("rig.wakeup.avg", to_us(st.wakeups.average()), "us", std::nullopt, std::nullopt,
                       "RT loop wake-up latency, average"));
   return m;
+}
+
+// The resolver interface's lost frames, each kind its own figure (allowed: none).
+std::vector<rig::Measurement> overruns_of(const CanOverruns& o, const std::string& bus) {
+  using checks::measure;
+  const auto count = [](std::uint64_t n) { return static_cast<double>(n); };
+  return {
+      measure("rig.can.controller_rx_overflows", count(o.controller_rx), "frames", std::nullopt, 0.0,
+              fmt::format(
+                  "{}: error frames reporting a controller receive overrun (CAN_ERR_CRTL_RX_OVERFLOW)", bus)),
+      measure(
+          "rig.can.controller_tx_overflows", count(o.controller_tx), "frames", std::nullopt, 0.0,
+          fmt::format("{}: error frames reporting a controller transmit overrun (CAN_ERR_CRTL_TX_OVERFLOW)",
+                      bus)),
+      measure(
+          "rig.can.socket_rx_drops", count(o.socket_drops), "frames", std::nullopt, 0.0,
+          fmt::format("{}: frames the kernel dropped from the rig's full socket receive queue (SO_RXQ_OVFL)",
+                      bus))};
+}
+
+std::string overrun_fault(const CanOverruns& o, const std::string& bus) {
+  return fmt::format(
+      "CAN {}: {} frame(s) lost (controller RX overflow {}, TX overflow {}, socket receive queue "
+      "drops {}): the run's bus evidence is incomplete",
+      bus, o.total(), o.controller_rx, o.controller_tx, o.socket_drops);
 }
 
 } // namespace
@@ -213,8 +183,38 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
   // mapped page first, which takes long on a slow box, and must not eat the schedule.
   std::atomic<std::int64_t> start_ns{0};
   std::atomic<bool> ready{false};
+  // The resolver stream's thread (when there is one) is made real-time before the start is
+  // fixed too: setting a thread up takes long on a slow box, and must neither eat the stream's
+  // schedule nor run (mlockall holds the address space) while the loop plays.
+  ResolverCan* can = plan.resolver ? ports.resolver() : nullptr;
+  std::atomic<bool> stream_set_up{can == nullptr};
+  rig::SpscRing<SentFrame> sent_ring(kSentRingCapacity);
+  ResolverStreamStats stream;
+  rig::RtSetupReport stream_setup;
+  std::atomic<bool> stream_done{can == nullptr};
+  std::thread stream_thread;
+  if (can != nullptr) {
+    models::resolver_emulator::AngleStreamParams p;
+    p.period = o.resolver_period;
+    p.units_per_turn = s.encoder.counts_per_turn();
+    stream_thread = std::thread([&, p] {
+      // The loop's thread locks the process's memory (MCL_FUTURE covers this thread's pages).
+      if (o.realtime)
+        stream_setup = rig::make_current_thread_realtime(
+            rig::RtSettings{o.rt.resolver_priority, o.rt.resolver_cpu, /*lock_memory=*/false});
+      stream_set_up.store(true, std::memory_order_release);
+      stream_set_up.notify_all();
+      ready.wait(false, std::memory_order_acquire);
+      const Nanos start{start_ns.load(std::memory_order_relaxed)};
+      const std::string why = play_resolver_stream(schedule.motion.profile, p, s.end, *can, start, sent_ring,
+                                                   fault.stop(), stream);
+      if (!why.empty()) fault.raise(why);
+      stream_done.store(true, std::memory_order_release);
+    });
+  }
   std::thread rt([&] {
     if (o.realtime) setup = rig::make_current_thread_realtime(rig::RtSettings{o.rt.priority, o.rt.cpu});
+    stream_set_up.wait(false, std::memory_order_acquire);
     const Nanos start = monotonic_now() + o.lead;
     ports.begin(start);
     start_ns.store(start.count(), std::memory_order_relaxed);
@@ -228,21 +228,26 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
   ready.wait(false, std::memory_order_acquire);
   const Nanos start{start_ns.load(std::memory_order_relaxed)};
   AuxResult aux;
-  std::thread aux_thread(
-      [&] { run_aux(s, plan, ports, schedule.motion.profile, o, start, in.stop, fault, aux); });
+  std::thread aux_thread([&] { run_aux(s, plan, ports, start, in.stop, fault, aux); });
 
   std::vector<LoopSample> samples;
   samples.reserve(schedule.edges.size() + 1024);
+  std::vector<SentFrame> frames;
   LoopSample sample{};
+  SentFrame frame{};
   for (;;) {
-    const bool done = loop_done.load(std::memory_order_acquire);
+    const bool done =
+        loop_done.load(std::memory_order_acquire) && stream_done.load(std::memory_order_acquire);
     while (ring.pop(sample)) samples.push_back(sample);
+    while (sent_ring.pop(frame)) frames.push_back(frame);
     if (done) break;
     (void)rig::sleep_until(monotonic_now() + Nanos{1'000'000});
   }
   rt.join();
   aux_thread.join();
+  if (stream_thread.joinable()) stream_thread.join();
   while (ring.pop(sample)) samples.push_back(sample);
+  while (sent_ring.pop(frame)) frames.push_back(frame);
   if (fault.stopped()) {
     // Stopped early: every rig-driven line to its inactive level (low), in the trace too.
     for (std::size_t i = 0; i < plan.outputs.size(); ++i) {
@@ -267,8 +272,8 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
     }
     trace->edge(sig, Edge{t, x.level});
   }
-  if (plan.resolver && ports.resolver() != nullptr)
-    for (const auto& [t, frame] : aux.frames) trace->can(ports.resolver()->bus(), t, frame);
+  if (can != nullptr)
+    for (const SentFrame& f : frames) trace->can(can->bus(), f.at, f.frame);
 
   VirtualRun v;
   v.exact_motion = false;
@@ -278,15 +283,32 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
   v.observations = std::move(aux.observations);
   v.handshakes = std::move(aux.handshakes);
   v.rig_timing = timing_of(*stats, tolerance, setup);
-  if (plan.resolver && ports.resolver() != nullptr)
+  std::optional<CanOverruns> overruns;
+  if (can != nullptr) {
+    const std::string without =
+        stream_setup.problems.empty()
+            ? std::string()
+            : fmt::format(" (the stream thread ran without: {})", stream_setup.problems);
     v.rig_timing.push_back(checks::measure(
-        "rig.resolver.stale_frames", static_cast<double>(aux.stale_frames), "frames", std::nullopt,
-        std::nullopt,
+        "rig.resolver.stale_frames", static_cast<double>(stream.stale), "frames", std::nullopt, std::nullopt,
         fmt::format("resolver frames skipped because the stream thread woke more than a period ({} us) late; "
-                    "{} frames sent",
-                    checks::to_us(o.resolver_period), aux.frames.size())));
+                    "{} frames sent{}",
+                    checks::to_us(o.resolver_period), stream.sent, without)));
+    overruns = can->overruns();
+    for (rig::Measurement& m : overruns_of(*overruns, can->bus())) v.rig_timing.push_back(std::move(m));
+  }
   v.rig_fault = fault.why();
   v.interrupted = aux.interrupted;
+  if (v.rig_fault.empty() && overruns && overruns->total() > 0)
+    v.rig_fault = overrun_fault(*overruns, can->bus());
+  if (v.rig_fault.empty() && can != nullptr && stream.sent == 0)
+    v.rig_fault =
+        fmt::format("the resolver stream sent no frame: all {} were more than a period late", stream.stale);
+  if (v.rig_fault.empty() && stream.ring_overflows > 0)
+    v.rig_fault =
+        fmt::format("{} sent resolver frame(s) lost: the ring between the stream thread and the recorder "
+                    "overflowed",
+                    stream.ring_overflows);
   if (v.rig_fault.empty() && stats->missed_deadlines > 0)
     v.rig_fault =
         fmt::format("{} output edge(s) later than the edge tolerance ({} us); the latest by {} us",

@@ -65,19 +65,29 @@ private:
     const toml::table* t = root_.opt_table("rt");
     if (t == nullptr) return;
     TableReader r(file_, *t, "rt");
-    if (auto p = r.opt_integer("priority")) {
-      if (*p < 0 || *p > 99) r.fail("priority", "a SCHED_FIFO priority in 1..99 (0: not real-time)");
-      rt.priority = static_cast<int>(*p);
-    }
-    if (auto cpu = r.opt_integer("cpu")) {
-      if (*cpu < -1 || *cpu > 4095) r.fail("cpu", "a CPU number >= 0, or -1 for not pinned");
-      if (*cpu >= 0) rt.cpu = static_cast<int>(*cpu);
-    }
+    read_priority(r, "priority", rt.priority);
+    read_cpu(r, "cpu", rt.cpu);
+    read_priority(r, "resolver_priority", rt.resolver_priority);
+    read_cpu(r, "resolver_cpu", rt.resolver_cpu);
     if (auto d = r.opt_duration("edge_tolerance")) {
       if (*d <= Nanos{0}) r.fail("edge_tolerance", "a duration > 0");
       rt.edge_tolerance = *d;
     }
     r.finish();
+  }
+
+  static void read_priority(TableReader& r, std::string_view key, int& priority) {
+    if (auto p = r.opt_integer(key)) {
+      if (*p < 0 || *p > 99) r.fail(key, "a SCHED_FIFO priority in 1..99 (0: not real-time)");
+      priority = static_cast<int>(*p);
+    }
+  }
+
+  static void read_cpu(TableReader& r, std::string_view key, std::optional<int>& cpu) {
+    if (auto c = r.opt_integer(key)) {
+      if (*c < -1 || *c > 4095) r.fail(key, "a CPU number >= 0, or -1 for not pinned");
+      if (*c >= 0) cpu = static_cast<int>(*c);
+    }
   }
 
   template <typename E>

@@ -21,8 +21,12 @@ namespace hilrig::hardware {
 using campaign::SourcePos;
 
 struct RtConfig {
-  int priority = 80;            // SCHED_FIFO priority of the RT loop (0: left SCHED_OTHER)
-  std::optional<int> cpu;       // the CPU the RT loop is pinned to; none: not pinned
+  int priority = 80;      // SCHED_FIFO priority of the RT loop (0: left SCHED_OTHER)
+  std::optional<int> cpu; // the CPU the RT loop is pinned to; none: not pinned
+  // The resolver angle stream's own thread: below the edge loop by default (its deadline is
+  // a 1 ms period, the loop's an edge tolerance of microseconds).
+  int resolver_priority = 70;
+  std::optional<int> resolver_cpu;
   Nanos edge_tolerance{50'000}; // an output edge later than this is a rig fault
 };
 

@@ -126,7 +126,10 @@ private:
 
 class SocketCanResolver final : public ResolverCan {
 public:
-  explicit SocketCanResolver(const std::string& interface) : socket_(interface), bus_(interface) {}
+  // The stream only sends: the socket takes error frames alone, so other nodes' traffic
+  // cannot fill its queue.
+  explicit SocketCanResolver(const std::string& interface)
+      : socket_(interface, errors_only()), bus_(interface) {}
 
   std::string send(const CanFrame& frame) override {
     // A frame that cannot be queued within a millisecond means nobody takes them off the bus.
@@ -156,7 +159,17 @@ public:
 
   const std::string& bus() const override { return bus_; }
 
+  CanOverruns overruns() const override {
+    return CanOverruns{tracker_.rx_overflow_count(), tracker_.tx_overflow_count(), socket_.rx_queue_drops()};
+  }
+
 private:
+  static socketcan::CanSocketOptions errors_only() {
+    socketcan::CanSocketOptions o;
+    o.data_frames = false;
+    return o;
+  }
+
   socketcan::CanSocket socket_;
   socketcan::BusStateTracker tracker_;
   std::string bus_;

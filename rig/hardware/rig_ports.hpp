@@ -4,6 +4,7 @@
 // the resolver's CAN link. open_rig_ports() builds them from the rig config (libgpiod,
 // SocketCAN, Modbus); a test builds them around a virtual DUT.
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -17,6 +18,17 @@
 
 namespace hilrig::hardware {
 
+// Frames the resolver's CAN interface lost during a run: overruns its controller reported
+// in error frames (CAN_ERR_CRTL_RX_OVERFLOW / TX_OVERFLOW) and frames the kernel dropped from
+// the rig's socket because its receive queue was full (SO_RXQ_OVFL). Any of them is a rig
+// fault (docs/rig-config.md): the bus evidence of the run is incomplete.
+struct CanOverruns {
+  std::uint64_t controller_rx = 0;
+  std::uint64_t controller_tx = 0;
+  std::uint64_t socket_drops = 0;
+  [[nodiscard]] std::uint64_t total() const { return controller_rx + controller_tx + socket_drops; }
+};
+
 // The interface the resolver angle stream goes out on. Both calls return "" when all is
 // well, or the rig fault that stops the run ("CAN can0: bus-off").
 class ResolverCan {
@@ -26,6 +38,8 @@ public:
   // Reads what the controller reported since the last call (error frames, bus state).
   [[nodiscard]] virtual std::string check() = 0;
   [[nodiscard]] virtual const std::string& bus() const = 0; // the name in can.log
+  // What check() has counted so far.
+  [[nodiscard]] virtual CanOverruns overruns() const = 0;
 };
 
 class RigPorts {

@@ -132,6 +132,7 @@ public:
   }
   std::string check() override { return sent >= 3 ? "CAN can9: bus-off (no ACK)" : ""; }
   const std::string& bus() const override { return name_; }
+  CanOverruns overruns() const override { return {}; }
   int sent = 0;
 
 private:
@@ -187,6 +188,70 @@ TEST(HardwareRun, ALostHostLinkIsARigFault) {
   const campaign::VirtualRun hw = run_hardware(f.in, f.plan, ports, f.options);
   EXPECT_EQ(hw.rig_fault, "host link: read input register 1: timeout");
   EXPECT_TRUE(hw.observations.empty());
+}
+
+// A resolver interface whose controller and socket report lost frames once the stream is
+// out; check() itself never faults, so only the overrun count can stop the run.
+class Overrunning final : public ResolverCan {
+public:
+  explicit Overrunning(CanOverruns o) : reported_(o) {}
+  std::string send(const CanFrame& /*frame*/) override {
+    ++sent;
+    return {};
+  }
+  std::string check() override {
+    if (sent > 0) seen_ = reported_; // counted when check() reads the error frames
+    return {};
+  }
+  const std::string& bus() const override { return name_; }
+  CanOverruns overruns() const override { return seen_; }
+  int sent = 0;
+
+private:
+  CanOverruns reported_;
+  CanOverruns seen_;
+  std::string name_ = "can9";
+};
+
+campaign::VirtualRun run_with_overruns(const CanOverruns& o) {
+  Loop f;
+  f.plan.resolver = true;
+  Overrunning can(o);
+  test::VirtualDutPorts ports(f.c.points[0], f.plan, f.schedule(), kWireDelay, f.in.seed);
+  ports.set_resolver(&can);
+  return run_hardware(f.in, f.plan, ports, f.options);
+}
+
+TEST(HardwareRun, CanOverrunsAreCountedAndNoOverrunPasses) {
+  const campaign::VirtualRun clean = run_with_overruns({});
+  EXPECT_EQ(clean.rig_fault, "");
+  for (const char* name :
+       {"rig.can.controller_rx_overflows", "rig.can.controller_tx_overflows", "rig.can.socket_rx_drops"}) {
+    const rig::Measurement* m = measurement(clean, name);
+    ASSERT_NE(m, nullptr) << name;
+    EXPECT_EQ(m->value, 0.0) << name;
+    EXPECT_EQ(m->upper, 0.0) << name; // at the limit: passes
+    EXPECT_EQ(m->outcome, rig::Outcome::Pass) << name;
+  }
+}
+
+TEST(HardwareRun, AnyCanOverrunIsARigFaultNamingEachKind) {
+  // One of each kind alone (a hair beyond the limit of none), then all together.
+  const campaign::VirtualRun rx = run_with_overruns({1, 0, 0});
+  EXPECT_EQ(rx.rig_fault,
+            "CAN can9: 1 frame(s) lost (controller RX overflow 1, TX overflow 0, socket receive "
+            "queue drops 0): the run's bus evidence is incomplete");
+  EXPECT_EQ(measurement(rx, "rig.can.controller_rx_overflows")->outcome, rig::Outcome::Fail);
+  EXPECT_EQ(measurement(rx, "rig.can.controller_tx_overflows")->outcome, rig::Outcome::Pass);
+  const campaign::VirtualRun tx = run_with_overruns({0, 1, 0});
+  EXPECT_NE(tx.rig_fault.find("TX overflow 1,"), std::string::npos) << tx.rig_fault;
+  EXPECT_EQ(measurement(tx, "rig.can.controller_tx_overflows")->outcome, rig::Outcome::Fail);
+  const campaign::VirtualRun drops = run_with_overruns({0, 0, 1});
+  EXPECT_NE(drops.rig_fault.find("socket receive queue drops 1)"), std::string::npos) << drops.rig_fault;
+  EXPECT_EQ(measurement(drops, "rig.can.socket_rx_drops")->outcome, rig::Outcome::Fail);
+  const campaign::VirtualRun all = run_with_overruns({2, 3, 4});
+  EXPECT_NE(all.rig_fault.find("CAN can9: 9 frame(s) lost"), std::string::npos) << all.rig_fault;
+  EXPECT_EQ(measurement(all, "rig.can.socket_rx_drops")->value, 4.0);
 }
 
 } // namespace

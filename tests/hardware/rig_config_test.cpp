@@ -85,6 +85,28 @@ TEST(RigConfig, DefaultsWhenTablesAreLeftOut) {
   EXPECT_FALSE(parse_rig_config("[rt]\ncpu = -1\n", "rig.toml").rt.cpu.has_value());
 }
 
+TEST(RigConfig, ResolverStreamThreadHasItsOwnPriorityAndCpu) {
+  const RigConfig d = parse_rig_config("", "rig.toml");
+  EXPECT_EQ(d.rt.resolver_priority, 70); // below the edge loop's 80
+  EXPECT_FALSE(d.rt.resolver_cpu.has_value());
+  const RigConfig c = parse_rig_config("[rt]\nresolver_priority = 60\nresolver_cpu = 2\n", "rig.toml");
+  EXPECT_EQ(c.rt.resolver_priority, 60);
+  EXPECT_EQ(c.rt.resolver_cpu.value_or(-1), 2);
+  // The ranges, swept across each limit: priority 0..99, cpu -1..4095.
+  for (int p : {-1, 0, 1, 98, 99, 100}) {
+    const std::string e = error_of("[rt]\nresolver_priority = " + std::to_string(p) + "\n");
+    EXPECT_EQ(e.empty(), p >= 0 && p <= 99) << p << ": " << e;
+    if (!e.empty()) {
+      EXPECT_NE(e.find("rt.resolver_priority"), std::string::npos) << e;
+    }
+  }
+  for (int cpu : {-2, -1, 0, 4095, 4096}) {
+    const std::string e = error_of("[rt]\nresolver_cpu = " + std::to_string(cpu) + "\n");
+    EXPECT_EQ(e.empty(), cpu >= -1 && cpu <= 4095) << cpu << ": " << e;
+  }
+  EXPECT_FALSE(parse_rig_config("[rt]\nresolver_cpu = -1\n", "rig.toml").rt.resolver_cpu.has_value());
+}
+
 TEST(RigConfig, ModbusRtuHost) {
   const RigConfig c = parse_rig_config(R"([host]
 link = "modbus-rtu"

@@ -46,6 +46,33 @@ TEST(SocketCan, FrameOnVcanArrivesWithAKernelTimestamp) {
   EXPECT_NE(candump_line(got->timestamp, "vcan0", got->frame).find("vcan0 123#DEADBEEF"), std::string::npos);
 }
 
+// A socket nobody reads while 4,000 frames arrive: its receive queue fills and the kernel
+// drops the rest. SO_RXQ_OVFL reports exactly the frames the reader did not get.
+TEST(SocketCan, ReceiveQueueDropsAreCountedExactly) {
+  CanSocket rx("vcan0");
+  CanSocket tx("vcan0");
+  EXPECT_EQ(rx.rx_queue_drops(), 0U);
+  constexpr std::uint32_t kSent = 4000;
+  for (std::uint32_t i = 0; i < kSent; ++i)
+    ASSERT_EQ(tx.send(classic(0x200, {static_cast<std::uint8_t>(i)}), soon()), SendStatus::Sent) << i;
+  std::uint32_t received = 0;
+  while (rx.receive(milliseconds(50))) ++received;
+  EXPECT_LT(received, kSent); // the queue did overflow
+  EXPECT_GT(rx.rx_queue_drops(), 0U);
+  EXPECT_EQ(received + rx.rx_queue_drops(), kSent);
+}
+
+// A socket that asks for error frames alone never queues (nor drops) a data frame.
+TEST(SocketCan, AnErrorFramesOnlySocketTakesNoDataFrame) {
+  CanSocketOptions errors_only;
+  errors_only.data_frames = false;
+  CanSocket rx("vcan0", errors_only);
+  CanSocket tx("vcan0");
+  for (std::uint8_t i = 0; i < 200; ++i) ASSERT_EQ(tx.send(classic(0x201, {i}), soon()), SendStatus::Sent);
+  EXPECT_FALSE(rx.receive(milliseconds(50)).has_value());
+  EXPECT_EQ(rx.rx_queue_drops(), 0U);
+}
+
 TEST(SocketCan, FiltersPassOnlyTheAskedIdentifier) {
   CanSocketOptions only_0x321;
   only_0x321.filters.push_back(CanFilter{0x321, 0x7FF, false});

@@ -13,6 +13,8 @@ constexpr std::uint32_t kAck = 0x020;          // CAN_ERR_ACK
 constexpr std::uint32_t kBusOff = 0x040;       // CAN_ERR_BUSOFF
 constexpr std::uint32_t kRestarted = 0x100;    // CAN_ERR_RESTARTED
 constexpr std::uint32_t kCnt = 0x200;          // CAN_ERR_CNT
+constexpr std::uint8_t kRxOverflow = 0x01;     // data[1]: CAN_ERR_CRTL_RX_OVERFLOW
+constexpr std::uint8_t kTxOverflow = 0x02;     // data[1]: CAN_ERR_CRTL_TX_OVERFLOW
 } // namespace
 
 TEST(ErrorFrame, ControllerTxPassiveIsErrorPassive) {
@@ -50,4 +52,34 @@ TEST(BusStateTracker, WalksActiveWarningPassiveBusOffAndBackOnRestart) {
   t.apply(decode_error_frame(kErrFlag | kRestarted, {}));
   EXPECT_EQ(t.state(), BusState::ErrorActive);
   EXPECT_EQ(t.restart_count(), 1U);
+}
+
+TEST(ErrorFrame, ControllerOverflowsAreDecodedWithoutAStateChange) {
+  const auto rx = decode_error_frame(kErrFlag | kCrtl, {0, kRxOverflow, 0, 0, 0, 0, 0, 0});
+  EXPECT_TRUE(rx.rx_overflow);
+  EXPECT_FALSE(rx.tx_overflow);
+  EXPECT_FALSE(rx.state.has_value());
+  EXPECT_EQ(rx.describe(), "RX overflow");
+  const auto both = decode_error_frame(kErrFlag | kCrtl, {0, kRxOverflow | kTxOverflow, 0, 0, 0, 0, 0, 0});
+  EXPECT_TRUE(both.rx_overflow);
+  EXPECT_TRUE(both.tx_overflow);
+  // The same bits outside a controller-class frame mean nothing.
+  const auto not_crtl = decode_error_frame(kErrFlag | kAck, {0, kRxOverflow | kTxOverflow, 0, 0, 0, 0, 0, 0});
+  EXPECT_FALSE(not_crtl.rx_overflow);
+  EXPECT_FALSE(not_crtl.tx_overflow);
+}
+
+TEST(BusStateTracker, CountsEveryOverflowReportAndKeepsTheState) {
+  BusStateTracker t;
+  EXPECT_EQ(t.rx_overflow_count(), 0U);
+  EXPECT_EQ(t.tx_overflow_count(), 0U);
+  for (int i = 0; i < 3; ++i)
+    t.apply(decode_error_frame(kErrFlag | kCrtl, {0, kRxOverflow, 0, 0, 0, 0, 0, 0}));
+  t.apply(decode_error_frame(kErrFlag | kCrtl, {0, kTxOverflow | 0x08 /*TX_WARNING*/, 0, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(t.rx_overflow_count(), 3U);
+  EXPECT_EQ(t.tx_overflow_count(), 1U);
+  EXPECT_EQ(t.state(), BusState::ErrorWarning);
+  t.apply(decode_error_frame(kErrFlag | kAck, {})); // another error kind: no overflow counted
+  EXPECT_EQ(t.rx_overflow_count(), 3U);
+  EXPECT_EQ(t.tx_overflow_count(), 1U);
 }
