@@ -31,6 +31,7 @@
 #include "rig/cli/suite_files.hpp"
 #include "rig/cli/wall_clock.hpp"
 #include "rig/hardware/hardware_backend.hpp"
+#include "rig/results/append_file.hpp"
 #include "rig/results/junit.hpp"
 #include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
@@ -235,9 +236,8 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
                                         : campaign::RunBackend{});
     exec.use_host_link(p.link);
     if (stop != nullptr) exec.stop_on(stop);
-    bool can_used = false;
     std::size_t failure_traces = 0;
-    std::ofstream can_log;
+    std::optional<rig::AppendFile> can_log; // one block per run: a failed write keeps the runs before
     std::chrono::steady_clock::time_point run_start;
     const auto started = [&](std::size_t, std::size_t, const campaign::RunSpec& run) {
       progress.started(p.c.name, run);
@@ -254,16 +254,19 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
         write_trace_files(dir, fmt::format("trace-run{}", run.index), *output.trace);
       }
       if (!output.trace->can_frames().empty()) {
-        if (!can_used) can_log.open(dir / "can.log", std::ios::binary);
-        can_used = true;
         // Virtual time starts at 0, and log2asc takes a frame at second 0 for the start of a new
         // log: stamp frames as virtual time after a fixed epoch (2000-01-01T00:00:00Z), which
         // keeps the log deterministic and readable by can-utils.
         CandumpOptions options;
         options.epoch = seconds(946'684'800);
-        write_candump(*output.trace, can_log, options);
-        can_log.flush();
-        if (!can_log) throw campaign::RigFault(fmt::format("cannot write {}", (dir / "can.log").string()));
+        std::ostringstream frames;
+        write_candump(*output.trace, frames, options);
+        try {
+          if (!can_log) can_log.emplace(dir / "can.log");
+          can_log->append(frames.str());
+        } catch (const std::runtime_error& e) {
+          throw campaign::RigFault(e.what()); // "cannot write OUT/can.log: No space left on device"
+        }
       }
     };
     const rig::Shard part{static_cast<std::uint32_t>(p.shard.first),

@@ -1,10 +1,5 @@
 #include "rig/results/run_log.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -18,23 +13,11 @@ namespace hilrig::rig {
 
 using nlohmann::json;
 
-RunLog::RunLog(const std::filesystem::path& path, const CampaignResult& campaign) : path_(path) {
-  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
-  if (fd_ < 0)
-    throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+RunLog::RunLog(const std::filesystem::path& path, const CampaignResult& campaign) : file_(path) {
   CampaignResult header = campaign;
   header.runs.clear();
   finalize(header);
-  try {
-    write_record(json{{"run_log", kRunLogVersion}, {"results", to_json(header)}}.dump() + "\n");
-  } catch (...) {
-    ::close(fd_);
-    throw;
-  }
-}
-
-RunLog::~RunLog() {
-  if (fd_ >= 0) ::close(fd_);
+  file_.append(json{{"run_log", kRunLogVersion}, {"results", to_json(header)}}.dump() + "\n");
 }
 
 void RunLog::append(const RunResult& run) {
@@ -42,28 +25,7 @@ void RunLog::append(const RunResult& run) {
   RunResult judged = run;
   judged.outcome = run_outcome(judged);
   for (auto& c : judged.checks) c.judgement = judgement_in(judged, c);
-  write_record(json{{"run", run_to_json(judged)}}.dump() + "\n");
-}
-
-void RunLog::write_record(const std::string& line) {
-  // One write() of the whole line: a short write only happens at a size limit or a full disk,
-  // and then the partial record is cut off again so the log ends on a whole record.
-  ssize_t n = -1;
-  do n = ::write(fd_, line.data(), line.size());
-  while (n < 0 && errno == EINTR);
-  int err = 0;
-  if (n < 0)
-    err = errno;
-  else if (static_cast<std::size_t>(n) != line.size())
-    err = EFBIG;
-  else if (::fdatasync(fd_) != 0)
-    err = errno;
-  if (err != 0) {
-    if (::ftruncate(fd_, size_) != 0) { /* the reader ignores a torn last line */
-    }
-    throw std::runtime_error(fmt::format("cannot write {}: {}", path_.string(), std::strerror(err)));
-  }
-  size_ += static_cast<off_t>(line.size());
+  file_.append(json{{"run", run_to_json(judged)}}.dump() + "\n");
 }
 
 CampaignResult read_run_log(const std::filesystem::path& path) {

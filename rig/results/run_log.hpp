@@ -15,8 +15,7 @@
 
 #include <filesystem>
 
-#include <sys/types.h>
-
+#include "rig/results/append_file.hpp"
 #include "rig/results/campaign_result.hpp"
 
 namespace hilrig::rig {
@@ -28,19 +27,11 @@ class RunLog {
 public:
   // Creates (truncates) path and writes the header: `campaign`'s facts; its runs are not written.
   RunLog(const std::filesystem::path& path, const CampaignResult& campaign);
-  ~RunLog();
-  RunLog(const RunLog&) = delete;
-  RunLog& operator=(const RunLog&) = delete;
-
   void append(const RunResult& run);
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+  [[nodiscard]] const std::filesystem::path& path() const { return file_.path(); }
 
 private:
-  void write_record(const std::string& line);
-
-  std::filesystem::path path_;
-  int fd_ = -1;
-  off_t size_ = 0; // bytes of whole records written
+  AppendFile file_; // one record a block
 };
 
 // The campaign the log holds: its header with every whole record, finalized. Throws
