@@ -70,6 +70,14 @@ void PlantDrive::resolve() {
     if (enc_a_ != nullptr) enc_a_->set(level_of(signals::channel_a(count_)));
     if (enc_b_ != nullptr) enc_b_->set(level_of(signals::channel_b(count_)));
   }
+  // The plan reaches a horizon: there it runs on (before any edge of that instant, which the
+  // new plan's initial count covers).
+  if (const Nanos until = motion_.plan_end(); until < s_.end)
+    sched_.at(until, [this, g = generation_] {
+      if (g != generation_) return;
+      motion_.extend();
+      resolve();
+    });
   schedule_next();
 }
 

@@ -20,7 +20,8 @@ std::unique_ptr<plants::Plant> make_plant(const PlantSpec& spec) {
 }
 
 PlantMotion::PlantMotion(const PlantSpec& spec, double counts_per_turn, Nanos end)
-    : per_rad_(counts_per_turn / (2.0 * std::numbers::pi)), end_(end), checkpoint_(make_plant(spec)) {
+    : per_rad_(counts_per_turn / (2.0 * std::numbers::pi)), end_(end), ahead_(spec.step * kPlanSteps),
+      checkpoint_(make_plant(spec)) {
   input(checkpoint_->now(), plants::PlantInput::Valve,
         spec.kind != PlantKind::Press || spec.press_start.valve);
 }
@@ -46,7 +47,7 @@ void PlantMotion::integrate(plants::Plant& plant, Nanos until, std::vector<signa
 }
 
 void PlantMotion::input(Nanos t, plants::PlantInput which, bool level) {
-  // Rewind to the last input and integrate to t: the same steps as the plan took, so the
+  // Rewind to the plan's start and integrate to t: the same steps as the plan took, so the
   // history matches what the encoder played up to t.
   std::unique_ptr<plants::Plant> plant = checkpoint_->clone();
   const std::size_t before = plant->standstills().size();
@@ -54,16 +55,31 @@ void PlantMotion::input(Nanos t, plants::PlantInput which, bool level) {
   for (std::size_t i = before; i < plant->standstills().size(); ++i)
     history_standstills_.push_back(plant->standstills()[i]);
   plant->input(which, level);
-  checkpoint_ = plant->clone();
+  const double at = plant->state().angle * per_rad_;
+  plan_from(std::move(plant), at);
+}
 
+void PlantMotion::extend() {
+  if (live_ == nullptr || plan_end() >= end_) return;
+  for (const signals::Segment& s : plan_.segments()) history_.push_back(s);
+  history_standstills_.insert(history_standstills_.end(), plan_standstills_.begin(), plan_standstills_.end());
+  // On from the played plan's end position exactly (its segments chain in closed form, a
+  // rounding away from the knots'): no jump where the shaft stands still.
+  plan_from(std::move(live_), plan_.end_position());
+}
+
+void PlantMotion::plan_from(std::unique_ptr<plants::Plant> plant, double start) {
+  checkpoint_ = plant->clone();
+  const plants::Knot at = plant->state();
+  const Nanos until = at.time < end_ - ahead_ ? at.time + ahead_ : end_;
   std::vector<signals::Segment> segments;
   const std::size_t known = plant->standstills().size();
-  integrate(*plant, end_, segments);
+  integrate(*plant, until, segments);
   plan_standstills_.assign(plant->standstills().begin() + static_cast<std::ptrdiff_t>(known),
                            plant->standstills().end());
-  const plants::Knot at = checkpoint_->state();
-  plan_ = signals::MotionProfile(at.angle * per_rad_, at.time);
+  plan_ = signals::MotionProfile(start, at.time);
   for (const signals::Segment& s : segments) plan_.append(s);
+  live_ = std::move(plant);
 }
 
 double PlantMotion::position(Nanos t) const {

@@ -7,9 +7,13 @@
 // integrated motion by at most |jerk| h^3 / 12 (0 for a constant torque).
 //
 // Closing the loop: an input (a board output) at time t rewinds the plant to its state at
-// the last input, integrates it to t exactly, applies the input and plans again from t to
-// the end. What lies before t is kept; the rig re-solves the encoder from t.
+// the last input, integrates it to t exactly, applies the input and plans again from t. What
+// lies before t is kept; the rig re-solves the encoder from t. A plan reaches only a bounded
+// horizon ahead (kPlanSteps integration steps); the rig extends it when the shaft gets
+// there, so a run costs O(its length) however many inputs it takes (a stepper's every pulse
+// is one), not a plan to the end per input.
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -31,6 +35,14 @@ public:
   [[nodiscard]] const signals::MotionProfile& plan() const { return plan_; }
   // An input changes at t (>= the last input's time): the plan is redone from t.
   void input(Nanos t, plants::PlantInput which, bool level);
+  // When the plan ends (the campaign's end, or its horizon).
+  [[nodiscard]] Nanos plan_end() const { return plan_.end_time(); }
+  // The shaft reached plan_end() (< the campaign's end): the plan so far becomes history and
+  // the next one runs on from where it ended, the same steps it would have taken.
+  void extend();
+
+  // Integration steps a plan reaches ahead of its start.
+  static constexpr std::int64_t kPlanSteps = 128;
 
   // The shaft's position at t in counts: the history before the last input, the plan from
   // it on (what a resolver's stators carry; the board samples at or before now).
@@ -47,10 +59,15 @@ private:
   // Integrates `plant` to `until`, appending a segment per knot.
   void integrate(plants::Plant& plant, Nanos until, std::vector<signals::Segment>& out) const;
   [[nodiscard]] signals::Segment segment(const plants::Knot& a, const plants::Knot& b) const;
+  // The plan from `plant`'s state (which becomes the checkpoint) to the horizon, starting at
+  // `start` counts.
+  void plan_from(std::unique_ptr<plants::Plant> plant, double start);
 
   double per_rad_;
   Nanos end_;
-  std::unique_ptr<plants::Plant> checkpoint_; // the plant at the last input
+  Nanos ahead_;                               // a plan's horizon
+  std::unique_ptr<plants::Plant> checkpoint_; // the plant at the plan's start
+  std::unique_ptr<plants::Plant> live_;       // the plant at the plan's end
   std::vector<signals::Segment> history_;     // before the last input
   std::vector<Nanos> history_standstills_;
   signals::MotionProfile plan_;

@@ -226,7 +226,7 @@ TEST(ResolverStators, AFrequencyOutsideTheRigsBandIsRejected) {
 // At each 5 kHz excitation peak (the boards sample there) the stators, demodulated by the
 // Series 2700's decoder (atan2, 8192 counts a turn, truncated), give that angle back to
 // within one of its counts; the angles before the input come from the plant's history, the
-// ones after from its plan, whichever was asked last.
+// ones after from its plan, extended horizon by horizon as the shaft gets there.
 TEST(ResolverStators, CarryThePlantsAngleAndDecodeBackToIt) {
   PlantSpec spec;
   spec.kind = PlantKind::Press;
@@ -262,6 +262,8 @@ TEST(ResolverStators, CarryThePlantsAngleAndDecodeBackToIt) {
   int compared = 0;
   for (std::int64_t ns = 0; ns <= end.count(); ns += 200'000) {
     const Nanos t{ns};
+    // As the rig's drive does when the shaft reaches a plan's horizon.
+    while (motion.plan_end() < t) motion.extend();
     const double reference = res.amplitude; // cos(0) at every peak
     const models::pls2700::StatorReading got =
         models::pls2700::decode_stators(sin_w(t), cos_w(t), reference, 0.5, 1.5);
