@@ -45,7 +45,7 @@ Knot StepperLoad::advance(Nanos until) {
 void StepperLoad::input(PlantInput which, bool level) {
   if (which == PlantInput::Direction) forward_ = level;
   if (which != PlantInput::Step) return;
-  if (level && !step_level_) commanded_ += forward_ ? 1 : -1;
+  if (level != step_level_ && (level || p_.step_every_edge)) commanded_ += forward_ ? 1 : -1;
   step_level_ = level;
 }
 

@@ -27,6 +27,7 @@ struct StepperParams {
   double load_torque = 0.0;      // N·m, constant, opposing forward motion
   int rotor_teeth = 50;          // N
   int microsteps = 1;            // per full step
+  bool step_every_edge = false;  // both edges of the step line are steps (a line toggling once a step)
 };
 
 class StepperLoad final : public Plant {

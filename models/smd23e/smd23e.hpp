@@ -19,6 +19,7 @@
 #include "models/smd23e/kinematics.hpp"
 #include "models/smd23e/params.hpp"
 #include "models/smd23e/status_bits.hpp"
+#include "signals/quadrature_decoder.hpp"
 
 namespace hilrig::models::smd23e {
 
@@ -47,6 +48,14 @@ public:
 
   // Wires discrete input 1…3 (2 on M12 units) to a line; High = current flows.
   void connect_input(int number, LineInput& line);
+  // The motor shaft's encoder as quadrature lines, 1024 counts a turn (a rig plant turning
+  // the shaft; virtual only, the real encoder is internal, spec §1.2). Connected, the encoder
+  // counts follow the lines instead of the steps, and stall detection compares them with the
+  // steps issued.
+  void connect_encoder(LineInput& a, LineInput& b);
+  // Stall detection against the connected encoder at now (spec §2.3, L1255, L2885): call
+  // after each step issued; the encoder's own edges call it too.
+  void watch_encoder();
 
   // RegisterMap: input registers 0–9; holding registers 1024–1033 (output words) and 0–9
   // (input words, FC 3 reads both, spec §6.1); writes only to 1024–1033.
@@ -216,6 +225,8 @@ private:
 
   std::int64_t reg_offset_ = 0; // Motor Position register − step position
   std::int64_t enc_offset_ = 0; // Encoder register − counts derived from the shaft
+  // The connected shaft encoder (connect_encoder), counting from 0 at power-up.
+  std::optional<signals::QuadratureDecoder> shaft_encoder_;
   std::int64_t captured_ = 0;
   bool shaft_blocked_ = false;
   std::int64_t shaft_frozen_ = 0;

@@ -62,8 +62,32 @@ std::int64_t Smd23e::encoder_position() const {
   if (!p_.has_encoder || steps_per_turn() == 0) {
     return 0;
   }
+  if (shaft_encoder_) return shaft_encoder_->count() + enc_offset_;
   // [A] counts = shaft steps × 1024 / steps per turn (spec §2.3).
   return floor_div(shaft_steps(sched_.now()) * 1024, steps_per_turn()) + enc_offset_;
+}
+
+void Smd23e::connect_encoder(LineInput& a, LineInput& b) {
+  shaft_encoder_.emplace(signals::CountMode::X4, is_high(a.level()), is_high(b.level()));
+  const auto edge = [this, &a, &b](const Edge&) {
+    shaft_encoder_->update(is_high(a.level()), is_high(b.level()));
+    watch_encoder();
+  };
+  a.on_edge(edge);
+  b.on_edge(edge);
+}
+
+void Smd23e::watch_encoder() {
+  const bool enabled = encoder_enabled() && (cfg_.words[0] & ccw::kStallEnable) != 0;
+  if (!shaft_encoder_ || !enabled || !run_ || steps_per_turn() == 0) return;
+  // [A §2.3] the encoder disagrees when it is more than the threshold from the counts the
+  // steps issued should have turned (both from 0 at power-up).
+  const std::int64_t expected = floor_div(step_position(sched_.now()) * 1024, steps_per_turn());
+  const auto lag = static_cast<double>(std::abs(expected - shaft_encoder_->count()));
+  if (lag <= p_.stall_threshold_counts) return;
+  immediate_stop(); // [A] a stall is an immediate stop
+  stall_ = true;
+  pos_invalid_ = true;
 }
 
 void Smd23e::block_shaft(bool blocked) {

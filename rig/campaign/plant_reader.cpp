@@ -236,6 +236,7 @@ std::optional<PlantSpec> read_plant(const std::string& file, const toml::table& 
       if (*micro < 1 || *micro > 1024) r.fail("microsteps", "an integer from 1 to 1024 (per full step)");
       s.stepper.microsteps = static_cast<int>(*micro);
     }
+    s.stepper.step_every_edge = r.opt_boolean("step_every_edge").value_or(false);
     if (start_angle || start_speed) r.fail("start_angle", "a stepper load starts at rest at angle 0");
     s.stepper_changes = read_changes(file, r, kStepper, s.stepper);
     break;

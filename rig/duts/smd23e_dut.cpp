@@ -31,7 +31,14 @@ public:
 
   void attach(virt::VirtualBus& bus,
               const std::map<std::string, std::string, std::less<>>& pin_to_line) override {
+    const auto enc_a = pin_to_line.find(kSmd23eEncoderAPin);
+    const auto enc_b = pin_to_line.find(kSmd23eEncoderBPin);
+    if ((enc_a == pin_to_line.end()) != (enc_b == pin_to_line.end()))
+      throw std::invalid_argument("smd23e: wire both ENC_A and ENC_B or neither");
+    if (enc_a != pin_to_line.end())
+      device_.connect_encoder(bus.line(enc_a->second).reader(), bus.line(enc_b->second).reader());
     for (const auto& [pin, line] : pin_to_line) {
+      if (pin == kSmd23eEncoderAPin || pin == kSmd23eEncoderBPin) continue;
       if (pin == kSmd23eStepPin) {
         step_ = &bus.line(line).driver();
       } else if (pin == kSmd23eDirPin) {
@@ -76,6 +83,7 @@ private:
       if (step_ != nullptr) step_->set(step_level_);
       emitted_ += cw ? 1 : -1;
     }
+    device_.watch_encoder();
     wake_ = sched_.at(next_wake(now), [this] { follow(); });
   }
 
@@ -167,6 +175,12 @@ DutInfo smd23e_info() {
                        "shaft sensor: one edge (either level) per step the shaft turns", false});
   info.pins.push_back({kSmd23eDirPin, PinDirection::Output,
                        "shaft sensor: High while the shaft steps CW, Low CCW (Low at power-up)", false});
+  info.pins.push_back({kSmd23eEncoderAPin, PinDirection::Input,
+                       "the shaft's encoder, channel A, when a rig plant turns the shaft (virtual only): "
+                       "1024 counts a turn; stall detection compares it with the steps",
+                       false});
+  info.pins.push_back(
+      {kSmd23eEncoderBPin, PinDirection::Input, "the shaft's encoder, channel B (see ENC_A)", false});
   info.params = param_infos(std::span<const F>(kSmd23eFields));
   info.variants.push_back({"nominal", "as specified"});
   for (const std::string_view v : m::fault_names())

@@ -15,6 +15,8 @@ namespace hilrig::duts {
 
 inline constexpr const char* kSmd23eStepPin = "STEP";
 inline constexpr const char* kSmd23eDirPin = "DIR";
+inline constexpr const char* kSmd23eEncoderAPin = "ENC_A";
+inline constexpr const char* kSmd23eEncoderBPin = "ENC_B";
 
 // The registry entry (name "smd23e").
 [[nodiscard]] DutInfo smd23e_info();

@@ -1,0 +1,139 @@
+// The SMD23E pulling an inertia through a stepper-load plant
+// (campaigns/smd23e/smd23e_load_too_fast.toml): the board's steps drive the plant, the plant
+// turns the encoder the board's stall detection watches (spec/smd23e.md §2.3, manual L1255,
+// L2885). The verdicts and the acceleration thresholds are the file's hand calculation (the
+// undamped pendulum of the rotor's electrical lag).
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "rig/campaign/campaign_parser.hpp"
+#include "rig/campaign/executive.hpp"
+#include "test_support.hpp"
+
+namespace hilrig::campaign {
+namespace {
+
+using rig::Outcome;
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const rig::Observation* find_observation(const rig::RunResult& run, const std::string& name) {
+  for (const auto& o : run.observations)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+const std::string kFile = test::campaign_dir("smd23e") + "/smd23e_load_too_fast.toml";
+
+constexpr double kJ = 4.8e-5 + 1.0e-2; // kg·m²: rotor + load
+constexpr double kT = 1.69477;         // N·m: 240 oz-in (spec §1)
+
+// The shaft's acceleration (rad/s²) for A steps/ms/s (L2496: x 1000 steps/s²), 12,800 steps
+// a turn, and f = J alpha / T.
+double alpha(double a) { return a * 1000.0 * 2.0 * std::numbers::pi / 12800.0; }
+double load_ratio(double a) { return kJ * alpha(a) / kT; }
+
+// With f > 1 the lag passes pi (a pole slipped) by sqrt(2 pi / (50 (alpha - T / J))): lost
+// within the ramp (25,600 steps/s at A x 1000 steps/s²) when that comes first.
+bool loses_within_ramp(double a) {
+  if (load_ratio(a) <= 1.0) return false;
+  return std::sqrt(2.0 * std::numbers::pi / (50.0 * (alpha(a) - kT / kJ))) <= 25.6 / a;
+}
+
+// Bisection on [lo, hi] for the root of a function that changes sign there.
+template <class F> double root(F f, double lo, double hi) {
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if ((f(lo) > 0.0) == (f(mid) > 0.0))
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The separatrix from rest: slips iff f (pi - asin f) >= 1 + sqrt(1 - f²).
+double f_slip() {
+  return root([](double f) { return f * (std::numbers::pi - std::asin(f)) - 1.0 - std::sqrt(1.0 - f * f); },
+              0.3, 0.99);
+}
+
+// Follows whatever the ring's phase at the deceleration: T (1 - 2 cos d_max) under the
+// saddle -f (pi - asin f) + sqrt(1 - f²), d_max from f d = 1 - cos d.
+double f_safe() {
+  const auto d_max = [](double f) {
+    return root([f](double d) { return f * d - (1.0 - std::cos(d)); }, 1e-6, 3.14);
+  };
+  return root(
+      [&](double f) {
+        return -f * (std::numbers::pi - std::asin(f)) + std::sqrt(1.0 - f * f) -
+               (1.0 - 2.0 * std::cos(d_max(f)));
+      },
+      0.05, 0.72);
+}
+
+std::string with_acceleration(int a) {
+  std::string t = read_text(kFile);
+  const std::string nominal = "write = [2, 32768, 25, 600, 25, 600, 50, 50, 0, 0]";
+  const std::size_t at = t.find(nominal);
+  EXPECT_NE(at, std::string::npos);
+  t.replace(at, nominal.size(), fmt::format("write = [2, 32768, 25, 600, 25, 600, {}, {}, 0, 0]", a, a));
+  return t;
+}
+
+TEST(Smd23eLoadTooFast, TheNominalRampFollowsAndTheFastOneStalls) {
+  EXPECT_NEAR(f_slip(), 0.72461, 1e-5);
+  EXPECT_NEAR(f_safe(), 0.42227, 1e-5);
+  EXPECT_LT(load_ratio(50), f_safe());
+  EXPECT_TRUE(loses_within_ramp(500));
+  const Campaign c = load_campaign(kFile);
+  const rig::CampaignResult r = test::run_everything(c);
+  ASSERT_EQ(r.runs.size(), 2U);
+  EXPECT_EQ(r.verdict, Outcome::Pass) << test::failures(r);
+  EXPECT_EQ(r.totals.faults_caught, 1U);
+  const rig::Observation* sw2 = find_observation(r.runs[0], "sw2");
+  const rig::Observation* lower = find_observation(r.runs[0], "encoder_lower");
+  ASSERT_NE(sw2, nullptr);
+  ASSERT_NE(lower, nullptr);
+  EXPECT_EQ(static_cast<int>(sw2->value) & 0x4000, 0);
+  EXPECT_NEAR(lower->value, 48.0, 3.0); // 2048 +- 3 counts of ringing
+  const rig::Observation* stalled = find_observation(r.runs[1], "sw2");
+  ASSERT_NE(stalled, nullptr);
+  EXPECT_EQ(static_cast<int>(stalled->value) & 0x4000, 0x4000); // SW2 bit 14 (L2885)
+}
+
+// Either side of the predicted band: follows at A <= 145.09 (f <= f_safe), stalls at
+// A >= 408.93 (f > 1 and the lag passes pi within the ramp).
+TEST(Smd23eLoadTooFast, StallsAtTheAccelerationThePhysicsPredicts) {
+  EXPECT_GT(f_slip(), f_safe()); // the separatrix from rest lies inside the open band
+  for (const int a : {130, 140, 450, 480}) {
+    const bool follows = load_ratio(a) <= f_safe();
+    ASSERT_TRUE(follows || loses_within_ramp(a)) << a << " lies in the band the ring's phase decides";
+    const Campaign c = parse_campaign(with_acceleration(a), "accel.toml");
+    const RunOutput out = Executive(c).run(c.runs[0]);
+    const rig::Observation* sw2 = find_observation(out.result, "sw2");
+    ASSERT_NE(sw2, nullptr) << a;
+    EXPECT_EQ((static_cast<int>(sw2->value) & 0x4000) == 0, follows) << a << " sw2 " << sw2->value;
+    ASSERT_EQ(out.result.checks.size(), 3U);
+    for (const auto& check : out.result.checks) {
+      if (follows || check.check == "no_stall") {
+        EXPECT_EQ(check.outcome(), follows ? Outcome::Pass : Outcome::Fail) << a << " " << check.check;
+      }
+    }
+  }
+}
+
+} // namespace
+} // namespace hilrig::campaign
