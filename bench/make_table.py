@@ -76,6 +76,26 @@ def time_v(path):
     return secs, (int(rss.group(1)) if rss else None)
 
 
+def cpu_seconds(path):
+    """User + system CPU seconds from /usr/bin/time -v."""
+    text = pathlib.Path(path).read_text()
+    user = re.search(r"User time \(seconds\): ([\d.]+)", text)
+    system = re.search(r"System time \(seconds\): ([\d.]+)", text)
+    if not user or not system:
+        return None
+    return float(user.group(1)) + float(system.group(1))
+
+
+def plant_row(work, root, rel):
+    """(figure, hilrig) of a plant campaign run by run-all.sh: simulated s per CPU s."""
+    name = pathlib.Path(rel).stem
+    campaign = root / "campaigns" / rel
+    sim, runs = simulated_seconds(campaign.read_text(), work / f"out-{name}" / "results.json")
+    cpu = cpu_seconds(work / f"time-{name}.txt")
+    status = (work / f"exit-{name}").read_text().strip() if (work / f"exit-{name}").exists() else "0"
+    return sim, cpu, runs, status
+
+
 def simulated_seconds(campaign_text, results_path):
     """campaign.end times the runs the campaign made (results.json)."""
     m = re.search(r'^\s*end\s*=\s*"([0-9.]+)(ns|us|ms|s)"', campaign_text, re.M)
@@ -162,6 +182,13 @@ def main():
         None if sp1 is None else sp1 >= 200)
     row(f"4b. same, 10x longer ({sim10:g} s simulated, exit {status10})", f"{sim10:g} s in {wall10:.2f} s wall",
         "real time", sp10, ">= 200x", None if sp10 is None else sp10 >= 200)
+    root = campaign.resolve().parents[2]
+    for fig, rel in (("4c", "ans1/ans1_press_plant.toml"), ("4d", "smd23e/smd23e_load_too_fast.toml")):
+        sim, cpu, runs, status = plant_row(work, root, rel)
+        sp = ratio(sim, cpu)
+        row(f"{fig}. plant campaign, {pathlib.Path(rel).name} ({sim:g} s simulated in {runs} runs, exit {status})",
+            f"{sim:g} s in {cpu:.2f} CPU s" if cpu is not None else "n/a", "real time (1 s per s)", sp,
+            "(simulated s per CPU s, for reading)", None)
     rr = ratio(rss10, rss1)
     row("5. peak RSS (maxresident), 10x longer vs 1x", f"{rss10 / 1024:.1f} MiB (10x)",
         f"{rss1 / 1024:.1f} MiB (1x)", rr, "<= 1.2 (no growth)", None if rr is None else rr <= 1.2)

@@ -85,6 +85,15 @@ for v in x1 x10; do
     echo "$?" >"$WORK/exit-$v"
 done
 
+# --- 4c./4d. plant campaigns: simulated seconds per CPU second (user + system) ---------------
+# A plant closes the loop in virtual time: the press plant (one replan per valve input) and the
+# stepper load (one replan per step pulse, 25,600 of them).
+for v in ans1/ans1_press_plant smd23e/smd23e_load_too_fast; do
+  name=$(basename "$v")
+  /usr/bin/time -v "$HILRIG" run "$ROOT/campaigns/$v.toml" --out "$WORK/out-$name" >"$WORK/run-$name.txt" \
+    2>"$WORK/time-$name.txt" || echo "$?" >"$WORK/exit-$name"
+done
+
 # --- 6a./6b. CAN frames and GPIO edges: SocketCAN and gpio-sim exist only in the RT VM lane --
 # rt-config/vm/payload-bench.sh runs bench_can_frames next to cangen -> candump on vcan0 and
 # bench_gpio_edges (gpiod backend vs bare libgpiod) on a gpio-sim line, inside the guest.
@@ -118,7 +127,7 @@ else
   fi
 fi
 
-rm -f "$WORK"/out-x*/trace*.vcd # tens of MB each; rerun the campaign to look at one
+rm -f "$WORK"/out-*/trace*.vcd # tens of MB each; rerun the campaign to look at one
 echo "load_after=$(cut -d' ' -f1-3 /proc/loadavg)" >>"$WORK/machine"
 
 python3 "$ROOT/bench/make_table.py" "$WORK" "$CAMPAIGN" "$RT_S" "$RT_PRIO" "$RT_CPU" | tee "$BUILD_DIR/bench-table.md"
