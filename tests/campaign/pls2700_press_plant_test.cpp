@@ -122,5 +122,23 @@ TEST(Pls2700PressPlant, TheStopPositionLimitFallsAtTheWearThePhysicsPredicts) {
   }
 }
 
+// start_flywheel_speed is checked like every plant key: finite, within ±1e4 rad/s, press only.
+TEST(Pls2700PressPlant, AFlywheelStartSpeedOutOfRangePointsAtItsKey) {
+  const std::string text = read_text(kFile);
+  const std::string key = "start_flywheel_speed = 34.55751918948773";
+  for (const char* bad : {"start_flywheel_speed = inf", "start_flywheel_speed = 1e5"}) {
+    std::string t = text;
+    const std::size_t at = t.find(key);
+    ASSERT_NE(at, std::string::npos);
+    t.replace(at, key.size(), bad);
+    try {
+      (void)parse_campaign(t, "bad.toml");
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const CampaignError& e) {
+      EXPECT_EQ(e.key(), "plant.start_flywheel_speed") << bad;
+    }
+  }
+}
+
 } // namespace
 } // namespace hilrig::campaign
