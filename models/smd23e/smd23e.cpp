@@ -102,6 +102,9 @@ void Smd23e::write_outputs(const Words& words) {
   const Words previous = out_;
   out_ = words;
   process(previous);
+  if (hot_) {
+    over_temperature(); // the driver enabled while still over temperature faults at once ([MODEL])
+  }
 }
 
 // ---- Status words --------------------------------------------------------------------------
@@ -505,8 +508,9 @@ void Smd23e::process_command(const Words& previous) {
     inv_par_ = false;
     stall_ = false;
     net_loss_ = false;
-    if ((lsw & lsw::kClearDriverFault) != 0 && (lsw & lsw::kDriveEnable) == 0) {
-      drv_fault_ = false; // M-15: only with DriveEn = 0
+    // M-15: only with DriveEn = 0, and once the over-temperature condition is gone (L2922).
+    if ((lsw & lsw::kClearDriverFault) != 0 && (lsw & lsw::kDriveEnable) == 0 && !hot_) {
+      drv_fault_ = false;
     }
     cmd = static_cast<std::uint16_t>(cmd & ~msw::kResetErrors);
     if (cmd == 0) {

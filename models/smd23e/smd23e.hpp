@@ -90,6 +90,9 @@ public:
   // Plant and environment events (tests and campaigns).
   void block_shaft(bool blocked);
   void over_temperature();
+  // The over-temperature condition starts (hot) or ends: while it lasts the driver faults
+  // whenever it is enabled, and Reset Driver Fault does not clear the fault (L2922).
+  void set_over_temperature(bool hot);
   void set_temperature_warning(bool warn) { temp_warn_ = warn; }
   void network_link(bool up);
 
@@ -213,6 +216,7 @@ private:
   bool limit_cond_ = false;
   bool stall_ = false;
   bool drv_fault_ = false;
+  bool hot_ = false; // the over-temperature condition (set_over_temperature)
   bool net_loss_ = false;
   bool temp_warn_ = false;
   bool lock_cw_ = false;

@@ -118,6 +118,13 @@ void Smd23e::over_temperature() {
   }
 }
 
+void Smd23e::set_over_temperature(bool hot) {
+  hot_ = hot;
+  if (hot) {
+    over_temperature();
+  }
+}
+
 void Smd23e::network_link(bool up) {
   if (!up) {
     if (run_ || pause_event_.valid()) {

@@ -135,6 +135,18 @@ struct HostAction {
   SourcePos where;
 };
 
+// A fault the device's manual describes ([[device_fault]]), in place from `at` until `until`:
+// a board fault raised in the model, or a resolver fault the rig makes on the stators.
+struct DeviceFaultEvent {
+  std::size_t fault = 0; // index into the DUT's DutInfo::faults
+  std::string name;      // the fault's name (messages, traces)
+  duts::FaultSite site = duts::FaultSite::Board;
+  Nanos at{0};
+  Nanos until = Nanos::max(); // the condition ends here (the board may keep it latched)
+  double ratio = 0.0;         // site StatorRatio: the stators' transformation ratio meanwhile
+  SourcePos where;
+};
+
 // A check: its kind and name, and its typed parameters, built and range-checked once by the
 // parser (rig/checks/registry.hpp: build_check_params).
 struct CheckSpec {
@@ -169,6 +181,7 @@ struct Scenario {
   std::optional<PlantSpec> plant; // a plant turns the shaft instead of the motion
   std::vector<Stimulus> stimuli;
   std::vector<HostAction> host;
+  std::vector<DeviceFaultEvent> device_faults;
   std::vector<CheckSpec> checks;
   Nanos end{0};
   Nanos host_poll{1'000'000}; // how often the host polls Acknowledge

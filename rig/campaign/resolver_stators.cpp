@@ -6,23 +6,38 @@
 
 namespace hilrig::campaign {
 
+std::vector<StatorRatioWindow> stator_fault_windows(const Scenario& scenario, Stator stator) {
+  using duts::FaultSite;
+  std::vector<StatorRatioWindow> out;
+  for (const DeviceFaultEvent& f : scenario.device_faults) {
+    const bool acts = f.site == FaultSite::OpenStators || f.site == FaultSite::StatorRatio ||
+                      (f.site == FaultSite::OpenSin && stator == Stator::Sine) ||
+                      (f.site == FaultSite::OpenCos && stator == Stator::Cosine);
+    if (acts) out.push_back({f.at, f.until, f.site == FaultSite::StatorRatio ? f.ratio : 0.0});
+  }
+  return out;
+}
+
 Waveform stator_waveform(ShaftPosition position, double counts_per_turn, const ResolverSpec& resolver,
-                         Stator stator) {
-  const double peak = resolver.ratio * resolver.amplitude;
+                         Stator stator, std::vector<StatorRatioWindow> faults) {
   const double omega = 2.0 * std::numbers::pi * resolver.excitation_hz;
   const double radians_per_count = 2.0 * std::numbers::pi / counts_per_turn;
   const double phase = resolver.phase_deg * std::numbers::pi / 180.0;
-  return [position = std::move(position), peak, omega, phase, radians_per_count, stator](Nanos t) {
+  return [position = std::move(position), ratio = resolver.ratio, amplitude = resolver.amplitude, omega,
+          phase, radians_per_count, stator, faults = std::move(faults)](Nanos t) {
+    double r = ratio;
+    for (const StatorRatioWindow& w : faults)
+      if (t >= w.at && t < w.until) r = w.ratio;
     const double angle = radians_per_count * position(t);
-    const double carrier = peak * std::sin(omega * t.seconds() + phase);
+    const double carrier = r * amplitude * std::sin(omega * t.seconds() + phase);
     return carrier * (stator == Stator::Sine ? std::sin(angle) : std::cos(angle));
   };
 }
 
 Waveform stator_waveform(std::shared_ptr<const signals::MotionProfile> profile, double counts_per_turn,
-                         const ResolverSpec& resolver, Stator stator) {
+                         const ResolverSpec& resolver, Stator stator, std::vector<StatorRatioWindow> faults) {
   return stator_waveform([profile = std::move(profile)](Nanos t) { return profile->position(t); },
-                         counts_per_turn, resolver, stator);
+                         counts_per_turn, resolver, stator, std::move(faults));
 }
 
 } // namespace hilrig::campaign

@@ -4,9 +4,13 @@
 // rotor is excited with amplitude * sin(2 pi f t) and each stator carries it times the
 // transformation ratio and sin or cos of the shaft angle. Stimuli are data: the waveforms
 // are pure functions of virtual time.
+// A resolver device fault ([[device_fault]] of a stator site) changes a stator's amplitude
+// for its window: 0 for an open coil or a lost transducer, the fault's ratio for a ratio
+// out of range, so the board detects it from the signal.
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "core/analog.hpp"
 #include "rig/campaign/campaign.hpp"
@@ -19,11 +23,24 @@ enum class Stator : std::uint8_t { Sine, Cosine };
 // The shaft's position at a time, in encoder counts.
 using ShaftPosition = std::function<double(Nanos)>;
 
+// One stator's transformation ratio from `at` until `until` (instead of the resolver's).
+struct StatorRatioWindow {
+  Nanos at{0};
+  Nanos until = Nanos::max();
+  double ratio = 0.0;
+};
+
+// The windows of the scenario's resolver faults that act on this stator, in file order (a
+// later one wins where two overlap).
+[[nodiscard]] std::vector<StatorRatioWindow> stator_fault_windows(const Scenario& scenario, Stator stator);
+
 // position: the shaft in encoder counts, counts_per_turn of them per shaft turn.
 [[nodiscard]] Waveform stator_waveform(ShaftPosition position, double counts_per_turn,
-                                       const ResolverSpec& resolver, Stator stator);
+                                       const ResolverSpec& resolver, Stator stator,
+                                       std::vector<StatorRatioWindow> faults = {});
 // The same over a motion profile in counts.
 [[nodiscard]] Waveform stator_waveform(std::shared_ptr<const signals::MotionProfile> profile,
-                                       double counts_per_turn, const ResolverSpec& resolver, Stator stator);
+                                       double counts_per_turn, const ResolverSpec& resolver, Stator stator,
+                                       std::vector<StatorRatioWindow> faults = {});
 
 } // namespace hilrig::campaign

@@ -46,6 +46,7 @@ public:
     read_plant_table(out.scenario);
     read_stimuli(out.scenario);
     read_host(out.scenario);
+    read_device_faults(out.scenario);
     read_checks(out.scenario);
     read_faults(out);
     (void)root_.node("sweep"); // read by the campaign parser
@@ -544,6 +545,42 @@ private:
       words.push_back(static_cast<std::uint16_t>(v->get()));
     }
     return words;
+  }
+
+  // [[device_fault]]: a fault the DUT's manual describes, by the names the DUT declares.
+  void read_device_faults(Scenario& s) {
+    std::size_t i = 0;
+    for (const toml::table* t : root_.tables("device_fault")) {
+      TableReader r(file_, *t, fmt::format("device_fault[{}]", i++));
+      DeviceFaultEvent f;
+      f.where = r.where();
+      f.name = r.string("fault");
+      if (info_ == nullptr) r.fail("fault", "a fault of a virtual model (a real board's faults are its own)");
+      const auto index = info_->fault_index(f.name);
+      if (!index) {
+        std::vector<std::string> names;
+        for (const auto& d : info_->faults) names.push_back(d.name);
+        r.fail("fault", names.empty() ? fmt::format("none: {} has no device faults", info_->name)
+                                      : fmt::format("a fault of {}: one of {}", info_->name, join(names)));
+      }
+      const duts::DeviceFaultInfo& d = info_->faults[*index];
+      f.fault = *index;
+      f.site = d.site;
+      f.at = r.duration("at");
+      if (f.at < Nanos{0} || f.at > s.end) r.fail("at", "a time within the run (0 .. campaign.end)");
+      if (r.has("until")) {
+        if (!d.clears)
+          r.fail("until", fmt::format("no `until`: {} does not end by itself ({})", d.name, d.description));
+        f.until = r.duration("until");
+        if (f.until <= f.at) r.fail("until", "a time after `at`");
+      }
+      if (d.site != duts::FaultSite::Board && s.resolver.sin_line.empty())
+        r.fail("fault", fmt::format("a [resolver] the rig drives: {} acts on its stator signals", d.name));
+      if (d.site == duts::FaultSite::StatorRatio)
+        f.ratio = number_in(r, "ratio", 0.0, limits::kMaxRatio, "a transformation ratio");
+      r.finish();
+      s.device_faults.push_back(std::move(f));
+    }
   }
 
   static nlohmann::json to_json(const toml::node& n) {

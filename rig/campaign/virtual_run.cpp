@@ -59,6 +59,7 @@ public:
     std::map<std::string, std::string, std::less<>> pins;
     for (const Wire& w : s_.wiring) pins[w.board] = w.rig;
     dut_->attach(bus_, pins);
+    schedule_board_faults();
 
     drive_.start(in_.faults, in_.probe, in_.record_motion);
     if (plant_) plant_->start();
@@ -156,8 +157,22 @@ private:
       const auto profile = std::make_shared<const signals::MotionProfile>(motion_.profile);
       shaft = [profile](Nanos t) { return profile->position(t); };
     }
-    bus_.analog(r.sin_line).set_waveform(stator_waveform(shaft, per_turn, r, Stator::Sine));
-    bus_.analog(r.cos_line).set_waveform(stator_waveform(shaft, per_turn, r, Stator::Cosine));
+    bus_.analog(r.sin_line)
+        .set_waveform(
+            stator_waveform(shaft, per_turn, r, Stator::Sine, stator_fault_windows(s_, Stator::Sine)));
+    bus_.analog(r.cos_line)
+        .set_waveform(
+            stator_waveform(shaft, per_turn, r, Stator::Cosine, stator_fault_windows(s_, Stator::Cosine)));
+  }
+
+  // [[device_fault]] of the board itself: the model raises it at `at`, its condition ends at
+  // `until` (the resolver faults are in the stator waveforms).
+  void schedule_board_faults() {
+    for (const DeviceFaultEvent& f : s_.device_faults) {
+      if (f.site != duts::FaultSite::Board) continue;
+      sched_.at(f.at, [this, i = f.fault] { dut_->device_fault(i, true); });
+      if (f.until <= s_.end) sched_.at(f.until, [this, i = f.fault] { dut_->device_fault(i, false); });
+    }
   }
 
   const RunInputs& in_;

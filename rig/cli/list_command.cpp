@@ -55,6 +55,10 @@ void write_listing(std::ostream& out) {
   for (const duts::DutInfo& d : duts::dut_registry())
     for (const auto& v : d.variants) out << fmt::format("  {}/{}: {}\n", d.name, v.name, v.description);
 
+  out << "device faults ([[device_fault]] fault = ..., at, until):\n";
+  for (const duts::DutInfo& d : duts::dut_registry())
+    for (const auto& f : d.faults) out << fmt::format("  {}/{}: {}\n", d.name, f.name, f.description);
+
   out << "checks ([[check]] kind = ...):\n";
   for (const checks::CheckKind& k : checks::check_kinds()) {
     out << fmt::format("  {}: {}\n", k.name, k.summary);

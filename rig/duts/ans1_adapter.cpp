@@ -129,6 +129,30 @@ DutInfo ans1_info() {
   info.params = param_infos(std::span<const F>(kAns1Fields));
   for (const auto& v : a::kVariantNames)
     info.variants.push_back({std::string(v.name), std::string(v.description)});
+  // Resolver faults on the stators the rig drives; the board detects them from the signal (the
+  // stator amplitude sqrt(S^2 + C^2) against the reference outside resolver_min_ratio ..
+  // resolver_max_ratio, [MODEL]) at its next excitation peak and scan.
+  const std::string reaction =
+      ": Resolver Fault (status bit 12, L418-419, L2299), outputs all off (HoldOuts 0) or held "
+      "(HoldOuts 1, L1836), latched until Clear Errors with XFltLatch 0, cleared by itself with 1 "
+      "(L1839); `until`: the signal is back";
+  info.faults = {
+      {"open_sin_coil",
+       "the SIN stator open (amplitude 0): detected where the COS stator alone is below "
+       "resolver_min_ratio" +
+           reaction,
+       FaultSite::OpenSin, true},
+      {"open_cos_coil",
+       "the COS stator open (amplitude 0): detected where the SIN stator alone is below "
+       "resolver_min_ratio" +
+           reaction,
+       FaultSite::OpenCos, true},
+      {"ratio_out_of_range",
+       "both stators at `ratio` times the reference (a TR outside 0.9..1.0 without its reference "
+       "module, L1456-1463): a fault outside resolver_min_ratio .. resolver_max_ratio" +
+           reaction,
+       FaultSite::StatorRatio, true},
+  };
   info.host = HostInterface{static_cast<std::size_t>(a::kHostWords), static_cast<std::size_t>(a::kHostWords),
                             true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,

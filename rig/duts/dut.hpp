@@ -10,6 +10,8 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -67,6 +69,27 @@ struct VariantInfo {
   std::string description;
 };
 
+// Where a device fault ([[device_fault]]) is made. A board's own fault (an EEPROM error, an
+// over-temperature) is raised in its model; a resolver fault is made by the rig on the stator
+// signals it synthesizes, so the board detects it from the signal as a real board does.
+enum class FaultSite : std::uint8_t {
+  Board,       // the model: Dut::device_fault(index, active)
+  OpenSin,     // the rig's SIN stator at amplitude 0: an open coil
+  OpenCos,     // the rig's COS stator at amplitude 0: an open coil
+  OpenStators, // both stators at amplitude 0: the transducer lost (cable off)
+  StatorRatio, // both stators at the entry's `ratio` times the reference
+};
+
+// A fault the board's manual describes, started (and cleared) at times in a campaign.
+struct DeviceFaultInfo {
+  std::string name;        // as a campaign names it: fault = "eeprom_error"
+  std::string description; // what the board does, per its manual (`hilrig list`)
+  FaultSite site = FaultSite::Board;
+  // `until` ends the condition (the board may keep it latched). False: the condition never
+  // ends by itself, only the board's documented remedy clears it (the 7361's E2CLR).
+  bool clears = true;
+};
+
 // The host's word interface (EtherNet/IP or Modbus registers on a real board).
 struct HostInterface {
   std::size_t output_words = 0; // host -> board (command words)
@@ -110,6 +133,12 @@ public:
   // The host writes one output word / reads one input word, at the scheduler's now.
   virtual void host_write(std::size_t word, std::uint16_t value) = 0;
   [[nodiscard]] virtual std::uint16_t host_read(std::size_t word) const = 0;
+  // A board fault (DutInfo::faults[fault], site Board) starts (active) or its condition ends,
+  // at the scheduler's now. The parser lets a campaign name only the faults a DUT declares.
+  virtual void device_fault(std::size_t fault, bool active) {
+    (void)active;
+    throw std::logic_error("this DUT has no board fault " + std::to_string(fault));
+  }
 };
 
 // seed: the run's seed, for what a real board leaves to chance (e.g. its scan phase).
@@ -122,13 +151,16 @@ struct DutInfo {
   std::string description;
   std::vector<PinInfo> pins;
   std::vector<ParamInfo> params;
-  std::vector<VariantInfo> variants; // "nominal" first
+  std::vector<VariantInfo> variants;   // "nominal" first
+  std::vector<DeviceFaultInfo> faults; // [[device_fault]] fault = ...
   HostInterface host;
   DutFactory make;
 
   [[nodiscard]] const PinInfo* pin(std::string_view pin_name) const;
   [[nodiscard]] const ParamInfo* param(std::string_view param_name) const;
   [[nodiscard]] bool has_variant(std::string_view variant) const;
+  // The index of a device fault in `faults`, by name.
+  [[nodiscard]] std::optional<std::size_t> fault_index(std::string_view fault_name) const;
   // Defaults for every parameter, overridden by the given values.
   [[nodiscard]] DutParams with_defaults(const std::map<std::string, ParamValue, std::less<>>& given) const;
 };

@@ -79,6 +79,12 @@ bool DutInfo::has_variant(std::string_view variant) const {
                      [&](const VariantInfo& v) { return v.name == variant; });
 }
 
+std::optional<std::size_t> DutInfo::fault_index(std::string_view fault_name) const {
+  for (std::size_t i = 0; i < faults.size(); ++i)
+    if (faults[i].name == fault_name) return i;
+  return std::nullopt;
+}
+
 DutParams DutInfo::with_defaults(const std::map<std::string, ParamValue, std::less<>>& given) const {
   DutParams out;
   for (const ParamInfo& p : params) out.set(p.name, p.default_value);

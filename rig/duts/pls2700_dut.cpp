@@ -164,6 +164,24 @@ DutInfo pls2700_info() {
   };
   for (const auto& f : p::kFaultNames)
     info.variants.push_back({std::string(f.name), std::string(f.description)});
+  // Transducer faults on the channel the campaign's [resolver] drives; the module detects them
+  // from the signal (stator amplitude against the reference outside min_stator_ratio ..
+  // max_stator_ratio, [X]) at its next reference peak.
+  const std::string reaction =
+      ": Err1 transducer fault (L601, L753, L765-772): that channel's position and tach words 8000h "
+      "(L1315), limit outputs off (L1437; all 8 with fault_all_outputs), host programming ignored "
+      "with 24h (L1763); latched until Clear Errors 8400h once the signal is back (L601, L1359); "
+      "`until`: the signal is back";
+  info.faults = {
+      {"transducer_loss", "the resolver lost (cable off: both stators at amplitude 0)" + reaction,
+       FaultSite::OpenStators, true},
+      {"open_sin_coil",
+       "the SIN stator line open (amplitude 0), detected where COS alone is too small" + reaction,
+       FaultSite::OpenSin, true},
+      {"open_cos_coil",
+       "the COS stator line open (amplitude 0), detected where SIN alone is too small" + reaction,
+       FaultSite::OpenCos, true},
+  };
   info.host =
       HostInterface{p::kMaxBtwWords + 1, kPls2700SingleTransferWord + 1, false, 15, 15, p::kMaxBtwWords};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,

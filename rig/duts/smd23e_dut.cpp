@@ -69,6 +69,17 @@ public:
     return device_.input_words()[word];
   }
 
+  // smd23e_info().faults: 0 over_temperature, 1 temperature_warning.
+  void device_fault(std::size_t fault, bool active) override {
+    if (fault == 0)
+      device_.set_over_temperature(active);
+    else if (fault == 1)
+      device_.set_temperature_warning(active);
+    else
+      throw std::logic_error("smd23e: no such device fault");
+    follow(); // an over-temperature stops the step train
+  }
+
 private:
   // Emits the steps the shaft has turned since the last call, then sleeps until the next.
   void follow() {
@@ -185,6 +196,18 @@ DutInfo smd23e_info() {
   info.variants.push_back({"nominal", "as specified"});
   for (const std::string_view v : m::fault_names())
     info.variants.push_back({std::string(v), std::string(m::fault_description(*m::fault_from_name(v)))});
+  info.faults = {
+      {"over_temperature",
+       "the driver over temperature: with the driver enabled, motor power is removed (L565), the step "
+       "train stops at once and the position is invalid, SW2 bit 7 Driver Fault set (L2892, L2922); "
+       "`until`: the unit has cooled. Reset Errors with LSW bit 10 and DriveEn 0 clears it only once "
+       "cooled (L2471, L2922, [MODEL]); the motor has current again when DriveEn is set (L2946)",
+       FaultSite::Board, true},
+      {"temperature_warning",
+       "CPU above 90 C (heatsink near 83 C): SW2 bit 4 Temperature Warning set, motion goes on "
+       "(L564, L2895); `until`: cooled, the bit clears",
+       FaultSite::Board, true},
+  };
   info.host = HostInterface{m::kWords, m::kWords, false, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t seed) -> std::unique_ptr<Dut> {

@@ -45,6 +45,12 @@ public:
     if (!module_) throw std::logic_error("ssi7361: host read before attach");
     return module_->status_words().at(word);
   }
+  // The one board fault: an EEPROM parameter corrupted (E2Err). It has no end of its own:
+  // the host's E2CLR clears it (the parser refuses an `until`).
+  void device_fault(std::size_t fault, bool active) override {
+    if (fault != 0 || !active) throw std::logic_error("ssi7361: no such device fault");
+    module().corrupt_eeprom();
+  }
 
 private:
   s::Ssi7361& module() {
@@ -145,6 +151,13 @@ DutInfo ssi7361_info() {
   };
   for (const auto& v : s::kVariantNames)
     info.variants.push_back({std::string(v.name), std::string(v.description)});
+  info.faults.push_back(
+      {"eeprom_error",
+       "a parameter in EEPROM is corrupted: E2Err (%I bit 13) set at once (L2043-2044); the module "
+       "keeps converting with its setup; every programming cycle without E2CLR (%Q bit 15) is refused "
+       "with CMDErr (%I bit 7, L2029); E2CLR clears E2Err and loads the factory defaults, LO 0 "
+       "(L253-255, L2119-2121). No `until`: only E2CLR clears it",
+       FaultSite::Board, false});
   info.host = HostInterface{s::kCommandWords, s::kStatusWords, true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t seed) -> std::unique_ptr<Dut> {
