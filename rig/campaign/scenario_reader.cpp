@@ -555,7 +555,9 @@ private:
       DeviceFaultEvent f;
       f.where = r.where();
       f.name = r.string("fault");
-      if (info_ == nullptr) r.fail("fault", "a fault of a virtual model (a real board's faults are its own)");
+      if (info_ == nullptr || s.dut.backend != "virtual")
+        r.fail("fault",
+               "a fault of a virtual board (backend \"virtual\"): a real board's faults are its own");
       const auto index = info_->fault_index(f.name);
       if (!index) {
         std::vector<std::string> names;

@@ -76,7 +76,8 @@ void write_listing(std::ostream& out) {
 }
 
 void add_list_command(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand("list", "name the devices, checks, signal faults and device variants");
+  CLI::App* cmd = app.add_subcommand(
+      "list", "name the devices, checks, signal faults, device faults and device variants");
   cmd->callback([] { write_listing(std::cout); });
 }
 

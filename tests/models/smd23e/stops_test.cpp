@@ -150,6 +150,45 @@ TEST_F(Smd23eStops, DriverFaultIsNotClearedWhileTheDriverIsEnabled) {
   EXPECT_TRUE(bit2(sw2::kDriverFault));
 }
 
+// smd23e manual (seeds/003_7a93cebfafae55cd.txt:565): over temperature removes power from the
+// motor; :2892: SW2 bit 7 Driver Fault is 1 during the fault while the driver is enabled;
+// :2922: "Once you have cleared the fault condition, you can reset the Driver Fault".
+TEST_F(Smd23eStops, OverTemperatureStopsAJogAndIsResetOnlyOnceCooled) {
+  configure();
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(500_ms);
+  ASSERT_TRUE(dut.moving());
+  dut.set_over_temperature(true);
+  const std::int64_t at_fault = dut.shaft_steps(sched.now());
+  run_to(600_ms);
+  EXPECT_EQ(dut.shaft_steps(sched.now()), at_fault); // no step after the fault (L565)
+  EXPECT_TRUE(bit2(sw2::kDriverFault));
+  EXPECT_TRUE(bit2(sw2::kDriverEnabled)); // the global enable bit stays (L2884)
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  EXPECT_DOUBLE_EQ(dut.motor_current_amps(), 0.0);
+  write(0, lsw::kClearDriverFault);
+  write(msw::kResetErrors, lsw::kClearDriverFault); // still hot: the fault stays (L2922)
+  EXPECT_TRUE(bit2(sw2::kDriverFault));
+  dut.set_over_temperature(false);
+  write(0, lsw::kClearDriverFault);
+  write(msw::kResetErrors, lsw::kClearDriverFault); // cooled: Reset Driver Fault (L2924-2946)
+  EXPECT_FALSE(bit2(sw2::kDriverFault));
+  EXPECT_DOUBLE_EQ(dut.motor_current_amps(), 0.0); // DriveEn was 0 (L2946)
+}
+
+// [MODEL] the driver enabled while the unit is still over temperature faults at once
+// (L2892: the bit is 1 during the fault whenever the driver is enabled).
+TEST_F(Smd23eStops, DriverEnabledWhileStillHotFaults) {
+  configure();
+  write(0, 0); // driver disabled
+  dut.set_over_temperature(true);
+  EXPECT_FALSE(bit2(sw2::kDriverFault)); // not while the driver is disabled (L2892)
+  write(0, kDrive);
+  EXPECT_TRUE(bit2(sw2::kDriverFault));
+  EXPECT_DOUBLE_EQ(dut.motor_current_amps(), 0.0);
+}
+
 TEST_F(Smd23eStops, NetworkLossStopsAndItsReturnSetsTheErrorBits) {
   configure();
   preset(0);
