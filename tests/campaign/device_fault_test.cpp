@@ -244,7 +244,7 @@ TEST_P(DeviceFaultCampaign, PassesAndItsChecksJudgeTheFault) {
   std::set<std::string> failed;
   for (const auto& run : without.runs)
     for (const auto& check : run.checks)
-      if (check.judgement == rig::Judgement::Fail) failed.insert(check.name);
+      if (check.judgement == rig::Judgement::Fail) failed.insert(check.check);
   EXPECT_EQ(failed, p.judge_the_fault);
 }
 
@@ -264,7 +264,7 @@ INSTANTIATE_TEST_SUITE_P(
                               "pls2700_transducer_loss.toml",
                               {"fault_word", "outputs_off", "position_latched", "tach_latched",
                                "programming_ignored"}}),
-    [](const ::testing::TestParamInfo<Shipped>& info) { return std::string(info.param.device); });
+    [](const ::testing::TestParamInfo<Shipped>& p) { return std::string(p.param.device); });
 
 } // namespace
 } // namespace hilrig::campaign
