@@ -211,8 +211,8 @@ TEST(DeviceFaultModels, Ans1SeesAnOpenSinCoilWhereTheCosStatorAloneIsTooSmall) {
   EXPECT_TRUE(a::decode_resolver(0.75 * 0.6, 0.75 * 0.8, 1.0, 0.75, 1.25).valid); // at the limit
 }
 
-// pls2700 manual (seeds/ L765-772, digest §4.9): a broken transducer cable is a transducer
-// fault; with both stators lost the demodulated amplitude is 0 whatever the angle.
+// pls2700 manual (seeds/002_46e90574ec92805f.txt:765-772, digest §4.9): a broken transducer cable is a
+// transducer fault; with both stators lost the demodulated amplitude is 0 whatever the angle.
 TEST(DeviceFaultModels, Pls2700SeesATransducerLossAtEveryAngle) {
   namespace p = models::pls2700;
   for (int deg = 0; deg < 360; deg += 15) {
