@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <ctime>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -29,16 +28,11 @@ namespace {
 using campaign::RunInputs;
 using campaign::VirtualRun;
 using rig::LoopSample;
+using rig::monotonic_now;
 
 constexpr std::size_t kRingCapacity = std::size_t{1} << 16;
 constexpr std::size_t kSentRingCapacity = std::size_t{1} << 14; // 16 s of 1 ms frames between drains
 constexpr Nanos kAuxWake{10'000'000}; // the host/CAN thread looks at the bus state this often
-
-Nanos monotonic_now() noexcept {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return Nanos{static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec};
-}
 
 // The first fault wins; raising one asks every thread to stop.
 class FaultFlag {

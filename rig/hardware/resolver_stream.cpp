@@ -1,21 +1,10 @@
 #include "rig/hardware/resolver_stream.hpp"
 
 #include <algorithm>
-#include <ctime>
 
 #include "rig/rt/rt_loop.hpp"
 
 namespace hilrig::hardware {
-
-namespace {
-
-Nanos monotonic_now() noexcept {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return Nanos{static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec};
-}
-
-} // namespace
 
 std::string play_resolver_stream(const signals::MotionProfile& profile,
                                  const models::resolver_emulator::AngleStreamParams& params, Nanos end,
@@ -27,7 +16,7 @@ std::string play_resolver_stream(const signals::MotionProfile& profile,
     (void)rig::sleep_until(start + t);
     std::string why = can.check(); // empty (no allocation) unless the run must stop
     if (!why.empty()) return why;
-    const Nanos now = monotonic_now() - start;
+    const Nanos now = rig::monotonic_now() - start;
     if (now > t + period) {
       const Nanos resume = (now / period + 1) * period;
       const Nanos last = std::min(resume - period, (end / period) * period); // boundaries up to end only

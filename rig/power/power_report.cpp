@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "rig/results/xml_escape.hpp"
+
 namespace hilrig::power {
 namespace {
 
@@ -18,29 +20,6 @@ std::string with_unit(const std::optional<double>& v, const std::string& unit) {
 std::string percent(const std::optional<double>& pct) { return pct ? fmt::format("{:.4f} %", *pct) : "-"; }
 
 std::string margin_text(const PowerRow& r) { return percent(r.margin_pct); }
-
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (const char ch : s) {
-    switch (ch) {
-    case '&':
-      out += "&amp;";
-      break;
-    case '<':
-      out += "&lt;";
-      break;
-    case '>':
-      out += "&gt;";
-      break;
-    case '"':
-      out += "&quot;";
-      break;
-    default:
-      out += ch;
-    }
-  }
-  return out;
-}
 
 } // namespace
 
@@ -101,11 +80,11 @@ std::string to_power_text(const PowerResult& result) {
 
 std::string to_power_html(const PowerResult& result) {
   std::string out = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>detection power: " +
-                    html_escape(result.campaign) +
+                    rig::xml_escape(result.campaign) +
                     "</title>\n<style>body{font-family:sans-serif}table{border-collapse:collapse}"
                     "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}</style></head><body>\n";
-  out += fmt::format("<h1>Detection power: {} ({}), seed {}</h1>\n", html_escape(result.campaign),
-                     html_escape(result.device), result.seed);
+  out += fmt::format("<h1>Detection power: {} ({}), seed {}</h1>\n", rig::xml_escape(result.campaign),
+                     rig::xml_escape(result.device), result.seed);
   out +=
       "<p>For each check, the smallest deviation of the virtual board's knob at which the check fails, what "
       "the check measured there and how far beyond its spec limit; where the model states it, the board's "
@@ -117,12 +96,12 @@ std::string to_power_html(const PowerResult& result) {
     out += fmt::format(
         "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
         "<td>{}</td><td>{}</td><td>{}</td></tr>\n",
-        html_escape(r.check), html_escape(r.kind), html_escape(r.knob),
-        html_escape(with_unit(r.nominal, r.knob_unit)), html_escape(with_unit(r.threshold, r.knob_unit)),
-        html_escape(with_unit(r.measured, r.unit)), html_escape(with_unit(r.limit, r.unit)),
-        html_escape(margin_text(r)), html_escape(with_unit(r.board_worst, r.unit)),
-        html_escape(percent(r.board_margin_pct)),
-        html_escape(r.reason.empty() && !r.margin_pct ? r.detail : r.reason));
+        rig::xml_escape(r.check), rig::xml_escape(r.kind), rig::xml_escape(r.knob),
+        rig::xml_escape(with_unit(r.nominal, r.knob_unit)),
+        rig::xml_escape(with_unit(r.threshold, r.knob_unit)), rig::xml_escape(with_unit(r.measured, r.unit)),
+        rig::xml_escape(with_unit(r.limit, r.unit)), rig::xml_escape(margin_text(r)),
+        rig::xml_escape(with_unit(r.board_worst, r.unit)), rig::xml_escape(percent(r.board_margin_pct)),
+        rig::xml_escape(r.reason.empty() && !r.margin_pct ? r.detail : r.reason));
   out += "</table>\n</body></html>\n";
   return out;
 }

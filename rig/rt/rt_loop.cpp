@@ -9,12 +9,6 @@ namespace hilrig::rig {
 
 namespace {
 
-Nanos monotonic_now() noexcept {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return Nanos{static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec};
-}
-
 void drain_inputs(RtInputPort& inputs, SpscRing<LoopSample>& ring, RtLoopStats& stats) noexcept {
   std::array<InputEdge, 64> batch{};
   for (;;) {
@@ -31,6 +25,12 @@ void drain_inputs(RtInputPort& inputs, SpscRing<LoopSample>& ring, RtLoopStats& 
 }
 
 } // namespace
+
+Nanos monotonic_now() noexcept {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return Nanos{static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec};
+}
 
 Nanos sleep_until(Nanos deadline) noexcept {
   timespec ts{};

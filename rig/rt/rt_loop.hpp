@@ -45,6 +45,9 @@ struct RtLoopStats {
   bool stopped_early = false;
 };
 
+// CLOCK_MONOTONIC now (a vDSO read: no syscall on the RT path).
+Nanos monotonic_now() noexcept;
+
 // Sleeps until an absolute CLOCK_MONOTONIC time (retrying on EINTR) and returns the time
 // it woke at.
 Nanos sleep_until(Nanos deadline) noexcept;

@@ -6,10 +6,13 @@
 
 #include <string>
 
+#include "campaign_text.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 
 namespace hilrig::campaign {
 namespace {
+
+using test::error_of;
 
 // A valid campaign; the check's table is lines 23..27 and cases append to it.
 const std::string kBase = R"([campaign]
@@ -40,15 +43,6 @@ name = "on"
 output = "ls1"
 setpoint = 10
 )";
-
-std::string error_of(const std::string& text) {
-  try {
-    (void)parse_campaign(text, "t.toml");
-    return "accepted";
-  } catch (const CampaignError& e) {
-    return e.what();
-  }
-}
 
 TEST(CheckParams, AValidLimitIsAccepted) { EXPECT_EQ(error_of(kBase + "limit_us = 20.3\n"), "accepted"); }
 

@@ -13,6 +13,7 @@
 #include <set>
 #include <string>
 
+#include "campaign_text.hpp"
 #include "models/ans1/position_resolver.hpp"
 #include "models/pls2700/position.hpp"
 #include "rig/campaign/campaign_parser.hpp"
@@ -22,6 +23,10 @@
 
 namespace hilrig::campaign {
 namespace {
+
+using test::error_of;
+using test::rejected_at;
+using test::replace_line;
 
 using namespace hilrig::literals;
 using rig::Outcome;
@@ -46,28 +51,6 @@ value = 4096
 fault = "eeprom_error"
 at = "0ms"
 )";
-
-std::string replace_line(const std::string& text, int line, const std::string& with) {
-  std::size_t begin = 0;
-  for (int i = 1; i < line; ++i) begin = text.find('\n', begin) + 1;
-  const std::size_t end = text.find('\n', begin);
-  return text.substr(0, begin) + with + text.substr(end);
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    (void)parse_campaign(text, "t.toml");
-    return "accepted";
-  } catch (const CampaignError& e) {
-    return e.what();
-  }
-}
-
-::testing::AssertionResult rejected_at(const std::string& text, const std::string& prefix) {
-  const std::string got = error_of(text);
-  if (got.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "expected prefix \"" << prefix << "\", got \"" << got << "\"";
-}
 
 TEST(DeviceFaultParser, BuildsTheTypedEventOnce) {
   const Campaign c = parse_campaign(kSsi, "t.toml");

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "campaign_text.hpp"
 #include "rig/campaign/campaign_error.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/duts/ans1_adapter.hpp"
@@ -19,6 +20,8 @@
 
 namespace hilrig::duts {
 namespace {
+
+using campaign::test::error_of;
 
 using namespace hilrig::literals;
 
@@ -122,15 +125,6 @@ std::string homing_campaign_with(const std::string& params) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str() + "\n[dut.params]\n" + params;
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    (void)campaign::parse_campaign(text, "t.toml");
-    return "accepted";
-  } catch (const campaign::CampaignError& e) {
-    return e.what();
-  }
 }
 
 TEST(DutParams, CampaignSetsTheSmd23eSwitchesAndRefusesOutOfRange) {

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "campaign_text.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
 #include "test_support.hpp"
@@ -13,18 +14,11 @@
 namespace hilrig::campaign {
 namespace {
 
+using test::error_of;
+
 using namespace hilrig::literals;
 using rig::Outcome;
 using test::find;
-
-std::string error_of(const std::string& text) {
-  try {
-    (void)parse_campaign(text, "t.toml");
-    return "accepted";
-  } catch (const CampaignError& e) {
-    return e.what();
-  }
-}
 
 // The press stroke of executive_devices_test (600 rpm, 1.25 turns to the brake at 125 ms):
 // braking at 6000 rpm/s stops in 10/100 s = 100 ms; at 2000 rpm/s in 10/(100/3) s = 300 ms.

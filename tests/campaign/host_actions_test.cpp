@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "campaign_text.hpp"
 #include "rig/campaign/campaign_error.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
@@ -17,6 +18,8 @@
 
 namespace hilrig::campaign {
 namespace {
+
+using test::error_of;
 
 using namespace hilrig::literals;
 using test::find;
@@ -39,23 +42,7 @@ mask = 0xFFFF
 value = 0
 )";
 
-std::string error_of(const std::string& text) {
-  try {
-    (void)parse_campaign(text, "t.toml");
-    return "accepted";
-  } catch (const CampaignError& e) {
-    return e.what();
-  }
-}
-
 std::string host(const std::string& body) { return "[[host]]\n" + body + "\n"; }
-
-std::string file_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
@@ -165,7 +152,7 @@ TEST(HostActions, RawWriteTakesNoTimeoutButMaySetTransmit) {
 // The shipped amci4501_acknowledge campaign has status 1 and a registration of 4096 at 46 ms;
 // here the host acknowledges at 50 ms with a raw write of control word 0x0001 alone.
 TEST(HostActions, Amci4501RawControlBit0ActsWithoutAProgrammingCycle) {
-  std::string text = file_text(test::campaign_dir("amci4501") + "/amci4501_acknowledge.toml");
+  std::string text = test::read_text(test::campaign_dir("amci4501") + "/amci4501_acknowledge.toml");
   text = replaced(text, "at = \"50ms\"\nwrite = [0x0001, 1000]\nname = \"acknowledge_with_transmit\"",
                   "at = \"50ms\"\nwrite = [0x0001]\nraw = true\nname = \"acknowledge_raw\"");
   text = replaced(text, "at = \"52ms\"\nread = 0", "at = \"50ms\"\nread = 0");

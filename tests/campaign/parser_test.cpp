@@ -6,10 +6,15 @@
 
 #include <string>
 
+#include "campaign_text.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 
 namespace hilrig::campaign {
 namespace {
+
+using test::error_of;
+using test::rejected_at;
+using test::replace_line;
 
 using namespace hilrig::literals;
 
@@ -45,29 +50,6 @@ limit_us = 250
 [encoder]
 lines = 100
 )";
-
-std::string replace_line(const std::string& text, int line, const std::string& with) {
-  std::size_t begin = 0;
-  for (int i = 1; i < line; ++i) begin = text.find('\n', begin) + 1;
-  const std::size_t end = text.find('\n', begin);
-  return text.substr(0, begin) + with + text.substr(end);
-}
-
-// The error's "file:line:column: key: " prefix, or "accepted" when the text parses.
-std::string error_of(const std::string& text) {
-  try {
-    (void)parse_campaign(text, "t.toml");
-    return "accepted";
-  } catch (const CampaignError& e) {
-    return e.what();
-  }
-}
-
-::testing::AssertionResult rejected_at(const std::string& text, const std::string& prefix) {
-  const std::string got = error_of(text);
-  if (got.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "expected prefix \"" << prefix << "\", got \"" << got << "\"";
-}
 
 TEST(CampaignParser, BaseCampaignIsAccepted) {
   const Campaign c = parse_campaign(kBase, "t.toml");

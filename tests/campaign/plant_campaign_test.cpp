@@ -22,20 +22,6 @@ namespace {
 
 using rig::Outcome;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-const rig::Measurement* find_measurement(const rig::RunResult& run, const std::string& name) {
-  for (const auto& c : run.checks)
-    for (const auto& m : c.measurements)
-      if (m.name == name) return &m;
-  return nullptr;
-}
-
 const std::string kPressFile = test::campaign_dir("ans1") + "/ans1_press_plant.toml";
 
 // By hand (the file's comments): stop = d + r + (w0 - T r / 2J) J / T, d = 20 ms,
@@ -48,19 +34,19 @@ TEST(Ans1PressPlant, StopsWhenThePhysicsSaysAndTheWornBrakeIsCaught) {
   ASSERT_EQ(r.runs.size(), 2U);
   EXPECT_EQ(r.verdict, Outcome::Pass) << test::failures(r);
   EXPECT_EQ(r.totals.faults_caught, 1U);
-  const rig::Measurement* nominal = find_measurement(r.runs[0], "stop.stop_time");
+  const rig::Measurement* nominal = test::find(r.runs[0], "stop.stop_time");
   ASSERT_NE(nominal, nullptr);
   // The standstill is located to the nanosecond: within 1e-6 ms of the closed form.
   EXPECT_NEAR(nominal->value, predicted_stop_ms(1.0), 1e-6);
   EXPECT_NEAR(nominal->value, 97.8318531, 1e-6);
   EXPECT_EQ(nominal->outcome, Outcome::Pass);
-  const rig::Measurement* worn = find_measurement(r.runs[1], "stop.stop_time");
+  const rig::Measurement* worn = test::find(r.runs[1], "stop.stop_time");
   ASSERT_NE(worn, nullptr);
   EXPECT_NEAR(worn->value, predicted_stop_ms(0.5), 1e-6);
   EXPECT_NEAR(worn->value, 160.6637061, 1e-6);
   EXPECT_EQ(worn->outcome, Outcome::Fail);
   // The board saw it too: its stop overrun output fired.
-  const rig::Measurement* fired = find_measurement(r.runs[1], "stop.fault_output");
+  const rig::Measurement* fired = test::find(r.runs[1], "stop.fault_output");
   ASSERT_NE(fired, nullptr);
   EXPECT_EQ(fired->value, 1.0);
 }
@@ -70,7 +56,7 @@ TEST(Ans1PressPlant, StopsWhenThePhysicsSaysAndTheWornBrakeIsCaught) {
 TEST(Ans1PressPlant, AWornBrakeOverrunsAtTheWearThePhysicsPredicts) {
   const double s_star = 20.0 * std::numbers::pi * 2.0 / 2000.0 * 1e3 / (150.0 - 35.0);
   EXPECT_NEAR(s_star, 0.546364, 1e-6);
-  const std::string text = read_text(kPressFile);
+  const std::string text = test::read_text(kPressFile);
   const std::string nominal = "scale = 1.0";
   const std::size_t at = text.find(nominal);
   ASSERT_NE(at, std::string::npos);
@@ -79,7 +65,7 @@ TEST(Ans1PressPlant, AWornBrakeOverrunsAtTheWearThePhysicsPredicts) {
     t.replace(at, nominal.size(), fmt::format("scale = {:.17g}", s_star * (1.0 + e)));
     const Campaign c = parse_campaign(t, "worn.toml");
     const RunOutput out = Executive(c).run(c.runs[0]);
-    const rig::Measurement* m = find_measurement(out.result, "stop.stop_time");
+    const rig::Measurement* m = test::find(out.result, "stop.stop_time");
     ASSERT_NE(m, nullptr) << e;
     EXPECT_NEAR(m->value, predicted_stop_ms(s_star * (1.0 + e)), 1e-6) << e;
     EXPECT_EQ(m->outcome, e > 0 ? Outcome::Pass : Outcome::Fail) << e << " " << m->value;
@@ -88,7 +74,7 @@ TEST(Ans1PressPlant, AWornBrakeOverrunsAtTheWearThePhysicsPredicts) {
 
 // A sweep over a physical parameter: each point's stop time is the closed form's.
 TEST(Ans1PressPlant, SweepsOverThePlantsParameters) {
-  const std::string text = read_text(kPressFile) + R"(
+  const std::string text = test::read_text(kPressFile) + R"(
 [[sweep]]
 key = "plant.brake_torque"
 values = [2000.0, 1500.0, 1000.0]
@@ -97,7 +83,7 @@ values = [2000.0, 1500.0, 1000.0]
   ASSERT_EQ(c.points.size(), 3U);
   for (std::size_t p = 0; p < 3; ++p) {
     const RunOutput out = Executive(c).run(c.runs[p]);
-    const rig::Measurement* m = find_measurement(out.result, "stop.stop_time");
+    const rig::Measurement* m = test::find(out.result, "stop.stop_time");
     ASSERT_NE(m, nullptr);
     const double s = std::array{1.0, 0.75, 0.5}[p];
     EXPECT_NEAR(m->value, predicted_stop_ms(s), 1e-6) << p;
@@ -155,7 +141,7 @@ limit_ms = 1000
   const double j = 0.011;
   const double on = (ls1[1].time - ls1[0].time).seconds();
   const double w_off = (1.0 - 0.3) / j * on;
-  const rig::Measurement* m = find_measurement(out.result, "coast.stop_time");
+  const rig::Measurement* m = test::find(out.result, "coast.stop_time");
   ASSERT_NE(m, nullptr);
   EXPECT_NEAR(m->value, w_off * j / 0.3 * 1e3, 1e-6);
   // The motor went off once the board saw count 200 (its edge half a count before, at
@@ -172,7 +158,7 @@ limit_ms = 1000
   const Campaign c2 = parse_campaign(motor_on, "loop_on.toml");
   const RunOutput out2 = Executive(c2).run(c2.runs[0]);
   EXPECT_EQ(out2.trace->edges_of("ls1"), ls1);
-  const rig::Measurement* m2 = find_measurement(out2.result, "coast.stop_time");
+  const rig::Measurement* m2 = test::find(out2.result, "coast.stop_time");
   ASSERT_NE(m2, nullptr);
   EXPECT_EQ(m2->value, m->value);
 }
@@ -184,7 +170,7 @@ struct BadPlant {
 };
 
 TEST(PlantReader, BadPlantParametersPointAtTheirKey) {
-  const std::string text = read_text(kPressFile);
+  const std::string text = test::read_text(kPressFile);
   for (const BadPlant& b :
        {BadPlant{"brake_torque = 2000.0", "brake_torque = -1.0", "plant.brake_torque"},
         BadPlant{"brake_torque = 2000.0", "brake_torque = nan", "plant.brake_torque"},
@@ -212,7 +198,7 @@ TEST(PlantReader, BadPlantParametersPointAtTheirKey) {
 }
 
 TEST(PlantReader, InputsChangesAndMotionAreChecked) {
-  const std::string text = read_text(kPressFile);
+  const std::string text = test::read_text(kPressFile);
   const auto rejects = [&](const std::string& from, const std::string& to, const std::string& key) {
     std::string t = text;
     const std::size_t at = t.find(from);

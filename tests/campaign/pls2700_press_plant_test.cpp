@@ -21,20 +21,6 @@ namespace {
 
 using rig::Outcome;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-const rig::Measurement* find_measurement(const rig::RunResult& run, const std::string& name) {
-  for (const auto& c : run.checks)
-    for (const auto& m : c.measurements)
-      if (m.name == name) return &m;
-  return nullptr;
-}
-
 const std::string kFile = test::campaign_dir("pls2700") + "/pls2700_press_plant.toml";
 
 // By hand (the file's comments): the crank runs at w1 = J_f w_f0 / (J_f + J_c) = 10 pi rad/s
@@ -58,7 +44,7 @@ double overtravel_counts(double s) {
 constexpr double kLagCounts = 9.0;
 
 std::string with_wear(double s) {
-  std::string t = read_text(kFile);
+  std::string t = test::read_text(kFile);
   const std::string nominal = "scale = 1.0";
   const std::size_t at = t.find(nominal);
   EXPECT_NE(at, std::string::npos);
@@ -77,14 +63,14 @@ TEST(Pls2700PressPlant, StopsWhereThePhysicsSaysAndTheWornBrakeIsCaught) {
   EXPECT_EQ(r.totals.faults_caught, 1U);
   for (std::size_t i = 0; i < 2; ++i) {
     const double s = i == 0 ? 1.0 : 0.5;
-    const rig::Measurement* stop = find_measurement(r.runs[i], "stop.stop_time");
+    const rig::Measurement* stop = test::find(r.runs[i], "stop.stop_time");
     ASSERT_NE(stop, nullptr);
     // The rig times the plant's located standstill from the board's edge: to the nanosecond.
     EXPECT_NEAR(stop->value, stop_ms(s), 1e-6) << s;
     EXPECT_EQ(stop->outcome, i == 0 ? Outcome::Pass : Outcome::Fail);
     // The board read the stopped crank through the plant's resolver: 2048 + overtravel,
     // floored, plus its output lag.
-    const rig::Measurement* pos = find_measurement(r.runs[i], "stop_position");
+    const rig::Measurement* pos = test::find(r.runs[i], "stop_position");
     ASSERT_NE(pos, nullptr);
     EXPECT_GE(pos->value, std::floor(2048.0 + overtravel_counts(s))) << s;
     EXPECT_LE(pos->value, std::floor(2048.0 + overtravel_counts(s) + kLagCounts)) << s;
@@ -100,7 +86,7 @@ TEST(Pls2700PressPlant, TheStopTimeLimitFallsAtTheWearThePhysicsPredicts) {
   for (const double e : {-1e-3, -1e-4, 1e-4, 1e-3}) {
     const Campaign c = parse_campaign(with_wear(s_star * (1.0 + e)), "worn.toml");
     const RunOutput out = Executive(c).run(c.runs[0]);
-    const rig::Measurement* m = find_measurement(out.result, "stop.stop_time");
+    const rig::Measurement* m = test::find(out.result, "stop.stop_time");
     ASSERT_NE(m, nullptr) << e;
     EXPECT_NEAR(m->value, stop_ms(s_star * (1.0 + e)), 1e-6) << e;
     EXPECT_EQ(m->outcome, e > 0 ? Outcome::Pass : Outcome::Fail) << e << " " << m->value;
@@ -116,7 +102,7 @@ TEST(Pls2700PressPlant, TheStopPositionLimitFallsAtTheWearThePhysicsPredicts) {
     ASSERT_TRUE(over || under) << s << ": inside the band the lag leaves open";
     const Campaign c = parse_campaign(with_wear(s), "worn.toml");
     const RunOutput out = Executive(c).run(c.runs[0]);
-    const rig::Measurement* m = find_measurement(out.result, "stop_position");
+    const rig::Measurement* m = test::find(out.result, "stop_position");
     ASSERT_NE(m, nullptr) << s;
     EXPECT_EQ(m->outcome, under ? Outcome::Pass : Outcome::Fail) << s << " " << m->value;
   }
@@ -124,7 +110,7 @@ TEST(Pls2700PressPlant, TheStopPositionLimitFallsAtTheWearThePhysicsPredicts) {
 
 // start_flywheel_speed is checked like every plant key: finite, within ±1e4 rad/s, press only.
 TEST(Pls2700PressPlant, AFlywheelStartSpeedOutOfRangePointsAtItsKey) {
-  const std::string text = read_text(kFile);
+  const std::string text = test::read_text(kFile);
   const std::string key = "start_flywheel_speed = 34.55751918948773";
   for (const char* bad : {"start_flywheel_speed = inf", "start_flywheel_speed = 1e5"}) {
     std::string t = text;

@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "campaign_text.hpp"
 #include "models/pls2700/position.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
@@ -18,6 +19,8 @@
 
 namespace hilrig::campaign {
 namespace {
+
+using test::error_of;
 
 using namespace hilrig::literals;
 using rig::Outcome;
@@ -147,15 +150,6 @@ TEST(ResolverStators, AnOpenStatorIsAResolverFaultAndTheOutputsStayOff) {
   const rig::CampaignResult r = test::run_everything(c);
   EXPECT_EQ(test::find(r.runs[0], "on.edges")->value, 0.0);
   EXPECT_EQ(r.verdict, Outcome::Fail);
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    (void)parse_campaign(text, "t.toml");
-    return "accepted";
-  } catch (const CampaignError& e) {
-    return e.what();
-  }
 }
 
 TEST(ResolverStators, TheStatorsMustBeAnalogLines) {

@@ -22,19 +22,6 @@ namespace {
 
 using rig::Outcome;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-const rig::Observation* find_observation(const rig::RunResult& run, const std::string& name) {
-  for (const auto& o : run.observations)
-    if (o.name == name) return &o;
-  return nullptr;
-}
-
 const std::string kFile = test::campaign_dir("smd23e") + "/smd23e_load_too_fast.toml";
 
 constexpr double kJ = 4.8e-5 + 1.0e-2; // kg·m²: rotor + load
@@ -85,7 +72,7 @@ double f_safe() {
 }
 
 std::string with_acceleration(int a) {
-  std::string t = read_text(kFile);
+  std::string t = test::read_text(kFile);
   const std::string nominal = "write = [2, 32768, 25, 600, 25, 600, 50, 50, 0, 0]";
   const std::size_t at = t.find(nominal);
   EXPECT_NE(at, std::string::npos);
@@ -103,13 +90,13 @@ TEST(Smd23eLoadTooFast, TheNominalRampFollowsAndTheFastOneStalls) {
   ASSERT_EQ(r.runs.size(), 2U);
   EXPECT_EQ(r.verdict, Outcome::Pass) << test::failures(r);
   EXPECT_EQ(r.totals.faults_caught, 1U);
-  const rig::Observation* sw2 = find_observation(r.runs[0], "sw2");
-  const rig::Observation* lower = find_observation(r.runs[0], "encoder_lower");
+  const rig::Observation* sw2 = test::find_observation(r.runs[0], "sw2");
+  const rig::Observation* lower = test::find_observation(r.runs[0], "encoder_lower");
   ASSERT_NE(sw2, nullptr);
   ASSERT_NE(lower, nullptr);
   EXPECT_EQ(static_cast<int>(sw2->value) & 0x4000, 0);
   EXPECT_NEAR(lower->value, 48.0, 3.0); // 2048 +- 3 counts of ringing
-  const rig::Observation* stalled = find_observation(r.runs[1], "sw2");
+  const rig::Observation* stalled = test::find_observation(r.runs[1], "sw2");
   ASSERT_NE(stalled, nullptr);
   EXPECT_EQ(static_cast<int>(stalled->value) & 0x4000, 0x4000); // SW2 bit 14 (L2885)
 }
@@ -123,7 +110,7 @@ TEST(Smd23eLoadTooFast, StallsAtTheAccelerationThePhysicsPredicts) {
     ASSERT_TRUE(follows || loses_within_ramp(a)) << a << " lies in the band the ring's phase decides";
     const Campaign c = parse_campaign(with_acceleration(a), "accel.toml");
     const RunOutput out = Executive(c).run(c.runs[0]);
-    const rig::Observation* sw2 = find_observation(out.result, "sw2");
+    const rig::Observation* sw2 = test::find_observation(out.result, "sw2");
     ASSERT_NE(sw2, nullptr) << a;
     EXPECT_EQ((static_cast<int>(sw2->value) & 0x4000) == 0, follows) << a << " sw2 " << sw2->value;
     ASSERT_EQ(out.result.checks.size(), 3U);

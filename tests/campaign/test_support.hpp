@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -86,6 +88,21 @@ inline const rig::Measurement* find(const rig::RunResult& run, const std::string
     for (const auto& m : c.measurements)
       if (m.name == name) return &m;
   return nullptr;
+}
+
+// The observation (host read) of that name in a run, or null.
+inline const rig::Observation* find_observation(const rig::RunResult& run, const std::string& name) {
+  for (const auto& o : run.observations)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+// A file's whole text (a shipped campaign a test edits).
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 // Every failing measurement of a result, for a failure message.
