@@ -36,6 +36,10 @@ inline constexpr double kMaxRpmPerS = 1'000'000.0;
 // Distances and start positions in turns, and strokes.
 inline constexpr double kMaxTurns = 10'000.0;
 inline constexpr std::int64_t kMaxStrokes = 10'000;
+// [motion] cycles: the move list played again and again; the moves of all cycles together
+// are bounded like a plan (each is held, and solved, once).
+inline constexpr std::int64_t kMaxCycles = 10'000;
+inline constexpr std::int64_t kMaxMoves = 100'000;
 // The encoder's X4 count rate: the fastest encoder input of the boards is the 4501's,
 // 250 kHz per channel = 1,000,000 counts/s (spec/amci4501.md L292, manual L271).
 inline constexpr double kMaxCountsPerS = 1'000'000.0;

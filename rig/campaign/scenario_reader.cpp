@@ -379,7 +379,28 @@ private:
       m.finish();
       s.motion.moves.push_back(std::move(mv));
     }
+    read_motion_cycles(r, s.motion);
     r.finish();
+  }
+
+  // `cycles`: the move list played that many times in a row (a press's strokes, a
+  // back-and-forth), instead of spelling the moves out again.
+  static void read_motion_cycles(TableReader& r, MotionSpec& motion) {
+    if (!r.has("cycles")) return;
+    const std::int64_t cycles =
+        integer_in(r, "cycles", 1, limits::kMaxCycles, "a number of cycles of the moves");
+    if (motion.moves.empty()) r.fail("cycles", "cycles of at least one [[motion.move]]");
+    const auto per_cycle = static_cast<std::int64_t>(motion.moves.size());
+    if (per_cycle * cycles > limits::kMaxMoves)
+      r.fail("cycles", fmt::format("at most {} moves in all ({} moves a cycle: cycles 1 .. {})",
+                                   limits::kMaxMoves, per_cycle, limits::kMaxMoves / per_cycle));
+    for (const Move& m : motion.moves)
+      if (!m.brake_line.empty() && cycles > 1)
+        r.fail("cycles", "1 with a press_stroke's brake_line (the line is applied once in a run)");
+    motion.moves.reserve(static_cast<std::size_t>(per_cycle * cycles));
+    for (std::int64_t c = 1; c < cycles; ++c)
+      for (std::int64_t k = 0; k < per_cycle; ++k)
+        motion.moves.push_back(motion.moves[static_cast<std::size_t>(k)]);
   }
 
   Stimulus read_stimulus(const Scenario& s, TableReader& r, bool fault_only) {
