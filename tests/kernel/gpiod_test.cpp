@@ -109,20 +109,27 @@ TEST(GpiodInput, EdgesCarryKernelTimestampsInOrder) {
   sim_pull(8, "pull-down");
   sim_pull(9, "pull-down");
   InputRequest in(env("HILRIG_GPIO_CHIP"), lines, LineSettings{});
-  const Nanos before = MonotonicClock{}.now();
-  sim_pull(8, "pull-up");
-  sim_pull(9, "pull-up");
-  sim_pull(8, "pull-down");
-  const Nanos after = MonotonicClock{}.now();
-  // On PREEMPT_RT the simulator's interrupts are delivered by a kernel thread, so the
-  // events may still be on their way: wait on the event fds, bounded, until all three came.
+  // On PREEMPT_RT the simulator's interrupts are delivered by a kernel thread, so an event
+  // may still be on its way; and two changes of one line before that thread runs are one
+  // interrupt (the second edge is lost, as on any threaded IRQ). So each change waits,
+  // bounded, for its event before the next is made.
   std::array<InputEdge, 8> edges{};
   std::size_t n = 0;
-  for (int tries = 0; tries < 200 && n < 3; ++tries) {
-    std::array<pollfd, 2> fds{pollfd{in.event_fds()[0], POLLIN, 0}, pollfd{in.event_fds()[1], POLLIN, 0}};
-    ::poll(fds.data(), fds.size(), 10);
-    n += in.poll(std::span<InputEdge>(edges).subspan(n));
-  }
+  const auto wait_for = [&](std::size_t count) {
+    for (int tries = 0; tries < 200 && n < count; ++tries) {
+      std::array<pollfd, 2> fds{pollfd{in.event_fds()[0], POLLIN, 0}, pollfd{in.event_fds()[1], POLLIN, 0}};
+      ::poll(fds.data(), fds.size(), 10);
+      n += in.poll(std::span<InputEdge>(edges).subspan(n));
+    }
+  };
+  const Nanos before = MonotonicClock{}.now();
+  sim_pull(8, "pull-up");
+  wait_for(1);
+  sim_pull(9, "pull-up");
+  wait_for(2);
+  sim_pull(8, "pull-down");
+  wait_for(3);
+  const Nanos after = MonotonicClock{}.now();
   ASSERT_EQ(n, 3U);
   std::size_t rising8 = 0, rising9 = 0, falling8 = 0;
   for (std::size_t i = 0; i < n; ++i) {
