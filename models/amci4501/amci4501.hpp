@@ -1,5 +1,5 @@
 #pragma once
-// The virtual AMCI 4501 registration module (shared/spec/amci4501.md): a deterministic
+// The virtual AMCI 4501 registration module (docs/spec/amci4501.md): a deterministic
 // state machine on a hilrig::Scheduler. It decodes the encoder's A/B (X4, L7), watches the
 // Start and Latch inputs through their polarity jumpers (L237), drives the Cycle Output
 // (modes 1 and 2, L277) and keeps the SLC I/O image: 8 output words the host writes and 8

@@ -1,6 +1,6 @@
 #pragma once
 // Parameters of the virtual AMCI 4501: every choice the manual leaves open (the digest's
-// [I] / [MODEL] marks, shared/spec/amci4501.md) is a named field here with the digest's
+// [I] / [MODEL] marks, docs/spec/amci4501.md) is a named field here with the digest's
 // default, so a campaign can switch it.
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// The virtual ANS1 programmable limit switch (spec/ans1.md). A deterministic state machine
+// The virtual ANS1 programmable limit switch (docs/spec/ans1.md). A deterministic state machine
 // with the device's own timing: a position-and-output scan every Params::master_scan_period
 // (10 us; 40 us as a slave) whose outputs reach the pins Params::output_delay later, a speed
 // update every 14.6 ms, fed by timestamped edges and analog samples on its pins. It knows

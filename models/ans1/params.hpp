@@ -1,5 +1,5 @@
 #pragma once
-// Every choice the ANS1 manual leaves open ([MODEL] in spec/ans1.md) as a named parameter,
+// Every choice the ANS1 manual leaves open ([MODEL] in docs/spec/ans1.md) as a named parameter,
 // with the digest's default. The rig must measure the real board; these only make the
 // virtual DUT definite.
 #include "core/time.hpp"

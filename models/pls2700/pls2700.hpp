@@ -1,5 +1,5 @@
 #pragma once
-// The virtual AMCI Series 2700 programmable limit switch (spec/pls2700.md), any of the seven
+// The virtual AMCI Series 2700 programmable limit switch (docs/spec/pls2700.md), any of the seven
 // modules. A deterministic state machine on a Scheduler with the module's own update
 // period (200 us one channel, 400 us two channels, L377/L457): at each update it samples the
 // stator channels at the latest peak of its own reference, decodes 8,192 counts per turn,

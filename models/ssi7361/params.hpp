@@ -1,5 +1,5 @@
 #pragma once
-// Every [MODEL] choice of the 7361 digest (shared/spec/ssi7361.md) where the manual is
+// Every [MODEL] choice of the 7361 digest (docs/spec/ssi7361.md) where the manual is
 // silent, as a named parameter with the digest's default. README.md lists them with the
 // digest's reasons.
 

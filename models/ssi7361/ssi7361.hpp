@@ -1,5 +1,5 @@
 #pragma once
-// The virtual AMCI 7361 SSI interface module (shared/spec/ssi7361.md): the SSI master.
+// The virtual AMCI 7361 SSI interface module (docs/spec/ssi7361.md): the SSI master.
 // A deterministic state machine on a hilrig::Scheduler. It drives the clock line (idle high;
 // 25 falling and 25 rising edges per frame, F1 every TINT = 500/250 us at 125/500 kHz, so
 // F25 to the next F1 is TIDL = 308/202 us), samples the data line half a period after each

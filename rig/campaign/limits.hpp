@@ -12,7 +12,7 @@
 
 namespace hilrig::campaign::limits {
 
-// A run is at most an hour of machine time: a DUT scanning every 10 us (ANS1, spec/ans1.md
+// A run is at most an hour of machine time: a DUT scanning every 10 us (ANS1, docs/spec/ans1.md
 // L187) is 3.6 * 10^8 scans in virtual time, minutes of CPU. Longer soaks are `repeat`.
 inline constexpr Nanos kMaxEnd = seconds(3'600);
 // Host polling and the like: at least 10 us (a Modbus RTU frame at 115200 baud takes ~1 ms;
@@ -26,7 +26,7 @@ inline constexpr std::int64_t kMaxWord = 0xFFFF;
 inline constexpr Nanos kMaxEdgeTolerance = seconds(1);
 
 // Shaft speed: the boards report speed as a signed 16-bit rpm word, +-32767 (ANS1
-// spec/ans1.md L1019, manual L2019-L2020); the Series 2700 tach stops at 5000 rpm (L578).
+// docs/spec/ans1.md L1019, manual L2019-L2020); the Series 2700 tach stops at 5000 rpm (L578).
 inline constexpr double kMaxRpm = 32'767.0;
 // The slowest cruise of a trapezoid or press stroke: 0.01 rpm (the ANS1's speed word's
 // resolution is 1 rpm; below this a move's time overflows the run).
@@ -41,10 +41,10 @@ inline constexpr std::int64_t kMaxStrokes = 10'000;
 inline constexpr std::int64_t kMaxCycles = 10'000;
 inline constexpr std::int64_t kMaxMoves = 100'000;
 // The encoder's X4 count rate: the fastest encoder input of the boards is the 4501's,
-// 250 kHz per channel = 1,000,000 counts/s (spec/amci4501.md L292, manual L271).
+// 250 kHz per channel = 1,000,000 counts/s (docs/spec/amci4501.md L292, manual L271).
 inline constexpr double kMaxCountsPerS = 1'000'000.0;
 // Resolver excitation the rig synthesizes: 400 Hz .. 10 kHz covers the ANS1's accepted band
-// (2.2 .. 7 kHz, spec/ans1.md L60) and the common resolver references; amplitude 0 .. 100
+// (2.2 .. 7 kHz, docs/spec/ans1.md L60) and the common resolver references; amplitude 0 .. 100
 // (the stators' unit), transformation ratio 0 .. 10.
 inline constexpr double kMinExcitationHz = 400.0;
 inline constexpr double kMaxExcitationHz = 10'000.0;

@@ -91,7 +91,7 @@ m::Params amci4501_params(const DutParams& params) {
 DutInfo amci4501_info() {
   DutInfo info;
   info.name = "amci4501";
-  info.description = "AMCI 4501 registration module, six modes (virtual model, spec/amci4501.md)";
+  info.description = "AMCI 4501 registration module, six modes (virtual model, docs/spec/amci4501.md)";
   info.pins = {
       {"A", PinDirection::Input, "encoder channel A (+A/-A, 5 V differential)", false},
       {"B", PinDirection::Input, "encoder channel B", false},
@@ -101,7 +101,7 @@ DutInfo amci4501_info() {
       {"CYCLE_OUT", PinDirection::Output, "Cycle Output (pins 5/4), high while sinking", false},
   };
   const m::Params d{};
-  // Ranges (spec/amci4501.md): throughput 125 us (L281) or 100 us (L49), a model 0 .. 10 ms;
+  // Ranges (docs/spec/amci4501.md): throughput 125 us (L281) or 100 us (L49), a model 0 .. 10 ms;
   // 1 us timer resolution (L26): 1 ns .. 1 ms; 50 ms velocity window (L114): 1 ms .. 10 s;
   // No Response after 4 (L88) or 5 (L223) missed cycles: 1 .. 100; firmware 1 .. 3 (v2 adds the
   // mode 4 filters, L36; v3 the timeout report, L95-L102).

@@ -72,10 +72,10 @@ private:
 
 // Every [MODEL] choice of models/ans1/README.md that is a field of Params, by the name a
 // campaign's dut.params and `hilrig serve --param` use. Ranges: a scan of 10 us (master) or
-// 50 us throughput (slave), spec/ans1.md L187 (manual L572-L576); a model may scan 1 us .. 1 ms
+// 50 us throughput (slave), docs/spec/ans1.md L187 (manual L572-L576); a model may scan 1 us .. 1 ms
 // around them, not faster (a 1 ns scan is 10^9 events per virtual second). Speed update
 // 14.6 ms (L820): 1 ms .. 1 s. Excitation: the band the ANS1 accepts from a resolver,
-// 2.2 .. 7 kHz (spec/ans1.md L60, manual L1455). The fault ratios bracket 1 (TR 0.9..1.0 is
+// 2.2 .. 7 kHz (docs/spec/ans1.md L60, manual L1455). The fault ratios bracket 1 (TR 0.9..1.0 is
 // valid, L1456).
 using F = ParamField<a::Params>;
 const std::array kAns1Fields{
@@ -113,7 +113,7 @@ a::Params ans1_params(const DutParams& values) {
 DutInfo ans1_info() {
   DutInfo info;
   info.name = "ans1";
-  info.description = "AMCI ANS1 AnyNET-I/O programmable limit switch (virtual model, spec/ans1.md)";
+  info.description = "AMCI ANS1 AnyNET-I/O programmable limit switch (virtual model, docs/spec/ans1.md)";
   info.pins = {
       {std::string(a::kPinA), PinDirection::Input, "quadrature A (when CB2 selects the encoder)", false},
       {std::string(a::kPinB), PinDirection::Input, "quadrature B", false},

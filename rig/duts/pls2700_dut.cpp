@@ -110,7 +110,8 @@ p::Params pls2700_params(const DutParams& params) {
 DutInfo pls2700_info() {
   DutInfo info;
   info.name = "pls2700";
-  info.description = "AMCI Series 2700 programmable limit switch, 7 models (virtual model, spec/pls2700.md)";
+  info.description =
+      "AMCI Series 2700 programmable limit switch, 7 models (virtual model, docs/spec/pls2700.md)";
   for (int ch = 1; ch <= 2; ++ch) {
     const std::string c = std::to_string(ch);
     info.pins.push_back(
@@ -125,7 +126,7 @@ DutInfo pls2700_info() {
     info.pins.push_back(
         {p::output_pin_name(n), PinDirection::Output, "limit output " + std::to_string(n), false});
   const p::Params d{};
-  // Ranges: the manual gives no reference frequency, amplitude or fault threshold (spec/pls2700.md
+  // Ranges: the manual gives no reference frequency, amplitude or fault threshold (docs/spec/pls2700.md
   // L632, [X]); the model's sampling at each reference peak is honest for the common resolver
   // references, 400 Hz .. 10 kHz. Stator/reference ratios 0 .. 10; the mask is 8 outputs (R-M-2);
   // the 2742-18 input delay is at most 3 ms (L1724); the update period is 200/400 us (L377).

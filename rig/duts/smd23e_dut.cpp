@@ -123,7 +123,7 @@ private:
 };
 
 // Every [MODEL] choice of models/smd23e/README.md (Params), by the name a campaign's
-// dut.params and `hilrig serve --param` use. Ranges: the homing pause is 2 s (spec/smd23e.md
+// dut.params and `hilrig serve --param` use. Ranges: the homing pause is 2 s (docs/spec/smd23e.md
 // T2, manual L1327): 0 .. 60 s; the heartbeat ~500 ms (T3, L2888) and the idle delay 1.5 s
 // (T1, L781) within what a run observes; an input delay [A] 0 .. 1 s; the S-ramp fraction is
 // a fraction; a stall threshold up to one encoder turn (1024 counts); the fault knobs within
@@ -178,7 +178,8 @@ m::Params smd23e_params(const DutParams& values) {
 DutInfo smd23e_info() {
   DutInfo info;
   info.name = "smd23e";
-  info.description = "AMCI SMD23E integrated stepper indexer/driver/motor (virtual model, spec/smd23e.md)";
+  info.description =
+      "AMCI SMD23E integrated stepper indexer/driver/motor (virtual model, docs/spec/smd23e.md)";
   for (int i = 1; i <= 3; ++i)
     info.pins.push_back({"IN" + std::to_string(i), PinDirection::Input,
                          "discrete input " + std::to_string(i) + " (High = current flows)", false});

@@ -93,13 +93,13 @@ s::Params ssi7361_params(const DutParams& params) {
 DutInfo ssi7361_info() {
   DutInfo info;
   info.name = "ssi7361";
-  info.description = "AMCI 7361 SSI interface module, the SSI master (virtual model, spec/ssi7361.md)";
+  info.description = "AMCI 7361 SSI interface module, the SSI master (virtual model, docs/spec/ssi7361.md)";
   info.pins = {
       {kPinClock, PinDirection::Output, "SSI clock CLK+/- (idles high; 25 clocks per frame)", false},
       {kPinData, PinDirection::Input, "SSI data DATA+/- from the transducer (idle high)", false},
   };
   const s::Params d{};
-  // Ranges (spec/ssi7361.md): data values are 25-bit, |Preset| <= 33,554,431 (L91, L148; A2);
+  // Ranges (docs/spec/ssi7361.md): data values are 25-bit, |Preset| <= 33,554,431 (L91, L148; A2);
   // ROVErr above 64,108,863 counts/s (L182, A3), a limit of 0 .. 2^31 - 1; the first frame
   // within 0 .. 1 s (a frame every 250/500 us, L53); ACK within 0 .. 1 s.
   info.params = {

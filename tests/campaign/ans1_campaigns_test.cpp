@@ -58,7 +58,7 @@ std::string file_stem(const ::testing::TestParamInfo<std::string>& info) {
 INSTANTIATE_TEST_SUITE_P(Shipped, Ans1Campaign, ::testing::ValuesIn(ans1_campaigns()), file_stem);
 
 TEST(Ans1Campaigns, TheShippedSetCoversEveryArea) {
-  // One file per area the spec's test plan names (spec/ans1.md §1: latency, brake, die
+  // One file per area the spec's test plan names (docs/spec/ans1.md §1: latency, brake, die
   // protection, counters, advances, timers).
   std::set<std::string> stems;
   for (const auto& f : ans1_campaigns()) stems.insert(std::filesystem::path(f).stem().string());
@@ -80,7 +80,7 @@ TEST(Ans1Campaigns, TheFaultCampaignInjectsEveryVariantOfTheModel) {
 }
 
 TEST(Ans1Campaigns, AdvancesFollowW13AtEverySpeed) {
-  // W-13 (ans1-examples.md, L893): a 10 ms lead at FSC 360 is 6 counts at 100 RPM and 9 at
+  // W-13 (docs/spec/ans1-examples.md, L893): a 10 ms lead at FSC 360 is 6 counts at 100 RPM and 9 at
   // 150 RPM; at 600 RPM 10 ms * 3600 counts/s = 36. From = 100 fires at 94, 91 and 64
   // (+-1 count for the model's speed jitter; the rig's position at the edge is exact).
   const Campaign c = load_campaign(ans1_dir() + "/ans1_advances.toml");
@@ -95,7 +95,7 @@ TEST(Ans1Campaigns, AdvancesFollowW13AtEverySpeed) {
 }
 
 // Issue 16 (2): ans1 manual (seeds/000_08a2edf5547d4d1e.txt:572): master throughput "10 to
-// 20 microseconds"; the board scans every 10 us (spec/ans1.md §4.0), so the latency is the
+// 20 microseconds"; the board scans every 10 us (docs/spec/ans1.md §4.0), so the latency is the
 // output delay plus up to one scan. An output delay of 11 us makes the worst case 21 us: the
 // shipped throughput campaign must fail it, whatever the board's power-up scan phase (the
 // run's seed), and pass a board whose worst case is exactly 20 us (10 us delay), with every

@@ -177,7 +177,7 @@ TEST(DeviceFaultStators, ARatioFaultScalesBothStators) {
 
 // ---- The boards detect an open coil from the signal
 
-// ans1 manual (seeds/000_08a2edf5547d4d1e.txt:418-419, :2299; spec/ans1.md L79): an open stator
+// ans1 manual (seeds/000_08a2edf5547d4d1e.txt:418-419, :2299; docs/spec/ans1.md L79): an open stator
 // pair is a Resolver Fault. The model judges the stator amplitude sqrt(S^2 + C^2) against
 // resolver_min_ratio 0.75 ([MODEL]): with the SIN coil open only the COS stator remains,
 // TR * |cos theta|, a fault where that is below 0.75 (TR 0.95: |cos theta| < 0.789).

@@ -23,7 +23,7 @@ using test::run_everything;
 
 // The ANS1 adapter end to end: CB2 selects the encoder (w1 bit 3) with CPC = FSC = 400
 // (100 lines, X4), CB3 programs output 1 on from 100 to 300; the shaft then turns forward
-// at 599 rpm (not a multiple of the 10 us scan). spec/ans1.md §4.0: master throughput is
+// at 599 rpm (not a multiple of the 10 us scan). docs/spec/ans1.md §4.0: master throughput is
 // 10 to 20 us (L572); the late_outputs variant puts outputs 100 us after the scan.
 const std::string kAns1 = R"([campaign]
 name = "ans1"

@@ -73,8 +73,8 @@ TEST(HostActions, NegativeWordsAreTwosComplementAcrossTheInt16Range) {
 // 7361 manual (seeds/004_2d8564fc60a2b9d4.txt:1224-1226): presetting makes the Data Value
 // equal to the Preset Value, range +-33,554,431; the Preset Value is signed 32-bit in %AQ4
 // (low) / %AQ5 (high) and the Data Value comes back the same way in %AI1/%AI2 (L1980-1988,
-// spec/ssi7361.md §5). PrstVal (%Q 04) and AplyPst (%Q 01) in one cycle: 0x0009. -5 = words -5, -1 (0xFFFB,
-// 0xFFFF) and reads back the same.
+// docs/spec/ssi7361.md §5). PrstVal (%Q 04) and AplyPst (%Q 01) in one cycle: 0x0009. -5 = words -5, -1
+// (0xFFFB, 0xFFFF) and reads back the same.
 TEST(HostActions, Ssi7361NegativePresetWrittenAsInts) {
   const Campaign c =
       parse_campaign(k7361 + host("at = \"1ms\"\nwrite = [0x0009, 0, 0, 0, -5, -1, 0]\nname = \"preset\"") +

@@ -147,7 +147,7 @@ TEST(CampaignLimits, CampaignTimesOutsideTheRigsRangeAreRefused) {
 // ---- speeds the rig cannot make ------------------------------------------------------------
 
 TEST(CampaignLimits, SpeedsBeyondTheSpeedWordAreRefused) {
-  // +-32767 rpm: the boards' signed rpm word (spec/ans1.md L1019). 100 lines make 218,447
+  // +-32767 rpm: the boards' signed rpm word (docs/spec/ans1.md L1019). 100 lines make 218,447
   // counts/s at that speed, under the 10^6 counts/s bound.
   const std::string want = "t.toml:21:13: motion.move[0].speed_rpm: a speed in rpm in -32767 .. 32767";
   for (const char* bad : {"9.2e18", "1e12", "32767.01", "-32767.01", "32768"})
@@ -159,7 +159,7 @@ TEST(CampaignLimits, SpeedsBeyondTheSpeedWordAreRefused) {
 }
 
 TEST(CampaignLimits, EncoderCountRateBoundsTheSpeed) {
-  // 1000 lines = 4000 counts/turn; 10^6 counts/s (spec/amci4501.md L292) is 15000 rpm.
+  // 1000 lines = 4000 counts/turn; 10^6 counts/s (docs/spec/amci4501.md L292) is 15000 rpm.
   const std::string lines1000 = replace_line(kBase, 30, "lines = 1000");
   EXPECT_TRUE(accepted(replace_line(lines1000, 21, "speed_rpm = 15000")));
   EXPECT_TRUE(accepted(replace_line(lines1000, 21, "speed_rpm = -15000")));
@@ -203,7 +203,7 @@ line = "ls1"
 
 TEST(CampaignLimits, UnknownSeries2700ModelIsBadInputNotARigFault) {
   EXPECT_TRUE(accepted(kPls2700));
-  // 2731 .. 2742-18: the seven models of spec/pls2700.md; line 7 col 9.
+  // 2731 .. 2742-18: the seven models of docs/spec/pls2700.md; line 7 col 9.
   EXPECT_TRUE(rejected_at(replace_line(kPls2700, 7, "model = \"2799\""),
                           "t.toml:7:9: dut.params.model: one of 2731, 2731-04, 2732, 2732-04, 2741, 2742, "
                           "2742-18"));

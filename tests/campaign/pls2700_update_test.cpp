@@ -26,7 +26,7 @@ std::string update_campaign(const std::string& module) {
   return test::campaign_dir("pls2700") + "/pls2700_update_" + module + ".toml";
 }
 
-// The shipped file with `output_delay` (the board's d_drv, spec/pls2700.md §3.1 [X]) replaced.
+// The shipped file with `output_delay` (the board's d_drv, docs/spec/pls2700.md §3.1 [X]) replaced.
 Campaign with_output_delay(const std::string& path, std::int64_t delay_ns) {
   std::ifstream in(path);
   std::stringstream text;

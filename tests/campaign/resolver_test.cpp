@@ -201,7 +201,7 @@ board = "OUT1"
 }
 
 TEST(ResolverStators, AFrequencyOutsideTheRigsBandIsRejected) {
-  // 400 Hz .. 10 kHz (rig/campaign/limits.hpp; the ANS1 accepts 2.2 .. 7 kHz, spec/ans1.md L60).
+  // 400 Hz .. 10 kHz (rig/campaign/limits.hpp; the ANS1 accepts 2.2 .. 7 kHz, docs/spec/ans1.md L60).
   for (const char* bad : {"0", "399.99", "10000.01", "1e12", "nan", "inf"}) {
     std::string text = kResolver;
     text.replace(text.find("cos = \"res.cos\""), 15,

@@ -1,6 +1,6 @@
 // The SMD23E pulling an inertia through a stepper-load plant
 // (campaigns/smd23e/smd23e_load_too_fast.toml): the board's steps drive the plant, the plant
-// turns the encoder the board's stall detection watches (spec/smd23e.md §2.3, manual L1255,
+// turns the encoder the board's stall detection watches (docs/spec/smd23e.md §2.3, manual L1255,
 // L2885). The verdicts and the acceleration thresholds are the file's hand calculation (the
 // undamped pendulum of the rotor's electrical lag).
 

@@ -3,7 +3,7 @@
 // the encoder lines' value files, streams ResolverAngle frames, programs the board through its
 // host words and reads what the board pulls on its output line. Virtual time throughout.
 //
-// Expected values from the ANS1 digest (spec/ans1.md): CB2 with QuadEnc, CPC =
+// Expected values from the ANS1 digest (docs/spec/ans1.md): CB2 with QuadEnc, CPC =
 // FSC = 400 makes GMP the rig's 4X count; CB3 pair 1 [From, To) switches output 1 on from
 // From up to but not including To (A17), in either direction; on the resolver (CPC 4096,
 // FSC 360) GMP is the shaft angle in degrees. Forward quadrature is A leading B:

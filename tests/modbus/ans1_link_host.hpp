@@ -1,7 +1,7 @@
 #pragma once
 // A host programming the ANS1 over any RegisterMap link (a ModbusClient on RTU or TCP) the way
 // a PLC does: command words at holding registers 1024 + k, status words at input registers k,
-// and the Transmit/Acknowledge handshake (spec/ans1.md §5.1, manual L1705, L2296). Waiting
+// and the Transmit/Acknowledge handshake (docs/spec/ans1.md §5.1, manual L1705, L2296). Waiting
 // for the device is bounded polling of status word 0, never a sleep.
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The virtual ANS1 served in real time by `hilrig serve ans1`, programmed by the rig's own
 // Modbus client (drivers/hostlink ModbusClient) through its command words with the
 // Transmit/Acknowledge handshake, over Modbus RTU on a pty pair and over Modbus TCP.
-// Expected status words come from spec/ans1.md:
+// Expected status words come from docs/spec/ans1.md:
 //   §5.3 CB3 (lines 705-727; manual L1842-L1898): w1 output, pair k in words 4k..4k+3
 //        (From, To, OnStitch, OffStitch), applied by bits 10 (pair 1) .. 13 (pair 4);
 //   §5.3 CB1 (line 642; L1723-L1789): bit 8 applies w1 data block, w2 output, w3 input;

@@ -91,7 +91,7 @@ bool reaches(const std::atomic<std::uint64_t>& counter, std::uint64_t value) {
   return counter.load() >= value;
 }
 
-// DA0 after power-up (spec/ans1.md §5.5, line 944): status word 13 is module ID 83.
+// DA0 after power-up (docs/spec/ans1.md §5.5, line 944): status word 13 is module ID 83.
 void expect_answers(hostlink::ModbusClient& c) {
   std::array<std::uint16_t, 1> w{};
   ASSERT_EQ(c.read_input_registers(13, w), RegisterStatus::Ok);

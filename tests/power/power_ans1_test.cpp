@@ -15,8 +15,8 @@ namespace {
 const std::string kThroughput = std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_throughput.toml";
 
 // ans1 manual (seeds/000_08a2edf5547d4d1e.txt:572): master throughput "10 to 20 microseconds"
-// (spec/ans1.md L157, limit_us = 20); the board scans position and outputs every 10 us
-// (spec/ans1.md L187) and the outputs reach the pins output_delay later, so a crossing's latency
+// (docs/spec/ans1.md L157, limit_us = 20); the board scans position and outputs every 10 us
+// (docs/spec/ans1.md L187) and the outputs reach the pins output_delay later, so a crossing's latency
 // is (0 .. 10 us to the next scan) + output_delay. A board with output_delay 10 us has a worst
 // case of exactly 20 us and passes; the campaign's 10 crossings cover all ten 1 us phase bins of
 // the scan, so one crossing waits more than 9 us for its scan, and at output_delay 11 us that
@@ -46,7 +46,7 @@ TEST(PowerAns1, ThroughputThresholdOutputDelayIsWhereTheManualsArithmeticPutsIt)
       EXPECT_GT(*row.margin_pct, 0.0);
       EXPECT_LE(*row.margin_pct, 0.005 + 1e-9);
       EXPECT_LE(row.probes, 48u);
-      // The board's own worst case there is scan + output_delay (params.hpp, spec/ans1.md L187):
+      // The board's own worst case there is scan + output_delay (params.hpp, docs/spec/ans1.md L187):
       // over 20 us by less than one 1 us phase bin, 5 % of the limit.
       ASSERT_TRUE(row.board_worst && row.board_margin_pct);
       EXPECT_NEAR(*row.board_worst, 10.0 + *row.threshold, 1e-9);
@@ -75,7 +75,7 @@ TEST(PowerAns1, IsDeterministicAndTheSeedMovesTheScanPhase) {
   EXPECT_LE(*a.rows[0].threshold, 11.0);
 }
 
-// ans1 manual (seeds/000_08a2edf5547d4d1e.txt:1039-1040, spec/ans1.md §4.10): after the brake
+// ans1 manual (seeds/000_08a2edf5547d4d1e.txt:1039-1040, docs/spec/ans1.md §4.10): after the brake
 // application edge (taken on the 1 ms tick, t0) the input is sampled once a ms for 16 ms from
 // t0 + 16 ms, and 12 applied samples qualify it: the 12th sample is at t0 + 27 ms. The shipped
 // ans1_debounce campaign probes from 100.5 ms, so t0 = 101 ms and the narrowest application that
@@ -101,7 +101,7 @@ TEST(PowerAns1, DebounceThresholdIsOneMillisecondLaterSampling) {
 
 // Brake stop time: the knob is the scenario's brake (a press_stroke's decel_rpm_s), down. In
 // ans1_faults.toml the press turns at 100 rpm and brakes at 6000 rpm/s: it stops in
-// 100 / 6000 s = 16.7 ms, and the check's limit_ms is 20 (the CB8 stop limit, spec/ans1.md
+// 100 / 6000 s = 16.7 ms, and the check's limit_ms is 20 (the CB8 stop limit, docs/spec/ans1.md
 // §4.10). A brake of 100 rpm / 20 ms = 5000 rpm/s stops exactly at the limit (passes, inclusive);
 // any weaker one is over it, so the threshold lies just below 5000 rpm/s and the stop time read
 // there is just over 20 ms (exact in virtual time, to the ns).

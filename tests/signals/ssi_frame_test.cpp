@@ -1,5 +1,5 @@
 // SSI frame layout and Gray code: hand-computed words and the 7361 examples
-// (ssi7361-examples.md M-03, M-15, M-16) at the frame level.
+// (docs/spec/ssi7361-examples.md M-03, M-15, M-16) at the frame level.
 #include <gtest/gtest.h>
 
 #include <stdexcept>

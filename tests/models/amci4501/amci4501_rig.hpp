@@ -4,7 +4,7 @@
 // words. Encoder motion is synthesized with the signals library (a motion profile in X4
 // counts, its edges solved in closed form); Start/Latch are DiscreteSignals.
 //
-// Conventions follow shared/spec/amci4501-examples.md §0: times in us from t = 0, encoder
+// Conventions follow docs/spec/amci4501-examples.md §0: times in us from t = 0, encoder
 // bursts F(n, t0, dt) / R(n, t0, dt) = n X4 edges at t0, t0 + dt, ..., 1,024-line encoder.
 
 #include <gtest/gtest.h>

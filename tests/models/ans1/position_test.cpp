@@ -1,5 +1,5 @@
 // Global Machine Position scaling, offset and preset (spec §4.1) with the manual's worked
-// examples (ans1-examples.md W-01..W-11).
+// examples (docs/spec/ans1-examples.md W-01..W-11).
 #include <gtest/gtest.h>
 
 #include <random>

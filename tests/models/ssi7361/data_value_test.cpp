@@ -1,5 +1,5 @@
 // From the frame to the Data Value (digest §2.3): field extraction, Data Logic, Gray, Count
-// Direction and scaling, with the manual's worked examples (ssi7361-examples.md).
+// Direction and scaling, with the manual's worked examples (docs/spec/ssi7361-examples.md).
 
 #include <gtest/gtest.h>
 
