@@ -24,7 +24,8 @@ SsiMaster::SsiMaster(SsiMasterParams params) : params_(params) {
   if (!(params_.clock_hz >= 1e3 && params_.clock_hz <= 10e6))
     throw std::invalid_argument("SSI clock must be 1 kHz..10 MHz");
   if (params_.frame_bits < 1 || params_.frame_bits > 32) throw std::invalid_argument("SSI frame_bits 1..32");
-  period_ = Nanos::from_seconds(1.0 / params_.clock_hz);
+  period_ = Nanos::from_seconds(1.0 / params_.clock_hz) + params_.clock_period_error;
+  if (period_ < Nanos{2}) throw std::invalid_argument("SSI clock period (with its error) under 2 ns");
   half_ = period_ / 2;
   // The burst ends with R_n at (n - 1/2)T; the next F1 must come after it.
   if (params_.frame_period <= rising_edge(Nanos{0}, params_.frame_bits))

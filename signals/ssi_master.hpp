@@ -19,6 +19,9 @@ struct SsiMasterParams {
   double clock_hz = 125'000.0;            // 125 kHz or 500 kHz on the 7361 (L1123)
   unsigned frame_bits = 25;               // rising edges per frame, 1..32 (25 on the 7361, L967)
   Nanos frame_period = microseconds(500); // TINT, start to start (L1090)
+  // Added to the clock period 1/clock_hz: a master whose clock runs off its nominal rate (a
+  // detection-power knob of the 7361 model; 0 = the manual's clock).
+  Nanos clock_period_error{0};
 };
 
 // The 7361's clock: 125 kHz / TINT 500 us, or 500 kHz / TINT 250 us (L1090, L1096-1098).

@@ -337,6 +337,7 @@ void Ans1::scan() {
   state.shift_register_enabled = sr_setup_.input != 0;
   state.advance_wrong_sign = variant_ == Variant::AdvanceWrongSign;
   state.late_wrap_to = variant_ == Variant::SetpointOffByOneAtWrap;
+  state.timer_error = params_.timer_error;
 
   OutputStatusMasks masks{0, 0, 0, 0, 0, 0, 0};
   std::uint16_t ls = 0;

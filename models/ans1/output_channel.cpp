@@ -71,7 +71,8 @@ OutputState OutputChannel::scan(const ScanState& scan, bool retrigger_restarts) 
     }
   }
 
-  const bool timed = timer_.step(s.calc, p, scan.now, setup_.timer_type, setup_.timer_ms, retrigger_restarts);
+  const bool timed = timer_.step(s.calc, p, scan.now, setup_.timer_type, setup_.timer_ms, retrigger_restarts,
+                                 scan.timer_error);
   s.timer_ok = !timer_.expired();
   s.rpm = speed_enabled(setup_.rpm_low, setup_.rpm_high, scan.speed_reported);
   s.simple = (scan.active_inputs & simple_inputs_) == simple_inputs_;

@@ -28,6 +28,7 @@ struct ScanState {
   // Fault variants.
   bool advance_wrong_sign = false;
   bool late_wrap_to = false;
+  Nanos timer_error{0}; // Params::timer_error: added to every timed output's time
 };
 
 // Each condition as DA16 words 10..16 show it (1 = not blocking).

@@ -42,6 +42,10 @@ struct Params {
   // §4.7: a Time-Only output whose From edge comes again before expiry restarts its timer
   // (A39).
   bool time_only_retrigger_restarts = true;
+  // §4.7: a timed output's timer expires timer_ms after its start (W-10, 1 ms units). A
+  // detection-power knob (README, docs/power.md): a timer running off by this much makes every
+  // timed output's on time that much longer (or shorter). 0 = the manual's timer.
+  Nanos timer_error{0};
 
   // §4.2/A46: Time of Rotation saturates at the 16-bit maximum (6,553.5 ms).
   // §5.5/A36: a quadrature count starts at 0 at power-up.

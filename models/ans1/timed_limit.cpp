@@ -3,7 +3,7 @@
 namespace hilrig::models::ans1 {
 
 bool TimedLimit::step(bool calc, std::uint16_t p, Nanos now, TimerType type, std::uint16_t timer_ms,
-                      bool retrigger_restarts) {
+                      bool retrigger_restarts, Nanos timer_error) {
   if (timer_ms == 0) {
     reset();
     previous_calc_ = calc;
@@ -11,7 +11,7 @@ bool TimedLimit::step(bool calc, std::uint16_t p, Nanos now, TimerType type, std
   }
   const bool rising = calc && !previous_calc_;
   previous_calc_ = calc;
-  const Nanos limit = milliseconds(timer_ms);
+  const Nanos limit = milliseconds(timer_ms) + timer_error;
 
   if (type == TimerType::TimeOrPosition) {
     if (rising) {

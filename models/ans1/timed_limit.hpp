@@ -14,8 +14,10 @@ namespace hilrig::models::ans1 {
 class TimedLimit {
 public:
   // The output for this scan, given the pair state `calc` at limit-switch position p.
+  // The timer expires timer_ms + timer_error after its start (timer_error: a detection-power
+  // knob, params.hpp).
   bool step(bool calc, std::uint16_t p, Nanos now, TimerType type, std::uint16_t timer_ms,
-            bool retrigger_restarts = true);
+            bool retrigger_restarts = true, Nanos timer_error = Nanos{0});
   // True while the output is held off because its timer expired (DA16 w16 bit reads 0).
   [[nodiscard]] bool expired() const { return expired_; }
   void reset() { *this = TimedLimit{}; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace hilrig::models::smd23e {
 
@@ -86,7 +87,9 @@ std::vector<Piece> plan_move(double n, double vs, double vp, double a, double d,
   return pieces;
 }
 
-Motion::Motion(Nanos start, std::vector<Piece> pieces) : start_(start), pieces_(std::move(pieces)) {
+Motion::Motion(Nanos start, std::vector<Piece> pieces, double time_scale)
+    : start_(start), scale_(time_scale), pieces_(std::move(pieces)) {
+  if (!(scale_ > 0.0)) throw std::invalid_argument("Motion: time_scale must be > 0");
   double t = 0.0;
   double p = 0.0;
   placed_.reserve(pieces_.size());
@@ -96,7 +99,7 @@ Motion::Motion(Nanos start, std::vector<Piece> pieces) : start_(start), pieces_(
     p = piece.duration == kInf ? kInf : p + piece.distance_at(piece.duration);
   }
   total_ = p;
-  end_ = t == kInf ? Nanos::max() : start_ + Nanos::from_seconds(t);
+  end_ = t == kInf ? Nanos::max() : start_ + Nanos::from_seconds(t * scale_);
 }
 
 std::size_t Motion::index_at(double tau) const {
@@ -114,7 +117,7 @@ double Motion::progress(Nanos t) const {
   if (t >= end_) {
     return total_;
   }
-  const double tau = (t - start_).seconds();
+  const double tau = board_time(t);
   const std::size_t i = index_at(tau);
   const double local = std::min(tau - placed_[i].t0, pieces_[i].duration);
   return placed_[i].p0 + pieces_[i].distance_at(local);
@@ -124,7 +127,7 @@ double Motion::velocity(Nanos t) const {
   if (pieces_.empty() || t < start_ || t >= end_) {
     return 0.0;
   }
-  const double tau = (t - start_).seconds();
+  const double tau = board_time(t);
   const std::size_t i = index_at(tau);
   return pieces_[i].velocity_at(std::min(tau - placed_[i].t0, pieces_[i].duration));
 }
@@ -133,7 +136,7 @@ Phase Motion::phase(Nanos t) const {
   if (pieces_.empty() || t < start_ || t >= end_) {
     return Phase::Cruise;
   }
-  return pieces_[index_at((t - start_).seconds())].phase;
+  return pieces_[index_at(board_time(t))].phase;
 }
 
 Nanos Motion::time_at_progress(double x) const {

@@ -64,7 +64,9 @@ struct ProfileFigures {
 class Motion {
 public:
   Motion() = default;
-  Motion(Nanos start, std::vector<Piece> pieces);
+  // time_scale > 0: the pieces are in the board's own time, which runs time_scale times as
+  // long in real time (a time base off its rate; 1 = exact). Velocities stay in board units.
+  Motion(Nanos start, std::vector<Piece> pieces, double time_scale = 1.0);
 
   [[nodiscard]] Nanos start() const { return start_; }
   // End of the last piece; Nanos::max() when open-ended.
@@ -84,8 +86,10 @@ private:
     double p0; // progress at t0
   };
   [[nodiscard]] std::size_t index_at(double tau) const;
+  [[nodiscard]] double board_time(Nanos t) const { return (t - start_).seconds() / scale_; }
   Nanos start_{0};
   Nanos end_{0};
+  double scale_ = 1.0;
   double total_ = 0.0;
   std::vector<Piece> pieces_;
   std::vector<Placed> placed_;

@@ -57,6 +57,10 @@ struct Params {
   bool netloss_at_powerup = false;
   // [U §6.2] a valid configuration already in flash at power-up (skips 0x6408).
   bool flash_config_valid = false;
+  // A detection-power knob (README, docs/power.md): the indexer's time base off by this fraction,
+  // so every planned motion runs (1 + step_clock_error) times as long in real time: step rate
+  // and speeds / (1 + e), accelerations / (1 + e)². 0 = the manual's profiles (§3.2, §3.3).
+  double step_clock_error = 0.0;
   // [U §4] stall stop type: immediate.
   // Fault variant and its knobs.
   Fault fault = Fault::None;

@@ -156,7 +156,7 @@ void Smd23e::start_motion(Run run, std::vector<Piece> pieces, int dir) {
     sr.lost_before =
         last.lost_before + last.dir * (floor_div(sr.issued_before, n) - floor_div(last.issued_before, n));
   }
-  sr.motion = Motion(now, std::move(pieces));
+  sr.motion = Motion(now, std::move(pieces), 1.0 + p_.step_clock_error);
   runs_.push_back(std::move(sr));
   keep_recent_runs();
   run.dir = dir;
@@ -181,7 +181,7 @@ void Smd23e::continue_motion(std::vector<Piece> pieces) {
   sr.lost_before =
       last.lost_before + last.dir * (floor_div(sr.issued_before, n) - floor_div(last.issued_before, n));
   last.stop = now;
-  sr.motion = Motion(now, std::move(pieces));
+  sr.motion = Motion(now, std::move(pieces), 1.0 + p_.step_clock_error);
   runs_.push_back(std::move(sr));
   keep_recent_runs();
   const Nanos end = runs_.back().motion.end();

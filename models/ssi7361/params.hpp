@@ -31,6 +31,11 @@ struct Params {
   // [MODEL] The frame clock's power-up phase, added to first_frame: the rig draws it from
   // the run's seed, in [0, frame period at 125 kHz), unless the campaign pins first_frame.
   Nanos frame_phase{0};
+  // Detection-power knobs (README, docs/power.md): a clock or frame timer off the manual's
+  // figures by this much, added to the clock period T (8 / 2 us, L1123) and to the frame period
+  // TINT (500 / 250 us, L1090, L1096). 0 = the manual's timing.
+  Nanos clock_period_error{0};
+  Nanos frame_period_error{0};
   SampleInstant sample_instant = SampleInstant::HalfPeriodAfterRising;
   bool read_all_ones_without_supply = true; // no +24 V on pins 1/2: every bit reads 1 (L2182-2184)
 

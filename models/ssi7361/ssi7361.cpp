@@ -7,10 +7,21 @@
 
 namespace hilrig::models::ssi7361 {
 
+namespace {
+
+// The 7361's SSI master at one clock rate, with the model's clock and frame timer errors.
+signals::SsiMaster master_for(bool clock_500khz, const Params& params) {
+  signals::SsiMasterParams m = signals::ssi7361_master(clock_500khz);
+  m.clock_period_error = params.clock_period_error;
+  m.frame_period += params.frame_period_error;
+  return signals::SsiMaster(m);
+}
+
+} // namespace
+
 Ssi7361::Ssi7361(Scheduler& scheduler, LineOutput& clock, LineInput& data, Params params)
     : scheduler_(scheduler), clock_(clock), data_(data),
-      params_(params), masters_{signals::SsiMaster(signals::ssi7361_master(false)),
-                                signals::SsiMaster(signals::ssi7361_master(true))} {
+      params_(params), masters_{master_for(false, params), master_for(true, params)} {
   steps_[0] = build_steps(masters_[0]);
   steps_[1] = build_steps(masters_[1]);
   clock_.set(Level::High); // the clock idles high: a frame starts with a falling edge (§2.1)

@@ -102,6 +102,11 @@ const std::array kAns1Fields{
       between(1.0, 10.0)},
     F{"time_only_retrigger_restarts", &a::Params::time_only_retrigger_restarts,
       "a Time-Only output's From edge during its time restarts the timer (true, A39)"},
+    // A detection-power knob (docs/power.md): the CB5 timer is 0 .. 32767 ms (L1961-L1962); an error
+    // of up to 1 s either way keeps every programmable time meaningful (a sum <= 0 expires at once).
+    F{"timer_error", &a::Params::timer_error,
+      "[KNOB] added to every timed output's time (TP/TO timer, 4.7): a timer off its rate (0)",
+      between(-1_s, 1_s)},
 };
 
 } // namespace

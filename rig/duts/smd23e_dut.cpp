@@ -167,6 +167,11 @@ const std::array kSmd23eFields{
       "variant lost-steps: the shaft misses one step in this many issued (100)", between(1.0, 1'000'000.0)},
     F{"late_stop_delay", &m::Params::late_stop_delay, "variant late-stop: how late stops act (20 ms)",
       between(0_us, 10_s)},
+    // A detection-power knob (docs/power.md): up to half as fast or half as slow again.
+    F{"step_clock_error", &m::Params::step_clock_error,
+      "[KNOB] the step time base off by this fraction: every motion profile (3.2, 3.3) lasts (1 + e) x "
+      "its planned time (0)",
+      between(-0.5, 0.5)},
 };
 
 } // namespace

@@ -87,6 +87,8 @@ s::Params ssi7361_params(const DutParams& params) {
   p.preset_limit = static_cast<std::int32_t>(params.integer("preset_limit"));
   p.multiplier_may_equal_divisor = params.boolean("multiplier_may_equal_divisor");
   p.acknowledge_delay = params.duration("acknowledge_delay");
+  p.clock_period_error = params.duration("clock_period_error");
+  p.frame_period_error = params.duration("frame_period_error");
   return p;
 }
 
@@ -148,6 +150,15 @@ DutInfo ssi7361_info() {
        "MUL <= DIV (A4)",
        {}},
       {"acknowledge_delay", ParamKind::Duration, d.acknowledge_delay, "TRMT edge to ACK", between(0_us, 1_s)},
+      // Detection-power knobs (docs/power.md). Ranges keep every frame's 25 clocks inside its
+      // TINT at both rates: at 125 kHz R25 = 24.5 T = 196 us of TINT 500 us, at 500 kHz 49 of
+      // 250 us (L1090, L1096-1098); T + 1 us and TINT - 100 us still leave room.
+      {"clock_period_error", ParamKind::Duration, d.clock_period_error,
+       "[KNOB] added to the SSI clock period T (8 / 2 us, L1123): a clock off its rate (0)",
+       between(-1_us, 1_us)},
+      {"frame_period_error", ParamKind::Duration, d.frame_period_error,
+       "[KNOB] added to the frame period TINT (500 / 250 us, L1090, L1096): a frame timer off its rate (0)",
+       between(-100_us, 100_us)},
   };
   for (const auto& v : s::kVariantNames)
     info.variants.push_back({std::string(v.name), std::string(v.description)});

@@ -30,6 +30,16 @@ constexpr std::array kKnobs{
     Row{"amci4501", "throughput", "throughput", KnobDirection::Up, WorstCase::Knob},
     // rig/duts/reference_pls.cpp: the output is decided at a scan and set `delay` later.
     Row{"reference_pls", "throughput", "delay", KnobDirection::Up, WorstCase::KnobPlusParam, "scan"},
+    // A timed output's on time is its timer (models/ans1/README.md): a timer running long or short.
+    Row{"ans1", "pulse_width", "timer_error", KnobDirection::Both},
+    // The 7361's clock pulses are halves of its clock period T, its frames start every TINT
+    // (models/ssi7361/README.md).
+    Row{"ssi7361", "pulse_width", "clock_period_error", KnobDirection::Both},
+    // Up only: a frame that starts early reads as one clock period late (the check takes the
+    // next falling edge after the expected start), a detection, but not a margin.
+    Row{"ssi7361", "throughput", "frame_period_error", KnobDirection::Up},
+    // The SMD23E's step timing is its profile in its own time base (models/smd23e/README.md).
+    Row{"smd23e", "shaft_move", "step_clock_error", KnobDirection::Both},
 };
 
 bool value_check(std::string_view kind) {

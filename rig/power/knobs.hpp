@@ -10,7 +10,10 @@
 
 namespace hilrig::power {
 
-enum class KnobDirection { Up, Down }; // which way from the nominal value the board gets worse
+// Which way from the nominal value the board gets worse. Both: a two-sided limit (a pulse too
+// short or too long, a step clock too fast or too slow): `hilrig power` bisects each way and
+// reports a row for each.
+enum class KnobDirection { Up, Down, Both };
 
 // What the model says the board's own worst case of the judged time is, from the knob: the knob
 // itself (a response delay), or the knob plus another parameter (a scan period: an event waits

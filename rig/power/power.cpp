@@ -79,6 +79,26 @@ Finding judge_check(const rig::CampaignResult& result, const std::string& check)
   return f;
 }
 
+// The campaign's nominal runs with only this check, every fault left out.
+campaign::Campaign probe_base(const campaign::Campaign& c, const std::string& check) {
+  campaign::Campaign base = c;
+  campaign::select_checks(base, campaign::CheckSelection{{check}, {}});
+  base.faults.clear();
+  base.fault_points.clear();
+  return base;
+}
+
+// One probe: the knob set in every scenario point, then run through the executive as `hilrig
+// run` runs them.
+rig::CampaignResult run_probe(const campaign::Campaign& base,
+                              const std::function<void(campaign::Scenario&)>& set, std::uint64_t seed) {
+  campaign::Campaign probe_campaign = base;
+  for (campaign::Scenario& s : probe_campaign.points) set(s);
+  probe_campaign.runs = campaign::plan_runs(probe_campaign, seed);
+  const campaign::Executive exec(probe_campaign);
+  return exec.run_all(probe_campaign.runs, seed, rig::Shard{});
+}
+
 // The knob as the bisection sees it: a deviation from the nominal value in the knob's own
 // unit (ns for a duration, exact integers), and how the campaign's dut.params take a value.
 struct KnobScale {
@@ -113,13 +133,16 @@ std::string kind_of_check(const campaign::Campaign& c, const std::string& name) 
   return {};
 }
 
+// One side of the check's knob: `side` replaces a two-sided knob's direction.
 PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std::uint64_t seed,
-                       const PowerOptions& options) {
+                       const PowerOptions& options, std::optional<KnobDirection> side) {
   PowerRow row;
   row.check = name;
   row.kind = kind_of_check(c, name);
   const std::string& model = c.points.front().dut.model;
-  const Knob knob = knob_for(model, row.kind);
+  Knob knob = knob_for(model, row.kind);
+  if (side) knob.direction = *side;
+  row.two_sided = side.has_value();
   if (knob.param.empty()) {
     row.reason = knob.no_knob;
     return row;
@@ -183,20 +206,12 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
     return row;
   }
 
-  // The campaign's nominal runs with only this check, every fault left out: the knob set in
-  // every scenario point, then run through the executive as `hilrig run` runs them.
-  campaign::Campaign base = c;
-  campaign::select_checks(base, campaign::CheckSelection{{name}, {}});
-  base.faults.clear();
-  base.fault_points.clear();
+  const campaign::Campaign base = probe_base(c, name);
   std::map<double, Finding> findings;
   const auto probe = [&](double deviation) {
-    campaign::Campaign probe_campaign = base;
-    for (campaign::Scenario& s : probe_campaign.points) set(s, deviation);
-    probe_campaign.runs = campaign::plan_runs(probe_campaign, seed);
-    const campaign::Executive exec(probe_campaign);
-    const rig::CampaignResult result = exec.run_all(probe_campaign.runs, seed, rig::Shard{});
-    Finding f = judge_check(result, name);
+    Finding f = judge_check(run_probe(
+                                base, [&](campaign::Scenario& s) { set(s, deviation); }, seed),
+                            name);
     const Probe p = f.probe;
     if (options.progress)
       options.progress(fmt::format("power: {}: {}: {} = {:.6g}{}: {}", c.name, name, knob.param,
@@ -260,9 +275,24 @@ PowerResult measure_power(const campaign::Campaign& c, const PowerOptions& optio
     if (!options.checks.empty() &&
         std::find(options.checks.begin(), options.checks.end(), name) == options.checks.end())
       continue;
-    out.rows.push_back(measure_check(c, name, out.seed, options));
+    const Knob knob = knob_for(out.device, kind_of_check(c, name));
+    if (knob.direction == KnobDirection::Both && !knob.param.empty()) {
+      out.rows.push_back(measure_check(c, name, out.seed, options, KnobDirection::Up));
+      out.rows.push_back(measure_check(c, name, out.seed, options, KnobDirection::Down));
+    } else {
+      out.rows.push_back(measure_check(c, name, out.seed, options, std::nullopt));
+    }
   }
   return out;
+}
+
+Probe probe_param(const campaign::Campaign& c, const std::string& check, const std::string& param,
+                  const duts::ParamValue& value, std::uint64_t seed) {
+  const campaign::Campaign base = probe_base(c, check);
+  return judge_check(run_probe(
+                         base, [&](campaign::Scenario& s) { s.dut.params[param].value = value; }, seed),
+                     check)
+      .probe;
 }
 
 bool over_margin(const PowerRow& row, double max_pct) {

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "rig/campaign/campaign.hpp"
+#include "rig/duts/dut.hpp"
+#include "rig/power/bisect.hpp"
 
 namespace hilrig::power {
 
@@ -21,6 +23,7 @@ struct PowerRow {
   std::string knob;                // the model parameter swept; "" with a no-knob reason
   std::string knob_unit;           // "us" for a duration knob, "" for a number
   std::string direction;           // "up" or "down"
+  bool two_sided = false;          // one of the two rows of a two-sided knob (knobs.hpp, Both)
   std::optional<double> nominal;   // knob value, knob_unit
   std::optional<double> threshold; // the smallest failing knob value found, knob_unit
   std::optional<double> last_pass; // the largest passing knob value seen, knob_unit
@@ -54,6 +57,12 @@ struct PowerOptions {
 
 // Measures every (selected) check's detection power. The campaign must be for the virtual backend.
 [[nodiscard]] PowerResult measure_power(const campaign::Campaign& c, const PowerOptions& options);
+
+// One probe as the bisection runs it, at a value of the model parameter `param`: the campaign's
+// nominal runs with only `check` kept and dut.params[param] = value at every point. For sweeps
+// across a threshold (tests).
+[[nodiscard]] Probe probe_param(const campaign::Campaign& c, const std::string& check,
+                                const std::string& param, const duts::ParamValue& value, std::uint64_t seed);
 
 // Whether a row's margin (or the board's worst-case margin, where known) is over max_pct, or
 // the row has no margin at all.

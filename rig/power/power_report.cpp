@@ -21,6 +21,11 @@ std::string percent(const std::optional<double>& pct) { return pct ? fmt::format
 
 std::string margin_text(const PowerRow& r) { return percent(r.margin_pct); }
 
+// The check's name, with the side for one of the two rows of a two-sided knob.
+std::string check_text(const PowerRow& r) {
+  return r.two_sided ? r.check + " (" + r.direction + ")" : r.check;
+}
+
 } // namespace
 
 std::string to_power_json(const PowerResult& result) {
@@ -64,15 +69,15 @@ std::string to_power_text(const PowerResult& result) {
                   "knob", "nominal", "threshold", "measured", "limit", "margin", "board worst", "margin");
   for (const PowerRow& r : result.rows) {
     if (r.threshold) {
-      out +=
-          fmt::format("{:<20} {:<17} {:<15} {:>12} {:>14} {:>14} {:>12} {:>10} {:>14} {:>10}\n", r.check,
-                      r.kind, r.knob, with_unit(r.nominal, r.knob_unit), with_unit(r.threshold, r.knob_unit),
-                      with_unit(r.measured, r.unit), with_unit(r.limit, r.unit), margin_text(r),
-                      with_unit(r.board_worst, r.unit), percent(r.board_margin_pct));
+      out += fmt::format("{:<20} {:<17} {:<15} {:>12} {:>14} {:>14} {:>12} {:>10} {:>14} {:>10}\n",
+                         check_text(r), r.kind, r.knob, with_unit(r.nominal, r.knob_unit),
+                         with_unit(r.threshold, r.knob_unit), with_unit(r.measured, r.unit),
+                         with_unit(r.limit, r.unit), margin_text(r), with_unit(r.board_worst, r.unit),
+                         percent(r.board_margin_pct));
       if (!r.margin_pct)
         out += fmt::format("{:<20} fails without a value beyond a limit: {}\n", "", r.detail);
     } else {
-      out += fmt::format("{:<20} {:<17} {}\n", r.check, r.kind, r.reason);
+      out += fmt::format("{:<20} {:<17} {}\n", check_text(r), r.kind, r.reason);
     }
   }
   return out;
@@ -96,7 +101,7 @@ std::string to_power_html(const PowerResult& result) {
     out += fmt::format(
         "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
         "<td>{}</td><td>{}</td><td>{}</td></tr>\n",
-        rig::xml_escape(r.check), rig::xml_escape(r.kind), rig::xml_escape(r.knob),
+        rig::xml_escape(check_text(r)), rig::xml_escape(r.kind), rig::xml_escape(r.knob),
         rig::xml_escape(with_unit(r.nominal, r.knob_unit)),
         rig::xml_escape(with_unit(r.threshold, r.knob_unit)), rig::xml_escape(with_unit(r.measured, r.unit)),
         rig::xml_escape(with_unit(r.limit, r.unit)), rig::xml_escape(margin_text(r)),

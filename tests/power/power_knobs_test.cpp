@@ -1,0 +1,211 @@
+// Detection power of the pulse-width, frame-start and shaft-move checks, on the knobs the
+// 7361, ANS1 and SMD23E models gained for them: each threshold `hilrig power` bisects must be
+// where the manual's arithmetic puts it, and a sweep of the knob across it must pass up to the
+// limit and fail beyond (the bisection's own probe, rig/power/power.hpp).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rig/campaign/campaign_error.hpp"
+#include "rig/campaign/campaign_parser.hpp"
+#include "rig/power/knobs.hpp"
+#include "rig/power/power.hpp"
+
+namespace hilrig::power {
+namespace {
+
+campaign::Campaign load(const std::string& relative) {
+  return campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/" + relative);
+}
+
+const PowerRow& row_of(const PowerResult& r, const std::string& check, const std::string& direction) {
+  for (const PowerRow& row : r.rows)
+    if (row.check == check && row.direction == direction) return row;
+  throw std::runtime_error("no row " + check + " " + direction);
+}
+
+// Sweeps a duration knob over [from, to] ns in steps of `step` ns: every value below `first_fail`
+// passes, every value from it fails.
+void sweep_ns(const campaign::Campaign& c, const std::string& check, const std::string& knob,
+              std::int64_t from, std::int64_t to, std::int64_t step, std::int64_t first_fail, int sign) {
+  for (std::int64_t v = from; sign > 0 ? v <= to : v >= to; v += sign * step) {
+    SCOPED_TRACE(check + ": " + knob + " = " + std::to_string(v) + " ns");
+    const bool beyond = sign > 0 ? v >= first_fail : v <= first_fail;
+    EXPECT_EQ(probe_param(c, check, knob, Nanos{v}, c.seed), beyond ? Probe::Fail : Probe::Pass);
+  }
+}
+
+// ssi7361 manual (seeds/004_2d8564fc60a2b9d4.txt:1123): the clock is 125 kHz, T = 8 us; 50 % duty
+// (spec/ssi7361.md §2.1 [MODEL]): each low half lasts T/2 (in whole ns, the model halves T by
+// truncation). ssi7361_frame_timing judges the low halves at exactly 4 us (min = max). With the
+// clock period T + e: e = +1 ns gives halves of floor(8001 / 2) = 4000 ns (pass), e = +2 ns
+// 4001 ns (fail); e = -1 ns 3999 ns (fail). The high pulses: within a frame T - floor(T/2), and
+// from R25 to the next F1 TINT - (24 T + T/2) (L1090-L1091: TINT 500 us), 304 us at e = 0, the
+// check's max; e = -1 ns makes it 500000 - (24 * 7999 + 3999) = 304025 ns (fail); a longer
+// clock only shortens it, so the clock period never fails that limit upward (the frame timer
+// does: frame_start).
+TEST(PowerSsi7361, ClockHalvesFailOneOrTwoNanosecondsOffTheManualsPeriod) {
+  const campaign::Campaign c = load("campaigns/ssi7361/ssi7361_frame_timing.toml");
+  PowerOptions options;
+  options.checks = {"clock_low_half_period", "clock_high"};
+  const PowerResult r = measure_power(c, options);
+  ASSERT_EQ(r.rows.size(), 4u);
+
+  const PowerRow& low_up = row_of(r, "clock_low_half_period", "up");
+  EXPECT_EQ(low_up.knob, "clock_period_error");
+  EXPECT_TRUE(low_up.two_sided);
+  ASSERT_TRUE(low_up.threshold && low_up.measured && low_up.limit) << low_up.reason;
+  EXPECT_NEAR(*low_up.threshold, 0.002, 1e-12);
+  EXPECT_NEAR(*low_up.last_pass, 0.001, 1e-12);
+  EXPECT_EQ(low_up.measurement, "clock_low_half_period.longest");
+  EXPECT_DOUBLE_EQ(*low_up.measured, 4.001);
+  EXPECT_DOUBLE_EQ(*low_up.limit, 4.0);
+
+  const PowerRow& low_down = row_of(r, "clock_low_half_period", "down");
+  ASSERT_TRUE(low_down.threshold && low_down.measured) << low_down.reason;
+  EXPECT_NEAR(*low_down.threshold, -0.001, 1e-12);
+  EXPECT_EQ(low_down.measurement, "clock_low_half_period.shortest");
+  EXPECT_DOUBLE_EQ(*low_down.measured, 3.999);
+
+  const PowerRow& high_down = row_of(r, "clock_high", "down");
+  ASSERT_TRUE(high_down.threshold && high_down.measured && high_down.limit) << high_down.reason;
+  EXPECT_NEAR(*high_down.threshold, -0.001, 1e-12);
+  EXPECT_EQ(high_down.measurement, "clock_high.longest");
+  EXPECT_DOUBLE_EQ(*high_down.measured, 304.025);
+  EXPECT_DOUBLE_EQ(*high_down.limit, 304.0);
+
+  const PowerRow& high_up = row_of(r, "clock_high", "up");
+  EXPECT_FALSE(high_up.threshold.has_value());
+  EXPECT_EQ(high_up.reason.rfind("never fails within knob range clock_period_error", 0), 0u)
+      << high_up.reason;
+
+  sweep_ns(c, "clock_low_half_period", "clock_period_error", 0, 4, 1, 2, +1);
+  sweep_ns(c, "clock_low_half_period", "clock_period_error", 1, -3, 1, -1, -1);
+}
+
+// ssi7361 manual (seeds/004_2d8564fc60a2b9d4.txt:1090, :1096): a frame starts every TINT =
+// 500 us at 125 kHz. ssi7361_frame_timing expects F1 at 100 us + k * 500 us, k = 0..19, and
+// takes the next falling clock edge within T/2 = 4 us (spec/ssi7361.md §2.1, A7). With TINT + e
+// the 20th frame starts 19 e late: 19 * 210 ns = 3.99 us passes, 19 * 211 ns = 4.009 us fails.
+TEST(PowerSsi7361, FrameStartFailsWhenTheTwentiethFrameDriftsPastHalfAClock) {
+  const campaign::Campaign c = load("campaigns/ssi7361/ssi7361_frame_timing.toml");
+  PowerOptions options;
+  options.checks = {"frame_start"};
+  const PowerResult r = measure_power(c, options);
+  ASSERT_EQ(r.rows.size(), 1u);
+  const PowerRow& row = r.rows[0];
+  EXPECT_EQ(row.knob, "frame_period_error");
+  EXPECT_EQ(row.direction, "up");
+  ASSERT_TRUE(row.threshold && row.measured && row.limit && row.margin_pct) << row.reason;
+  EXPECT_NEAR(*row.threshold, 0.211, 1e-12);
+  EXPECT_NEAR(*row.last_pass, 0.210, 1e-12);
+  EXPECT_DOUBLE_EQ(*row.measured, 4.009);
+  EXPECT_DOUBLE_EQ(*row.limit, 4.0);
+  EXPECT_LE(*row.margin_pct, 1.0);
+  sweep_ns(c, "frame_start", "frame_period_error", 208, 214, 1, 211, +1);
+}
+
+// ans1 manual (seeds/000_08a2edf5547d4d1e.txt:1961-1962): a Time-or-Position output turns off
+// when its timer (CB5 word 4, ms) expires, a Time-Only output when its timer expires. The
+// model starts the timer at the scan that turns the output on and turns it off at the first
+// scan (every 10 us, L572 spec/ans1.md L187) at least timer + e later; both edges carry the
+// same output delay. So the on time is ceil((timer + e) / 10 us) * 10 us. ans1_timed judges the
+// 5 ms TP output within 4..6 ms and the 20 ms TO output within 19..21 ms (timer +- one 1 ms
+// tick, L640): the on time passes up to e = +1 ms exactly (6 / 21 ms, inclusive) and fails at
+// 1 ms + 1 ns (6.01 / 21.01 ms); downward it stays 4 / 19 ms until e = -1.01 ms (3.99 / 18.99 ms).
+// (The bisection itself is run on the 7361 and SMD23E campaigns above and below; here the sweep
+// probes the same thresholds, which is all a threshold means, at a tenth of the cost.)
+TEST(PowerAns1Timed, TimerErrorPassesAtOneMillisecondAndFailsOneNanosecondBeyond) {
+  const campaign::Campaign c = load("campaigns/ans1/ans1_timed.toml");
+  EXPECT_EQ(knob_for("ans1", "pulse_width").param, "timer_error");
+  EXPECT_EQ(knob_for("ans1", "pulse_width").direction, KnobDirection::Both);
+  for (const char* check : {"tp_timer", "to_timer"}) {
+    sweep_ns(c, check, "timer_error", 999'999, 1'000'002, 1, 1'000'001, +1);
+    sweep_ns(c, check, "timer_error", -1'009'999, -1'010'001, 1, -1'010'000, -1);
+  }
+}
+
+// smd23e manual (seeds/003_7a93cebfafae55cd.txt:921-927, spec/smd23e.md §3.2): the trapezoid of
+// smd23e_profile (N = 4000 steps, v_s = 1000, v_p = 10000 steps/s, A = D = 100 steps/ms/s) cruises at 10000
+// steps/s, one step every 100 us; the check's peak (1 / the shortest step interval) must lie in 10000 +- 1 %.
+// With the indexer's time base off by e, every interval is 100 (1 + e) us, rounded to whole ns in the step
+// times, so one interval may be 1 ns shorter: the peak falls under 9900 when 100000 (1 + e) - 1 ns > 1e9 /
+// 9900 ns, so from e in (0.0101010, 0.0101111]; it rises over 10100 when 100000 (1 + e) - 1 < 1e9 / 10100, so
+// from e in [-0.0099010, -0.0098910). The ±(2 ms + 1 %) duration window is wider than the peak's ±1 %, so the
+// peak fails first. (1e-6 of the knob's unit is the resolution.)
+TEST(PowerSmd23e, StepClockErrorFailsThePeakJustBeyondOnePercent) {
+  const campaign::Campaign c = load("campaigns/smd23e/smd23e_profile.toml");
+  PowerOptions options;
+  options.checks = {"trapezoid"};
+  const PowerResult r = measure_power(c, options);
+  ASSERT_EQ(r.rows.size(), 2u);
+  const PowerRow& up = row_of(r, "trapezoid", "up");
+  EXPECT_EQ(up.knob, "step_clock_error");
+  ASSERT_TRUE(up.threshold && up.measured && up.limit && up.margin_pct) << up.reason;
+  EXPECT_GE(*up.threshold, 1.0 / 0.99 - 1.0);
+  EXPECT_LE(*up.threshold, (1e9 / 9900.0 + 1.0) / 100000.0 - 1.0 + 1e-6);
+  EXPECT_EQ(up.measurement, "trapezoid.peak_speed");
+  EXPECT_DOUBLE_EQ(*up.limit, 9900.0);
+  EXPECT_LE(*up.margin_pct, 0.01);
+  const PowerRow& down = row_of(r, "trapezoid", "down");
+  ASSERT_TRUE(down.threshold && down.measured && down.limit && down.margin_pct) << down.reason;
+  EXPECT_GE(*down.threshold, 1.0 / 1.01 - 1.0 - 1e-6);
+  EXPECT_LE(*down.threshold, (1e9 / 10100.0 + 1.0) / 100000.0 - 1.0 + 1e-6);
+  EXPECT_DOUBLE_EQ(*down.limit, 10100.0);
+  EXPECT_LE(*down.margin_pct, 0.01);
+  // Across it: 1 % slower passes (peak 9901 steps/s), 1.02 % fails (9899 steps/s); 0.98 %
+  // faster passes, 1 % faster fails (10101 steps/s).
+  EXPECT_EQ(probe_param(c, "trapezoid", "step_clock_error", 0.0100, c.seed), Probe::Pass);
+  EXPECT_EQ(probe_param(c, "trapezoid", "step_clock_error", 0.0102, c.seed), Probe::Fail);
+  EXPECT_EQ(probe_param(c, "trapezoid", "step_clock_error", -0.0098, c.seed), Probe::Pass);
+  EXPECT_EQ(probe_param(c, "trapezoid", "step_clock_error", -0.0100, c.seed), Probe::Fail);
+}
+
+// Each knob's range is checked by the parser (the campaign's file:line:column: key: range),
+// before anything runs: one value at each end of the range is accepted, one beyond it refused.
+TEST(PowerKnobs, KnobValuesOutsideTheirRangeAreBadInput) {
+  std::ifstream in(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ssi7361/ssi7361_frame_timing.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string base = text.str();
+  const auto with = [&](const std::string& line) {
+    std::string t = base;
+    const std::string anchor = "[dut.params]\n";
+    t.insert(t.find(anchor) + anchor.size(), line + "\n");
+    try {
+      (void)campaign::parse_campaign(t, "t.toml");
+      return std::string("accepted");
+    } catch (const campaign::CampaignError& e) {
+      return std::string(e.what());
+    }
+  };
+  EXPECT_EQ(with("clock_period_error = \"1us\""), "accepted");
+  EXPECT_EQ(with("clock_period_error = \"-1us\""), "accepted");
+  EXPECT_NE(with("clock_period_error = \"1001ns\"")
+                .find("t.toml:25:22: dut.params.clock_period_error: a value in -1us .. 1us"),
+            std::string::npos)
+      << with("clock_period_error = \"1001ns\"");
+  EXPECT_NE(with("frame_period_error = \"-101us\"").find("frame_period_error: a value in -100us .. 100us"),
+            std::string::npos);
+  const std::string smd = "[dut]\nmodel = \"smd23e\"\n[dut.params]\n";
+  const auto smd_with = [&](const std::string& line) {
+    try {
+      (void)campaign::parse_campaign(smd + line + "\n[campaign]\nname = \"x\"\nend = \"1ms\"\n", "t.toml");
+      return std::string("accepted");
+    } catch (const campaign::CampaignError& e) {
+      return std::string(e.what());
+    }
+  };
+  EXPECT_NE(smd_with("step_clock_error = 0.51").find("step_clock_error: a value in -0.5 .. 0.5"),
+            std::string::npos)
+      << smd_with("step_clock_error = 0.51");
+}
+
+} // namespace
+} // namespace hilrig::power
