@@ -82,6 +82,7 @@ TEST(DutParams, EverySmd23eReadmeChoiceIsSettableAndListed) {
       {"wrong_accel_factor", [](const P& p) { return ParamValue{p.wrong_accel_factor}; }},
       {"lost_step_interval", [](const P& p) { return ParamValue{p.lost_step_interval}; }},
       {"late_stop_delay", [](const P& p) { return ParamValue{p.late_stop_delay}; }},
+      {"step_clock_error", [](const P& p) { return ParamValue{p.step_clock_error}; }},
   };
   expect_every_readme_choice_reaches_its_field(*find_dut("smd23e"), readme,
                                                [](const DutParams& v) { return smd23e_params(v); });
@@ -101,6 +102,7 @@ TEST(DutParams, EveryAns1ReadmeChoiceIsSettableAndListed) {
       {"resolver_max_ratio", [](const P& p) { return ParamValue{p.resolver_max_ratio}; }},
       {"time_only_retrigger_restarts", [](const P& p) { return ParamValue{p.time_only_retrigger_restarts}; }},
       {"brake_sample_start_ms", [](const P& p) { return ParamValue{p.brake_sample_start_ms}; }},
+      {"timer_error", [](const P& p) { return ParamValue{p.timer_error}; }},
   };
   expect_every_readme_choice_reaches_its_field(*find_dut("ans1"), readme,
                                                [](const DutParams& v) { return ans1_params(v); });

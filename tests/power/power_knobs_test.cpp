@@ -42,7 +42,7 @@ void sweep_ns(const campaign::Campaign& c, const std::string& check, const std::
 }
 
 // ssi7361 manual (seeds/004_2d8564fc60a2b9d4.txt:1123): the clock is 125 kHz, T = 8 us; 50 % duty
-// (spec/ssi7361.md §2.1 [MODEL]): each low half lasts T/2 (in whole ns, the model halves T by
+// (docs/spec/ssi7361.md §2.1 [MODEL]): each low half lasts T/2 (in whole ns, the model halves T by
 // truncation). ssi7361_frame_timing judges the low halves at exactly 4 us (min = max). With the
 // clock period T + e: e = +1 ns gives halves of floor(8001 / 2) = 4000 ns (pass), e = +2 ns
 // 4001 ns (fail); e = -1 ns 3999 ns (fail). The high pulses: within a frame T - floor(T/2), and
@@ -91,7 +91,7 @@ TEST(PowerSsi7361, ClockHalvesFailOneOrTwoNanosecondsOffTheManualsPeriod) {
 
 // ssi7361 manual (seeds/004_2d8564fc60a2b9d4.txt:1090, :1096): a frame starts every TINT =
 // 500 us at 125 kHz. ssi7361_frame_timing expects F1 at 100 us + k * 500 us, k = 0..19, and
-// takes the next falling clock edge within T/2 = 4 us (spec/ssi7361.md §2.1, A7). With TINT + e
+// takes the next falling clock edge within T/2 = 4 us (docs/spec/ssi7361.md §2.1, A7). With TINT + e
 // the 20th frame starts 19 e late: 19 * 210 ns = 3.99 us passes, 19 * 211 ns = 4.009 us fails.
 TEST(PowerSsi7361, FrameStartFailsWhenTheTwentiethFrameDriftsPastHalfAClock) {
   const campaign::Campaign c = load("campaigns/ssi7361/ssi7361_frame_timing.toml");
@@ -114,7 +114,7 @@ TEST(PowerSsi7361, FrameStartFailsWhenTheTwentiethFrameDriftsPastHalfAClock) {
 // ans1 manual (seeds/000_08a2edf5547d4d1e.txt:1961-1962): a Time-or-Position output turns off
 // when its timer (CB5 word 4, ms) expires, a Time-Only output when its timer expires. The
 // model starts the timer at the scan that turns the output on and turns it off at the first
-// scan (every 10 us, L572 spec/ans1.md L187) at least timer + e later; both edges carry the
+// scan (every 10 us, L572 docs/spec/ans1.md L187) at least timer + e later; both edges carry the
 // same output delay. So the on time is ceil((timer + e) / 10 us) * 10 us. ans1_timed judges the
 // 5 ms TP output within 4..6 ms and the 20 ms TO output within 19..21 ms (timer +- one 1 ms
 // tick, L640): the on time passes up to e = +1 ms exactly (6 / 21 ms, inclusive) and fails at
@@ -131,7 +131,7 @@ TEST(PowerAns1Timed, TimerErrorPassesAtOneMillisecondAndFailsOneNanosecondBeyond
   }
 }
 
-// smd23e manual (seeds/003_7a93cebfafae55cd.txt:921-927, spec/smd23e.md §3.2): the trapezoid of
+// smd23e manual (seeds/003_7a93cebfafae55cd.txt:921-927, docs/spec/smd23e.md §3.2): the trapezoid of
 // smd23e_profile (N = 4000 steps, v_s = 1000, v_p = 10000 steps/s, A = D = 100 steps/ms/s) cruises at 10000
 // steps/s, one step every 100 us; the check's peak (1 / the shortest step interval) must lie in 10000 +- 1 %.
 // With the indexer's time base off by e, every interval is 100 (1 + e) us, rounded to whole ns in the step
