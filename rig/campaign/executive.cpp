@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "rig/campaign/motion_record.hpp"
 #include "rig/campaign/virtual_run.hpp"
 #include "rig/checks/debounce.hpp"
 #include "rig/checks/registry.hpp"
@@ -50,6 +51,15 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
   c.observations = v.observations;
   c.begin = Nanos{0};
   c.end = s.end;
+  return c;
+}
+
+// The host's writes, each timed to its Acknowledge, as one result entry.
+rig::CheckResult host_check(const std::vector<rig::Measurement>& handshakes) {
+  rig::CheckResult c;
+  c.check = "host";
+  c.kind = "handshake";
+  c.measurements = handshakes;
   return c;
 }
 
@@ -99,7 +109,7 @@ RunOutput Executive::run(const RunSpec& spec) const {
       r.error = v.rig_fault;
       r.interrupted = v.interrupted;
       r.observations = v.observations;
-      if (!v.handshakes.empty()) r.checks.push_back(rig::CheckResult{"host", "handshake", v.handshakes, {}});
+      if (!v.handshakes.empty()) r.checks.push_back(host_check(v.handshakes));
       if (!v.rig_timing.empty()) r.checks.push_back(rig_check(v.rig_timing));
       out.trace = v.trace;
       return out;
@@ -126,15 +136,11 @@ RunOutput Executive::run(const RunSpec& spec) const {
       }
       r.checks.push_back(checks::run_check(c.name, c.params, capture));
     }
-    if (!v.handshakes.empty()) {
-      rig::CheckResult host;
-      host.check = "host";
-      host.kind = "handshake";
-      host.measurements = v.handshakes;
-      r.checks.push_back(std::move(host));
-    }
+    if (!v.handshakes.empty()) r.checks.push_back(host_check(v.handshakes));
     if (!v.rig_timing.empty()) r.checks.push_back(rig_check(v.rig_timing));
     r.observations = v.observations;
+    // The shaft's speed and position for the report: a plant's run, or a brake check's.
+    if (s.plant || in.record_motion) r.motion = record_motion(v.profile, s.end, v.motion_events);
     out.trace = v.trace;
   } catch (const std::exception& e) {
     r.error = e.what();

@@ -5,6 +5,25 @@
 
 namespace hilrig::campaign {
 
+namespace {
+
+// An input change in the machine's words (a press valve is the clutch/brake solenoid).
+std::string event_words(plants::PlantInput which, bool level) {
+  switch (which) {
+  case plants::PlantInput::Valve:
+    return level ? "valve on: clutch engaged, brake released" : "valve off: brake applied, clutch released";
+  case plants::PlantInput::MotorEnable:
+    return level ? "motor enabled" : "motor disabled";
+  case plants::PlantInput::Direction:
+    return level ? "direction forward" : "direction reverse";
+  case plants::PlantInput::Step:
+    return "step";
+  }
+  return "input";
+}
+
+} // namespace
+
 PlantDrive::PlantDrive(Scheduler& scheduler, const Scenario& scenario)
     : sched_(scheduler), s_(scenario), spec_(*scenario.plant),
       motion_(spec_, scenario.encoder.counts_per_turn(), scenario.end),
@@ -51,6 +70,10 @@ void PlantDrive::start() {
 void PlantDrive::apply(plants::PlantInput which, bool level) {
   const Nanos now = sched_.now();
   motion_.input(now, which, level);
+  // Every step pulse would drown the plot: the steps show as the motion itself.
+  auto& last = last_level_.at(static_cast<std::size_t>(which));
+  if (which != plants::PlantInput::Step && last != level) events_.push_back({now, event_words(which, level)});
+  last = level;
   if (which == plants::PlantInput::Valve) {
     valve_ = level;
     if (monitor_ != nullptr) monitor_->set(level_of(level));
@@ -102,6 +125,12 @@ void PlantDrive::play() {
     if (line != nullptr) line->set(e.level);
   }
   schedule_next();
+}
+
+std::vector<rig::MotionEvent> PlantDrive::events() const {
+  std::vector<rig::MotionEvent> out = events_;
+  for (const Nanos t : motion_.standstills()) out.push_back({t, "standstill (located by the plant)"});
+  return out;
 }
 
 } // namespace hilrig::campaign

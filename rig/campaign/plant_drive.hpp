@@ -18,6 +18,7 @@
 #include "core/scheduler.hpp"
 #include "rig/campaign/campaign.hpp"
 #include "rig/campaign/plant_motion.hpp"
+#include "rig/results/motion_record.hpp"
 #include "signals/quadrature_edges.hpp"
 
 namespace hilrig::campaign {
@@ -40,6 +41,9 @@ public:
   void start();
 
   [[nodiscard]] const PlantMotion& motion() const { return motion_; }
+  // The board outputs (and rig commands) that acted on the plant, as they changed, and the
+  // standstills it located: the events of the report's speed/position plot.
+  [[nodiscard]] std::vector<rig::MotionEvent> events() const;
 
 private:
   void apply(plants::PlantInput which, bool level);
@@ -62,6 +66,8 @@ private:
   LineOutput* monitor_ = nullptr;
   std::vector<std::pair<plants::PlantInput, LineInput*>> watched_;
   bool valve_ = true;
+  std::vector<rig::MotionEvent> events_;
+  std::array<std::optional<bool>, 4> last_level_{}; // per PlantInput: the level last recorded
 };
 
 } // namespace hilrig::campaign

@@ -75,6 +75,7 @@ public:
       // The shaft as the plant moved it: its last change is the located standstill.
       out_.motion = plant_->motion().samples();
       out_.profile = plant_->motion().trajectory();
+      out_.motion_events = plant_->events();
     } else {
       out_.motion = std::move(drive_.motion());
       checks::append_motion(out_.motion, {end, static_cast<double>(drive_.count())});

@@ -15,6 +15,7 @@
 #include "rig/campaign/stop_request.hpp"
 #include "rig/checks/brake.hpp"
 #include "rig/results/measurement.hpp"
+#include "rig/results/motion_record.hpp"
 #include "signals/motion_profile.hpp"
 
 namespace hilrig::campaign {
@@ -37,10 +38,11 @@ struct VirtualRun {
   // The count changes as checks::append_motion keeps them (what the brake check reads: the
   // start, the last change and the end), so it does not grow with the run.
   std::vector<checks::PositionSample> motion;
-  std::vector<rig::Observation> observations; // host reads
-  std::vector<rig::Measurement> handshakes;   // host writes: time to Acknowledge
-  std::vector<rig::Measurement> rig_timing;   // hardware runs: the rig's own timing (wake-ups, edges)
-  std::string rig_fault;                      // hardware runs: why the run stopped early ("" when it did not)
+  std::vector<rig::MotionEvent> motion_events; // a plant's inputs as they changed, its standstills
+  std::vector<rig::Observation> observations;  // host reads
+  std::vector<rig::Measurement> handshakes;    // host writes: time to Acknowledge
+  std::vector<rig::Measurement> rig_timing;    // hardware runs: the rig's own timing (wake-ups, edges)
+  std::string rig_fault; // hardware runs: why the run stopped early ("" when it did not)
   // Virtual time: the board saw exactly the profile's edges, so its standstill is known
   // exactly. A hardware run sets it false: the edges went out with the RT loop's jitter and
   // only the count changes are evidence.

@@ -34,6 +34,7 @@ Bisection bisect_boundary(const PulseProbe& accepted, Nanos narrow, Nanos wide, 
 CheckResult check_debounce(const Bisection& bisection, const DebounceSpec& spec) {
   CheckResult r;
   r.kind = "debounce";
+  for (const auto& p : bisection.probes) r.probes.push_back(rig::Probe{p.width, p.accepted});
   const Nanos lo = spec.filter - spec.tolerance;
   const Nanos hi = spec.filter + spec.tolerance;
   if (!bisection.bracketed) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rig/results/measurement.hpp"
+#include "rig/results/motion_record.hpp"
 
 namespace hilrig::rig {
 
@@ -23,6 +24,7 @@ struct RunResult {
   bool interrupted = false;            // stopped by a stop request (SIGINT/SIGTERM); error says when
   std::vector<CheckResult> checks;
   std::vector<Observation> observations;
+  MotionRecord motion;              // the shaft's speed and position with its events (plant and brake runs)
   Outcome outcome = Outcome::Error; // derived by finalize(): run_outcome()
 };
 

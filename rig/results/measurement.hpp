@@ -45,6 +45,12 @@ struct Series {
   std::vector<double> values;
 };
 
+// One probe of a bisection (a debounce check's pulse): its width and whether the board took it.
+struct Probe {
+  Nanos width;
+  bool accepted = false;
+};
+
 // An observation: a value read from the DUT (a status or data word) recorded by name.
 struct Observation {
   std::string name;
@@ -107,6 +113,7 @@ struct CheckResult {
   std::vector<Measurement> measurements;
   std::vector<Series> series;
   Judgement judgement = Judgement::Error; // in its run; derived by finalize()
+  std::vector<Probe> probes;              // a debounce check's probes, in the order they ran
   // The measurements' outcome: Error when there is none (a check that judged nothing).
   [[nodiscard]] Outcome outcome() const {
     Outcome o = Outcome::Pass;

@@ -1,7 +1,9 @@
 #include "rig/results/report_html.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
+#include "rig/results/number_format.hpp"
 #include "rig/results/svg.hpp"
 #include "rig/results/xml_escape.hpp"
 
@@ -15,7 +17,14 @@ constexpr const char* kStyle =
     "th{background:#f6f8fa}.pass{color:#1a7f37;font-weight:bold}.fail{color:#cf222e;font-weight:bold}"
     ".error{color:#9a6700;font-weight:bold}.caught{color:#0969da;font-weight:bold}"
     ".not-judged{color:#57606a}.verdict{font-size:1.6em}figure{margin:.3em 0}"
-    "figcaption{font-size:.85em;color:#57606a}td.num{text-align:right;font-variant-numeric:tabular-nums}";
+    "figcaption{font-size:.85em;color:#57606a}td.num{text-align:right;font-variant-numeric:tabular-nums}"
+    "details.run{border:1px solid #d0d7de;border-radius:6px;margin:.4em 0;padding:.2em .6em}"
+    "details.run>summary{cursor:pointer;font-weight:bold}section.check{margin-left:.5em}"
+    "ul.summary li{margin:.15em 0}";
+
+// Figures and measurement rows shown per check before the rest is only in the table.
+constexpr std::size_t kTimingFigures = 6;
+constexpr std::size_t kLimitRows = 16;
 
 std::string badge_of(const char* word) {
   const std::string cls = std::string(word) == "not judged" ? "not-judged" : word;
@@ -34,44 +43,214 @@ Judgement shown(const CheckResult& c, const Measurement& m) {
                                       : Judgement::Error;
 }
 
-std::string limit_cell(const std::optional<double>& v) { return v ? fmt::format("{}", *v) : "&#8212;"; }
+std::string limit_cell(const std::optional<double>& v, const std::string& unit) {
+  return v ? format_value(*v, unit) : "&#8212;";
+}
 
-std::string check_section(const CheckResult& c) {
-  std::string s = fmt::format("<h4>{} <small>({})</small> {}</h4>\n", xml_escape(c.check), xml_escape(c.kind),
-                              badge(c.judgement));
-  s +=
-      "<table><tr><th>measurement</th><th>value</th><th>unit</th><th>lower</th><th>upper</th><th>outcome</th>"
-      "<th>detail</th></tr>\n";
+std::string anchor(const RunResult& run, std::size_t check) {
+  return fmt::format("r{}-c{}", run.index, check);
+}
+
+std::string figure(const std::string& svg, const std::string& caption) {
+  if (svg.empty()) return {};
+  return fmt::format("<figure class=\"evidence\">{}<figcaption>{}</figcaption></figure>\n", svg, caption);
+}
+
+// The measurements with those not passing first (stable: in recorded order otherwise).
+std::vector<ShownMeasurement> failing_first(const CheckResult& c) {
+  std::vector<ShownMeasurement> rows;
+  for (const auto& m : c.measurements) rows.push_back({&m, shown(c, m)});
+  std::stable_partition(rows.begin(), rows.end(),
+                        [](const ShownMeasurement& r) { return r.shown != Judgement::Pass; });
+  return rows;
+}
+
+// The brake's stop time on the run's motion: applied, standstill and the limit marked.
+std::string brake_figures(const CheckResult& c, const RunResult& run) {
+  std::string s;
   for (const auto& m : c.measurements) {
-    s += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td>{}</td><td class=\"num\">{}</td>"
-                     "<td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
-                     xml_escape(m.name), m.value, xml_escape(m.unit), limit_cell(m.lower),
-                     limit_cell(m.upper), badge(shown(c, m)), xml_escape(m.detail));
-  }
-  s += "</table>\n";
-  if (c.kind == "advance_counts" || c.kind == "edge_at_position") {
-    for (const auto& m : c.measurements) {
-      const std::string svg = timing_diagram_svg(m, shown(c, m));
-      if (svg.empty()) continue;
-      s += fmt::format(
-          "<figure>{}<figcaption>{}: expected window (green) against captured edge</figcaption></figure>\n",
-          svg, xml_escape(m.name));
+    if (!m.window || m.unit != "ms") continue;
+    std::vector<Marker> marks{{m.window->begin, "applied", "#9a6700"}};
+    Nanos right = m.window->end;
+    if (m.upper) {
+      const Nanos limit = m.window->begin + Nanos{static_cast<std::int64_t>(*m.upper * 1e6)};
+      marks.push_back({limit, "limit", "#cf222e"});
+      right = std::max(right, limit);
     }
-  }
-  if (c.kind == "throughput") {
-    std::optional<double> limit;
-    for (const auto& m : c.measurements) {
-      if (m.name.ends_with(".max")) limit = m.upper;
-    }
-    for (const auto& series : c.series) {
-      const std::string svg = histogram_svg(series.values, series.unit, limit);
-      if (svg.empty()) continue;
-      s +=
-          fmt::format("<figure>{}<figcaption>{} histogram ({}), dashed: limit on max</figcaption></figure>\n",
-                      svg, xml_escape(series.name), xml_escape(series.unit));
-    }
+    if (m.at) marks.push_back({*m.at, "standstill", outcome_colour(shown(c, m))});
+    const Nanos span = std::max(right - m.window->begin, Nanos{1'000'000});
+    s += figure(motion_svg(run.motion, marks, m.window->begin - span / 4, right + span / 4),
+                fmt::format("{}: speed and position around the stop; applied, standstill and the limit "
+                            "(applied + {})",
+                            xml_escape(m.name), m.upper ? format_value(*m.upper, m.unit) : "no limit"));
   }
   return s;
+}
+
+std::string throughput_figures(const CheckResult& c) {
+  std::string s;
+  for (const auto& series : c.series) {
+    std::vector<LimitLine> limits;
+    for (const auto& m : c.measurements) {
+      if (m.unit != series.unit) continue;
+      for (const auto& l : {m.lower, m.upper})
+        if (l)
+          limits.push_back({m.name.substr(c.check.size() + (m.name.starts_with(c.check + ".") ? 1 : 0)), *l});
+    }
+    s += figure(
+        histogram_svg(series.values, series.unit, limits),
+        fmt::format("{} of {}: histogram, dashed: the limits", xml_escape(series.name), xml_escape(c.check)));
+  }
+  return s;
+}
+
+std::string debounce_figures(const CheckResult& c) {
+  std::optional<double> lo, hi;
+  for (const auto& m : c.measurements) {
+    if (m.unit == "us" && m.lower && m.upper) {
+      lo = *m.lower * 1e3;
+      hi = *m.upper * 1e3;
+      break;
+    }
+  }
+  return figure(
+      probes_svg(c.probes, lo, hi),
+      "every probe pulse by width, numbered in the order played: accepted above, rejected below; shaded: "
+      "the filter time ± its tolerance");
+}
+
+std::string check_figures(const CheckResult& c, const RunResult& run) {
+  std::string s;
+  // A brake's window is the stop it measured, drawn on the motion: no edge diagram besides.
+  const bool on_motion = c.kind == "brake_stop_time" && !run.motion.empty();
+  if (on_motion) s += brake_figures(c, run);
+  if (!c.series.empty()) s += throughput_figures(c);
+  if (!c.probes.empty()) s += debounce_figures(c);
+  const auto rows = failing_first(c);
+  // One diagram per distinct window and edge (a latency's min and max may be the same one).
+  std::vector<std::pair<TraceWindow, std::optional<Nanos>>> drawn;
+  for (const auto& r : rows) {
+    if (on_motion || !has_timing(*r.m) || drawn.size() == kTimingFigures) continue;
+    const auto same = [&](const auto& d) {
+      return d.first.begin == r.m->window->begin && d.first.end == r.m->window->end && d.second == r.m->at;
+    };
+    if (std::any_of(drawn.begin(), drawn.end(), same)) continue;
+    drawn.emplace_back(*r.m->window, r.m->at);
+    s += figure(timing_diagram_svg(*r.m, r.shown),
+                fmt::format("{}: expected window (shaded, dashed limits) and the captured edge",
+                            xml_escape(r.m->name)));
+  }
+  const std::span<const ShownMeasurement> gauge(rows.data(), std::min(rows.size(), kLimitRows));
+  s +=
+      figure(limits_svg(gauge), rows.size() > kLimitRows
+                                    ? fmt::format("the first {} of {} measurements (those not passing first) "
+                                                  "against their limits; the rest are in the table",
+                                                  kLimitRows, rows.size())
+                                    : std::string("each measurement against its limits (shaded: passes)"));
+  if (s.empty()) {
+    const std::string why = c.measurements.empty()
+                                ? "the check measured nothing: it judged nothing (an error)"
+                                : "no measurement of this check has a limit or a window";
+    s = figure(
+        fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"600\" height=\"24\" role=\"img\">"
+                    "<title>{0}</title><text x=\"4\" y=\"16\" font-size=\"11\" fill=\"{1}\">{0}</text></svg>",
+                    why, outcome_colour(c.judgement)),
+        why);
+  }
+  return s;
+}
+
+std::string check_section(const RunResult& run, const CheckResult& c, std::size_t i) {
+  std::string s = fmt::format(
+      "<section class=\"check\" id=\"{}\" data-judgement=\"{}\">\n<h4>{} <small>({})</small> "
+      "{}</h4>\n",
+      anchor(run, i), to_string(c.judgement), xml_escape(c.check), xml_escape(c.kind), badge(c.judgement));
+  s += check_figures(c, run);
+  s += "<table><tr><th>measurement</th><th>value</th><th>lower</th><th>upper</th><th>outcome</th>"
+       "<th>window</th><th>detail</th></tr>\n";
+  for (const auto& m : c.measurements) {
+    const std::string window =
+        m.window
+            ? fmt::format("{} .. {}", format_time(m.window->begin),
+                          m.window->end == Nanos::max() ? std::string("open") : format_time(m.window->end))
+            : "&#8212;";
+    s += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
+                     "<td class=\"num\">{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+                     xml_escape(m.name), xml_escape(format_value(m.value, m.unit)),
+                     limit_cell(m.lower, m.unit), limit_cell(m.upper, m.unit), badge(shown(c, m)), window,
+                     xml_escape(m.detail));
+  }
+  return s + "</table>\n</section>\n";
+}
+
+std::string traceability(const CampaignResult& r) {
+  const auto row = [](const char* name, const std::string& value) {
+    return fmt::format("<tr><th>{}</th><td>{}</td></tr>", name, xml_escape(value));
+  };
+  std::string s = "<table class=\"trace\">";
+  s += row("started", r.started_at.value_or("(not recorded)"));
+  s += row("host", r.host.value_or("(not recorded)"));
+  s += row("tool version", "hilrig " + r.tool_version);
+  s += row("campaign SHA-256", r.campaign_sha256);
+  s += row("device", r.device);
+  s += row("seed", std::to_string(r.seed));
+  s += row("shard", fmt::format("{} of {}", r.shard.index + 1, r.shard.count));
+  return s + "</table>\n";
+}
+
+// Failures first: every check that failed or erred (and every run a rig error stopped), linked;
+// then the checks that caught their fault.
+std::string summary(const CampaignResult& r) {
+  std::string bad, caught_list;
+  for (const auto& run : r.runs) {
+    if (!run.error.empty())
+      bad += fmt::format("<li><a href=\"#r{}\">run {}: {}</a> {}: {}</li>\n", run.index, run.index,
+                         xml_escape(run.name), badge(Judgement::Error), xml_escape(run.error));
+    for (std::size_t i = 0; i < run.checks.size(); ++i) {
+      const CheckResult& c = run.checks[i];
+      const std::string item =
+          fmt::format("<li><a href=\"#{}\">run {}: {} / {}</a> ({}) {}</li>\n", anchor(run, i), run.index,
+                      xml_escape(run.name), xml_escape(c.check), xml_escape(c.kind), badge(c.judgement));
+      if (c.judgement == Judgement::Fail || c.judgement == Judgement::Error) bad += item;
+      if (c.judgement == Judgement::Caught) caught_list += item;
+    }
+  }
+  for (const auto& f : r.faults)
+    if (!f.caught())
+      bad += fmt::format("<li>fault <b>{}</b> <span class=\"fail\">not caught</span></li>\n",
+                         xml_escape(f.fault));
+  std::string s = "<h2 id=\"summary\">Summary</h2>\n";
+  s += bad.empty() ? "<p>No check failed or erred.</p>\n"
+                   : "<p>Failed and errored checks:</p>\n<ul class=\"summary failures\">\n" + bad + "</ul>\n";
+  if (!caught_list.empty())
+    s += "<p>Faults caught by:</p>\n<ul class=\"summary caught\">\n" + caught_list + "</ul>\n";
+  return s;
+}
+
+std::string run_section(const RunResult& run) {
+  // A run that passed is collapsed: the failures are what a reader opens the report for.
+  std::string s = fmt::format(
+      "<details class=\"run\" id=\"r{}\"{}>\n<summary>run {}: {} {}</summary>\n<p>seed {}{}{}</p>\n",
+      run.index, run.outcome == Outcome::Pass ? "" : " open", run.index, xml_escape(run.name),
+      badge(run.outcome), run.seed,
+      run.fault.empty() ? std::string()
+                        : fmt::format("; fault <b>{}</b> ({})", xml_escape(run.fault),
+                                      caught(run) ? "caught" : "not caught"),
+      run.error.empty() ? std::string() : fmt::format("; rig error: {}", xml_escape(run.error)));
+  if (!run.motion.empty()) {
+    s += figure(motion_svg(run.motion, {}),
+                "the shaft's speed and position over the run, with the events that acted on it (grey)");
+  }
+  for (std::size_t i = 0; i < run.checks.size(); ++i) s += check_section(run, run.checks[i], i);
+  if (!run.observations.empty()) {
+    s += "<h4>observations</h4>\n<table><tr><th>name</th><th>value</th><th>time</th></tr>\n";
+    for (const auto& o : run.observations) {
+      s += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td></tr>\n",
+                       xml_escape(o.name), xml_escape(format_value(o.value, o.unit)), format_time(o.time));
+    }
+    s += "</table>\n";
+  }
+  return s + "</details>\n";
 }
 
 } // namespace
@@ -88,16 +267,17 @@ std::string to_report_html(const CampaignResult& r) {
         "<p class=\"error\">Interrupted by {}: the runs done are below, the last one stopped early "
         "with every rig-driven line at its inactive level.</p>\n",
         xml_escape(*r.interrupted));
+  s += summary(r);
+  s += traceability(r);
   s += fmt::format(
-      "<table><tr><th>device</th><td>{}</td></tr><tr><th>seed</th><td>{}</td></tr>"
-      "<tr><th>shard</th><td>{} of {}</td></tr><tr><th>runs</th><td>{} of {} planned{}</td></tr>"
+      "<table><tr><th>runs</th><td>{} of {} planned{}</td></tr>"
       "<tr><th>runs passed / failed / errored</th><td>{} / {} / {}</td></tr>"
       "<tr><th>checks passed / failed / caught / not judged / errored</th><td>{} / {} / {} / {} / "
       "{}</td></tr>"
       "<tr><th>faults caught</th><td>{} of {}</td></tr></table>\n",
-      xml_escape(r.device), r.seed, r.shard.index + 1, r.shard.count, t.runs, r.planned_runs,
-      r.complete ? "" : " (incomplete)", t.runs_passed, t.runs_failed, t.runs_errored, t.checks_passed,
-      t.checks_failed, t.checks_caught, t.checks_not_judged, t.checks_errored, t.faults_caught, t.faults);
+      t.runs, r.planned_runs, r.complete ? "" : " (incomplete)", t.runs_passed, t.runs_failed, t.runs_errored,
+      t.checks_passed, t.checks_failed, t.checks_caught, t.checks_not_judged, t.checks_errored,
+      t.faults_caught, t.faults);
   if (!r.faults.empty()) {
     s += "<h2>Fault detection</h2>\n<table><tr><th>fault</th><th>must be caught by</th><th>runs</th>"
          "<th>caught in</th><th>caught?</th></tr>\n";
@@ -112,27 +292,7 @@ std::string to_report_html(const CampaignResult& r) {
     s += "</table>\n";
   }
   s += "<h2>Runs</h2>\n";
-  for (const auto& run : r.runs) {
-    s += fmt::format("<section>\n<h3>run {}: {} {}</h3>\n<p>seed {}{}{}</p>\n", run.index,
-                     xml_escape(run.name), badge(run.outcome), run.seed,
-                     run.fault.empty() ? std::string()
-                                       : fmt::format("; fault <b>{}</b> ({})", xml_escape(run.fault),
-                                                     caught(run) ? "caught" : "not caught"),
-                     run.error.empty() ? std::string()
-                                       : fmt::format("; rig error: {}", xml_escape(run.error)));
-    for (const auto& c : run.checks) s += check_section(c);
-    if (!run.observations.empty()) {
-      s += "<h4>observations</h4>\n<table><tr><th>name</th><th>value</th><th>unit</th><th>time "
-           "(us)</th></tr>\n";
-      for (const auto& o : run.observations) {
-        s += fmt::format(
-            "<tr><td>{}</td><td class=\"num\">{}</td><td>{}</td><td class=\"num\">{:.3f}</td></tr>\n",
-            xml_escape(o.name), o.value, xml_escape(o.unit), static_cast<double>(o.time.count()) / 1e3);
-      }
-      s += "</table>\n";
-    }
-    s += "</section>\n";
-  }
+  for (const auto& run : r.runs) s += run_section(run);
   s += "</body>\n</html>\n";
   return s;
 }

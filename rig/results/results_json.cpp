@@ -93,12 +93,19 @@ json check_json(const CheckResult& c) {
   for (const auto& m : c.measurements) ms.push_back(measurement_json(m));
   json ss = json::array();
   for (const auto& s : c.series) ss.push_back(json{{"name", s.name}, {"unit", s.unit}, {"values", s.values}});
-  return json{{"check", c.check},
-              {"kind", c.kind},
-              {"outcome", to_string(c.judgement)},
-              {"measured", to_string(c.outcome())},
-              {"measurements", ms},
-              {"series", ss}};
+  json j{{"check", c.check},
+         {"kind", c.kind},
+         {"outcome", to_string(c.judgement)},
+         {"measured", to_string(c.outcome())},
+         {"measurements", ms},
+         {"series", ss}};
+  if (!c.probes.empty()) { // only when there are: other checks keep their bytes
+    json ps = json::array();
+    for (const auto& p : c.probes)
+      ps.push_back(json{{"width_ns", p.width.count()}, {"accepted", p.accepted}});
+    j["probes"] = ps;
+  }
+  return j;
 }
 
 CheckResult check_from(const json& j) {
@@ -111,7 +118,34 @@ CheckResult check_from(const json& j) {
     c.series.push_back(Series{get<std::string>(s, "name", "series"), get<std::string>(s, "unit", "series"),
                               get<std::vector<double>>(s, "values", "series")});
   }
+  if (j.contains("probes"))
+    for (const auto& p : j.at("probes"))
+      c.probes.push_back(
+          Probe{Nanos{get<std::int64_t>(p, "width_ns", "probe")}, get<bool>(p, "accepted", "probe")});
   return c;
+}
+
+// Points as [time_ns, position, speed] triples: the bulk of a plant run's entry.
+json motion_json(const MotionRecord& m) {
+  json points = json::array();
+  for (const auto& p : m.points) points.push_back(json::array({p.time.count(), p.position, p.speed}));
+  json events = json::array();
+  for (const auto& e : m.events) events.push_back(json{{"time_ns", e.time.count()}, {"what", e.what}});
+  return json{
+      {"position_unit", "counts"}, {"speed_unit", "counts/s"}, {"points", points}, {"events", events}};
+}
+
+MotionRecord motion_from(const json& j) {
+  MotionRecord m;
+  for (const auto& p : field(j, "points", "motion")) {
+    if (!p.is_array() || p.size() != 3)
+      throw std::runtime_error("results: a motion point is not [time_ns, position, speed]");
+    m.points.push_back(MotionPoint{Nanos{p[0].get<std::int64_t>()}, p[1].get<double>(), p[2].get<double>()});
+  }
+  for (const auto& e : field(j, "events", "motion"))
+    m.events.push_back(MotionEvent{Nanos{get<std::int64_t>(e, "time_ns", "motion event")},
+                                   get<std::string>(e, "what", "motion event")});
+  return m;
 }
 
 } // namespace
@@ -134,6 +168,7 @@ json run_to_json(const RunResult& r) {
          {"checks", checks},
          {"observations", obs}};
   if (r.interrupted) j["interrupted"] = true; // only when set: uninterrupted results keep their bytes
+  if (!r.motion.empty()) j["motion"] = motion_json(r.motion);
   return j;
 }
 
@@ -162,6 +197,7 @@ RunResult run_from_json(const json& j) {
         get<std::string>(o, "name", "observation"), get<double>(o, "value", "observation"),
         get<std::string>(o, "unit", "observation"), Nanos{get<std::int64_t>(o, "time_ns", "observation")}});
   }
+  if (j.contains("motion")) r.motion = motion_from(j.at("motion"));
   return r;
 }
 

@@ -3,16 +3,40 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <vector>
+#include <limits>
 
+#include "rig/results/number_format.hpp"
+#include "rig/results/svg_plot.hpp"
 #include "rig/results/xml_escape.hpp"
 
 namespace hilrig::rig {
 namespace {
 
-constexpr double kWidth = 520.0;
-constexpr double kLeft = 10.0;
-constexpr double kPlot = 500.0;
+constexpr double kWidth = 600.0;
+constexpr double kLeft = 70.0;   // room for y labels / row names
+constexpr double kRight = 580.0; // plot's right edge
+constexpr const char* kLimit = "#cf222e";
+constexpr const char* kBand = "#d1f0d9";
+
+std::string time_label(double ns) { return format_ns(ns); }
+std::string number_label(double v) { return format_number(v); }
+
+std::string vline(double x, double y0, double y1, const char* colour, bool dashed) {
+  return fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\"{4}/>",
+                     x, y0, y1, colour, dashed ? " stroke-dasharray=\"4 3\"" : "");
+}
+
+std::string text(double x, double y, const std::string& s, const char* anchor,
+                 const char* colour = "#1f2328") {
+  return fmt::format(
+      "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"9\" text-anchor=\"{}\" fill=\"{}\">{}</text>", x, y,
+      anchor, colour, xml_escape(s));
+}
+
+// A label's anchor so it stays on the canvas near x.
+const char* anchor_at(double x) { return x < kLeft + 60 ? "start" : x > kRight - 60 ? "end" : "middle"; }
+
+} // namespace
 
 const char* outcome_colour(Judgement j) {
   switch (j) {
@@ -30,86 +54,215 @@ const char* outcome_colour(Judgement j) {
   return "#9a6700";
 }
 
-} // namespace
+bool has_timing(const Measurement& m) {
+  if (!m.window) return false;
+  if (m.at) return m.window->end > m.window->begin;
+  return m.outcome != Outcome::Pass; // the edge the check waited for never came
+}
 
 std::string timing_diagram_svg(const Measurement& m, Judgement shown) {
-  if (!m.window || !m.at) return {};
-  const double t0 = static_cast<double>(m.window->begin.count());
-  const double w0 = 0.0;
-  const double w1 = static_cast<double>(m.window->end.count()) - t0;
-  const double e = static_cast<double>(m.at->count()) - t0;
-  double lo = std::min({w0, w1, e});
-  double hi = std::max({w0, w1, e});
-  const double margin = std::max((hi - lo) * 0.25, 1000.0); // at least 1 us either side
-  lo -= margin;
-  hi += margin;
-  const auto x = [&](double t) { return kLeft + (t - lo) / (hi - lo) * kPlot; };
-  std::string s = fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"70\" "
-                              "viewBox=\"0 0 {} 70\" role=\"img\"><title>{}</title>",
-                              kWidth, kWidth, xml_escape(m.name));
+  if (!m.window) return {};
+  const double b = static_cast<double>(m.window->begin.count());
+  const bool open = m.window->end == Nanos::max();
+  const double e = open ? b : static_cast<double>(m.window->end.count());
+  double lo = std::min(b, e), hi = std::max(b, e);
+  if (m.at) {
+    lo = std::min(lo, static_cast<double>(m.at->count()));
+    hi = std::max(hi, static_cast<double>(m.at->count()));
+  }
+  if (open) hi = std::max(hi + (hi - lo), b + 1e6); // an open window: at least 1 ms of it
+  const svg::Scale x = svg::padded(lo, hi, 0.2, 1000.0, kLeft, kRight);
+  const double win_end = open ? kRight : x(e);
+  std::string s = svg::open(kWidth, 96, "timing of " + m.name);
+  s += text(kLeft - 4, 30, "expected", "end") + text(kLeft - 4, 58, "edge", "end");
   s += fmt::format(
-      "<rect x=\"{:.1f}\" y=\"12\" width=\"{:.1f}\" height=\"30\" fill=\"#d1f0d9\" stroke=\"#1a7f37\"/>",
-      x(w0), std::max(1.0, x(w1) - x(w0)));
-  s +=
-      fmt::format("<line x1=\"{}\" y1=\"42\" x2=\"{}\" y2=\"42\" stroke=\"#57606a\"/>", kLeft, kLeft + kPlot);
-  s += fmt::format(
-      "<line x1=\"{0:.1f}\" y1=\"6\" x2=\"{0:.1f}\" y2=\"46\" stroke=\"{1}\" stroke-width=\"2\"/>", x(e),
-      outcome_colour(shown));
-  s += fmt::format(
-      "<text x=\"{:.1f}\" y=\"58\" font-size=\"10\" text-anchor=\"middle\">window {:.3f}..{:.3f} us</text>",
-      (x(w0) + x(w1)) / 2.0, w0 / 1e3, w1 / 1e3);
-  s += fmt::format(
-      "<text x=\"{:.1f}\" y=\"68\" font-size=\"10\" text-anchor=\"middle\" fill=\"{}\">edge {:.3f} us</text>",
-      x(e), outcome_colour(shown), e / 1e3);
-  s += "</svg>";
-  return s;
+      "<rect x=\"{:.1f}\" y=\"16\" width=\"{:.1f}\" height=\"22\" fill=\"{}\" stroke=\"#1a7f37\"/>", x(b),
+      std::max(1.0, win_end - x(b)), kBand);
+  s += vline(x(b), 10, 66, kLimit, true) + (open ? std::string() : vline(x(e), 10, 66, kLimit, true));
+  s += text(x(b), 9, "window " + format_ns(b), anchor_at(x(b)), kLimit);
+  if (!open && x(e) - x(b) > 80) s += text(x(e), 9, format_ns(e), anchor_at(x(e)), kLimit);
+  if (m.at) {
+    const double a = static_cast<double>(m.at->count());
+    // The output as a step at the captured edge.
+    s += fmt::format(
+        "<polyline points=\"{0:.1f},62 {1:.1f},62 {1:.1f},46 {2:.1f},46\" fill=\"none\" stroke=\"{3}\" "
+        "stroke-width=\"2\"/>",
+        kLeft, x(a), kRight, outcome_colour(shown));
+    s += text(std::min(x(a) + 3, kRight), 44, "edge " + format_ns(a), anchor_at(x(a)), outcome_colour(shown));
+  } else {
+    s += fmt::format("<line x1=\"{}\" y1=\"62\" x2=\"{}\" y2=\"62\" stroke=\"{}\" stroke-width=\"2\"/>",
+                     kLeft, kRight, outcome_colour(shown));
+    s += text((kLeft + kRight) / 2, 56, "no edge captured", "middle", outcome_colour(shown));
+  }
+  s += svg::x_axis(x, 70, time_label, "run time");
+  return s + svg::kClose;
+}
+
+std::string limits_svg(std::span<const ShownMeasurement> rows) {
+  std::vector<ShownMeasurement> kept;
+  for (const auto& r : rows)
+    if (r.m->lower || r.m->upper) kept.push_back(r);
+  if (kept.empty()) return {};
+  constexpr double kRow = 26.0, kName = 200.0, kGaugeL = 210.0, kGaugeR = 520.0;
+  const double height = kRow * static_cast<double>(kept.size()) + 8;
+  std::string s = svg::open(kWidth, height, "measurements against their limits");
+  double y = 4;
+  for (const auto& [m, shown] : kept) {
+    const double v = std::isfinite(m->value) ? m->value : 0.0;
+    double lo = v, hi = v;
+    for (const auto& l : {m->lower, m->upper})
+      if (l) lo = std::min(lo, *l), hi = std::max(hi, *l);
+    const svg::Scale x = svg::padded(lo, hi, 0.25, std::max(std::abs(hi) * 1e-3, 1e-6), kGaugeL, kGaugeR);
+    const double mid = y + 11;
+    s += text(kName, mid + 3, m->name, "end");
+    s += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#d0d7de\"/>", kGaugeL,
+                     mid, kGaugeR, mid);
+    const double b0 = m->lower ? x(*m->lower) : kGaugeL, b1 = m->upper ? x(*m->upper) : kGaugeR;
+    s += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"10\" fill=\"{}\"/>", b0,
+                     mid - 5, std::max(1.0, b1 - b0), kBand);
+    for (const auto& l : {m->lower, m->upper}) {
+      if (!l) continue;
+      s += vline(x(*l), mid - 8, mid + 8, kLimit, true);
+      s += text(x(*l), mid + 15, format_value(*l, m->unit), "middle", kLimit);
+    }
+    if (std::isfinite(m->value)) {
+      s += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\" fill=\"{}\"/>", x(v), mid,
+                       outcome_colour(shown));
+    }
+    s += text(kGaugeR + 6, mid + 3, format_value(m->value, m->unit), "start", outcome_colour(shown));
+    y += kRow;
+  }
+  return s + svg::kClose;
 }
 
 std::string histogram_svg(std::span<const double> values, const std::string& unit,
-                          std::optional<double> limit) {
+                          std::span<const LimitLine> limits) {
   if (values.empty()) return {};
-  double lo = *std::min_element(values.begin(), values.end());
-  double hi = *std::max_element(values.begin(), values.end());
-  if (limit) hi = std::max(hi, *limit);
-  if (hi <= lo) hi = lo + 1.0;
+  const double vmin = *std::min_element(values.begin(), values.end());
+  const double vmax = *std::max_element(values.begin(), values.end());
+  double lo = vmin, hi = vmax;
+  for (const auto& l : limits) lo = std::min(lo, l.value), hi = std::max(hi, l.value);
+  const svg::Scale x = svg::padded(lo, hi, 0.05, 1e-3, kLeft, kRight);
+  // Bins over the values' own range, so a far limit does not crush them into one bar.
   const auto bins = static_cast<std::size_t>(
-      std::clamp(std::ceil(std::sqrt(static_cast<double>(values.size()))), 1.0, 40.0));
+      std::clamp(std::ceil(std::sqrt(static_cast<double>(values.size()))), 10.0, 50.0));
+  const double width =
+      vmax > vmin ? (vmax - vmin) / static_cast<double>(bins) : std::max(std::abs(vmax) * 1e-3, 1e-3);
   std::vector<std::size_t> counts(bins, 0);
   for (const double v : values) {
-    const auto b = static_cast<std::size_t>((v - lo) / (hi - lo) * static_cast<double>(bins));
-    ++counts[std::min(b, bins - 1)];
+    const auto i = static_cast<std::size_t>(std::max(0.0, std::floor((v - vmin) / width)));
+    ++counts[std::min(i, bins - 1)];
   }
-  const std::size_t peak = *std::max_element(counts.begin(), counts.end());
-  const double plot_h = 100.0;
-  const double bar_w = kPlot / static_cast<double>(bins);
-  std::string s = fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"140\" "
-                              "viewBox=\"0 0 {} 140\" role=\"img\"><title>histogram of {} values</title>",
-                              kWidth, kWidth, values.size());
+  const double peak = static_cast<double>(*std::max_element(counts.begin(), counts.end()));
+  const svg::Scale y(0.0, peak, 130.0, 24.0);
+  std::string s = svg::open(kWidth, 168, fmt::format("histogram of {} values", values.size()));
   for (std::size_t i = 0; i < bins; ++i) {
-    const double h = plot_h * static_cast<double>(counts[i]) / static_cast<double>(peak);
-    s += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"#0969da\">"
-                     "<title>{}</title></rect>",
-                     kLeft + bar_w * static_cast<double>(i), 10.0 + plot_h - h, std::max(bar_w - 1.0, 0.5), h,
-                     counts[i]);
-  }
-  s += fmt::format("<line x1=\"{}\" y1=\"110\" x2=\"{}\" y2=\"110\" stroke=\"#57606a\"/>", kLeft,
-                   kLeft + kPlot);
-  if (limit) {
-    const double lx = kLeft + (*limit - lo) / (hi - lo) * kPlot;
+    if (counts[i] == 0) continue;
+    const double b0 = vmin + width * static_cast<double>(i);
+    const double px0 = x(b0), px1 = std::max(x(b0 + width), px0 + 1.5);
     s += fmt::format(
-        "<line x1=\"{0:.1f}\" y1=\"6\" x2=\"{0:.1f}\" y2=\"112\" stroke=\"#cf222e\" "
-        "stroke-dasharray=\"4 3\"/><text x=\"{0:.1f}\" y=\"8\" font-size=\"10\" text-anchor=\"end\" "
-        "fill=\"#cf222e\">limit {1} {2}</text>",
-        lx, *limit, xml_escape(unit));
+        "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"#0969da\"><title>{} "
+        "in [{}, {})</title></rect>",
+        px0, y(static_cast<double>(counts[i])), std::max(px1 - px0 - 0.5, 1.0),
+        130.0 - y(static_cast<double>(counts[i])), counts[i], format_value(b0, unit),
+        format_value(b0 + width, unit));
   }
-  s += fmt::format("<text x=\"{}\" y=\"126\" font-size=\"10\">{} {}</text>", kLeft, lo, xml_escape(unit));
-  s += fmt::format("<text x=\"{}\" y=\"126\" font-size=\"10\" text-anchor=\"end\">{} {}</text>",
-                   kLeft + kPlot, hi, xml_escape(unit));
-  s += fmt::format(
-      "<text x=\"{}\" y=\"138\" font-size=\"10\" text-anchor=\"middle\">{} samples, peak bin {}</text>",
-      kLeft + kPlot / 2.0, values.size(), peak);
-  s += "</svg>";
-  return s;
+  double label_y = 12;
+  for (const auto& l : limits) {
+    s += vline(x(l.value), 8, 132, kLimit, true);
+    s += text(x(l.value) - 3, label_y, l.name + " limit " + format_value(l.value, unit), "end", kLimit);
+    label_y += 10;
+  }
+  s += svg::y_axis(y, kLeft, number_label, "count");
+  s += svg::x_axis(x, 132, number_label, unit == "us" ? "µs" : unit);
+  s += text(kLeft, 164,
+            fmt::format("{} samples in {} bins of {}", values.size(), bins, format_value(width, unit)),
+            "start", "#57606a");
+  return s + svg::kClose;
+}
+
+std::string probes_svg(std::span<const Probe> probes, std::optional<double> band_lo_ns,
+                       std::optional<double> band_hi_ns) {
+  if (probes.empty()) return {};
+  double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+  for (const auto& p : probes) {
+    lo = std::min(lo, static_cast<double>(p.width.count()));
+    hi = std::max(hi, static_cast<double>(p.width.count()));
+  }
+  for (const auto& b : {band_lo_ns, band_hi_ns})
+    if (b) lo = std::min(lo, *b), hi = std::max(hi, *b);
+  const svg::Scale x = svg::padded(lo, hi, 0.05, 1000.0, kLeft, kRight);
+  std::string s = svg::open(kWidth, 110, "debounce probes against the filter band");
+  if (band_lo_ns || band_hi_ns) {
+    const double b0 = band_lo_ns ? x(*band_lo_ns) : kLeft, b1 = band_hi_ns ? x(*band_hi_ns) : kRight;
+    s += fmt::format(
+        "<rect x=\"{:.1f}\" y=\"14\" width=\"{:.1f}\" height=\"62\" fill=\"#fff8c5\" stroke=\"#9a6700\"/>",
+        b0, std::max(1.0, b1 - b0));
+    s += text((b0 + b1) / 2, 11, "filter band", "middle", "#9a6700");
+  }
+  s += text(kLeft - 4, 33, "accepted", "end", "#1a7f37") + text(kLeft - 4, 63, "rejected", "end", "#57606a");
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const Probe& p = probes[i];
+    const double px = x(static_cast<double>(p.width.count()));
+    const double py = p.accepted ? 30 : 60;
+    s += fmt::format(
+        "<circle cx=\"{:.1f}\" cy=\"{}\" r=\"4\" fill=\"{}\" stroke=\"{}\"><title>probe {}: {} {}</title>"
+        "</circle>",
+        px, py, p.accepted ? "#1a7f37" : "#ffffff", p.accepted ? "#1a7f37" : "#57606a", i + 1,
+        format_time(p.width), p.accepted ? "accepted" : "rejected");
+    s += text(px, py - 6, std::to_string(i + 1), "middle", "#57606a");
+  }
+  s += svg::x_axis(x, 80, time_label, "pulse width");
+  return s + svg::kClose;
+}
+
+std::string motion_svg(const MotionRecord& motion, std::span<const Marker> markers, std::optional<Nanos> from,
+                       std::optional<Nanos> to) {
+  if (motion.empty()) return {};
+  const Nanos t0 = from.value_or(motion.points.front().time);
+  const Nanos t1 = to.value_or(motion.points.back().time);
+  std::vector<MotionPoint> pts;
+  for (const auto& p : motion.points)
+    if (p.time >= t0 && p.time <= t1) pts.push_back(p);
+  if (pts.size() < 2) pts = motion.points;
+  double pmin = pts.front().position, pmax = pmin, vmin = pts.front().speed, vmax = vmin;
+  for (const auto& p : pts) {
+    pmin = std::min(pmin, p.position), pmax = std::max(pmax, p.position);
+    vmin = std::min(vmin, p.speed), vmax = std::max(vmax, p.speed);
+  }
+  vmin = std::min(vmin, 0.0);
+  const svg::Scale x(static_cast<double>(t0.count()), static_cast<double>(t1.count()), kLeft, kRight);
+  const svg::Scale ys = svg::padded(vmin, vmax, 0.05, 1e-6, 110, 30);
+  const svg::Scale yp = svg::padded(pmin, pmax, 0.05, 1e-6, 210, 130);
+  std::string s = svg::open(kWidth, 260, "speed and position against time");
+  const auto poly = [&](const svg::Scale& y, auto value, const char* colour) {
+    std::string pts_attr;
+    for (const auto& p : pts)
+      pts_attr += fmt::format("{:.1f},{:.1f} ", x(static_cast<double>(p.time.count())), y(value(p)));
+    return fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"/>", pts_attr,
+                       colour);
+  };
+  s += poly(
+      ys, [](const MotionPoint& p) { return p.speed; }, "#0969da");
+  s += poly(
+      yp, [](const MotionPoint& p) { return p.position; }, "#8250df");
+  s += svg::y_axis(ys, kLeft, number_label, "speed (counts/s)");
+  s += svg::y_axis(yp, kLeft, number_label, "position (counts)");
+  double label_y = 248;
+  const auto mark = [&](Nanos t, const std::string& label, const char* colour, bool dashed) {
+    if (t < t0 || t > t1) return;
+    const double px = x(static_cast<double>(t.count()));
+    s += vline(px, 24, 212, colour, dashed);
+    s += text(px, label_y, label + " " + format_time(t), anchor_at(px), colour);
+    label_y += 10;
+  };
+  for (const auto& e : motion.events) mark(e.time, e.what, "#57606a", false);
+  for (const auto& m : markers) mark(m.time, m.label, m.colour, true);
+  s += svg::x_axis(x, 212, time_label, "run time");
+  // The labels grew the figure downwards: resize it to fit them.
+  const double height = std::max(260.0, label_y + 4);
+  const std::string head = svg::open(kWidth, 260, "speed and position against time");
+  return svg::open(kWidth, height, "speed and position against time") + s.substr(head.size()) + svg::kClose;
 }
 
 } // namespace hilrig::rig

@@ -1,22 +1,64 @@
 #pragma once
-// Inline SVG figures for report.html: a timing diagram (expected window against captured
-// edge) and a histogram (latency distribution against its limit). Self-contained markup.
+// Inline SVG figures for report.html, drawn from what the results recorded (never
+// recomputed): a timing diagram around a judged window, a measurement against its limits, a
+// latency histogram against its limits, a debounce check's probes against the filter band,
+// and a run's speed and position against time with its events. Self-contained markup.
 
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "rig/results/measurement.hpp"
+#include "rig/results/motion_record.hpp"
 
 namespace hilrig::rig {
 
-// The measurement's window drawn as the expected band and `at` as the captured edge; the
-// axis is in us relative to the window's start. Empty when the measurement has no window or at.
-// The edge is drawn in the colour of `shown`, the word the report gives the measurement.
+// The colour of an outcome word.
+[[nodiscard]] const char* outcome_colour(Judgement j);
+
+// The measurement's window shaded as the expected window, `at` as the captured edge (in the
+// colour of `shown`), on an axis of run time. Without `at`, the window is drawn with "no edge
+// captured". An open window (end = Nanos::max()) runs off the right edge. Empty without window.
 [[nodiscard]] std::string timing_diagram_svg(const Measurement& m, Judgement shown);
 
-// Histogram of values with a dashed line at `limit` (if any). Empty when there are no values.
+// Whether the measurement gets a timing diagram: a window of some length with its captured
+// edge, or a window whose edge the check did not capture (a missing edge, failed).
+[[nodiscard]] bool has_timing(const Measurement& m);
+
+// One row per measurement: its value (a dot in the colour of its word) against its limits
+// (the passing band shaded, each limit marked). Empty when no measurement has a limit.
+struct ShownMeasurement {
+  const Measurement* m;
+  Judgement shown;
+};
+[[nodiscard]] std::string limits_svg(std::span<const ShownMeasurement> rows);
+
+// A named limit line on a histogram or a probe axis.
+struct LimitLine {
+  std::string name;
+  double value;
+};
+// Histogram of values (bins over the values' range) on an axis that always holds every limit;
+// counts on the y axis. Empty when there are no values.
 [[nodiscard]] std::string histogram_svg(std::span<const double> values, const std::string& unit,
-                                        std::optional<double> limit);
+                                        std::span<const LimitLine> limits);
+
+// A debounce check's probes by width (accepted above, rejected below, numbered in the order
+// they ran) against the filter band [band_lo, band_hi] (ns) when known. Empty without probes.
+[[nodiscard]] std::string probes_svg(std::span<const Probe> probes, std::optional<double> band_lo_ns,
+                                     std::optional<double> band_hi_ns);
+
+// An instant marked on a motion plot.
+struct Marker {
+  Nanos time;
+  std::string label;
+  const char* colour;
+};
+// Speed and position against time over [from, to] (the whole record when not given), with
+// the record's events (grey) and `markers` as vertical lines. Empty when the record is.
+[[nodiscard]] std::string motion_svg(const MotionRecord& motion, std::span<const Marker> markers,
+                                     std::optional<Nanos> from = std::nullopt,
+                                     std::optional<Nanos> to = std::nullopt);
 
 } // namespace hilrig::rig

@@ -3,8 +3,6 @@
 #include <regex>
 
 #include "rig/results/junit.hpp"
-#include "rig/results/report_html.hpp"
-#include "rig/results/svg.hpp"
 #include "sample_campaign.hpp"
 
 namespace hilrig::rig {
@@ -61,47 +59,6 @@ TEST(Junit, RigErrorIsAnErrorTestcase) {
   const std::string x = to_junit_xml(c);
   EXPECT_EQ(count_of(x, "<error "), 1U);
   EXPECT_NE(x.find("<testcase name=\"rig\""), std::string::npos);
-}
-
-TEST(Report, SelfContainedWithVerdictTablesDiagramsAndHistograms) {
-  const CampaignResult c = test::sample_campaign(3);
-  const std::string html = to_report_html(c);
-  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0U);
-  EXPECT_NE(html.find("Verdict: <span class=\"pass\">pass</span>"), std::string::npos);
-  // 3 runs: one advance timing diagram and one latency histogram each.
-  EXPECT_EQ(count_of(html, "<svg "), 6U);
-  EXPECT_EQ(count_of(html, "expected window (green) against captured edge"), 3U);
-  EXPECT_EQ(count_of(html, "latency histogram"), 3U);
-  EXPECT_NE(html.find("Fault detection"), std::string::npos);
-  // Nothing fetched from elsewhere.
-  for (const char* external : {"src=", "href=", "<link", "<script", "@import", "url("}) {
-    EXPECT_EQ(html.find(external), std::string::npos) << external;
-  }
-}
-
-TEST(Svg, TimingDiagramPlacesTheEdgeInsideTheWindowBand) {
-  // Window 0..2 us, edge at 1 us: margin max(25% of 2 us, 1 us) = 1 us, so the axis spans
-  // -1..3 us over 500 px from x = 10: band from 135 to 385, edge at 260.
-  Measurement m;
-  m.name = "a.edge0";
-  m.window = TraceWindow{Nanos{0}, Nanos{2000}};
-  m.at = Nanos{1000};
-  m.outcome = Outcome::Pass;
-  const std::string svg = timing_diagram_svg(m, Judgement::Pass);
-  EXPECT_NE(svg.find("<rect x=\"135.0\" y=\"12\" width=\"250.0\""), std::string::npos) << svg;
-  EXPECT_NE(svg.find("x1=\"260.0\""), std::string::npos) << svg;
-  m.at.reset();
-  EXPECT_TRUE(timing_diagram_svg(m, Judgement::Pass).empty());
-}
-
-TEST(Svg, HistogramBinsWorkedByHand) {
-  // 4 values -> ceil(sqrt(4)) = 2 bins over [1, 4]: {1, 2} in the first, {3, 4} in the second
-  // (4 is the top edge, clamped into the last bin). Both bars full height (100 px).
-  const std::vector<double> v{1.0, 2.0, 3.0, 4.0};
-  const std::string svg = histogram_svg(v, "us", std::nullopt);
-  EXPECT_EQ(count_of(svg, "height=\"100.0\""), 2U) << svg;
-  EXPECT_NE(svg.find("4 samples, peak bin 2"), std::string::npos);
-  EXPECT_NE(histogram_svg(v, "us", 5.0).find("limit 5 us"), std::string::npos);
 }
 
 } // namespace

@@ -38,6 +38,23 @@ TEST(ResultsJson, ValidatesAgainstTheDocumentedSchema) {
   EXPECT_TRUE(errors.empty()) << errors.front();
 }
 
+TEST(ResultsJson, MotionAndProbesValidateAndRoundTrip) {
+  CampaignResult c = test::sample_campaign(2);
+  c.runs[0].motion.points = {{Nanos{0}, 0.0, 1000.0}, {Nanos{100'000'000}, 50.0, 0.0}};
+  c.runs[0].motion.events = {{Nanos{0}, "valve off: brake applied, clutch released"}};
+  c.runs[1].checks[0].probes = {{Nanos{20'000}, false}, {Nanos{40'000}, true}};
+  finalize(c);
+  const json j = to_json(c);
+  const auto errors = test::validate_json_schema(load_schema(), j);
+  EXPECT_TRUE(errors.empty()) << errors.front();
+  EXPECT_EQ(j["runs"][0]["motion"]["points"][1], json::array({100'000'000, 50.0, 0.0}));
+  EXPECT_FALSE(j["runs"][1].contains("motion")); // absent when not recorded: other runs keep their bytes
+  const CampaignResult back = campaign_from_json(json::parse(to_json_text(c)));
+  EXPECT_EQ(to_json(back), j);
+  ASSERT_EQ(back.runs[1].checks[0].probes.size(), 2U);
+  EXPECT_TRUE(back.runs[1].checks[0].probes[1].accepted);
+}
+
 TEST(ResultsJson, TheSchemaCheckerRejectsABrokenFile) {
   // The checker is only worth something if it says no: drop a required field, retype another.
   json j = to_json(test::sample_campaign(3));

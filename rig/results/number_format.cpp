@@ -1,0 +1,28 @@
+#include "rig/results/number_format.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace hilrig::rig {
+
+std::string format_number(double v) {
+  if (!std::isfinite(v)) return std::isnan(v) ? "NaN" : (v > 0 ? "∞" : "-∞");
+  std::string s = fmt::format("{:.9g}", v);
+  if (s == "-0") s = "0";
+  return s;
+}
+
+std::string format_ns(double ns) {
+  const double a = std::abs(ns);
+  if (a >= 1e9) return format_number(ns / 1e9) + " s";
+  if (a >= 1e6) return format_number(ns / 1e6) + " ms";
+  if (a >= 1e3) return format_number(ns / 1e3) + " µs";
+  return format_number(ns) + " ns";
+}
+
+std::string format_value(double v, const std::string& unit) {
+  if (unit.empty()) return format_number(v);
+  return format_number(v) + " " + (unit == "us" ? std::string("µs") : unit);
+}
+
+} // namespace hilrig::rig

@@ -1,0 +1,21 @@
+#pragma once
+// Numbers as a person reads them in report.html: no float noise (800.0000000000018 reads
+// 800), times in the unit that fits (ns, µs, ms, s) instead of raw nanoseconds.
+
+#include <string>
+
+#include "core/time.hpp"
+
+namespace hilrig::rig {
+
+// At most 9 significant digits, trailing zeros dropped: the double's rounding noise goes,
+// a value the board could show (a count to 10^-3 at 10^6 counts) stays.
+[[nodiscard]] std::string format_number(double v);
+// A duration or an instant in nanoseconds, in s, ms, µs or ns (the largest unit with an
+// integer part), e.g. "1.5 ms", "750 µs".
+[[nodiscard]] std::string format_ns(double ns);
+[[nodiscard]] inline std::string format_time(Nanos t) { return format_ns(static_cast<double>(t.count())); }
+// A value with its unit ("" for a count of things); "us" reads µs.
+[[nodiscard]] std::string format_value(double v, const std::string& unit);
+
+} // namespace hilrig::rig

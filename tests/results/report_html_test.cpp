@@ -1,0 +1,190 @@
+// report.html (issue 18, "Reports"): a figure for every judged check, failures first, times
+// in their unit and no float noise, figures drawn from what the results recorded.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "rig/results/number_format.hpp"
+#include "rig/results/report_html.hpp"
+#include "rig/results/svg.hpp"
+#include "sample_campaign.hpp"
+
+namespace hilrig::rig {
+namespace {
+
+std::size_t count_of(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
+// The check sections of a report, each with its judgement word and body.
+struct Section {
+  std::string judgement, body;
+};
+std::vector<Section> sections(const std::string& html) {
+  std::vector<Section> out;
+  const std::regex re(
+      "<section class=\"check\" id=\"[^\"]+\" data-judgement=\"([^\"]+)\">([\\s\\S]*?)</section>");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), re); it != std::sregex_iterator(); ++it)
+    out.push_back({(*it)[1], (*it)[2]});
+  return out;
+}
+
+Measurement measured(const std::string& name, double value, std::optional<double> lo,
+                     std::optional<double> hi, Outcome o) {
+  Measurement m;
+  m.name = name;
+  m.value = value;
+  m.unit = "counts";
+  m.lower = lo;
+  m.upper = hi;
+  m.outcome = o;
+  return m;
+}
+
+// Every x coordinate the markup draws at.
+std::vector<double> xs(const std::string& svg) {
+  std::vector<double> out;
+  const std::regex re("\\b(?:x|x1|x2|cx)=\"(-?[0-9.]+)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it)
+    out.push_back(std::stod((*it)[1]));
+  return out;
+}
+
+TEST(Report, SelfContainedWithAFigureForEveryCheck) {
+  const CampaignResult c = test::sample_campaign(3);
+  const std::string html = to_report_html(c);
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0U);
+  EXPECT_NE(html.find("Verdict: <span class=\"pass\">pass</span>"), std::string::npos);
+  const auto secs = sections(html);
+  ASSERT_EQ(secs.size(), 6U); // 3 runs x (throughput, advance)
+  for (const auto& s : secs)
+    EXPECT_NE(s.body.find("<figure class=\"evidence\"><svg"), std::string::npos) << s.body;
+  EXPECT_EQ(count_of(html, "histogram of "), 3U);
+  EXPECT_NE(html.find("Fault detection"), std::string::npos);
+  // Nothing fetched from elsewhere; links stay inside the page.
+  for (const char* external : {"src=", "<link", "<script", "@import", "url(", "href=\"h", "href=\"f"})
+    EXPECT_EQ(html.find(external), std::string::npos) << external;
+}
+
+TEST(Report, FailuresFirstWithLinksAndPassingRunsCollapsed) {
+  CampaignResult c = test::sample_campaign(2);
+  c.runs[1] = test::nominal_run(1, 25.0); // over the 20 us limit
+  finalize(c);
+  ASSERT_EQ(c.verdict, Outcome::Fail);
+  const std::string html = to_report_html(c);
+  const auto summary = html.find("<ul class=\"summary failures\">");
+  ASSERT_NE(summary, std::string::npos);
+  EXPECT_LT(summary, html.find("<h2>Runs</h2>"));
+  // The link points at the failed check's section, which exists.
+  EXPECT_NE(html.find("<a href=\"#r1-c0\">", summary), std::string::npos);
+  EXPECT_NE(html.find("<section class=\"check\" id=\"r1-c0\" data-judgement=\"fail\">"), std::string::npos);
+  EXPECT_NE(html.find("<details class=\"run\" id=\"r0\">"), std::string::npos);      // passed: collapsed
+  EXPECT_NE(html.find("<details class=\"run\" id=\"r1\" open>"), std::string::npos); // failed: open
+}
+
+TEST(Report, CheckThatMeasuredNothingStillHasAFigureSayingSo) {
+  CampaignResult c = test::sample_campaign(1);
+  CheckResult empty;
+  empty.check = "empty";
+  empty.kind = "pulse_width";
+  c.runs[0].checks.push_back(empty);
+  finalize(c);
+  const auto secs = sections(to_report_html(c));
+  ASSERT_EQ(secs.size(), 3U);
+  EXPECT_EQ(secs[2].judgement, "error");
+  EXPECT_NE(secs[2].body.find("the check measured nothing"), std::string::npos);
+}
+
+TEST(NumberFormat, NoFloatNoiseAndTimesInTheirUnit) {
+  EXPECT_EQ(format_number(800.0000000000018), "800");
+  EXPECT_EQ(format_number(94.00686600000006), "94.006866");
+  EXPECT_EQ(format_number(-0.0), "0");
+  EXPECT_EQ(format_ns(1'500'000.0), "1.5 ms");
+  EXPECT_EQ(format_ns(750'000.0), "750 µs");
+  EXPECT_EQ(format_ns(999.0), "999 ns");
+  EXPECT_EQ(format_ns(2e9), "2 s");
+  EXPECT_EQ(format_value(100.0, "us"), "100 µs");
+  EXPECT_EQ(format_value(3.0, ""), "3");
+}
+
+TEST(Svg, TimingDiagramWithAndWithoutTheEdge) {
+  Measurement m = measured("a.edge0", 94.0, 93.0, 95.0, Outcome::Pass);
+  m.window = TraceWindow{Nanos{1'000'000}, Nanos{1'002'000}};
+  m.at = Nanos{1'001'000};
+  ASSERT_TRUE(has_timing(m));
+  const std::string with = timing_diagram_svg(m, Judgement::Pass);
+  EXPECT_NE(with.find("edge 1.001 ms"), std::string::npos) << with;
+  EXPECT_NE(with.find("window 1 ms"), std::string::npos) << with;
+  // A missing edge: the window is drawn and says so, in the word's colour.
+  m.at.reset();
+  m.outcome = Outcome::Fail;
+  ASSERT_TRUE(has_timing(m));
+  const std::string missing = timing_diagram_svg(m, Judgement::Fail);
+  EXPECT_NE(missing.find("no edge captured"), std::string::npos);
+  EXPECT_NE(missing.find("stroke=\"#cf222e\" stroke-width=\"2\""), std::string::npos);
+  // A passing window-only measurement (a handshake's write to Acknowledge) is no edge diagram.
+  m.outcome = Outcome::Pass;
+  EXPECT_FALSE(has_timing(m));
+  // An open window (waited to the end of the trace) stays on the canvas.
+  m.outcome = Outcome::Fail;
+  m.window->end = Nanos::max();
+  for (const double x : xs(timing_diagram_svg(m, Judgement::Fail))) EXPECT_LE(x, 600.0);
+}
+
+TEST(Svg, HistogramKeepsEveryLimitOnTheCanvasAndHasEnoughBins) {
+  // Values 1..4 us, limits far beyond (100 us) and below (-50 us): both on the 600 px canvas.
+  const std::vector<double> v{1.0, 2.0, 3.0, 4.0};
+  const std::vector<LimitLine> limits{{"max", 100.0}, {"min", -50.0}};
+  const std::string svg = histogram_svg(v, "us", limits);
+  for (const double x : xs(svg)) {
+    EXPECT_GE(x, 0.0);
+    EXPECT_LE(x, 600.0);
+  }
+  EXPECT_NE(svg.find("max limit 100 µs"), std::string::npos);
+  // At least 10 bins whatever the sample count: 4 values in bins of (4 - 1) / 10 = 0.3 us.
+  EXPECT_NE(svg.find("4 samples in 10 bins of 0.3 µs"), std::string::npos) << svg;
+  EXPECT_EQ(count_of(svg, "<rect "), 4U);
+  EXPECT_NE(svg.find(">count<"), std::string::npos); // the y axis
+}
+
+TEST(Svg, LimitsRowPerLimitedMeasurement) {
+  const Measurement a = measured("a", 96.0, 93.0, 95.0, Outcome::Fail);
+  const Measurement b = measured("b", 2.0, 1.0, std::nullopt, Outcome::Pass);
+  const Measurement c = measured("c", 7.0, std::nullopt, std::nullopt, Outcome::Pass);
+  const std::vector<ShownMeasurement> rows{
+      {&a, Judgement::Fail}, {&b, Judgement::Pass}, {&c, Judgement::Pass}};
+  const std::string svg = limits_svg(rows);
+  EXPECT_EQ(count_of(svg, "<circle "), 2U); // c has no limit: no row
+  EXPECT_NE(svg.find("fill=\"#cf222e\">96 counts</text>"), std::string::npos) << svg;
+  for (const double x : xs(svg)) EXPECT_LE(x, 600.0);
+}
+
+TEST(Svg, ProbesOnePointEachAgainstTheBand) {
+  const std::vector<Probe> probes{{Nanos{20'000}, false}, {Nanos{40'000}, true}, {Nanos{30'000}, true}};
+  const std::string svg = probes_svg(probes, 26'500.0, 28'500.0);
+  EXPECT_EQ(count_of(svg, "<circle "), 3U);
+  EXPECT_NE(svg.find("probe 1: 20 µs rejected"), std::string::npos);
+  EXPECT_NE(svg.find("filter band"), std::string::npos);
+}
+
+TEST(Svg, MotionPlotsSpeedAndPositionWithEventsAndMarkers) {
+  MotionRecord m;
+  // Constant deceleration from 1000 counts/s to rest over 100 ms: 50 counts.
+  for (int i = 0; i <= 10; ++i) {
+    const double t = 0.01 * i;
+    m.points.push_back(
+        {Nanos{static_cast<std::int64_t>(t * 1e9)}, 1000.0 * t - 5000.0 * t * t, 1000.0 - 10000.0 * t});
+  }
+  m.events.push_back({Nanos{0}, "valve off: brake applied, clutch released"});
+  const std::vector<Marker> marks{{Nanos{100'000'000}, "standstill", "#1a7f37"}};
+  const std::string svg = motion_svg(m, marks);
+  EXPECT_EQ(count_of(svg, "<polyline "), 2U);
+  EXPECT_NE(svg.find("valve off: brake applied, clutch released 0 ns"), std::string::npos);
+  EXPECT_NE(svg.find("standstill 100 ms"), std::string::npos);
+  EXPECT_TRUE(motion_svg(MotionRecord{}, marks).empty());
+}
+
+} // namespace
+} // namespace hilrig::rig
