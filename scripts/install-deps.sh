@@ -26,6 +26,7 @@ packages=(
   rt-tests            # cyclictest: the peer for the RT loop's latency
   python3             # test helpers: an independent VCD/JUnit reader
   libxml2-utils       # xmllint: junit.xml validated against Jenkins' JUnit schema (tests/results)
+  chromium            # headless browser: report.html of every shipped campaign loaded and screenshotted, a figure per judged check (tests/results)
   parallel            # GNU parallel: docs/ci.md's sharding recipe, run as a test
   clang-format        # the committed .clang-format
   clang               # the fuzzers' compiler (build-fuzz/, make fuzz-smoke and make fuzz)

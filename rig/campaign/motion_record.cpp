@@ -15,12 +15,11 @@ rig::MotionRecord record_motion(const signals::MotionProfile& profile, Nanos end
     for (const auto& s : segments)
       if (s.start < end) times.push_back(s.start);
     if (profile.end_time() < end) times.push_back(profile.end_time());
-  } else {
-    const std::int64_t span = (end - begin).count();
-    for (std::size_t i = 0; i < kMotionSamples; ++i)
-      times.push_back(begin +
-                      Nanos{span / static_cast<std::int64_t>(kMotionSamples) * static_cast<std::int64_t>(i)});
   }
+  // Even samples as well: a plotted position curves between knots.
+  const std::int64_t step = (end - begin).count() / static_cast<std::int64_t>(kMotionSamples);
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(kMotionSamples); ++i)
+    times.push_back(begin + Nanos{step * i});
   times.push_back(begin);
   times.push_back(end);
   for (const auto& e : events)

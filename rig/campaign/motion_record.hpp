@@ -1,6 +1,6 @@
 #pragma once
 // The run's motion as the results keep it (rig::MotionRecord): the trajectory the encoder
-// played, sampled at its knots (every segment start, when there are few) or evenly, plus
+// played, sampled evenly and at its knots (every segment start, when there are few), plus
 // the instants of the events, so the report plots speed and position from the results.
 
 #include <vector>
@@ -10,7 +10,7 @@
 
 namespace hilrig::campaign {
 
-// Segments beyond which the trajectory is sampled evenly instead of at its knots.
+// Segments beyond which the knots are not kept (a plant's every integration step is one).
 inline constexpr std::size_t kMotionKnotsKept = 400;
 // Points of an evenly sampled trajectory.
 inline constexpr std::size_t kMotionSamples = 500;

@@ -221,10 +221,18 @@ std::string motion_svg(const MotionRecord& motion, std::span<const Marker> marke
   if (motion.empty()) return {};
   const Nanos t0 = from.value_or(motion.points.front().time);
   const Nanos t1 = to.value_or(motion.points.back().time);
+  // The points inside [t0, t1] and one either side, clipped to the plot: the line reaches the
+  // edges even where the recorded knots are far apart.
   std::vector<MotionPoint> pts;
-  for (const auto& p : motion.points)
-    if (p.time >= t0 && p.time <= t1) pts.push_back(p);
-  if (pts.size() < 2) pts = motion.points;
+  const auto& all = motion.points;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const bool next_inside = i + 1 < all.size() && all[i + 1].time >= t0;
+    const bool prev_inside = i > 0 && all[i - 1].time <= t1;
+    if ((all[i].time >= t0 && all[i].time <= t1) || (all[i].time < t0 && next_inside) ||
+        (all[i].time > t1 && prev_inside))
+      pts.push_back(all[i]);
+  }
+  if (pts.size() < 2) pts = all;
   double pmin = pts.front().position, pmax = pmin, vmin = pts.front().speed, vmax = vmin;
   for (const auto& p : pts) {
     pmin = std::min(pmin, p.position), pmax = std::max(pmax, p.position);
@@ -242,10 +250,14 @@ std::string motion_svg(const MotionRecord& motion, std::span<const Marker> marke
     return fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"/>", pts_attr,
                        colour);
   };
+  // A nested viewport the width of the plot clips the lines at its edges.
+  s += fmt::format("<svg x=\"{0}\" y=\"0\" width=\"{1}\" height=\"260\" viewBox=\"{0} 0 {1} 260\">", kLeft,
+                   kRight - kLeft);
   s += poly(
       ys, [](const MotionPoint& p) { return p.speed; }, "#0969da");
   s += poly(
       yp, [](const MotionPoint& p) { return p.position; }, "#8250df");
+  s += "</svg>";
   s += svg::y_axis(ys, kLeft, number_label, "speed (counts/s)");
   s += svg::y_axis(yp, kLeft, number_label, "position (counts)");
   double label_y = 248;

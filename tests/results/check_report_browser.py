@@ -1,0 +1,170 @@
+#!/usr/bin/env python3
+"""report.html as a person opens it (issue 18, "Done when"): every shipped campaign is run
+as one suite and each campaign's report is loaded in one headless Chromium (driven over its
+DevTools pipe, so one browser start serves every page). In the DOM Chromium built, with every
+run expanded, each check section that was judged (data-judgement is not "not judged") must
+hold a figure whose SVG the browser laid out with a size; the sections must be as many as
+results.json's checks; a failing campaign's summary must link each failed check. A
+screenshot of each report is written beside it (report.png).
+
+Usage: check_report_browser.py HILRIG SOURCE_DIR SCRATCH_DIR CHROMIUM
+"""
+import base64
+import json
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+
+# Per check section: its word, and how many figures hold an SVG laid out with a size. Then
+# the summary's links to failed checks, each pointing at a section that exists.
+INSPECT = """JSON.stringify((() => {
+  document.querySelectorAll('details').forEach(d => { d.open = true; });
+  const sections = [...document.querySelectorAll('section.check')].map(s => [
+    s.dataset.judgement,
+    [...s.querySelectorAll('figure.evidence > svg')].filter(
+        g => g.getBoundingClientRect().width > 0 && g.getBoundingClientRect().height > 0).length]);
+  const links = [...document.querySelectorAll('ul.failures a')].map(a => a.getAttribute('href'));
+  const dangling = links.filter(h => !document.getElementById(h.slice(1)));
+  return {sections, links, dangling};
+})())"""
+
+
+def child_fds(read_end, write_end):
+    """In the child: the pipe ends as fds 3 and 4, inheritable (os.pipe's are close-on-exec)."""
+    r, w = os.dup(read_end), os.dup(write_end)  # above 4: neither dup2 below clobbers the other
+    os.dup2(r, 3, inheritable=True)
+    os.dup2(w, 4, inheritable=True)
+
+
+class Browser:
+    """One headless Chromium over --remote-debugging-pipe (fd 3 in, fd 4 out, NUL-framed JSON)."""
+
+    def __init__(self, chromium, profile):
+        # The child's fds 3 and 4 are set by dup2 after the fork (close_fds would close them).
+        to_chrome_r, self.to_chrome = os.pipe()
+        self.from_chrome, from_chrome_w = os.pipe()
+        self.proc = subprocess.Popen(
+            [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars", "--no-first-run",
+             f"--user-data-dir={profile}", "--remote-debugging-pipe", "about:blank"],
+            close_fds=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+            preexec_fn=lambda: child_fds(to_chrome_r, from_chrome_w))
+        os.close(to_chrome_r)
+        os.close(from_chrome_w)
+        self.buffer = b""
+        self.next_id = 0
+        target = self.call("Target.createTarget", {"url": "about:blank"})["targetId"]
+        self.session = self.call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+        self.call("Page.enable", session=True)
+        self.call("Emulation.setDeviceMetricsOverride",
+                  {"width": 900, "height": 1400, "deviceScaleFactor": 1, "mobile": False}, session=True)
+
+    def send(self, method, params, session):
+        self.next_id += 1
+        msg = {"id": self.next_id, "method": method, "params": params or {}}
+        if session:
+            msg["sessionId"] = self.session
+        os.write(self.to_chrome, json.dumps(msg).encode() + b"\0")
+        return self.next_id
+
+    def receive(self):
+        while b"\0" not in self.buffer:
+            chunk = os.read(self.from_chrome, 1 << 20)
+            if not chunk:
+                raise RuntimeError("chromium closed its DevTools pipe")
+            self.buffer += chunk
+        msg, self.buffer = self.buffer.split(b"\0", 1)
+        return json.loads(msg)
+
+    def call(self, method, params=None, session=False, until_event=None):
+        wanted = self.send(method, params, session)
+        result, seen_event = None, until_event is None
+        while result is None or not seen_event:
+            msg = self.receive()
+            if msg.get("id") == wanted:
+                if "error" in msg:
+                    raise RuntimeError(f"{method}: {msg['error']}")
+                result = msg["result"]
+            elif msg.get("method") == until_event:
+                seen_event = True
+        return result
+
+    def inspect(self, report, png):
+        self.call("Page.navigate", {"url": report.resolve().as_uri()}, session=True,
+                  until_event="Page.loadEventFired")
+        found = json.loads(self.call("Runtime.evaluate", {"expression": INSPECT, "returnByValue": True},
+                                     session=True)["result"]["value"])
+        shot = self.call("Page.captureScreenshot", {"format": "png"}, session=True)
+        png.write_bytes(base64.b64decode(shot["data"]))
+        return found
+
+    def close(self):
+        try:
+            self.send("Browser.close", {}, False)
+            self.proc.wait(timeout=20)
+        except Exception:  # noqa: BLE001 - a browser that will not close is killed
+            self.proc.kill()
+
+
+def main():
+    hilrig, src, scratch, chromium = sys.argv[1:5]
+    scratch = pathlib.Path(scratch)
+    shutil.rmtree(scratch, ignore_errors=True)
+    scratch.mkdir(parents=True)
+    subprocess.run([hilrig, "run", f"{src}/campaigns", "--out", str(scratch / "suite"), "--backend", "virtual",
+                    "--jobs", "2"], capture_output=True, check=False)
+    reports = sorted(p for p in (scratch / "suite").rglob("report.html") if (p.parent / "results.json").exists())
+    shipped = len(list(pathlib.Path(src, "campaigns").rglob("*.toml")))
+    problems = []
+    if len(reports) != shipped:
+        problems.append(f"{len(reports)} campaign reports for {shipped} shipped campaigns")
+    # A failing campaign (none is shipped): ans1_brake with the rig's stop-time limit below
+    # the 100 ms stop the board makes, so the check fails and its figure must be there.
+    failing = scratch / "failing.toml"
+    failing.write_text(pathlib.Path(src, "campaigns/ans1/ans1_brake.toml").read_text().replace(
+        "limit_ms = 150", "limit_ms = 50", 1))
+    subprocess.run([hilrig, "run", str(failing), "--out", str(scratch / "failing")], capture_output=True)
+    if not (scratch / "failing" / "report.html").exists():
+        problems.append("the failing campaign wrote no report")
+    else:
+        reports.append(scratch / "failing" / "report.html")
+
+    browser = Browser(chromium, scratch / "chromium-profile")
+    judged_total = 0
+    try:
+        for report in reports:
+            name = report.parent.name
+            found = browser.inspect(report, report.parent / "report.png")
+            results = json.loads((report.parent / "results.json").read_text())
+            checks = [c for run in results["runs"] for c in run["checks"]]
+            if len(found["sections"]) != len(checks):
+                problems.append(f"{name}: {len(found['sections'])} check sections, {len(checks)} in results.json")
+            for (word, figures), c in zip(found["sections"], checks):
+                if word != c["outcome"]:
+                    problems.append(f"{name}: {c['check']} reads {word}, results.json {c['outcome']}")
+                if word != "not judged":
+                    judged_total += 1
+                    if figures == 0:
+                        problems.append(f"{name}: {c['check']} ({word}) has no figure laid out")
+            bad = sum(1 for c in checks if c["outcome"] in ("fail", "error"))
+            if len(found["links"]) < bad or found["dangling"]:
+                problems.append(f"{name}: {bad} failed checks, summary links {found['links']}, "
+                                f"dangling {found['dangling']}")
+            if report.parent.name == "failing" and bad == 0:
+                problems.append("the failing campaign has no failed check")
+            png = report.parent / "report.png"
+            if png.read_bytes()[:8] != b"\x89PNG\r\n\x1a\n":
+                problems.append(f"{name}: no screenshot")
+    finally:
+        browser.close()
+    for p in problems:
+        print("FAIL:", p)
+    if not problems:
+        print(f"{len(reports)} reports ({shipped} shipped, 1 failing), {judged_total} judged checks, "
+              "each with a figure")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
