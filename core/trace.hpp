@@ -138,7 +138,10 @@ private:
 // value (x when unset; 0 for a real); then the samples with times ascending (stable for
 // equal times). The date comment, when given, is the only thing not fixed by the trace.
 // Negative times throw std::invalid_argument. For long runs see core/vcd_stream.hpp.
-void write_vcd(const TraceRecorder& trace, std::ostream& out, std::string_view date_comment = "");
+// `overlay`: more samples of the trace's signals, known only after the run (e.g. the windows
+// the checks judged), merged in time order after the trace's own samples of the same time.
+void write_vcd(const TraceRecorder& trace, std::ostream& out, std::string_view date_comment = "",
+               std::span<const TraceSample> overlay = {});
 // candump -l format: "(seconds.micros) bus ID#DATA" / "ID##FDATA" for FD (see core/candump.hpp).
 struct CandumpOptions {
   // Adds CANFD_FDF to the FD flags nibble, as Linux 6.0+ kernels report received FD frames.

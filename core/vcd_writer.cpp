@@ -218,8 +218,15 @@ private:
 
 } // namespace
 
-void write_vcd(const TraceRecorder& trace, std::ostream& out, std::string_view date_comment) {
+void write_vcd(const TraceRecorder& trace, std::ostream& out, std::string_view date_comment,
+               std::span<const TraceSample> overlay) {
   const std::vector<SignalInfo>& signals = trace.signals();
+  for (const TraceSample& s : overlay)
+    if (s.signal >= signals.size())
+      throw std::invalid_argument("VCD: overlay sample of an undeclared signal");
+  std::vector<TraceSample> extra(overlay.begin(), overlay.end());
+  std::stable_sort(extra.begin(), extra.end(),
+                   [](const TraceSample& a, const TraceSample& b) { return a.time < b.time; });
   write_header(out, signals, date_comment);
   // A scheduler records in time order: then the samples are written as they come, in one pass
   // (a spilled trace is never held whole). Otherwise they are sorted by time, stably.
@@ -233,9 +240,18 @@ void write_vcd(const TraceRecorder& trace, std::ostream& out, std::string_view d
   });
   VcdBody body(out, signals, signals.size());
   std::int64_t time = 0;
+  std::size_t next_extra = 0;
+  // The overlay's samples earlier than `t` (all of them at the end), before the sample at t.
+  const auto add_extra_before = [&](Nanos t) {
+    for (; next_extra < extra.size() && extra[next_extra].time < t; ++next_extra)
+      body.add(extra[next_extra], time);
+  };
   if (sorted) {
     trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
-      for (const TraceSample& s : chunk) body.add(s, time);
+      for (const TraceSample& s : chunk) {
+        add_extra_before(s.time);
+        body.add(s, time);
+      }
     });
   } else {
     std::vector<TraceSample> samples;
@@ -245,8 +261,13 @@ void write_vcd(const TraceRecorder& trace, std::ostream& out, std::string_view d
     });
     std::stable_sort(samples.begin(), samples.end(),
                      [](const TraceSample& a, const TraceSample& b) { return a.time < b.time; });
-    for (const TraceSample& s : samples) body.add(s, time);
+    for (const TraceSample& s : samples) {
+      add_extra_before(s.time);
+      body.add(s, time);
+    }
   }
+  add_extra_before(Nanos::max());
+  for (; next_extra < extra.size(); ++next_extra) body.add(extra[next_extra], time);
   body.flush();
 }
 

@@ -28,6 +28,7 @@ packages=(
   libxml2-utils       # xmllint: junit.xml validated against Jenkins' JUnit schema (tests/results)
   chromium            # headless browser: report.html of every shipped campaign loaded and screenshotted, a figure per judged check (tests/results)
   parallel            # GNU parallel: docs/ci.md's sharding recipe, run as a test
+  gtkwave             # vcd2fst/fst2vcd: trace.vcd read as GTKWave reads it (tests/tools)
   clang-format        # the committed .clang-format
   clang               # the fuzzers' compiler (build-fuzz/, make fuzz-smoke and make fuzz)
   libclang-rt-14-dev  # libFuzzer and the ASan/UBSan runtimes clang links the fuzzers with

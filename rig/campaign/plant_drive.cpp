@@ -1,6 +1,7 @@
 #include "rig/campaign/plant_drive.hpp"
 
 #include "rig/campaign/rig_drive.hpp"
+#include "rig/campaign/run_trace.hpp"
 #include "rig/campaign/scenario_reader.hpp"
 
 namespace hilrig::campaign {
@@ -90,6 +91,7 @@ void PlantDrive::resolve() {
   const std::int64_t start = solver_->initial_count();
   if (start != count_) {
     count_ = start;
+    if (shaft_ != nullptr) shaft_->count(sched_.now(), count_);
     if (enc_a_ != nullptr) enc_a_->set(level_of(signals::channel_a(count_)));
     if (enc_b_ != nullptr) enc_b_->set(level_of(signals::channel_b(count_)));
   }
@@ -121,6 +123,7 @@ void PlantDrive::play() {
   const signals::QuadEdge e = buffer_[next_++];
   if (e.channel != signals::QuadChannel::Z) {
     count_ = e.count;
+    if (shaft_ != nullptr) shaft_->count(e.time, count_);
     LineOutput* line = e.channel == signals::QuadChannel::A ? enc_a_ : enc_b_;
     if (line != nullptr) line->set(e.level);
   }

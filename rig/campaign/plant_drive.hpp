@@ -23,6 +23,8 @@
 
 namespace hilrig::campaign {
 
+class ShaftTrace; // rig/campaign/run_trace.hpp
+
 class PlantDrive {
 public:
   // The scheduler and scenario (which has a plant) outlive the drive.
@@ -39,6 +41,9 @@ public:
   void watch(const std::string& rig, LineInput& in);
   // Schedules the encoder and the commands.
   void start();
+  // Every count change from now on also goes to `shaft` (the run's trace).
+  void trace_shaft(ShaftTrace* shaft) { shaft_ = shaft; }
+  [[nodiscard]] std::int64_t count() const { return count_; }
 
   [[nodiscard]] const PlantMotion& motion() const { return motion_; }
   // The board outputs (and rig commands) that acted on the plant, as they changed, and the
@@ -61,6 +66,7 @@ private:
   std::size_t next_ = 0, filled_ = 0;
   std::uint64_t generation_ = 0; // edges scheduled under an older plan are dropped
   std::int64_t count_ = 0;
+  ShaftTrace* shaft_ = nullptr;
   LineOutput* enc_a_ = nullptr;
   LineOutput* enc_b_ = nullptr;
   LineOutput* monitor_ = nullptr;

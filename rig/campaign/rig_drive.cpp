@@ -1,6 +1,7 @@
 #include "rig/campaign/rig_drive.hpp"
 
 #include "rig/campaign/executive.hpp"
+#include "rig/campaign/run_trace.hpp"
 #include "rig/campaign/scenario_reader.hpp"
 
 namespace hilrig::campaign {
@@ -73,6 +74,7 @@ std::optional<signals::QuadEdge> RigDrive::pull_edge() {
 void RigDrive::encoder_edge() {
   const signals::QuadEdge e = *next_edge_;
   count_ = e.count;
+  if (shaft_ != nullptr) shaft_->count(e.time, count_);
   if (record_motion_) checks::append_motion(motion_, {e.time, static_cast<double>(e.count)});
   const bool on_a = e.channel == signals::QuadChannel::A;
   DrivenLine* line = on_a ? enc_a_ : enc_b_;

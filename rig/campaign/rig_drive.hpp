@@ -23,6 +23,8 @@
 
 namespace hilrig::campaign {
 
+class ShaftTrace; // rig/campaign/run_trace.hpp
+
 // The campaign's encoder over a profile already in counts (units_per_turn = counts per
 // turn), count = floor(position): what the rig plays, from a motion or a plant.
 [[nodiscard]] signals::QuadratureEncoder rig_encoder(const EncoderSpec& spec);
@@ -44,6 +46,8 @@ public:
   void start(const std::vector<Stimulus>& faults, const std::optional<Stimulus>& probe, bool record_motion);
 
   [[nodiscard]] std::int64_t count() const { return count_; }
+  // Every count change from now on also goes to `shaft` (the run's trace).
+  void trace_shaft(ShaftTrace* shaft) { shaft_ = shaft; }
   // Every count change so far (when recorded), from the start sample at time 0.
   [[nodiscard]] std::vector<checks::PositionSample>& motion() { return motion_; }
 
@@ -84,6 +88,7 @@ private:
   std::optional<signals::QuadEdge> next_edge_;
   std::vector<MissingEdges> missing_;
   std::int64_t count_ = 0;
+  ShaftTrace* shaft_ = nullptr;
   bool record_motion_ = true;
   std::vector<checks::PositionSample> motion_;
 };

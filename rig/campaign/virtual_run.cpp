@@ -13,6 +13,7 @@
 #include "rig/campaign/plant_drive.hpp"
 #include "rig/campaign/resolver_stators.hpp"
 #include "rig/campaign/rig_drive.hpp"
+#include "rig/campaign/run_trace.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::campaign {
@@ -61,13 +62,15 @@ public:
     dut_->attach(bus_, pins);
     schedule_board_faults();
 
+    trace_shaft();
     drive_.start(in_.faults, in_.probe, in_.record_motion);
     if (plant_) plant_->start();
     if (in_.host_link != nullptr && *in_.host_link && !s_.host.empty())
       words_ = (*in_.host_link)(*dut_, *info);
     else
       words_ = std::make_unique<DutWords>(*dut_);
-    host_ = std::make_unique<HostSequence>(sched_, s_, info->host, *words_);
+    traced_words_ = std::make_unique<TracedHostWords>(*words_, sched_, *trace_, info->host, s_.host);
+    host_ = std::make_unique<HostSequence>(sched_, s_, info->host, *traced_words_);
     host_->start();
 
     const Nanos end = play();
@@ -145,6 +148,18 @@ private:
     }
   }
 
+  // The shaft's count in the trace, from whichever turns it (a plant or the motion).
+  void trace_shaft() {
+    const double per_turn = s_.encoder.counts_per_turn();
+    if (plant_) {
+      shaft_ = std::make_unique<ShaftTrace>(*trace_, per_turn, plant_->count());
+      plant_->trace_shaft(shaft_.get());
+    } else {
+      shaft_ = std::make_unique<ShaftTrace>(*trace_, per_turn, drive_.count());
+      drive_.trace_shaft(shaft_.get());
+    }
+  }
+
   void drive_resolver() {
     const ResolverSpec& r = s_.resolver;
     if (r.sin_line.empty()) return;
@@ -158,12 +173,13 @@ private:
       const auto profile = std::make_shared<const signals::MotionProfile>(motion_.profile);
       shaft = [profile](Nanos t) { return profile->position(t); };
     }
-    bus_.analog(r.sin_line)
-        .set_waveform(
-            stator_waveform(shaft, per_turn, r, Stator::Sine, stator_fault_windows(s_, Stator::Sine)));
-    bus_.analog(r.cos_line)
-        .set_waveform(
-            stator_waveform(shaft, per_turn, r, Stator::Cosine, stator_fault_windows(s_, Stator::Cosine)));
+    const Waveform sin =
+        stator_waveform(shaft, per_turn, r, Stator::Sine, stator_fault_windows(s_, Stator::Sine));
+    const Waveform cos =
+        stator_waveform(shaft, per_turn, r, Stator::Cosine, stator_fault_windows(s_, Stator::Cosine));
+    bus_.analog(r.sin_line).set_waveform(sin);
+    bus_.analog(r.cos_line).set_waveform(cos);
+    trace_stators(sched_, *trace_, r, sin, cos, s_.end);
   }
 
   // [[device_fault]] of the board itself: the model raises it at `at`, its condition ends at
@@ -187,6 +203,8 @@ private:
   std::unique_ptr<duts::Dut> dut_;
   std::vector<LineOutput*> owned_; // the lines the rig drives
   std::unique_ptr<HostWords> words_;
+  std::unique_ptr<ShaftTrace> shaft_;
+  std::unique_ptr<TracedHostWords> traced_words_;
   std::unique_ptr<HostSequence> host_;
   VirtualRun out_;
 };

@@ -29,6 +29,7 @@
 #include "rig/cli/serve_devices.hpp"
 #include "rig/cli/stop_signals.hpp"
 #include "rig/cli/suite_files.hpp"
+#include "rig/cli/trace_files.hpp"
 #include "rig/cli/wall_clock.hpp"
 #include "rig/hardware/hardware_backend.hpp"
 #include "rig/results/append_file.hpp"
@@ -43,15 +44,6 @@ namespace hilrig::cli {
 namespace {
 
 constexpr std::size_t kMaxFailureTraces = 20;
-
-// Written to a temporary file and renamed, so a crash leaves a whole VCD or none (and a full
-// disk no *.tmp).
-void write_trace_files(const std::filesystem::path& dir, const std::string& stem,
-                       const TraceRecorder& trace) {
-  std::ostringstream vcd;
-  write_vcd(trace, vcd);
-  rig::write_file_atomically(dir / (stem + ".vcd"), vcd.str());
-}
 
 // Host words as Modbus RTU on a pty pair: the DUT adapter's words from where `hilrig serve`
 // puts the device's first command and status words (the whole served map for the ANS1, 4501,
@@ -217,7 +209,10 @@ struct Ran {
 Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, campaign::StopRequest* stop,
             RunProgress& progress, std::ostream& out, std::ostream& err) {
   Ran ran;
-  ran.clock.started_at = iso8601_utc(std::chrono::system_clock::now());
+  // The campaign's wall-clock start, to the second: junit.xml's timestamp, results.json's
+  // wall_clock.started_at, and can.log's epoch (so the log's times can be read back from it).
+  const auto wall_start = std::chrono::floor<std::chrono::seconds>(std::chrono::system_clock::now());
+  ran.clock.started_at = iso8601_utc(wall_start);
   ran.clock.hostname = host_name();
   std::optional<OutputDirectory> out_dir;
   try {
@@ -238,6 +233,11 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     if (stop != nullptr) exec.stop_on(stop);
     std::size_t failure_traces = 0;
     std::optional<rig::AppendFile> can_log; // one block per run: a failed write keeps the runs before
+    // can.log's clock: the campaign's wall-clock start plus virtual time, the runs laid end to end
+    // (each run's virtual time starts at 0), so the log's times only go forward and candump's
+    // readers (log2asc, canplayer) take it as one capture that began when the campaign did.
+    Nanos can_log_offset{
+        std::chrono::duration_cast<std::chrono::nanoseconds>(wall_start.time_since_epoch()).count()};
     std::chrono::steady_clock::time_point run_start;
     const auto started = [&](std::size_t, std::size_t, const campaign::RunSpec& run) {
       progress.started(p.c.name, run);
@@ -247,18 +247,17 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
       ran.clock.run_seconds[run.index] = wall;
       progress.finished(p.c.name, run, rig::run_outcome(output.result), wall);
+      const Nanos run_epoch = can_log_offset;
+      can_log_offset += p.c.scenario_of(run).end;
       if (!output.trace) return;
-      if (&run == &p.runs.front()) write_trace_files(dir, "trace", *output.trace);
+      if (&run == &p.runs.front()) write_trace_files(dir, "trace", *output.trace, output.result, false);
       if (rig::run_outcome(output.result) != rig::Outcome::Pass && failure_traces < kMaxFailureTraces) {
         ++failure_traces;
-        write_trace_files(dir, fmt::format("trace-run{}", run.index), *output.trace);
+        write_trace_files(dir, fmt::format("trace-run{}", run.index), *output.trace, output.result, true);
       }
       if (!output.trace->can_frames().empty()) {
-        // Virtual time starts at 0, and log2asc takes a frame at second 0 for the start of a new
-        // log: stamp frames as virtual time after a fixed epoch (2000-01-01T00:00:00Z), which
-        // keeps the log deterministic and readable by can-utils.
         CandumpOptions options;
-        options.epoch = seconds(946'684'800);
+        options.epoch = run_epoch;
         std::ostringstream frames;
         write_candump(*output.trace, frames, options);
         try {
@@ -279,6 +278,8 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
                                                   [&](const rig::RunResult& run) { log.append(run); });
     rig::CampaignResult result = rig::read_run_log(log.path());
     result.interrupted = done.interrupted;
+    result.started_at = ran.clock.started_at;
+    result.host = ran.clock.hostname;
     rig::finalize(result);
     rig::write_results_file(dir / "results.json", result);
     rig::write_file_atomically(dir / "junit.xml", rig::to_junit_xml(result, ran.clock));

@@ -5,6 +5,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 using namespace hilrig;
 using namespace hilrig::literals;
@@ -91,6 +92,23 @@ TEST(Vcd, SamplesOutOfOrderAreWrittenInTimeOrder) {
   EXPECT_LT(s.find("#200\n1!"), s.find("#300\n0!"));
 }
 
+TEST(Vcd, OverlayIsMergedInTimeOrderAfterTheTracesOwnSamplesOfTheSameTime) {
+  TraceRecorder t;
+  const std::uint32_t a = t.declare("a");
+  const std::uint32_t mark = t.declare("check.on");
+  t.edge(a, Edge{100_ns, Level::High});
+  t.edge(a, Edge{300_ns, Level::Low});
+  // Given out of order, and one at a time of the trace's own, one after its last sample.
+  const std::vector<TraceSample> overlay{{400_ns, mark, 0, 0.0}, {100_ns, mark, 1, 0.0}};
+  std::ostringstream out;
+  write_vcd(t, out, "", overlay);
+  const std::string s = out.str();
+  EXPECT_NE(s.find("#100\n1!\n1\"\n#300\n0!\n#400\n0\"\n"), std::string::npos) << s;
+  // Of a signal the trace does not declare: refused, not written under another's id.
+  const std::vector<TraceSample> stranger{{100_ns, 7, 1, 0.0}};
+  std::ostringstream none;
+  EXPECT_THROW(write_vcd(t, none, "", stranger), std::invalid_argument);
+}
 TEST(Vcd, NegativeTimeIsRejected) {
   TraceRecorder t;
   t.declare("a");
