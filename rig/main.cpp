@@ -16,6 +16,7 @@
 #include "rig/cli/run_command.hpp"
 #include "rig/cli/serve_command.hpp"
 #include "rig/cli/synth_command.hpp"
+#include "rig/cli/trend_command.hpp"
 #include "rig/cli/usage_hints.hpp"
 #include "rig/results/results_json.hpp"
 
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
   hilrig::cli::add_serve_command(app);
   hilrig::cli::add_latency_command(app);
   hilrig::cli::add_power_command(app);
+  hilrig::cli::add_trend_command(app);
   if (const auto problem = hilrig::cli::unknown_word(app, argc, argv)) {
     std::fprintf(stderr, "%s\n", problem->c_str());
     return 2; // bad input, as every usage error

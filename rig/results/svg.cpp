@@ -4,6 +4,8 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "rig/results/number_format.hpp"
 #include "rig/results/svg_plot.hpp"
@@ -275,6 +277,52 @@ std::string motion_svg(const MotionRecord& motion, std::span<const Marker> marke
   const double height = std::max(260.0, label_y + 4);
   const std::string head = svg::open(kWidth, 260, "speed and position against time");
   return svg::open(kWidth, height, "speed and position against time") + s.substr(head.size()) + svg::kClose;
+}
+
+std::string trend_svg(std::span<const TrendPoint> nights, const std::string& unit,
+                      std::optional<double> lower, std::optional<double> upper) {
+  std::vector<double> shown;
+  for (const TrendPoint& p : nights)
+    if (p.value) shown.push_back(*p.value);
+  if (shown.empty()) return {};
+  // The limits are always on the canvas, however far the values are from them.
+  if (lower) shown.push_back(*lower);
+  if (upper) shown.push_back(*upper);
+  const auto [lo, hi] = std::minmax_element(shown.begin(), shown.end());
+  const svg::Scale y = svg::padded(*lo, *hi, 0.1, 1e-3, 120.0, 14.0);
+  const double last = static_cast<double>(std::max<std::size_t>(nights.size(), 2) - 1);
+  const svg::Scale x(0.0, last, kLeft + 10, kRight - 10);
+  std::string s = svg::open(kWidth, 150, fmt::format("{} over {} night(s)", unit, nights.size()));
+  s += svg::y_axis(y, kLeft, number_label, unit);
+  for (const auto& [limit, word] : {std::pair{lower, "lower"}, std::pair{upper, "upper"}}) {
+    if (!limit) continue;
+    s += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" "
+                     "stroke-dasharray=\"4 3\"/>",
+                     kLeft, y(*limit), kRight, y(*limit), kLimit);
+    s += text(kRight, y(*limit) - 2, fmt::format("{} limit {}", word, format_value(*limit, unit)), "end",
+              kLimit);
+  }
+  std::string path;
+  for (std::size_t i = 0; i < nights.size(); ++i)
+    if (nights[i].value)
+      path += fmt::format("{}{:.1f},{:.1f}", path.empty() ? "M" : " L", x(static_cast<double>(i)),
+                          y(*nights[i].value));
+  s += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#0969da\"/>", path);
+  for (std::size_t i = 0; i < nights.size(); ++i) {
+    const TrendPoint& p = nights[i];
+    if (!p.value) continue;
+    const Judgement j = p.outcome == Outcome::Pass   ? Judgement::Pass
+                        : p.outcome == Outcome::Fail ? Judgement::Fail
+                                                     : Judgement::Error;
+    s += fmt::format(
+        "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.5\" fill=\"{}\"><title>{}: {} ({})</title></circle>",
+        x(static_cast<double>(i)), y(*p.value), outcome_colour(j), xml_escape(p.label),
+        xml_escape(format_value(*p.value, unit)), to_string(p.outcome));
+  }
+  s += text(x(0.0), 140, nights.front().label, "start");
+  if (nights.size() > 1) s += text(x(last), 140, nights.back().label, "end");
+  s += svg::kClose;
+  return s;
 }
 
 } // namespace hilrig::rig

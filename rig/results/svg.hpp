@@ -62,3 +62,21 @@ struct Marker {
                                      std::optional<Nanos> to = std::nullopt);
 
 } // namespace hilrig::rig
+
+namespace hilrig::rig {
+
+// One night of a measurement's trend: its value (none when that night did not measure it)
+// and outcome; label names the night (its start time or file).
+struct TrendPoint {
+  std::string label;
+  std::optional<double> value;
+  Outcome outcome = Outcome::Error;
+};
+
+// A measurement over the nights: each night's value as a point in its outcome's colour,
+// joined in order, with the limits as dashed lines always on the canvas. Empty when no
+// night has a value.
+[[nodiscard]] std::string trend_svg(std::span<const TrendPoint> nights, const std::string& unit,
+                                    std::optional<double> lower, std::optional<double> upper);
+
+} // namespace hilrig::rig

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# `hilrig trend` over three nights of one campaign (two clean, the third with the reference
+# PLS's late variant, whose latencies exceed their 300 us limit): one self-contained page with
+# a section per measurement (run and name) whose values, night by night, are the results.json
+# values, a point per night in its outcome's colour and the limit drawn; another campaign's
+# results and a missing file are bad input (exit 2).
+# Usage: trend_test.sh HILRIG SOURCE_DIR SCRATCH_DIR
+set -euo pipefail
+hilrig=$1 src=$2 scratch=$3
+rm -rf "$scratch"
+mkdir -p "$scratch"
+cd "$scratch"
+fail() { echo "FAIL: $*"; exit 1; }
+
+pass="$src/campaigns/reference/reference_pls_pass.toml"
+sed 's/^model = "reference_pls"$/model = "reference_pls"\nvariant = "late"/' "$pass" >late.toml
+"$hilrig" run "$pass" --out n1 >/dev/null
+"$hilrig" run "$pass" --out n2 --seed 2 >/dev/null
+status=0
+"$hilrig" run late.toml --out n3 >/dev/null || status=$?
+[ "$status" = 1 ] || fail "the late night exited $status, not 1"
+
+"$hilrig" trend n1/results.json n2/results.json n3/results.json --out trend.html >trend.log
+python3 - trend.html n1/results.json n2/results.json n3/results.json <<'PY' || fail "the trend page does not show the nights"
+import html, json, re, sys
+page = open(sys.argv[1]).read()
+nights = [json.load(open(p)) for p in sys.argv[2:]]
+# Self-contained: nothing fetched.
+assert not re.search(r'(src|href)="', page), "the page links out"
+expected = {}  # (run, measurement) -> [(value, outcome) or None per night]
+for i, n in enumerate(nights):
+    for run in n["runs"]:
+        for check in run["checks"]:
+            for m in check["measurements"]:
+                expected.setdefault((run["name"], m["name"]), [None] * len(nights))[i] = (m["value"], m["outcome"], m["upper"])
+sections = page.split("<section>")[1:]
+assert len(sections) == len(expected), f"{len(sections)} sections for {len(expected)} measurements"
+colour = {"pass": "#1a7f37", "fail": "#cf222e", "error": "#9a6700"}
+late_failures = 0
+for s in sections:
+    name, run = re.search(r"<h3>(.*?) <small>\((.*?)\)</small>", s).groups()
+    want = expected[(html.unescape(run), html.unescape(name))]
+    values = re.findall(r" (-|[-0-9.e+]+(?: \((?:pass|fail|error)\))?)", re.search(r"values:(.*?)</p>", s).group(1))
+    assert len(values) == len(want), (name, values)
+    for v, w in zip(values, want):
+        if w is None:
+            assert v == "-", (name, v)
+            continue
+        number, outcome = re.match(r"([-0-9.e+]+) \((\w+)\)", v).groups()
+        assert abs(float(number) - w[0]) <= 1e-9 * max(1.0, abs(w[0])) and outcome == w[1], (name, v, w)
+    fills = re.findall(r'<circle [^>]*fill="(#[0-9a-f]{6})"', s)
+    assert fills == [colour[w[1]] for w in want if w is not None], (name, fills)
+    upper = want[-1][2]
+    if upper is not None:
+        assert f"upper limit {upper:g}" in s or f"upper limit {upper}" in s, (name, upper)
+    if want[-1][1] == "fail":
+        late_failures += 1
+assert late_failures > 0, "the late night shows no failure"
+print(f"ok: {len(sections)} measurements over {len(nights)} nights, {late_failures} failing on the last")
+PY
+
+# Another campaign's results, and a file that is not there: bad input.
+"$hilrig" run "$src/campaigns/reference/reference_pls_faults.toml" --out other >/dev/null
+status=0
+"$hilrig" trend n1/results.json other/results.json --out stranger.html 2>stranger.log || status=$?
+[ "$status" = 2 ] || fail "a stranger's results exited $status, not 2"
+grep -q "a trend is one campaign on one device" stranger.log || fail "no reason given: $(cat stranger.log)"
+[ ! -e stranger.html ] || fail "a page was written for a stranger"
+status=0
+"$hilrig" trend n1/results.json missing.json --out missing.html 2>/dev/null || status=$?
+[ "$status" = 2 ] || fail "a missing file exited $status, not 2"
+echo "hilrig trend: as expected"
