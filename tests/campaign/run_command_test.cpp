@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -235,7 +237,16 @@ TEST(RunCommand, ResultsJsonIsTheFoldedRunLog) {
   std::ifstream in(out / "results.json", std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
-  EXPECT_EQ(text.str(), rig::to_json_text(campaign::Executive(c).run_all(c.runs, c.seed, rig::Shard{0, 1})));
+  // The fold of the run log, plus the wall-clock facts of this run (which can.log's epoch is).
+  nlohmann::json written = nlohmann::json::parse(text.str());
+  ASSERT_TRUE(written.contains("wall_clock"));
+  EXPECT_TRUE(std::regex_match(written["wall_clock"]["started_at"].get<std::string>(),
+                               std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
+  EXPECT_FALSE(written["wall_clock"]["host"].get<std::string>().empty());
+  written.erase("wall_clock");
+  EXPECT_EQ(written.dump(), nlohmann::json::parse(rig::to_json_text(campaign::Executive(c).run_all(
+                                                      c.runs, c.seed, rig::Shard{0, 1})))
+                                .dump());
 }
 
 // --out: an earlier campaign's evidence is removed before the run, so none of it is mistaken
