@@ -1,6 +1,7 @@
 #include "rig/campaign/scenario_reader.hpp"
 
 #include "rig/campaign/plant_reader.hpp"
+#include "rig/campaign/program_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -482,9 +483,13 @@ private:
       TableReader r(file_, *t, fmt::format("host[{}]", i++));
       HostAction h;
       h.where = r.where();
-      const bool write = r.has("write");
+      const bool program = r.has("program");
+      const bool write = r.has("write") || program;
       const bool read = r.has("read");
-      if (write == read) r.fail(write ? "read" : "write", "exactly one of write = [words] or read = word");
+      const std::string one_of =
+          "exactly one of write = [words], program = \"<block>\" (the board's words) or read = word";
+      if (program && r.has("write")) r.fail("program", one_of);
+      if (write == read) r.fail(write ? "read" : "write", one_of);
       h.while_acknowledged = read && r.opt_boolean("while_acknowledged").value_or(false);
       if (h.while_acknowledged) {
         read_while_acknowledged(s, r, host);
@@ -498,7 +503,7 @@ private:
       }
       if (write) {
         h.kind = HostAction::Kind::Write;
-        h.words = read_words(r, "write");
+        h.words = program ? read_program(r, info_) : read_words(r, "write");
         if (host != nullptr && h.words.size() > host->output_words)
           r.fail("write", fmt::format("at most {} output words for {}", host->output_words, info_->name));
         if (host != nullptr && host->block_length_max != 0 && h.words[0] > host->block_length_max)

@@ -10,11 +10,40 @@
 
 #include "rig/campaign/stimulus_kinds.hpp"
 #include "rig/checks/registry.hpp"
+#include "rig/duts/device_programs.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::cli {
 
 namespace {
+
+// A block field's kind, range and what its absence means, e.g. "integer 1 .. 16, required".
+std::string program_field_text(const duts::ProgramFieldInfo& f) {
+  std::string kind;
+  switch (f.kind) {
+  case duts::ProgramFieldKind::Integer:
+    kind = fmt::format("integer {} .. {}", f.min, f.max);
+    break;
+  case duts::ProgramFieldKind::Boolean:
+    kind = "boolean";
+    break;
+  case duts::ProgramFieldKind::Choice:
+    for (const auto& c : f.choices) kind += (kind.empty() ? "one of " : ", ") + c;
+    break;
+  }
+  switch (f.absent) {
+  case duts::ProgramFieldInfo::Absent::Required:
+    return kind + ", required";
+  case duts::ProgramFieldInfo::Absent::Default:
+    return kind + ", default " +
+           (f.kind == duts::ProgramFieldKind::Choice    ? f.choices[static_cast<std::size_t>(f.default_value)]
+            : f.kind == duts::ProgramFieldKind::Boolean ? std::string(f.default_value != 0 ? "true" : "false")
+                                                        : std::to_string(f.default_value));
+  case duts::ProgramFieldInfo::Absent::Optional:
+    break;
+  }
+  return kind + ", optional: left as it is when absent";
+}
 
 std::string value_text(const duts::ParamValue& v) {
   struct Text {
@@ -58,6 +87,15 @@ void write_listing(std::ostream& out) {
   out << "device faults ([[device_fault]] fault = ..., at, until):\n";
   for (const duts::DutInfo& d : duts::dut_registry())
     for (const auto& f : d.faults) out << fmt::format("  {}/{}: {}\n", d.name, f.name, f.description);
+
+  out << "programming blocks ([[host]] program = ... with its fields, written as the words its manual "
+         "gives):\n";
+  for (const duts::DutInfo& d : duts::dut_registry())
+    for (const auto& b : duts::device_programs(d.name)) {
+      out << fmt::format("  {}/{}: {}\n", d.name, b.name, b.description);
+      for (const auto& f : b.fields)
+        out << fmt::format("    {} ({}): {}\n", f.name, program_field_text(f), f.description);
+    }
 
   out << "checks ([[check]] kind = ...):\n";
   for (const checks::CheckKind& k : checks::check_kinds()) {

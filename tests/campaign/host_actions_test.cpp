@@ -153,7 +153,9 @@ TEST(HostActions, RawWriteTakesNoTimeoutButMaySetTransmit) {
 // here the host acknowledges at 50 ms with a raw write of control word 0x0001 alone.
 TEST(HostActions, Amci4501RawControlBit0ActsWithoutAProgrammingCycle) {
   std::string text = test::read_text(test::campaign_dir("amci4501") + "/amci4501_acknowledge.toml");
-  text = replaced(text, "at = \"50ms\"\nwrite = [0x0001, 1000]\nname = \"acknowledge_with_transmit\"",
+  text = replaced(text,
+                  "at = \"50ms\"\nprogram = \"mode\"\nmode = 1\ntimeout_ms = 1000\nacknowledge = true\n"
+                  "name = \"acknowledge_with_transmit\"",
                   "at = \"50ms\"\nwrite = [0x0001]\nraw = true\nname = \"acknowledge_raw\"");
   text = replaced(text, "at = \"52ms\"\nread = 0", "at = \"50ms\"\nread = 0");
   text = replaced(text, "at = \"52ms\"\nread = 1", "at = \"50ms\"\nread = 1");

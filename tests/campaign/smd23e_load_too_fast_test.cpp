@@ -73,10 +73,10 @@ double f_safe() {
 
 std::string with_acceleration(int a) {
   std::string t = test::read_text(kFile);
-  const std::string nominal = "write = [2, 32768, 25, 600, 25, 600, 50, 50, 0, 0]";
+  const std::string nominal = "accel = 50\ndecel = 50"; // the move's A and D, steps/ms/s
   const std::size_t at = t.find(nominal);
   EXPECT_NE(at, std::string::npos);
-  t.replace(at, nominal.size(), fmt::format("write = [2, 32768, 25, 600, 25, 600, {}, {}, 0, 0]", a, a));
+  t.replace(at, nominal.size(), fmt::format("accel = {}\ndecel = {}", a, a));
   return t;
 }
 
