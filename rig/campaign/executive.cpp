@@ -169,7 +169,7 @@ rig::CampaignResult Executive::run_all(const std::vector<RunSpec>& runs, std::ui
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (progress) progress(i, runs.size(), runs[i]);
     RunOutput out = run(runs[i]);
-    if (sink) sink(runs[i], out);
+    if (sink) out.result.trace = sink(runs[i], out);
     if (record)
       record(out.result);
     else

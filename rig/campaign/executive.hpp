@@ -54,7 +54,9 @@ public:
   // Runs the given runs (e.g. one shard) in order into a finalized CampaignResult.
   // progress(i, n, run) is called before each run.
   using Progress = std::function<void(std::size_t done, std::size_t total, const RunSpec& run)>;
-  using TraceSink = std::function<void(const RunSpec& run, const RunOutput& out)>;
+  // sink(run, out) after each run: returns the trace file it wrote for the run (relative to
+  // the results), "" when it kept none; the run's result records it.
+  using TraceSink = std::function<std::string(const RunSpec& run, const RunOutput& out)>;
   // record(run) after each run: when given, each finished run is handed to it and not kept,
   // so the returned result holds no runs (the caller folds them, e.g. from a rig::RunLog) and
   // memory does not grow with the run count. Without it, the runs are in the returned result.

@@ -249,11 +249,17 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
       progress.finished(p.c.name, run, rig::run_outcome(output.result), wall);
       const Nanos run_epoch = can_log_offset;
       can_log_offset += p.c.scenario_of(run).end;
-      if (!output.trace) return;
-      if (&run == &p.runs.front()) write_trace_files(dir, "trace", *output.trace, output.result, false);
+      if (!output.trace) return std::string();
+      std::string kept; // the trace file the run's result links (its failure trace when it has one)
+      if (&run == &p.runs.front()) {
+        write_trace_files(dir, "trace", *output.trace, output.result, false);
+        kept = "trace.vcd";
+      }
       if (rig::run_outcome(output.result) != rig::Outcome::Pass && failure_traces < kMaxFailureTraces) {
         ++failure_traces;
-        write_trace_files(dir, fmt::format("trace-run{}", run.index), *output.trace, output.result, true);
+        const std::string stem = fmt::format("trace-run{}", run.index);
+        write_trace_files(dir, stem, *output.trace, output.result, true);
+        kept = stem + ".vcd";
       }
       if (!output.trace->can_frames().empty()) {
         CandumpOptions options;
@@ -267,6 +273,7 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
           throw campaign::RigFault(e.what()); // "cannot write OUT/can.log: No space left on device"
         }
       }
+      return kept;
     };
     const rig::Shard part{static_cast<std::uint32_t>(p.shard.first),
                           static_cast<std::uint32_t>(p.shard.second)};

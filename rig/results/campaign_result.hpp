@@ -24,7 +24,8 @@ struct RunResult {
   bool interrupted = false;            // stopped by a stop request (SIGINT/SIGTERM); error says when
   std::vector<CheckResult> checks;
   std::vector<Observation> observations;
-  MotionRecord motion;              // the shaft's speed and position with its events (plant and brake runs)
+  MotionRecord motion; // the shaft's speed and position with its events (plant and brake runs)
+  std::string trace;   // the run's trace file beside the results (e.g. "trace-run3.vcd"); "" when none kept
   Outcome outcome = Outcome::Error; // derived by finalize(): run_outcome()
 };
 

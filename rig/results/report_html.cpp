@@ -188,8 +188,8 @@ std::string traceability(const CampaignResult& r) {
     return fmt::format("<tr><th>{}</th><td>{}</td></tr>", name, xml_escape(value));
   };
   std::string s = "<table class=\"trace\">";
-  s += row("started", r.started_at.value_or("(not recorded)"));
-  s += row("host", r.host.value_or("(not recorded)"));
+  // No wall-clock facts (start time, host): the report is the same bytes for the same campaign,
+  // seed and shard; they are in results.json's wall_clock and junit.xml.
   s += row("tool version", "hilrig " + r.tool_version);
   s += row("campaign SHA-256", r.campaign_sha256);
   s += row("device", r.device);
@@ -237,6 +237,11 @@ std::string run_section(const RunResult& run) {
                         : fmt::format("; fault <b>{}</b> ({})", xml_escape(run.fault),
                                       caught(run) ? "caught" : "not caught"),
       run.error.empty() ? std::string() : fmt::format("; rig error: {}", xml_escape(run.error)));
+  s += run.trace.empty()
+           ? std::string("<p>trace: none kept for this run (the first run's and those that did not "
+                         "pass are)</p>\n")
+           : fmt::format("<p>trace: <a href=\"{0}\">{0}</a> (GTKWave, PulseView)</p>\n",
+                         xml_escape(run.trace));
   if (!run.motion.empty()) {
     s += figure(motion_svg(run.motion, {}),
                 "the shaft's speed and position over the run, with the events that acted on it (grey)");

@@ -169,6 +169,7 @@ json run_to_json(const RunResult& r) {
          {"observations", obs}};
   if (r.interrupted) j["interrupted"] = true; // only when set: uninterrupted results keep their bytes
   if (!r.motion.empty()) j["motion"] = motion_json(r.motion);
+  if (!r.trace.empty()) j["trace"] = r.trace;
   return j;
 }
 
@@ -198,6 +199,7 @@ RunResult run_from_json(const json& j) {
         get<std::string>(o, "unit", "observation"), Nanos{get<std::int64_t>(o, "time_ns", "observation")}});
   }
   if (j.contains("motion")) r.motion = motion_from(j.at("motion"));
+  if (j.contains("trace")) r.trace = get<std::string>(j, "trace", w);
   return r;
 }
 

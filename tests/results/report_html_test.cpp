@@ -2,10 +2,12 @@
 // in their unit and no float noise, figures drawn from what the results recorded.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <regex>
 
 #include "rig/results/number_format.hpp"
 #include "rig/results/report_html.hpp"
+#include "rig/results/results_json.hpp"
 #include "rig/results/svg.hpp"
 #include "sample_campaign.hpp"
 
@@ -82,6 +84,17 @@ TEST(Report, FailuresFirstWithLinksAndPassingRunsCollapsed) {
   EXPECT_NE(html.find("<section class=\"check\" id=\"r1-c0\" data-judgement=\"fail\">"), std::string::npos);
   EXPECT_NE(html.find("<details class=\"run\" id=\"r0\">"), std::string::npos);      // passed: collapsed
   EXPECT_NE(html.find("<details class=\"run\" id=\"r1\" open>"), std::string::npos); // failed: open
+}
+
+TEST(Report, EachRunLinksItsTraceFile) {
+  CampaignResult c = test::sample_campaign(2);
+  c.runs[0].trace = "trace.vcd";
+  finalize(c);
+  const std::string html = to_report_html(c);
+  EXPECT_NE(html.find("trace: <a href=\"trace.vcd\">trace.vcd</a>"), std::string::npos);
+  EXPECT_NE(html.find("trace: none kept for this run"), std::string::npos); // run 1 kept none
+  // results.json keeps the name, so a merged or re-rendered report links it too.
+  EXPECT_EQ(campaign_from_json(to_json(c)).runs[0].trace, "trace.vcd");
 }
 
 TEST(Report, CheckThatMeasuredNothingStillHasAFigureSayingSo) {
