@@ -32,6 +32,28 @@ Amci4501::Amci4501(Scheduler& scheduler, const Pins& pins, Params params)
   scheduler_.after(params_.velocity_window - params_.velocity_phase, [this] { on_velocity_window(); });
 }
 
+// ---------------------------------------------------------------- supply
+
+void Amci4501::power_off() {
+  if (!powered_) return;
+  reset_measurement(); // drops pending responses (their generation) and the timeout
+  deferred_.clear();
+  powered_ = false;
+}
+
+void Amci4501::power_on() {
+  if (powered_) return;
+  powered_ = true;
+  reset_measurement();
+  config_ = Config{};
+  decoder_ =
+      signals::QuadratureDecoder(count_mode(params_), is_high(pins_.a.level()), is_high(pins_.b.level()));
+  velocity_ref_ = 0;
+  no_response_ = timeout_error_ = command_error_ = parameter_error_ = acknowledge_ = false;
+  start_active_ = start_mark_ = active(pins_.start.level(), params_.start_jumper);
+  latch_active_ = latch_mark_ = active(pins_.latch.level(), params_.latch_jumper);
+}
+
 // ---------------------------------------------------------------- host words
 
 void Amci4501::write_output_words(std::size_t first, std::span<const std::uint16_t> words) {
@@ -39,6 +61,7 @@ void Amci4501::write_output_words(std::size_t first, std::span<const std::uint16
     throw std::out_of_range("amci4501: output word past 7");
   const std::uint16_t old_control = outputs_[0];
   std::copy(words.begin(), words.end(), outputs_.begin() + static_cast<std::ptrdiff_t>(first));
+  if (!powered_) return; // the SLC's words wait; an unpowered module sees no edge
   const std::uint16_t control_word = outputs_[0];
   const auto rose = [&](std::uint16_t bit) { return (control_word & bit) != 0 && (old_control & bit) == 0; };
   const auto fell = [&](std::uint16_t bit) { return (control_word & bit) == 0 && (old_control & bit) != 0; };
@@ -64,6 +87,7 @@ void Amci4501::read_input_words(std::size_t first, std::span<std::uint16_t> out)
 }
 
 InputWords Amci4501::input_words() const {
+  if (!powered_) return InputWords{};
   InputWords w = inputs_;
   w[0] = status();
   return w;
@@ -124,16 +148,19 @@ bool Amci4501::active(Level level, Jumper jumper) const {
 }
 
 void Amci4501::on_encoder(const Edge& e) {
+  if (!powered_) return;
   const int delta = decoder_.update(is_high(pins_.a.level()), is_high(pins_.b.level()));
   if (delta != 0 && config_.mode == 2) mode2_position(delta, e.time);
 }
 
 void Amci4501::on_index(const Edge& e) {
+  if (!powered_) return;
   decoder_.index(is_high(e.level));
   if (is_high(e.level) && (config_.mode == 2 || params_.z_resets_in_all_modes)) decoder_.set_count(0);
 }
 
 void Amci4501::on_start(const Edge& e) {
+  if (!powered_) return;
   const bool now_active = active(e.level, params_.start_jumper);
   if (now_active == start_active_) return;
   start_active_ = now_active;
@@ -142,6 +169,7 @@ void Amci4501::on_start(const Edge& e) {
 }
 
 void Amci4501::on_latch(const Edge& e) {
+  if (!powered_) return;
   const bool now_active = active(e.level, params_.latch_jumper);
   if (now_active == latch_active_) return;
   latch_active_ = now_active;
@@ -253,6 +281,10 @@ void Amci4501::cancel_timeout() {
 // 2 (word 5, 0 when B leads A). Not frozen by the handshake (A37). [MODEL] saturates at
 // the int16 limits (L114 gives no range).
 void Amci4501::on_velocity_window() {
+  if (!powered_) {
+    scheduler_.after(params_.velocity_window, [this] { on_velocity_window(); });
+    return;
+  }
   const std::int64_t p = decoder_.count();
   std::int64_t v = std::clamp<std::int64_t>(p - velocity_ref_, -32768, 32767);
   velocity_ref_ = p;

@@ -62,6 +62,16 @@ public:
   [[nodiscard]] std::uint16_t status() const;
   [[nodiscard]] const OutputWords& output_words() const { return outputs_; }
 
+  // ---- the supply (a power cycle of the chassis) ----
+  // The module has no non-volatile memory and always powers up in mode 1 (L176, L255): off
+  // forgets the configuration, the count, the results and every flag. While off [MODEL]: the
+  // Cycle Output does not conduct (off), inputs are not seen, input words read 0, output words
+  // the host writes are kept but act only from the next edge after power-up. On: as at
+  // power-up (the constructor), the Start and Latch Marks from the inputs' levels then.
+  void power_off();
+  void power_on();
+  [[nodiscard]] bool powered() const { return powered_; }
+
   // ---- state, for reports and tests ----
   [[nodiscard]] int mode() const { return config_.mode; }
   [[nodiscard]] const Config& config() const { return config_; }
@@ -126,6 +136,7 @@ private:
   Scheduler& scheduler_;
   Pins pins_;
   Params params_;
+  bool powered_ = true;
   signals::QuadratureDecoder decoder_;
   Config config_{};
   std::uint32_t generation_ = 0; // bumped by each valid programming cycle

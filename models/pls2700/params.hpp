@@ -33,6 +33,11 @@ struct Params {
   // §4.9 / §7.20: a transducer fault switches off all eight outputs (true) or only the outputs
   // allocated to the faulted channel (false).
   bool fault_turns_off_all_outputs = true;
+  // §4.10 front panel: the Program switch toward the back = Program Mode (L543) [the manual
+  // gives no factory position; the model's keyboard acts, as it always did]; without the jumper
+  // next to it the module is locked in Display Mode (L545).
+  bool program_switch_at_program = true;
+  bool program_jumper_fitted = true;
   // R-M-2: output mask at power-up.
   std::uint8_t power_up_mask = 0xFF;
   // Output driver delay d_drv and 2742-18 input delay (T_ON/T_OFF, max 3 ms, L1724) [X].

@@ -15,6 +15,7 @@ Pls2700::Pls2700(Scheduler& scheduler, ModelVariant model, const Params& params,
                      AdvanceSpeed(advance_window_updates(params.advance_speed_window, period_), period_)},
       inputs_(std::make_shared<InputState>()), outputs_(std::make_shared<OutputPins>()) {
   setup_.mask = params_.power_up_mask;
+  switch_program_ = params_.program_switch_at_program;
   for (std::size_t ch = 0; ch < 2; ++ch) {
     restart_tach(ch);
   }
@@ -349,7 +350,7 @@ std::size_t Pls2700::read_btr(std::span<std::uint16_t> out) const {
 int Pls2700::owner(int output) const { return owner_channel(model_, setup_, output) + 1; }
 
 bool Pls2700::autozero(int channel) {
-  if (setup_.keyboard_disabled || channel < 1 || channel > channels() || fault_latched_[index(channel)]) {
+  if (!program_mode() || channel < 1 || channel > channels() || fault_latched_[index(channel)]) {
     return false;
   }
   ChannelSetup& c = setup_.channels[index(channel)];
@@ -359,7 +360,7 @@ bool Pls2700::autozero(int channel) {
 }
 
 bool Pls2700::keyboard_delete_pair(int output, int pair) {
-  if (setup_.keyboard_disabled || output < 1 || output > kOutputCount) {
+  if (!program_mode() || output < 1 || output > kOutputCount) {
     return false;
   }
   OutputSetup& o = setup_.outputs[static_cast<std::size_t>(output - 1)];

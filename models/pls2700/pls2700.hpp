@@ -66,8 +66,16 @@ public:
   }
   [[nodiscard]] std::uint8_t error_byte() const { return error_byte_; }
 
-  // ---- Front panel (keyboard in Program Mode); false when the keyboard is disabled ----
-  bool autozero(int channel); // R-CO-3
+  // ---- Front panel (keyboard in Program Mode); false outside Program Mode ----
+  // The Program switch (L543): toward the back (true) = Program Mode, front = Display Mode.
+  void set_program_switch(bool program) { switch_program_ = program; }
+  // Program Mode, PRG LED on (L534): the switch at program, its jumper fitted (L545) and the
+  // keyboard not disabled by the host's 8100h ("locked into display mode from the processor",
+  // L543, L1356). The modes are the front panel's only (L537): the host's words act in either.
+  [[nodiscard]] bool program_mode() const {
+    return switch_program_ && params_.program_jumper_fitted && !setup_.keyboard_disabled;
+  }
+  bool autozero(int channel); // R-CO-3: CLEAR while the position is displayed (L368, L534-535)
   // R-LS-7/R-LS-5: CLEAR on pair `pair` (1-based) of `output` deletes it; where another
   // pair overlapped it the output stays off (W8) until that pair is re-entered or power cycles.
   bool keyboard_delete_pair(int output, int pair);
@@ -124,6 +132,7 @@ private:
   Scheduler& scheduler_;
   const ModelTraits& model_;
   Params params_;
+  bool switch_program_ = true; // the Program switch (from Params at construction)
   Fault fault_;
   Nanos period_;
   Excitation excitation_;

@@ -30,10 +30,39 @@ Ssi7361::Ssi7361(Scheduler& scheduler, LineOutput& clock, LineInput& data, Param
   start_frame(std::max(params_.first_frame + params_.frame_phase, scheduler_.now()));
 }
 
-Ssi7361::~Ssi7361() {
-  for (EventId id : {frame_event_, rate_event_, cycle_event_, release_event_}) {
-    if (id.valid()) scheduler_.cancel(id);
+Ssi7361::~Ssi7361() { cancel_events(); }
+
+void Ssi7361::cancel_events() {
+  for (EventId* id : {&frame_event_, &rate_event_, &cycle_event_, &release_event_}) {
+    if (id->valid()) scheduler_.cancel(*id);
+    *id = EventId{};
   }
+}
+
+// ---------------------------------------------------------------- supply
+
+void Ssi7361::power_off() {
+  if (!powered_) return;
+  powered_ = false;
+  cancel_events();
+  clock_.set(Level::High);
+  ack_ = false;
+}
+
+void Ssi7361::power_on() {
+  if (powered_) return;
+  powered_ = true;
+  state_.errors &= ibit::kEepromError;
+  raw_ = 0;
+  frames_ = 0;
+  rate_ = 0;
+  rate_overflow_ = false;
+  ack_ = false;
+  // A Transmit the PLC already holds is no 0->1 edge the module saw [MODEL].
+  transmit_ = (commands_[cmd::kQ] & qbit::kTransmit) != 0;
+  recompute();
+  restart_rate_window();
+  start_frame(scheduler_.now() + params_.first_frame + params_.frame_phase);
 }
 
 // ---------------------------------------------------------------- SSI master
@@ -137,6 +166,7 @@ void Ssi7361::write_command_words(std::size_t first, std::span<const std::uint16
   if (first > kCommandWords || words.size() > kCommandWords - first)
     throw std::out_of_range("7361: command word index past %AQ6");
   std::copy(words.begin(), words.end(), commands_.begin() + static_cast<std::ptrdiff_t>(first));
+  if (!powered_) return; // the PLC's words wait; an unpowered module sees no edge
   const bool transmit = (commands_[cmd::kQ] & qbit::kTransmit) != 0;
   if (transmit && !transmit_) on_transmit_rise();
   if (!transmit && transmit_) on_transmit_fall();
@@ -187,6 +217,7 @@ void Ssi7361::read_status_words(std::size_t first, std::span<std::uint16_t> out)
 
 StatusWords Ssi7361::status_words() const {
   StatusWords w{};
+  if (!powered_) return w;
   w[status::kI] = static_cast<std::uint16_t>(state_.errors | (rate_overflow_ ? ibit::kRateOverflow : 0u) |
                                              (ack_ ? ibit::kAcknowledge : 0u));
   const auto dv = split_words(data_value());

@@ -59,6 +59,16 @@ public:
   // Fault injection: an EEPROM parameter checksum fails (E2Err, %I bit 13).
   void corrupt_eeprom() { state_.errors |= ibit::kEepromError; }
 
+  // ---- the supply (a power cycle of the rack) ----
+  // Off: no frames, no programming cycles, every status word 0 [MODEL]; the clock stops at
+  // its idle level, high [MODEL: an unpowered line driver leaves the receiver's fail-safe
+  // idle]. What is in EEPROM survives: the setup and LO (L1304-1306). On: as at power-up —
+  // every error cleared (L254-256, L921-923) except E2Err, whose corrupted parameter is still
+  // in EEPROM [MODEL]; no frame, no rate yet; the first frame after first_frame (+ phase).
+  void power_off();
+  void power_on();
+  [[nodiscard]] bool powered() const { return powered_; }
+
   // ---- state, for reports and tests ----
   [[nodiscard]] std::uint32_t raw() const { return raw_; }
   [[nodiscard]] std::int32_t data_value() const;
@@ -92,6 +102,7 @@ private:
   void on_transmit_fall();
   void run_programming_cycle();
   void recompute();
+  void cancel_events();
 
   Scheduler& scheduler_;
   LineOutput& clock_;
@@ -107,6 +118,7 @@ private:
   std::uint32_t shift_ = 0;
   EventId frame_event_{};
   bool supply_ = true;
+  bool powered_ = true;
 
   // data and rate
   std::uint32_t raw_ = 0; // until the first frame completes

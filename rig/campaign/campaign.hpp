@@ -147,6 +147,23 @@ struct DeviceFaultEvent {
   SourcePos where;
 };
 
+// The board's supply off at `at` and back on `off` later ([[power_cycle]]): the model keeps
+// what its manual says survives power loss (DutInfo::power_cycle) and powers up again.
+struct PowerCycleEvent {
+  Nanos at{0};
+  Nanos off{0};
+  SourcePos where;
+  [[nodiscard]] Nanos on_at() const { return at + off; }
+};
+
+// A front-panel action at `at` ([[panel]]): a switch or key of the board (DutInfo::panel).
+struct PanelEvent {
+  std::size_t action = 0; // index into the DUT's DutInfo::panel
+  std::string name;
+  Nanos at{0};
+  SourcePos where;
+};
+
 // A check: its kind and name, and its typed parameters, built and range-checked once by the
 // parser (rig/checks/registry.hpp: build_check_params).
 struct CheckSpec {
@@ -182,6 +199,8 @@ struct Scenario {
   std::vector<Stimulus> stimuli;
   std::vector<HostAction> host;
   std::vector<DeviceFaultEvent> device_faults;
+  std::vector<PowerCycleEvent> power_cycles;
+  std::vector<PanelEvent> panel;
   std::vector<CheckSpec> checks;
   Nanos end{0};
   Nanos host_poll{1'000'000}; // how often the host polls Acknowledge

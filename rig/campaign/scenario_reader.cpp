@@ -48,6 +48,8 @@ public:
     read_stimuli(out.scenario);
     read_host(out.scenario);
     read_device_faults(out.scenario);
+    read_power_cycles(out.scenario);
+    read_panel(out.scenario);
     read_checks(out.scenario);
     read_faults(out);
     (void)root_.node("sweep"); // read by the campaign parser
@@ -611,6 +613,59 @@ private:
     }
   }
 
+  // [[power_cycle]]: the board's supply off at `at` for `off`, on a virtual board whose model
+  // knows what survives (DutInfo::power_cycle); in time order, one back on before the next.
+  void read_power_cycles(Scenario& s) {
+    std::size_t i = 0;
+    for (const toml::table* t : root_.tables("power_cycle")) {
+      TableReader r(file_, *t, fmt::format("power_cycle[{}]", i++));
+      PowerCycleEvent p;
+      p.where = r.where();
+      if (info_ == nullptr || s.dut.backend != "virtual")
+        r.fail("at", "a virtual board (backend \"virtual\"): the rig switches no supply of a real board");
+      if (info_->power_cycle.empty())
+        r.fail("at", fmt::format("none: the {} model has no power cycle", info_->name));
+      p.at = r.duration("at");
+      if (p.at < Nanos{0} || p.at > s.end) r.fail("at", "a time within the run (0 .. campaign.end)");
+      p.off = duration_in(r, "off", Nanos{1}, limits::kMaxEnd);
+      if (!s.power_cycles.empty() && p.at < s.power_cycles.back().on_at())
+        r.fail("at", fmt::format("a time after the power cycle above is back on ({} ns)",
+                                 s.power_cycles.back().on_at().count()));
+      r.finish();
+      s.power_cycles.push_back(p);
+    }
+  }
+
+  // [[panel]]: a front-panel action of a virtual board, by the names the DUT declares, in time order.
+  void read_panel(Scenario& s) {
+    std::size_t i = 0;
+    for (const toml::table* t : root_.tables("panel")) {
+      TableReader r(file_, *t, fmt::format("panel[{}]", i++));
+      PanelEvent p;
+      p.where = r.where();
+      p.name = r.string("action");
+      if (info_ == nullptr || s.dut.backend != "virtual")
+        r.fail("action", "a virtual board (backend \"virtual\"): the rig presses no key of a real board");
+      const auto index = info_->panel_index(p.name);
+      if (!index) {
+        std::vector<std::string> names;
+        for (const auto& a : info_->panel) names.push_back(a.name);
+        r.fail("action",
+               names.empty()
+                   ? fmt::format("none: {} has no front panel the rig operates", info_->name)
+                   : fmt::format("a front-panel action of {}: one of {}", info_->name, join(names)));
+      }
+      p.action = *index;
+      p.at = r.duration("at");
+      if (p.at < Nanos{0} || p.at > s.end) r.fail("at", "a time within the run (0 .. campaign.end)");
+      if (!s.panel.empty() && p.at < s.panel.back().at)
+        r.fail("at", fmt::format("times in order: this action ({} ns) is before the one above ({} ns)",
+                                 p.at.count(), s.panel.back().at.count()));
+      r.finish();
+      s.panel.push_back(std::move(p));
+    }
+  }
+
   static nlohmann::json to_json(const toml::node& n) {
     if (const auto* i = n.as_integer()) return i->get();
     if (const auto* f = n.as_floating_point()) return f->get();
@@ -705,6 +760,12 @@ private:
           r.fail("name", fmt::format("a new fault name (\"{}\" is used above)", f.name));
       if (auto v = r.opt_string("variant")) {
         if (info_ == nullptr) r.fail("variant", "device variants exist only for virtual models");
+        // A device fault is a condition in time, not a model: its fault run puts it in with `set`.
+        if (!info_->has_variant(*v) && info_->fault_index(*v))
+          r.fail("variant",
+                 fmt::format("a device variant: {} is a device fault of {}; a fault run puts it in "
+                             "with set = {{ device_fault = [{{ fault = \"{}\", at = \"...\" }}] }}",
+                             *v, info_->name, *v));
         if (!info_->has_variant(*v)) r.fail("variant", variant_expected());
         f.variant = *v;
       }
@@ -721,7 +782,8 @@ private:
           if (key.starts_with("sweep") || key.starts_with("fault") ||
               (key.starts_with("campaign") && key != "campaign.end"))
             fail(pos_of(v), r.key("set"),
-                 "a key of the scenario (dut, wiring, encoder, motion, stimulus, host, check, campaign.end)");
+                 "a key of the scenario (dut, wiring, encoder, motion, stimulus, host, device_fault, "
+                 "power_cycle, panel, check, campaign.end)");
           f.set_keys.push_back(key);
         }
       }

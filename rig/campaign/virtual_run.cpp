@@ -61,6 +61,8 @@ public:
     for (const Wire& w : s_.wiring) pins[w.board] = w.rig;
     dut_->attach(bus_, pins);
     schedule_board_faults();
+    schedule_power_cycles();
+    for (const PanelEvent& p : s_.panel) sched_.at(p.at, [this, i = p.action] { dut_->panel(i); });
 
     trace_shaft();
     drive_.start(in_.faults, in_.probe, in_.record_motion);
@@ -189,6 +191,14 @@ private:
       if (f.site != duts::FaultSite::Board) continue;
       sched_.at(f.at, [this, i = f.fault] { dut_->device_fault(i, true); });
       if (f.until <= s_.end) sched_.at(f.until, [this, i = f.fault] { dut_->device_fault(i, false); });
+    }
+  }
+
+  // [[power_cycle]]: the supply off at `at`, back on `off` later (if within the run).
+  void schedule_power_cycles() {
+    for (const PowerCycleEvent& p : s_.power_cycles) {
+      sched_.at(p.at, [this] { dut_->power(false); });
+      if (p.on_at() <= s_.end) sched_.at(p.on_at(), [this] { dut_->power(true); });
     }
   }
 

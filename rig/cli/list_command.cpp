@@ -97,6 +97,16 @@ void write_listing(std::ostream& out) {
         out << fmt::format("    {} ({}): {}\n", f.name, program_field_text(f), f.description);
     }
 
+  out << "power cycles ([[power_cycle]] at, off):\n";
+  for (const duts::DutInfo& d : duts::dut_registry())
+    out << fmt::format("  {}: {}\n", d.name,
+                       d.power_cycle.empty() ? std::string("none (the model has no power cycle)")
+                                             : d.power_cycle);
+
+  out << "front-panel actions ([[panel]] action = ..., at):\n";
+  for (const duts::DutInfo& d : duts::dut_registry())
+    for (const auto& a : d.panel) out << fmt::format("  {}/{}: {}\n", d.name, a.name, a.description);
+
   out << "checks ([[check]] kind = ...):\n";
   for (const checks::CheckKind& k : checks::check_kinds()) {
     out << fmt::format("  {}: {}\n", k.name, k.summary);

@@ -97,6 +97,13 @@ int choose_backend(const RunOptions& o, campaign::Campaign& c, std::optional<har
       for (campaign::Scenario& s : points) s.dut.backend = "virtual";
     return kPassed;
   }
+  // A device fault or a power cycle is the virtual board's: refused before the rig is asked for.
+  try {
+    hardware::check_virtual_only(c);
+  } catch (const campaign::CampaignError& e) {
+    err << e.what() << '\n';
+    return kBadInput;
+  }
   // Hardware asked for (by --backend or by the campaign) without saying which rig: the
   // command line is incomplete, whichever asked, so it is bad input and nothing runs.
   if (o.rig.empty()) {

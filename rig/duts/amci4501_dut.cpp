@@ -50,6 +50,13 @@ public:
     if (!module_) throw std::logic_error("amci4501: host read before attach");
     return module_->input_words().at(word);
   }
+  void power(bool on) override {
+    if (!module_) throw std::logic_error("amci4501: power cycle before attach");
+    if (on)
+      module_->power_on();
+    else
+      module_->power_off();
+  }
 
 private:
   Scheduler& scheduler_;
@@ -167,6 +174,11 @@ DutInfo amci4501_info() {
   };
   for (const auto& v : m::kVariantNames)
     info.variants.push_back({std::string(v.name), std::string(v.description)});
+  info.power_cycle =
+      "no non-volatile memory: the module always powers up in mode 1 (L176, L255), the configuration, "
+      "the count, the results and every status flag lost (status bits 8-12 all 0, L87-110); while off "
+      "[MODEL]: Cycle Output off, inputs not seen, input words 0, host writes kept but acted on only "
+      "from the next edge after power-up";
   info.host = HostInterface{m::kWords, m::kWords, true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t seed) -> std::unique_ptr<Dut> {

@@ -90,6 +90,13 @@ struct DeviceFaultInfo {
   bool clears = true;
 };
 
+// A front-panel action the rig takes on a virtual board ([[panel]]): a switch set or a key
+// pressed, as a person at the board would (the Series 2700's Program switch, its CLEAR key).
+struct PanelActionInfo {
+  std::string name;        // as a campaign names it: action = "program_mode"
+  std::string description; // what the board does, per its manual (`hilrig list`)
+};
+
 // The host's word interface (EtherNet/IP or Modbus registers on a real board).
 struct HostInterface {
   std::size_t output_words = 0; // host -> board (command words)
@@ -139,6 +146,17 @@ public:
     (void)active;
     throw std::logic_error("this DUT has no board fault " + std::to_string(fault));
   }
+  // Its supply goes off (on = false) or comes back ([[power_cycle]]), at the scheduler's now.
+  // The model keeps what its manual says survives power loss and starts again as at power-up.
+  // The parser lets a campaign power-cycle only a DUT whose DutInfo::power_cycle says what it does.
+  virtual void power(bool on) {
+    (void)on;
+    throw std::logic_error("this DUT has no power cycle");
+  }
+  // A front-panel action (DutInfo::panel[action]), at the scheduler's now.
+  virtual void panel(std::size_t action) {
+    throw std::logic_error("this DUT has no front-panel action " + std::to_string(action));
+  }
 };
 
 // seed: the run's seed, for what a real board leaves to chance (e.g. its scan phase).
@@ -153,6 +171,10 @@ struct DutInfo {
   std::vector<ParamInfo> params;
   std::vector<VariantInfo> variants;   // "nominal" first
   std::vector<DeviceFaultInfo> faults; // [[device_fault]] fault = ...
+  // What a power cycle ([[power_cycle]]) does to the board, per its manual (`hilrig list`).
+  // Empty: the model has no power cycle, and a campaign asking for one is bad input.
+  std::string power_cycle;
+  std::vector<PanelActionInfo> panel; // [[panel]] action = ...
   HostInterface host;
   DutFactory make;
 
@@ -161,6 +183,8 @@ struct DutInfo {
   [[nodiscard]] bool has_variant(std::string_view variant) const;
   // The index of a device fault in `faults`, by name.
   [[nodiscard]] std::optional<std::size_t> fault_index(std::string_view fault_name) const;
+  // The index of a front-panel action in `panel`, by name.
+  [[nodiscard]] std::optional<std::size_t> panel_index(std::string_view action_name) const;
   // Defaults for every parameter, overridden by the given values.
   [[nodiscard]] DutParams with_defaults(const std::map<std::string, ParamValue, std::less<>>& given) const;
 };

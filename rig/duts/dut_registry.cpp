@@ -85,6 +85,12 @@ std::optional<std::size_t> DutInfo::fault_index(std::string_view fault_name) con
   return std::nullopt;
 }
 
+std::optional<std::size_t> DutInfo::panel_index(std::string_view action_name) const {
+  for (std::size_t i = 0; i < panel.size(); ++i)
+    if (panel[i].name == action_name) return i;
+  return std::nullopt;
+}
+
 DutParams DutInfo::with_defaults(const std::map<std::string, ParamValue, std::less<>>& given) const {
   DutParams out;
   for (const ParamInfo& p : params) out.set(p.name, p.default_value);

@@ -46,6 +46,25 @@ public:
     if (word == kPls2700SingleTransferWord) return device_.single_transfer_word();
     return 0;
   }
+  // The front panel (pls2700_info().panel): the Program switch, and CLEAR while channel 1's or
+  // 2's position is displayed (AutoZero). A key the module ignores (Display Mode, a channel it
+  // lacks, a latched fault) does nothing, as on the board.
+  void panel(std::size_t action) override {
+    switch (action) {
+    case 0:
+      device_.set_program_switch(true);
+      return;
+    case 1:
+      device_.set_program_switch(false);
+      return;
+    case 2:
+    case 3:
+      (void)device_.autozero(static_cast<int>(action) - 1);
+      return;
+    default:
+      throw std::logic_error("pls2700: no front-panel action " + std::to_string(action));
+    }
+  }
 
 private:
   static bool wire(virt::VirtualBus& bus, const std::string& pin, const std::string& line,
@@ -104,6 +123,8 @@ p::Params pls2700_params(const DutParams& params) {
   q.output_delay = params.duration("output_delay");
   q.input_delay = params.duration("input_delay");
   q.advance_speed_window = params.duration("advance_speed_window");
+  q.program_switch_at_program = params.text("program_switch") == "program";
+  q.program_jumper_fitted = params.boolean("program_jumper");
   return q;
 }
 
@@ -160,6 +181,14 @@ DutInfo pls2700_info() {
        true,
        "the first update falls at the seed's phase within one update period (else at 0)",
        {}},
+      {"program_switch", ParamKind::Text, std::string(d.program_switch_at_program ? "program" : "display"),
+       "where the front panel's Program switch stands at the start (L543; [[panel]] moves it)",
+       one_of({"program", "display"})},
+      {"program_jumper",
+       ParamKind::Boolean,
+       d.program_jumper_fitted,
+       "the jumper next to the Program switch fitted; removed, the module is locked in Display Mode (L545)",
+       {}},
       {"advance_speed_window", ParamKind::Duration, d.advance_speed_window,
        "the advances' speed is the motion over this moving window (R-ADV-5)", between(1_ms, 10_s)},
   };
@@ -173,6 +202,17 @@ DutInfo pls2700_info() {
       "(L1315), limit outputs off (L1437; all 8 with fault_all_outputs), host programming ignored "
       "with 24h (L1763); latched until Clear Errors 8400h once the signal is back (L601, L1359); "
       "`until`: the signal is back";
+  info.panel = {
+      {"program_mode",
+       "the Program switch pushed toward the back: Program Mode, PRG LED on (L543), unless the "
+       "jumper is removed (L545) or the host disabled the keyboard (8100h, L543, L1356)"},
+      {"display_mode", "the Program switch pushed toward the front: Display Mode, the keyboard cannot modify "
+                       "parameters nor reset the position (L535)"},
+      {"autozero_1", "CLEAR while channel 1's position is displayed: in Program Mode the module stores the "
+                     "Circular Offset that makes the position 0 (AutoZero, L368); ignored in Display Mode "
+                     "(L535) and while the channel's transducer fault is latched"},
+      {"autozero_2", "the same for channel 2 (2732, 2742 and 2742-18 only; ignored on a one-channel module)"},
+  };
   info.faults = {
       {"transducer_loss", "the resolver lost (cable off: both stators at amplitude 0)" + reaction,
        FaultSite::OpenStators, true},

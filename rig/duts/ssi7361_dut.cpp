@@ -51,6 +51,12 @@ public:
     if (fault != 0 || !active) throw std::logic_error("ssi7361: no such device fault");
     module().corrupt_eeprom();
   }
+  void power(bool on) override {
+    if (on)
+      module().power_on();
+    else
+      module().power_off();
+  }
 
 private:
   s::Ssi7361& module() {
@@ -169,6 +175,13 @@ DutInfo ssi7361_info() {
        "with CMDErr (%I bit 7, L2029); E2CLR clears E2Err and loads the factory defaults, LO 0 "
        "(L253-255, L2119-2121). No `until`: only E2CLR clears it",
        FaultSite::Board, false});
+  info.power_cycle =
+      "the setup (format, scalars, RUT, direction) and the preset's offset LO are in EEPROM and survive "
+      "(L1304-1306); every error bit is cleared (L254-256, L921-923) except E2Err [MODEL: the corrupted "
+      "parameter is still in EEPROM]; while off: no frames, CLK idle high, status words 0 [MODEL]; back on: "
+      "ACK 0, raw/Data Value/rate 0 until frames come, the first frame first_frame after power-up (the "
+      "manual: "
+      "'a few seconds' to the RUN LED, L718)";
   info.host = HostInterface{s::kCommandWords, s::kStatusWords, true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t seed) -> std::unique_ptr<Dut> {

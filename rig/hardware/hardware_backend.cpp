@@ -10,6 +10,33 @@
 
 namespace hilrig::hardware {
 
+namespace {
+void check_virtual_only(const std::string& file, const campaign::Scenario& s) {
+  if (!s.device_faults.empty())
+    throw campaign::CampaignError(
+        file, s.device_faults.front().where, "device_fault[0].fault",
+        fmt::format("no [[device_fault]] on a hardware backend: \"{}\" is made by a virtual board's model "
+                    "or its stator signals; run it with --backend virtual (a real board's faults are its "
+                    "own: a rig would need a fault switch into the board, which it has not)",
+                    s.device_faults.front().name));
+  if (!s.power_cycles.empty())
+    throw campaign::CampaignError(file, s.power_cycles.front().where, "power_cycle[0].at",
+                                  "no [[power_cycle]] on a hardware backend: the rig switches no supply of a "
+                                  "real board; run it with --backend virtual");
+  if (!s.panel.empty())
+    throw campaign::CampaignError(
+        file, s.panel.front().where, "panel[0].action",
+        "no [[panel]] on a hardware backend: the rig presses no key of a real board; "
+        "run it with --backend virtual");
+}
+} // namespace
+
+void check_virtual_only(const campaign::Campaign& c) {
+  for (const campaign::Scenario& s : c.points) check_virtual_only(c.file, s);
+  for (const auto& points : c.fault_points)
+    for (const campaign::Scenario& s : points) check_virtual_only(c.file, s);
+}
+
 void check_campaign_on_rig(const campaign::Campaign& c, const RigConfig& config) {
   for (const campaign::Scenario& s : c.points) (void)plan_lines(c.file, s, config);
   for (const auto& points : c.fault_points)

@@ -14,6 +14,13 @@
 
 namespace hilrig::hardware {
 
+// Throws campaign::CampaignError for the first [[device_fault]], [[power_cycle]] or [[panel]]:
+// the rig makes them only on a virtual board (a model raises the fault, switches the supply,
+// presses the key), and a rig has no fault line into the board, switched supply or key pusher. Needs no rig
+// config, so
+// `--backend hardware` refuses such a campaign before anything else.
+void check_virtual_only(const campaign::Campaign& campaign);
+
 // Throws campaign::CampaignError for the first wire, resolver or host action the rig lacks.
 void check_campaign_on_rig(const campaign::Campaign& campaign, const RigConfig& config);
 

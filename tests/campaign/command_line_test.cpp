@@ -73,6 +73,37 @@ TEST(CommandLine, NegativeSeedIsRefused) {
   EXPECT_FALSE(fs::exists(out / "results.json"));
 }
 
+// A device fault and a power cycle are the virtual board's: `run --backend hardware` refuses
+// the campaign before it even reads the rig config (exit 2, the entry's file:line:col) and
+// writes nothing.
+TEST(CommandLine, HardwareBackendRefusesDeviceFaultsAndPowerCycles) {
+  const std::string dir = std::string(HILRIG_SOURCE_DIR) + "/campaigns/ssi7361/";
+  const fs::path out = test::scratch_dir("campaign", "hardware_device_fault");
+  const Result fault = hilrig(
+      "run " + dir + "ssi7361_eeprom.toml --backend hardware --rig no-such-rig.toml --out " + out.string());
+  EXPECT_EQ(fault.status, 2);
+  EXPECT_NE(
+      fault.err.find("ssi7361_eeprom.toml:47:1: device_fault[0].fault: no [[device_fault]] on a hardware "
+                     "backend: \"eeprom_error\" is made by a virtual board's model"),
+      std::string::npos)
+      << fault.err;
+  EXPECT_NE(fault.err.find("--backend virtual"), std::string::npos) << fault.err;
+  EXPECT_EQ(fault.err.find("no-such-rig"), std::string::npos) << fault.err;
+  EXPECT_FALSE(fs::exists(out / "results.json"));
+
+  const Result power =
+      hilrig("run " + dir + "ssi7361_power_cycle.toml --backend hardware --rig no-such-rig.toml --out " +
+             out.string());
+  EXPECT_EQ(power.status, 2);
+  EXPECT_NE(
+      power.err.find("ssi7361_power_cycle.toml:49:1: power_cycle[0].at: no [[power_cycle]] on a hardware "
+                     "backend"),
+      std::string::npos)
+      << power.err;
+  EXPECT_FALSE(fs::exists(out / "results.json"));
+  // The same campaigns run on the virtual board (ssi7361_eeprom passes there: test_device_faults).
+}
+
 TEST(CommandLine, ServeFaultListsTheChoices) {
   const Result r = hilrig("serve smd23e --pty --fault lost-step");
   EXPECT_EQ(r.status, 2);

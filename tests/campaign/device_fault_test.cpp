@@ -205,6 +205,74 @@ TEST(DeviceFaultModels, Pls2700SeesATransducerLossAtEveryAngle) {
   }
 }
 
+// ---- A device fault as a fault-injection run ([[fault]] with `set` and caught_by)
+
+// The 7361 without a fault: %I read at 12 ms has no E2Err (seeds/004_2d8564fc60a2b9d4.txt:2043-2044,
+// bit 13 = 0x1000) and no Acknowledge (bit 15, no host write). The fault run puts the EEPROM
+// error in at 10 ms: E2Err set at once ([MODEL]), ACK still 0 (no programming cycle, L1298-1299).
+const std::string kSsiChecks = R"([campaign]
+name = "t"
+end = "20ms"
+[dut]
+model = "ssi7361"
+[[host]]
+at = "12ms"
+read = 0
+name = "status"
+[[check]]
+kind = "word_bits"
+name = "no_e2err"
+observation = "status"
+mask = 4096
+value = 0
+[[check]]
+kind = "word_bits"
+name = "no_ack"
+observation = "status"
+mask = 32768
+value = 0
+[[fault]]
+name = "eeprom"
+set = { device_fault = [ { fault = "eeprom_error", at = "10ms" } ] }
+)";
+
+TEST(DeviceFaultAsAFault, ACheckThatJudgesTheFaultCatchesIt) {
+  const Campaign c = parse_campaign(kSsiChecks + "caught_by = \"no_e2err\"\n", "t.toml");
+  ASSERT_EQ(c.runs.size(), 2U);
+  EXPECT_TRUE(c.scenario_of(c.runs[0]).device_faults.empty());
+  ASSERT_EQ(c.scenario_of(c.runs[1]).device_faults.size(), 1U);
+  EXPECT_EQ(c.scenario_of(c.runs[1]).device_faults[0].at, 10_ms);
+  const rig::CampaignResult r = test::run_everything(c);
+  EXPECT_EQ(r.totals.faults, 1U);
+  EXPECT_EQ(r.totals.faults_caught, 1U);
+  EXPECT_EQ(r.verdict, Outcome::Pass) << test::failures(r);
+}
+
+TEST(DeviceFaultAsAFault, ACheckBlindToTheFaultLetsItThroughAndTheCampaignFails) {
+  const rig::CampaignResult r =
+      test::run_everything(parse_campaign(kSsiChecks + "caught_by = \"no_ack\"\n", "t.toml"));
+  EXPECT_EQ(r.totals.faults, 1U);
+  EXPECT_EQ(r.totals.faults_caught, 0U);
+  EXPECT_EQ(r.verdict, Outcome::Fail);
+}
+
+TEST(DeviceFaultAsAFault, AFaultNamedAsAVariantIsPointedAtTheSetForm) {
+  const std::string text =
+      replace_line(kSsiChecks, 24, "variant = \"eeprom_error\"") + "caught_by = \"no_e2err\"\n";
+  EXPECT_TRUE(rejected_at(text, "t.toml:24:11: fault[0].variant: a device variant: eeprom_error is a device "
+                                "fault of ssi7361; a fault run puts it in with set = { device_fault = ["));
+}
+
+TEST(DeviceFaultAsAFault, AFaultTheDeviceLacksInASetIsAnError) {
+  const std::string text =
+      replace_line(kSsiChecks, 24, "set = { device_fault = [ { fault = \"overheat\", at = \"10ms\" } ] }") +
+      "caught_by = \"no_e2err\"\n";
+  EXPECT_NE(
+      error_of(text).find("fault[0].set: device_fault[0].fault: a fault of ssi7361: one of eeprom_error"),
+      std::string::npos)
+      << error_of(text);
+}
+
 // ---- The shipped campaigns, end to end
 
 struct Shipped {
@@ -244,10 +312,17 @@ INSTANTIATE_TEST_SUITE_P(
                               "ans1_resolver_faults.toml",
                               {"open_coil_detected", "outputs_off", "fault_latched", "ratio_detected"}},
                       Shipped{"pls2700",
+                              "pls2700_open_coil.toml",
+                              {"sin_open_detected", "sin_outputs_off", "sin_latched", "cos_open_detected",
+                               "cos_latched", "cos_outputs_off"}},
+                      Shipped{"pls2700",
                               "pls2700_transducer_loss.toml",
                               {"fault_word", "outputs_off", "position_latched", "tach_latched",
                                "programming_ignored"}}),
-    [](const ::testing::TestParamInfo<Shipped>& p) { return std::string(p.param.device); });
+    [](const ::testing::TestParamInfo<Shipped>& p) {
+      const std::string file = p.param.file;
+      return file.substr(0, file.find('.')); // the campaign's file name without .toml
+    });
 
 } // namespace
 } // namespace hilrig::campaign

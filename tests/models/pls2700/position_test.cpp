@@ -120,6 +120,45 @@ TEST(Pls2700Position, AutoZeroMakesThePresentPositionZero) {
   EXPECT_TRUE(b.device().autozero(1));
 }
 
+// The Program switch (seeds/002_46e90574ec92805f.txt:543-545, :534-537): CLEAR resets the
+// position in Program Mode only; Display Mode, a removed jumper or the host's Disable Keyboard
+// (8100h, "locked into display mode from the processor", L543, L1356) make it a no-op.
+TEST(Pls2700Position, AutoZeroOnlyInProgramMode) {
+  Bench b(ModelVariant::M2741);
+  b.hold(1, 200, 360);
+  b.run_for(1_ms);
+  ASSERT_EQ(b.device().machine_position(1), 200);
+  b.device().set_program_switch(false); // Display Mode (L535)
+  EXPECT_FALSE(b.device().program_mode());
+  EXPECT_FALSE(b.device().autozero(1));
+  EXPECT_FALSE(b.device().keyboard_delete_pair(1, 1));
+  b.run_for(1_ms);
+  EXPECT_EQ(b.device().machine_position(1), 200);
+  b.device().set_program_switch(true); // Program Mode, PRG LED on (L534, L543)
+  EXPECT_TRUE(b.device().program_mode());
+  EXPECT_EQ(b.btw({0x8100}), error::kNone); // Disable Keyboard: locked in Display Mode
+  EXPECT_FALSE(b.device().program_mode());
+  EXPECT_FALSE(b.device().autozero(1));
+  EXPECT_EQ(b.btw({0x8200}), error::kNone);
+  EXPECT_TRUE(b.device().program_mode());
+  EXPECT_TRUE(b.device().autozero(1));
+  b.run_for(1_ms);
+  EXPECT_EQ(b.device().machine_position(1), 0);
+}
+
+TEST(Pls2700Position, WithoutTheJumperTheModuleIsLockedInDisplayMode) {
+  Params p;
+  p.program_jumper_fitted = false; // L545
+  Bench b(ModelVariant::M2741, p);
+  b.hold(1, 200, 360);
+  b.run_for(1_ms);
+  b.device().set_program_switch(true);
+  EXPECT_FALSE(b.device().program_mode());
+  EXPECT_FALSE(b.device().autozero(1));
+  b.run_for(1_ms);
+  EXPECT_EQ(b.device().machine_position(1), 200);
+}
+
 TEST(Pls2700Position, W15SampleBtrReadsPositionTachStatus) {
   // W15 (L1456, L1476): 1-channel BTR of length 3 = 155, 0, 0 for a shaft at 155 at rest,
   // no error, outputs off.
