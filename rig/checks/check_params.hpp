@@ -67,6 +67,7 @@ struct DebounceParams {
 struct AdvanceParams {
   std::string output;
   AdvanceSpec spec;
+  std::optional<PhaseScan> phase{}; // scan_us given: the expected edges' phase coverage
 };
 
 struct EdgeAtPositionParams {
@@ -86,6 +87,7 @@ struct BrakeParams {
 struct PulseWidthParams {
   std::string line;
   PulseWidthSpec spec;
+  std::optional<PhaseScan> phase{}; // scan_us given: the pulse starts' phase coverage
 };
 
 struct WordEqualsParams {

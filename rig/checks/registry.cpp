@@ -101,6 +101,14 @@ WordSpec word_spec(std::string_view name, const Table& t) {
   return s;
 }
 
+// scan_us and phase_bins: the board's scan period a check reports its phase coverage against
+// (throughput, pulse_width, advance_counts: one mechanism, rig/checks/phase_coverage.hpp).
+std::optional<PhaseScan> phase_scan(const Table& t) {
+  if (t.has("phase_bins") && !t.has("scan_us")) throw ParamError("phase_bins", "only with scan_us");
+  if (!t.has("scan_us")) return std::nullopt;
+  return PhaseScan{t.us("scan_us"), t.count("phase_bins", 10)};
+}
+
 CheckParams throughput(std::string_view name, const Table& t) {
   one_of(t, "crossings_us", "setpoint");
   ThroughputParams p;
@@ -128,8 +136,7 @@ CheckParams throughput(std::string_view name, const Table& t) {
     s.modulus = t.num("modulus");
     p.crossings = s;
   }
-  if (t.has("phase_bins") && !t.has("scan_us")) throw ParamError("phase_bins", "only with scan_us");
-  if (t.has("scan_us")) p.phase = PhaseScan{t.us("scan_us"), t.count("phase_bins", 10)};
+  p.phase = phase_scan(t);
   return p;
 }
 
@@ -156,6 +163,7 @@ CheckParams advance(std::string_view name, const Table& t) {
   p.spec.tolerance = t.num("tolerance_counts", 1.0);
   p.spec.modulus = t.num("modulus");
   p.spec.min_edges = t.count("min_edges", 1);
+  p.phase = phase_scan(t);
   return p;
 }
 
@@ -197,6 +205,7 @@ CheckParams pulse(std::string_view name, const Table& t) {
   p.spec.min = t.opt_us("min_us");
   p.spec.max = t.opt_us("max_us");
   p.spec.min_pulses = t.count("min_pulses", 1);
+  p.phase = phase_scan(t);
   return p;
 }
 
@@ -264,6 +273,15 @@ CheckKind kind(std::string name, std::string summary, std::vector<ParamSpec> par
                    b == &debounce};
 }
 
+// The phase coverage keys (phase_scan), of what `of` names.
+ParamSpec phase_param(const std::string& of) {
+  return P("scan_us", Num, false, "the board's scan period: reports the " + of + "' phase coverage of it",
+           between(0.001, 1e6));
+}
+ParamSpec bins_param() {
+  return P("phase_bins", Int, false, "phase coverage bins over scan_us (10)", between(1.0, 1000.0));
+}
+
 std::vector<CheckKind> make_kinds() {
   const ParamRange time = at_least(0.0);   // a time or a limit on one
   const ParamRange width = above(0.0);     // a pulse width, a step, a timeout
@@ -283,9 +301,7 @@ std::vector<CheckKind> make_kinds() {
        P("step_us", Num, false, "scan step for crossings (100); shorter than the shortest dwell", width),
        P("modulus", Num, false, "full-scale count: setpoint + k * modulus are crossings too (0: none)", time),
        P("from_us", Num, false, "scan start", time), P("to_us", Num, false, "scan end", time),
-       P("scan_us", Num, false, "the board's scan period: reports the crossings' phase coverage of it",
-         between(0.001, 1e6)),
-       P("phase_bins", Int, false, "phase coverage bins over scan_us (10)", between(1.0, 1000.0))},
+       phase_param("crossings"), bins_param()},
       throughput));
   k.push_back(kind("debounce",
                    "pulses shorter than the filter rejected, longer accepted; boundary by bisection",
@@ -304,7 +320,8 @@ std::vector<CheckKind> make_kinds() {
                     P("advance_counts", Num, false, "fixed advance in counts instead of speed*advance_ms"),
                     P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
                     P("modulus", Num, false, "full-scale count for wrapping positions (0: none)", time),
-                    P("min_edges", Int, false, "fewest edges (1)", counts)},
+                    P("min_edges", Int, false, "fewest edges (1)", counts), phase_param("expected edges"),
+                    bins_param()},
                    advance));
   k.push_back(
       kind("brake_stop_time", "brake applied to standstill against the limit; reported time and fault output",
@@ -329,7 +346,8 @@ std::vector<CheckKind> make_kinds() {
                    {P("line", Str, true, "the line"), P("level", Lvl, false, "the pulse level (high)"),
                     P("min_us", Num, false, "shortest allowed (inclusive)", time),
                     P("max_us", Num, false, "longest allowed (inclusive)", time),
-                    P("min_pulses", Int, false, "fewest pulses (1)", counts)},
+                    P("min_pulses", Int, false, "fewest pulses (1)", counts), phase_param("pulse starts"),
+                    bins_param()},
                    pulse));
   k.push_back(
       kind("word_equals", "an observed word equals a value",
@@ -443,7 +461,19 @@ CheckResult run(const DebounceParams& p, const Capture& c) {
 
 CheckResult run(const AdvanceParams& p, const Capture& c) {
   if (!c.speed && !p.spec.advance_counts) throw CaptureError{"the capture has no speed function"};
-  return check_advance(line(c, p.output), position_fn(c), c.speed, p.spec);
+  CheckResult r = check_advance(line(c, p.output), position_fn(c), c.speed, p.spec);
+  if (p.phase) {
+    // The stimulus of each edge: the instant the shaft stood at its expected position, the
+    // middle of the edge's tolerance window (linear at the edge's speed).
+    std::vector<Nanos> expected;
+    const std::string edge = p.spec.name + ".edge";
+    for (const Measurement& m : r.measurements)
+      if (m.window && m.name.rfind(edge, 0) == 0 && m.name != p.spec.name + ".edges")
+        expected.push_back(m.window->begin + (m.window->end - m.window->begin) / 2);
+    r.measurements.push_back(
+        phase_coverage_measurement(p.spec.name + ".phase_coverage", expected, p.phase->scan, p.phase->bins));
+  }
+  return r;
 }
 
 CheckResult run(const EdgeAtPositionParams& p, const Capture& c) {
@@ -485,7 +515,18 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
 }
 
 CheckResult run(const PulseWidthParams& p, const Capture& c) {
-  return check_pulse_width(line(c, p.line), p.spec);
+  const std::span<const Edge> edges = line(c, p.line);
+  CheckResult r = check_pulse_width(edges, p.spec);
+  if (p.phase) {
+    // Where each pulse started within the board's scan or tick: a width the board quantises
+    // to its tick shows its extremes only for starts across the whole tick.
+    std::vector<Nanos> starts;
+    for (const Edge& e : edges)
+      if (e.level == p.spec.level) starts.push_back(e.time);
+    r.measurements.push_back(
+        phase_coverage_measurement(p.spec.name + ".phase_coverage", starts, p.phase->scan, p.phase->bins));
+  }
+  return r;
 }
 CheckResult run(const WordEqualsParams& p, const Capture& c) {
   return check_word_equals(c.observations, p.spec, p.value);

@@ -43,6 +43,7 @@ std::string to_power_json(const PowerResult& result) {
     j["knob"] = r.knob.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.knob);
     j["knob_unit"] = r.knob_unit;
     j["direction"] = r.direction;
+    j["two_sided"] = r.two_sided;
     j["nominal"] = optional_number(r.nominal);
     j["threshold"] = optional_number(r.threshold);
     j["last_pass"] = optional_number(r.last_pass);

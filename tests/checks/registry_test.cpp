@@ -284,5 +284,49 @@ TEST(Registry, ThroughputPhaseCoverageIsTypedAndInformational) {
   EXPECT_NE(cov.detail.find("incomplete"), std::string::npos) << cov.detail;
 }
 
+// The same coverage, one mechanism, for the pulse starts of a pulse_width check and for the
+// expected edges of an advance_counts check (the instant the shaft stood at the expected
+// position): the keys, their ranges and the bins are those of throughput.
+TEST(Registry, PulseWidthAndAdvancePhaseCoverage) {
+  EXPECT_EQ(problem("pulse_width", json{{"line", "o"}, {"phase_bins", 4}}), "phase_bins");
+  EXPECT_EQ(problem("pulse_width", json{{"line", "o"}, {"scan_us", 0}}), "scan_us");
+  EXPECT_EQ(problem("advance_counts", json{{"output", "o"}, {"setpoint", 10}, {"scan_us", -1}}), "scan_us");
+  EXPECT_FALSE(std::get<PulseWidthParams>(build("pulse_width", json{{"line", "o"}})).phase.has_value());
+
+  // High pulses starting at 1, 12.5, 24 and 1002 us: phases 1, 2.5, 4 and 2 us of a 10 us scan,
+  // bins 1, 2, 4 and 2 of 10: 3 covered.
+  const auto pw = build("pulse_width", json{{"line", "o"}, {"scan_us", 10}, {"min_pulses", 4}}, "pw");
+  Capture c;
+  c.lines["o"] = {{1_us, Level::High},  {2_us, Level::Low},  {12'500_ns, Level::High}, {14_us, Level::Low},
+                  {24_us, Level::High}, {30_us, Level::Low}, {1002_us, Level::High},   {1003_us, Level::Low}};
+  c.end = 2_ms;
+  const auto r = run_check("pw", pw, c);
+  EXPECT_EQ(find(r, "pw.phase_coverage").value, 3.0);
+  EXPECT_EQ(find(r, "pw.phase_coverage").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+
+  // A shaft at 1000 counts/s (one count a ms) from 0 at t = 0: setpoint 10 with no advance is
+  // expected at 10 ms; edges fired at 10.0003 and 20.0007 ms (positions 10.0003, 20.0007:
+  // expected 10 and 20 +- 1, window middles at 10 and 20 ms exactly): phases 0 of a 1 ms tick in
+  // 4 bins, 1 covered; with the 0.3 ms tick of scan_us = 300 they sit at 100 and 200 us: bins 1
+  // and 2 of 3.
+  Capture a;
+  a.position = [](Nanos t) { return t.seconds() * 1000.0; };
+  a.speed = [](Nanos) { return 1000.0; };
+  a.lines["o"] = {
+      {Nanos{10'000'300}, Level::High}, {Nanos{10'500'000}, Level::Low}, {Nanos{20'000'700}, Level::High}};
+  a.end = 30_ms;
+  const auto adv = build(
+      "advance_counts",
+      json{{"output", "o"}, {"setpoint", 10}, {"modulus", 10}, {"scan_us", 1000}, {"phase_bins", 4}}, "adv");
+  const auto ra = run_check("adv", adv, a);
+  EXPECT_EQ(find(ra, "adv.phase_coverage").value, 1.0);
+  EXPECT_NE(find(ra, "adv.phase_coverage").detail.find("1/4 bins"), std::string::npos);
+  const auto adv3 = build(
+      "advance_counts",
+      json{{"output", "o"}, {"setpoint", 10}, {"modulus", 10}, {"scan_us", 300}, {"phase_bins", 3}}, "adv");
+  EXPECT_EQ(find(run_check("adv", adv3, a), "adv.phase_coverage").value, 2.0);
+}
+
 } // namespace
 } // namespace hilrig::checks
