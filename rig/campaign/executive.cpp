@@ -38,6 +38,7 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
   c.position = [profile](Nanos t) { return profile->position(t); };
   c.speed = [profile](Nanos t) { return profile->velocity(t); };
   c.motion = v.motion;
+  c.counts = v.counts;
   if (v.exact_motion) {
     if (s.plant) {
       // A plant located its own standstill: the last change of its motion samples.

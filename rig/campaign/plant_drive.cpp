@@ -31,6 +31,7 @@ PlantDrive::PlantDrive(Scheduler& scheduler, const Scenario& scenario)
       encoder_(rig_encoder(scenario.encoder)),
       valve_(spec_.kind != PlantKind::Press || spec_.press_start.valve) {
   count_ = encoder_.count_at(motion_.plan().position(motion_.plan().start_time()));
+  checks::append_motion(counts_, {motion_.plan().start_time(), static_cast<double>(count_)});
 }
 
 bool PlantDrive::drives(std::string_view rig) const {
@@ -92,6 +93,7 @@ void PlantDrive::resolve() {
   if (start != count_) {
     count_ = start;
     if (shaft_ != nullptr) shaft_->count(sched_.now(), count_);
+    checks::append_motion(counts_, {sched_.now(), static_cast<double>(count_)});
     if (enc_a_ != nullptr) enc_a_->set(level_of(signals::channel_a(count_)));
     if (enc_b_ != nullptr) enc_b_->set(level_of(signals::channel_b(count_)));
   }
@@ -124,6 +126,7 @@ void PlantDrive::play() {
   if (e.channel != signals::QuadChannel::Z) {
     count_ = e.count;
     if (shaft_ != nullptr) shaft_->count(e.time, count_);
+    checks::append_motion(counts_, {e.time, static_cast<double>(count_)});
     LineOutput* line = e.channel == signals::QuadChannel::A ? enc_a_ : enc_b_;
     if (line != nullptr) line->set(e.level);
   }

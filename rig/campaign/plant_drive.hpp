@@ -49,6 +49,9 @@ public:
   // The board outputs (and rig commands) that acted on the plant, as they changed, and the
   // standstills it located: the events of the report's speed/position plot.
   [[nodiscard]] std::vector<rig::MotionEvent> events() const;
+  // The encoder count's changes as played (checks::append_motion-compacted): what the board
+  // counted, whose last change a board timing a stop sees as its end.
+  [[nodiscard]] const std::vector<checks::PositionSample>& counts() const { return counts_; }
 
 private:
   void apply(plants::PlantInput which, bool level);
@@ -67,6 +70,7 @@ private:
   std::uint64_t generation_ = 0; // edges scheduled under an older plan are dropped
   std::int64_t count_ = 0;
   ShaftTrace* shaft_ = nullptr;
+  std::vector<checks::PositionSample> counts_;
   LineOutput* enc_a_ = nullptr;
   LineOutput* enc_b_ = nullptr;
   LineOutput* monitor_ = nullptr;

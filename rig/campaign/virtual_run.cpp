@@ -79,6 +79,7 @@ public:
     if (plant_) {
       // The shaft as the plant moved it: its last change is the located standstill.
       out_.motion = plant_->motion().samples();
+      out_.counts = plant_->counts();
       out_.profile = plant_->motion().trajectory();
       out_.motion_events = plant_->events();
     } else {

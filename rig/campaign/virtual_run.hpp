@@ -39,10 +39,13 @@ struct VirtualRun {
   // start, the last change and the end), so it does not grow with the run.
   std::vector<checks::PositionSample> motion;
   std::vector<rig::MotionEvent> motion_events; // a plant's inputs as they changed, its standstills
-  std::vector<rig::Observation> observations;  // host reads
-  std::vector<rig::Measurement> handshakes;    // host writes: time to Acknowledge
-  std::vector<rig::Measurement> rig_timing;    // hardware runs: the rig's own timing (wake-ups, edges)
-  std::string rig_fault; // hardware runs: why the run stopped early ("" when it did not)
+  // A plant's run: the encoder count's changes as played (motion is then the plant's own
+  // samples). Empty otherwise: motion is the count changes.
+  std::vector<checks::PositionSample> counts;
+  std::vector<rig::Observation> observations; // host reads
+  std::vector<rig::Measurement> handshakes;   // host writes: time to Acknowledge
+  std::vector<rig::Measurement> rig_timing;   // hardware runs: the rig's own timing (wake-ups, edges)
+  std::string rig_fault;                      // hardware runs: why the run stopped early ("" when it did not)
   // Virtual time: the board saw exactly the profile's edges, so its standstill is known
   // exactly. A hardware run sets it false: the edges went out with the RT loop's jitter and
   // only the count changes are evidence.

@@ -184,7 +184,10 @@ CheckParams brake(std::string_view name, const Table& t) {
   BrakeParams p;
   p.spec.name = name;
   p.spec.limit = t.ms("limit_ms");
+  if (t.has("report_tick_ms") && t.has("report_tolerance_ms"))
+    throw ParamError("report_tick_ms", "either report_tick_ms or report_tolerance_ms, not both");
   p.spec.report_tolerance_ms = t.num("report_tolerance_ms", 2.0);
+  p.spec.report_tick = t.opt_ms("report_tick_ms");
   p.spec.fault_level = t.level("fault_level", Level::Low);
   p.spec.fault_from_reported = t.flag("fault_from_reported");
   p.applied = t.opt_ms("applied_ms");
@@ -323,18 +326,21 @@ std::vector<CheckKind> make_kinds() {
                     P("min_edges", Int, false, "fewest edges (1)", counts), phase_param("expected edges"),
                     bins_param()},
                    advance));
-  k.push_back(
-      kind("brake_stop_time", "brake applied to standstill against the limit; reported time and fault output",
-           {P("limit_ms", Num, true, "stop time limit (inclusive)", time),
-            P("brake_line", Str, false, "the brake input line; or applied_ms"),
-            P("applied_level", Lvl, false, "level of brake_line that applies the brake (low)"),
-            P("applied_ms", Num, false, "when the brake was applied", time),
-            P("reported", Str, false, "observation holding the board's stop time, ms"),
-            P("report_tolerance_ms", Num, false, "|reported - measured| allowed (2)", time),
-            P("fault_output", Str, false, "the stop-time fault output line"),
-            P("fault_level", Lvl, false, "the fault output's level on a fault (low)"),
-            P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time")},
-           brake));
+  k.push_back(kind(
+      "brake_stop_time", "brake applied to standstill against the limit; reported time and fault output",
+      {P("limit_ms", Num, true, "stop time limit (inclusive)", time),
+       P("brake_line", Str, false, "the brake input line; or applied_ms"),
+       P("applied_level", Lvl, false, "level of brake_line that applies the brake (low)"),
+       P("applied_ms", Num, false, "when the brake was applied", time),
+       P("reported", Str, false, "observation holding the board's stop time, ms"),
+       P("report_tolerance_ms", Num, false, "|reported - measured| allowed (2)", time),
+       P("report_tick_ms", Num, false,
+         "the board's stop timer tick: reported judged within [last count change - tick, standstill + tick]",
+         width),
+       P("fault_output", Str, false, "the stop-time fault output line"),
+       P("fault_level", Lvl, false, "the fault output's level on a fault (low)"),
+       P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time")},
+      brake));
   k.push_back(kind("edge_at_position", "every edge of an output at a position, within a tolerance",
                    {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
                     P("position", Num, true, "counts"),
@@ -509,8 +515,13 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
   if (p.fault_output) fault = line(c, *p.fault_output);
   // Virtual time: the rig knows the trajectory and hands the exact standstill; on hardware
   // only the count changes are evidence, an interval judged on its upper end.
-  const auto still = c.standstill ? exact_standstill(c.standstill(applied), c.end)
-                                  : standstill_interval(c.motion, applied, c.end);
+  auto still = c.standstill ? exact_standstill(c.standstill(applied), c.end)
+                            : standstill_interval(c.motion, applied, c.end);
+  // What a board timing the stop from count changes sees as its end (report_window()).
+  const std::vector<PositionSample>& counts = c.counts.empty() ? c.motion : c.counts;
+  if (still)
+    if (const auto last = standstill_after(counts, applied, c.end); last && *last <= still->latest)
+      still->last_count_change = std::min(*last, still->earliest);
   return check_brake_stop(applied, still, fault, s);
 }
 

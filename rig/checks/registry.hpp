@@ -26,6 +26,9 @@ struct Capture {
   PositionFn position;                  // stimulus position, counts (e.g. the motion profile)
   PositionFn speed;                     // counts/s
   std::vector<PositionSample> motion{}; // the shaft's position trace (brake checks)
+  // The encoder count's changes as the board saw them (append_motion-compacted; brake report
+  // window). Empty: `motion` is the count changes.
+  std::vector<PositionSample> counts{};
   // When the rig knows the trajectory (virtual time): the exact standstill at or after a
   // time (nullopt: still moving at the end). Empty on hardware, where only count changes
   // are evidence (checks/standstill.hpp: an interval).

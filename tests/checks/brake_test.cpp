@@ -159,5 +159,59 @@ TEST(BrakeStop, FaultOutputFromAnIntervalAcrossTheLimitAcceptsEither) {
   EXPECT_EQ(find(check_brake_stop(100_ms, still, {}, spec), "b.stop_time").outcome, rig::Outcome::Fail);
 }
 
+// ans1 manual (seeds/000_08a2edf5547d4d1e.txt:1042, 1052, 640): the board takes the shaft as
+// stopped when its count has not changed for 125 ms and reports that instant - 125 ms, on its
+// 1 ms tick, timed from its tick that saw the brake applied. So its report counts whole ticks
+// from a tick in [applied, applied + 1 ms) to a tick in [last change, last change + 1 ms):
+// brake applied at 100 ms, last count change at 240.3 ms, standstill at 247.9 ms gives the
+// window [240.3 - 100 - 1, 247.9 - 100 + 1] = [139.3, 148.9] ms. Inclusive at both ends, and
+// 1 ns beyond either end fails.
+TEST(BrakeStop, ReportedStopTimeIsJudgedAgainstTheWindowACorrectBoardCanReport) {
+  const Standstill still{247_ms + 900_us, 247_ms + 900_us, 240_ms + 300_us};
+  BrakeSpec spec{.name = "b", .limit = 150_ms, .report_tick = 1_ms};
+  const auto w = report_window(100_ms, still, 1_ms);
+  EXPECT_DOUBLE_EQ(w.low_ms, 139.3);
+  EXPECT_DOUBLE_EQ(w.high_ms, 148.9);
+  for (const auto& [reported, outcome] :
+       {std::pair{139.3, rig::Outcome::Pass}, std::pair{139.3 - 1e-6, rig::Outcome::Fail},
+        std::pair{148.9, rig::Outcome::Pass}, std::pair{148.9 + 1e-6, rig::Outcome::Fail},
+        std::pair{140.0, rig::Outcome::Pass}, std::pair{148.0, rig::Outcome::Pass},
+        std::pair{139.0, rig::Outcome::Fail}, std::pair{149.0, rig::Outcome::Fail}}) {
+    spec.reported_ms = reported;
+    const auto r = check_brake_stop(100_ms, still, {}, spec);
+    EXPECT_EQ(find(r, "b.reported").outcome, outcome) << reported;
+    EXPECT_NE(find(r, "b.reported").detail.find("[139.3, 148.9] ms"), std::string::npos)
+        << find(r, "b.reported").detail;
+  }
+  // A shaft already still when the brake is applied: the board reports 0 (its first window
+  // after the application holds no change), so the window starts at -1 tick, not before.
+  const Standstill before{90_ms, 90_ms, 80_ms};
+  EXPECT_DOUBLE_EQ(report_window(100_ms, before, 1_ms).low_ms, -1.0);
+  EXPECT_DOUBLE_EQ(report_window(100_ms, before, 1_ms).high_ms, 1.0);
+  // On hardware (an interval from count changes) the window runs from the interval's lower
+  // end, the last change, to its upper end: conservative, no correct board fails.
+  const Standstill interval{300_ms, 310_ms};
+  EXPECT_DOUBLE_EQ(report_window(100_ms, interval, 1_ms).low_ms, 199.0);
+  EXPECT_DOUBLE_EQ(report_window(100_ms, interval, 1_ms).high_ms, 211.0);
+}
+
+// The board decides its overrun from its own report (L1052, CB8 w5): with the report window
+// [139.3, 148.9] ms against a 145 ms limit either answer is right; against 139 ms (the whole
+// window over) the fault must assert, against 149 ms (the whole window within) it must not.
+TEST(BrakeStop, WithTheBoardsTickTheFaultOutputIsExpectedFromTheReportWindow) {
+  const Standstill still{247_ms + 900_us, 247_ms + 900_us, 240_ms + 300_us};
+  const std::vector<Edge> fault{{400_ms, Level::Low}};
+  const std::vector<Edge> none;
+  BrakeSpec spec{.name = "b", .limit = 145_ms, .report_tick = 1_ms, .check_fault = true};
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, fault, spec), "b.fault_output").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, none, spec), "b.fault_output").outcome, rig::Outcome::Pass);
+  spec.limit = 139_ms;
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, fault, spec), "b.fault_output").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, none, spec), "b.fault_output").outcome, rig::Outcome::Fail);
+  spec.limit = 149_ms;
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, fault, spec), "b.fault_output").outcome, rig::Outcome::Fail);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, none, spec), "b.fault_output").outcome, rig::Outcome::Pass);
+}
+
 } // namespace
 } // namespace hilrig::checks

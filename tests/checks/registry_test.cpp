@@ -104,6 +104,8 @@ TEST(Registry, NotFiniteOrNegativeLimitsAreBadInput) {
     EXPECT_EQ(problem("edge_at_position", json{{"output", "o"}, {"position", 1}, {"tolerance_counts", bad}}),
               "tolerance_counts");
     EXPECT_EQ(problem("brake_stop_time", json{{"limit_ms", bad}, {"applied_ms", 1}}), "limit_ms");
+    EXPECT_EQ(problem("brake_stop_time", json{{"limit_ms", 1}, {"applied_ms", 1}, {"report_tick_ms", bad}}),
+              "report_tick_ms");
     EXPECT_EQ(problem("pulse_width", json{{"line", "l"}, {"max_us", bad}}), "max_us");
     EXPECT_EQ(problem("debounce", json{{"filter_us", 500},
                                        {"tolerance_us", bad},
@@ -247,6 +249,22 @@ TEST(Registry, BrakeFromTheBrakeLineAndTheReportedWord) {
       "brake_stop_time",
       json{{"limit_ms", 199.999999}, {"brake_line", "rig.brake"}, {"reported", "dut.stop_time"}}, "brake");
   EXPECT_EQ(find(run_check("brake", tight, c), "brake.stop_time").outcome, rig::Outcome::Fail);
+}
+
+// The board's stop timer tick replaces the fixed report tolerance: one or the other, and a
+// tick of 0 would time nothing.
+TEST(Registry, BrakeReportTickIsATickOrATolerance) {
+  const json base{{"limit_ms", 150}, {"applied_ms", 1}};
+  auto with = [&](json extra) {
+    json t = base;
+    t.update(extra);
+    return t;
+  };
+  EXPECT_EQ(problem("brake_stop_time", with({{"report_tick_ms", 1}, {"report_tolerance_ms", 2}})),
+            "report_tick_ms");
+  EXPECT_EQ(problem("brake_stop_time", with({{"report_tick_ms", 0}})), "report_tick_ms");
+  const auto p = std::get<BrakeParams>(build("brake_stop_time", with({{"report_tick_ms", 1}}), "b"));
+  EXPECT_EQ(p.spec.report_tick, 1_ms);
 }
 
 TEST(Registry, ThroughputPhaseCoverageIsTypedAndInformational) {

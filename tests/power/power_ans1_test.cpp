@@ -126,6 +126,28 @@ TEST(PowerAns1, BrakeStopTimeThresholdIsTheDecelerationThatStopsAtTheLimit) {
   EXPECT_LE(*row.measured, 20.0001);
 }
 
+// ans1_brake.toml: 600 rpm, Stop Time Limit 150 ms (CB8 w5, seeds/000_08a2edf5547d4d1e.txt:2108):
+// a brake of 600 rpm / 0.150 s = 4000 rpm/s stops exactly at the limit. The board's report is
+// judged against the window a correct board can report (its 1 ms tick, L640, L1042, L1052), so
+// a correct board never fails it first: the bisection reaches the limit itself.
+TEST(PowerAns1, BrakeReportNoLongerFailsFirstTheLimitIsReached) {
+  const campaign::Campaign c =
+      campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_brake.toml");
+  PowerOptions options;
+  options.checks = {"stop"};
+  const PowerResult r = measure_power(c, options);
+  ASSERT_EQ(r.rows.size(), 1u);
+  const PowerRow& row = r.rows[0];
+  ASSERT_TRUE(row.threshold && row.last_pass && row.measured && row.limit) << row.reason;
+  EXPECT_LT(*row.threshold, 4000.0);
+  EXPECT_GT(*row.threshold, 4000.0 - 0.006); // bisected to 1e-6 of 6000 rpm/s
+  EXPECT_GE(*row.last_pass, 4000.0 - 1e-9);
+  EXPECT_EQ(row.measurement, "stop.stop_time");
+  EXPECT_DOUBLE_EQ(*row.limit, 150.0);
+  EXPECT_GT(*row.measured, 150.0);
+  EXPECT_LE(*row.measured, 150.0003);
+}
+
 TEST(PowerRows, AMarginOverTheGateOrNoMarginAtAllIsOver) {
   PowerRow row;
   EXPECT_TRUE(over_margin(row, 100.0)); // no threshold: over any gate
