@@ -6,7 +6,7 @@
 
 namespace hilrig {
 
-EventId Scheduler::at(Nanos t, Action action) {
+EventId Scheduler::at(Nanos t, Action action, Tie tie) {
   if (t < now()) {
     throw std::logic_error("Scheduler: event scheduled in the past");
   }
@@ -21,7 +21,9 @@ EventId Scheduler::at(Nanos t, Action action) {
   Slot& s = slots_[slot];
   s.action = std::move(action);
   s.live = true;
-  heap_push(Entry{t.count(), next_seq_++, slot, s.generation});
+  // The top bit of the sequence number orders Last events after every InOrder one at a time.
+  constexpr std::uint64_t kLast = std::uint64_t{1} << 63;
+  heap_push(Entry{t.count(), next_seq_++ | (tie == Tie::Last ? kLast : 0), slot, s.generation});
   ++live_;
   return EventId{slot, s.generation};
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Discrete-event scheduler that owns virtual time. Events at equal times run in the
-// order they were scheduled (a sequence number breaks ties), so a run is deterministic.
+// order they were scheduled (a sequence number breaks ties), so a run is deterministic;
+// an event scheduled with Tie::Last runs after every ordinary event at its time.
 
 #include <cstdint>
 #include <functional>
@@ -21,6 +22,10 @@ public:
   using Action = std::function<void()>;
 
   enum class StopReason { ReachedTime, Idle, Stopped };
+  // Where an event stands among others at the same time. A scanning model's scan is Last: it
+  // sees every change at its instant, whenever that change was scheduled, so a scan scheduled
+  // one period ahead and one scheduled later (after skipped scans) order alike.
+  enum class Tie : std::uint8_t { InOrder, Last };
 
   explicit Scheduler(Nanos start = Nanos{0}) : clock_(start) {}
   Scheduler(const Scheduler&) = delete;
@@ -30,7 +35,7 @@ public:
   [[nodiscard]] const Clock& clock() const { return clock_; }
 
   // Schedules at an absolute time; a time before now() is a logic error and throws.
-  EventId at(Nanos t, Action action);
+  EventId at(Nanos t, Action action, Tie tie = Tie::InOrder);
   EventId after(Nanos delay, Action action) { return at(now() + delay, std::move(action)); }
 
   // True when the event was still pending (and now never runs).

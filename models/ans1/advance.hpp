@@ -10,6 +10,7 @@ namespace hilrig::models::ans1 {
 struct AdvanceTimes {
   double lead_ms = 0.0;  // the From edge
   double trail_ms = 0.0; // the To edge
+  friend bool operator==(const AdvanceTimes&, const AdvanceTimes&) = default;
 };
 
 // fixed: lead = Lead, trail = Trail. variable: lead = Fixed + (|S| / 2) * VAT / 1000
@@ -20,6 +21,7 @@ struct AdvanceCounts {
   std::int32_t lead = 0;  // counts, always >= 0 (DA19 w9)
   std::int32_t trail = 0; // (DA19 w10)
   bool clamped = false;   // an advance is longer than one machine cycle (status bit 7)
+  friend bool operator==(const AdvanceCounts&, const AdvanceCounts&) = default;
 };
 
 // a = t[ms] * |S| * FSC / 60000, rounded to the nearest count ([MODEL]); an advance longer

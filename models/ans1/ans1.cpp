@@ -8,12 +8,16 @@
 namespace hilrig::models::ans1 {
 
 // The encoder decoder is fed from edge handlers the bus keeps; sharing it keeps those
-// handlers safe should the bus outlive the device.
+// handlers safe should the bus outlive the device. Every pin edge wakes a skipping scan.
 struct Ans1::QuadState {
   signals::QuadratureDecoder decoder{signals::CountMode::X4};
   LineInput* a = nullptr;
   LineInput* b = nullptr;
-  void edge() { decoder.update(a != nullptr && is_high(a->level()), b != nullptr && is_high(b->level())); }
+  Ans1* device = nullptr;
+  void edge() {
+    decoder.update(a != nullptr && is_high(a->level()), b != nullptr && is_high(b->level()));
+    device->wake();
+  }
 };
 
 namespace {
@@ -56,7 +60,9 @@ Ans1::Ans1(Scheduler& scheduler, const Params& params, Variant variant)
     : scheduler_(scheduler), params_(effective_params(params, variant)), variant_(variant),
       excitation_(params.excitation_hz, params.excitation_amplitude), quad_(std::make_shared<QuadState>()),
       monitors_(monitor_faults(variant), params.brake_sample_start_ms) {
+  quad_->device = this;
   monitors_.configure(MonitorSetup{}, position_.full_scale_count);
+  grid_origin_ = scheduler_.now() + params_.scan_phase - scan_period();
   schedule_scan(scheduler_.now() + params_.scan_phase);
   speed_event_ = scheduler_.at(scheduler_.now() + params_.speed_update_period, [this] { speed_update(); });
 }
@@ -99,12 +105,23 @@ void Ans1::attach(const Ans1Pins& pins) {
   if (pins.quad_b != nullptr) {
     pins.quad_b->on_edge(handler);
   }
-  // Z is ignored (L455).
+  // Z is ignored (L455). The inputs are read at the scan; their edges only wake it.
+  const auto input_edge = [weak](const Edge&) {
+    if (auto q = weak.lock()) {
+      q->device->wake();
+    }
+  };
+  for (LineInput* in : pins.inputs) {
+    if (in != nullptr) {
+      in->on_edge(input_edge);
+    }
+  }
   for (int n = 1; n <= kOutputCount; ++n) {
     if (LineOutput* out = pins_.outputs[index(n)]) {
       out->set(level_of((pin_levels_ & bit(n)) != 0));
     }
   }
+  wake();
 }
 
 // ---------------------------------------------------------------- programming
@@ -126,13 +143,16 @@ void Ans1::configure_position(const PositionSetup& setup) {
   }
   if (period_changes && !in_scan_) { // from inside a scan (the host), the scan reschedules itself
     scheduler_.cancel(scan_event_);
+    grid_origin_ = scheduler_.now();
     schedule_scan(scheduler_.now() + scan_period());
   }
+  wake();
 }
 
 void Ans1::configure_output(int output, const OutputSetup& setup) {
   channels_[index(output)].configure(setup);
   update_advances();
+  wake();
 }
 
 void Ans1::configure_shift_register(const ShiftRegisterSetup& setup) {
@@ -140,10 +160,12 @@ void Ans1::configure_shift_register(const ShiftRegisterSetup& setup) {
     shift_register_.clear(); // disabled or deleted
   }
   sr_setup_ = setup;
+  wake();
 }
 
 void Ans1::configure_monitors(const MonitorSetup& setup) {
   monitors_.configure(setup, position_.full_scale_count);
+  wake();
 }
 
 void Ans1::configure(const Ans1Setup& setup) {
@@ -176,20 +198,24 @@ void Ans1::preset_machine(std::optional<std::uint16_t> value) {
   }
   position_.scaled_offset = preset_offset(position_.preset_value, scaled());
   gmp_ = global_position(scaled(), position_.scaled_offset, position_.full_scale_count);
+  wake();
 }
 
 void Ans1::preset_output(int output, std::optional<std::uint16_t> value) {
   channels_[index(output)].preset(gmp_, value);
+  wake();
 }
 
 void Ans1::force_outputs(std::uint16_t enable, std::uint16_t state) {
   output_force_enable_ = enable;
   output_force_state_ = state;
+  wake();
 }
 
 void Ans1::force_inputs(std::uint16_t enable, std::uint16_t state) {
   input_force_enable_ = enable;
   input_force_state_ = state;
+  wake();
 }
 
 void Ans1::clear_errors() {
@@ -197,6 +223,7 @@ void Ans1::clear_errors() {
     resolver_fault_latched_ = false;
   }
   monitors_.clear_errors();
+  wake();
 }
 
 // ---------------------------------------------------------------- status
@@ -230,12 +257,9 @@ std::int32_t Ans1::scaled() const {
 // ---------------------------------------------------------------- the scan
 
 void Ans1::schedule_scan(Nanos at) {
-  scan_event_ = scheduler_.at(at, [this] {
-    in_scan_ = true;
-    scan();
-    in_scan_ = false;
-    schedule_scan(scheduler_.now() + scan_period()); // the period may have changed in the scan
-  });
+  scan_at_ = at;
+  scan_event_ = scheduler_.at(
+      at, [this] { run_scan(); }, Scheduler::Tie::Last);
 }
 
 void Ans1::sample_resolver(Nanos now) {
@@ -387,10 +411,14 @@ void Ans1::speed_update() {
   const std::int64_t count = transducer_count();
   const std::int64_t delta = count - speed_reference_count_;
   speed_reference_count_ = count;
+  const SpeedFilter before = speed_;
   if (variant_ != Variant::SpeedFilterStuck) {
     speed_.update(delta, position_.counts_per_cycle, params_.speed_update_period, position_.rpm_filter);
   }
   update_advances();
+  if (!(speed_ == before)) {
+    wake(); // a scan reads the speed and the advances it sets; at standstill neither changes
+  }
   speed_event_ = scheduler_.at(scheduler_.now() + params_.speed_update_period, [this] { speed_update(); });
 }
 

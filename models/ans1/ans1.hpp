@@ -67,7 +67,10 @@ public:
   // of a setup.
   void configure(const Ans1Setup& setup);
   // CB11 bit 12: preset a production counter.
-  void preset_counter(CounterId id, std::uint32_t value) { monitors_.preset_counter(id, value); }
+  void preset_counter(CounterId id, std::uint32_t value) {
+    monitors_.preset_counter(id, value);
+    wake();
+  }
   // CB2 bit 14 (Transmit edge): GMP becomes MPV; with a value, MPV is loaded first (bit 11).
   void preset_machine(std::optional<std::uint16_t> value = std::nullopt);
   // CB3 bit 14: LSO = LSPV - GMP; with a value, LSPV is loaded first (bit 9).
@@ -79,7 +82,18 @@ public:
   // brake overrun faults.
   void clear_errors();
   // Slave mode: the position a master ANS1 sends, in transducer counts (mod CPC).
-  void set_slave_position(std::int64_t count) { slave_count_ = count; }
+  void set_slave_position(std::int64_t count) {
+    slave_count_ = count;
+    wake();
+  }
+  // The oracle of scan skipping (Params::exact_scan): from now on, a scan every period.
+  void scan_every_period() {
+    params_.exact_scan = true;
+    wake_now();
+  }
+  // Something a scan reads changed outside a scan (a pin edge, a host word, a setting): the
+  // next scan on the grid runs. Every mutator calls it; a new input must too (scan_skipping.cpp).
+  void wake();
 
   [[nodiscard]] const PositionSetup& position_setup() const { return position_; }
   [[nodiscard]] const OutputSetup& output_setup(int output) const;
@@ -131,9 +145,21 @@ public:
 
 private:
   struct QuadState;
+  struct ScanSnapshot;
 
   void schedule_scan(Nanos at);
+  void run_scan();
   void scan();
+  // ---- exact scan skipping (scan_skipping.cpp) ----
+  // Everything a scan may change, compared before and after a scan no outside change preceded.
+  [[nodiscard]] ScanSnapshot snapshot() const;
+  // The earliest time at which a scan with unchanged inputs can change the state: the one
+  // place every time-driven behaviour declares itself.
+  [[nodiscard]] Nanos next_change() const;
+  // The first scan of the period grid at or after t (max for max).
+  [[nodiscard]] Nanos grid_at_or_after(Nanos t) const;
+  // Schedules the next scan of the grid if it is earlier than the pending one.
+  void wake_now();
   void speed_update();
   void sample_resolver(Nanos now);
   void read_inputs();
@@ -181,6 +207,11 @@ private:
   std::uint16_t input_force_state_ = 0;
   std::uint64_t scans_ = 0;
   bool in_scan_ = false;
+  // Skipping: the grid's origin (the last scan, or one period before the first), the pending
+  // scan's time (max while asleep), and whether anything changed outside since the last scan.
+  Nanos grid_origin_{};
+  Nanos scan_at_ = Nanos::max();
+  bool changed_outside_ = true;
 
   // Speed
   SpeedFilter speed_{};

@@ -32,6 +32,7 @@ struct BrakeStatus {
   std::uint32_t completed_starts = 0;  // how many start times were measured (for tests and reports)
   std::uint32_t completed_stops = 0;   // how many stop times were measured
   std::uint32_t noise_rejections = 0;  // applications rejected as noise by the debounce
+  friend bool operator==(const BrakeStatus&, const BrakeStatus&) = default;
 };
 
 class BrakeMonitor {
@@ -97,6 +98,7 @@ private:
   bool stop_fault_ = false;
   std::array<std::int64_t, kHistory> history_{};
   std::uint64_t ticks_ = 0; // ticks recorded in history_
+  friend bool operator==(const BrakeMonitor&, const BrakeMonitor&) = default;
 };
 
 } // namespace hilrig::models::ans1

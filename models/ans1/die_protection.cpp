@@ -29,6 +29,18 @@ bool DieProtection::inside(const DieMonitorSetup& m, std::uint16_t gmp) const {
                      [gmp](const DieWindow& w) { return in_window(gmp, w); });
 }
 
+Nanos DieProtection::next_change() const {
+  Nanos next = Nanos::max();
+  for (int input = 1; input <= 16; ++input) {
+    if (setup_.monitors[index(input)].mode == DieCheckMode::Off) continue;
+    const MonitorState& s = state_[index(input)];
+    const bool waits =
+        s.primed && ((s.inside && s.level && !s.high_ok) || (!s.inside && !s.level && !s.low_ok));
+    if (waits) next = std::min(next, std::max(s.level_since, s.inside_since) + kQualifyTime);
+  }
+  return next;
+}
+
 void DieProtection::update(Nanos now, std::uint16_t gmp, std::uint16_t inputs) {
   for (int input = 1; input <= 16; ++input) {
     const DieMonitorSetup& m = setup_.monitors[index(input)];

@@ -38,6 +38,9 @@ public:
   [[nodiscard]] std::uint16_t first_to_fault() const { return first_to_fault_; }
   [[nodiscard]] std::uint16_t faulted_in_cycle() const { return faulted_in_cycle_; }
   [[nodiscard]] bool fault_in_cycle() const { return faulted_in_cycle_ != 0; }
+  // The earliest time at which update() with unchanged inputs and window can change the state:
+  // a level held inside (high) or outside (low) qualifying after 500 us; max when none waits.
+  [[nodiscard]] Nanos next_change() const;
   // Fault outputs, bit n-1 = output n: the outputs owned by an active monitor, and their level.
   [[nodiscard]] std::uint16_t fault_output_mask() const;
   [[nodiscard]] std::uint16_t fault_output_levels() const;
@@ -53,6 +56,7 @@ private:
     bool high_ok = false; // high >= 500 us inside since the last leading edge
     bool period_fault = false;
     std::uint8_t counter = 0;
+    friend bool operator==(const MonitorState&, const MonitorState&) = default;
   };
   [[nodiscard]] static std::size_t index(int input) { return static_cast<std::size_t>(input - 1); }
   [[nodiscard]] bool inside(const DieMonitorSetup& m, std::uint16_t gmp) const;
@@ -69,6 +73,7 @@ private:
   std::array<MonitorState, 16> state_{};
   std::uint16_t first_to_fault_ = 0;
   std::uint16_t faulted_in_cycle_ = 0;
+  friend bool operator==(const DieProtection&, const DieProtection&) = default;
 };
 
 } // namespace hilrig::models::ans1

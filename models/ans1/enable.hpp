@@ -29,6 +29,7 @@ public:
 private:
   int pair_ = -1;
   std::uint16_t latched_ = 0;
+  friend bool operator==(const PulseLatch&, const PulseLatch&) = default;
 };
 
 // Window ANDing (L972): entering the window clears W; the window input active inside the
@@ -41,6 +42,7 @@ public:
 private:
   bool inside_ = false;
   bool w_ = false;
+  friend bool operator==(const WindowLatch&, const WindowLatch&) = default;
 };
 
 } // namespace hilrig::models::ans1

@@ -9,9 +9,13 @@ HostInterface::HostInterface(Ans1& device) : device_(device) {}
 
 void HostInterface::write(int word, std::uint16_t value) {
   commands_[static_cast<std::size_t>(word)] = value;
+  device_.wake();
 }
 
-void HostInterface::write_block(const HostWords& words) { commands_ = words; }
+void HostInterface::write_block(const HostWords& words) {
+  commands_ = words;
+  device_.wake();
+}
 
 HostWords HostInterface::status() const {
   HostWords w{};

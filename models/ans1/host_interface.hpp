@@ -52,6 +52,7 @@ public:
   // ---- state, for reports and tests ----
   [[nodiscard]] ErrorCode error() const { return error_; }
   [[nodiscard]] bool acknowledge() const { return ack_; }
+  [[nodiscard]] bool transmit_seen() const { return transmit_seen_; }
   [[nodiscard]] const DataSelection& selection() const { return selection_; }
   [[nodiscard]] std::uint8_t active_program() const { return active_program_; }
   [[nodiscard]] bool hardware_fault() const { return hardware_fault_; }

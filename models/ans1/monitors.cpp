@@ -1,5 +1,7 @@
 #include "models/ans1/monitors.hpp"
 
+#include <algorithm>
+
 namespace hilrig::models::ans1 {
 
 namespace {
@@ -41,6 +43,11 @@ void Monitors::scan(Nanos now, const MonitorInputs& in) {
     brake_.tick(next_tick_, released, in.pos4096, in.gmp);
     next_tick_ += BrakeMonitor::kTick;
   }
+}
+
+Nanos Monitors::next_change() const {
+  const Nanos brake = brake_.setup().input != 0 ? next_tick_ : Nanos::max();
+  return std::min(brake, die_.next_change());
 }
 
 OutputClaims Monitors::claims() const {

@@ -43,6 +43,11 @@ public:
   void preset_counter(CounterId id, std::uint32_t value) { counters_.preset(id, value); }
 
   [[nodiscard]] OutputClaims claims() const;
+  // The earliest time at which scan() with unchanged inputs can change what the monitors
+  // report: a brake monitor tick while one is set up, a die-protection level qualifying.
+  // Ticks of an unused brake monitor only record position history, which nothing reads
+  // before the monitor is set up, so they are caught up at the next scan.
+  [[nodiscard]] Nanos next_change() const;
   [[nodiscard]] const MonitorSetup& setup() const { return setup_; }
   [[nodiscard]] const BrakeMonitor& brake() const { return brake_; }
   [[nodiscard]] const DieProtection& die() const { return die_; }
@@ -67,6 +72,7 @@ private:
   std::uint16_t gmp_ = 0;
   std::array<std::uint16_t, 16> rising_{};
   std::array<std::uint16_t, 16> falling_{};
+  friend bool operator==(const Monitors&, const Monitors&) = default;
 };
 
 } // namespace hilrig::models::ans1

@@ -41,6 +41,7 @@ struct OutputState {
   bool rpm = true;      // w15
   bool timer_ok = true; // w16
   bool ls = false;      // the output's LS function
+  friend bool operator==(const OutputState&, const OutputState&) = default;
 };
 
 class OutputChannel {
@@ -58,6 +59,8 @@ public:
 
   OutputState scan(const ScanState& scan, bool retrigger_restarts);
   [[nodiscard]] const OutputState& state() const { return state_; }
+  // The earliest time at which scan() with the same inputs can give another state (its timer).
+  [[nodiscard]] Nanos next_change() const { return timer_.expiry(setup_.timer_ms); }
 
 private:
   OutputSetup setup_{};
@@ -69,6 +72,7 @@ private:
   std::uint16_t simple_inputs_ = 0;
   std::uint16_t pulse_inputs_ = 0;
   int window_input_ = -1;
+  friend bool operator==(const OutputChannel&, const OutputChannel&) = default;
 };
 
 } // namespace hilrig::models::ans1

@@ -22,6 +22,10 @@ Nanos ResolverExcitation::latest_peak(Nanos t) const {
   return first_peak_ + half_period_ * k;
 }
 
+Nanos ResolverExcitation::next_peak(Nanos t) const {
+  return t < first_peak_ ? first_peak_ : latest_peak(t) + half_period_;
+}
+
 ResolverReading decode_resolver(double sin_stator, double cos_stator, double reference, double min_ratio,
                                 double max_ratio) {
   ResolverReading r;

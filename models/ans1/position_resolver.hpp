@@ -20,6 +20,8 @@ public:
   [[nodiscard]] double value(Nanos t) const;
   // The latest peak (positive or negative) at or before t.
   [[nodiscard]] Nanos latest_peak(Nanos t) const;
+  // The first peak strictly after t.
+  [[nodiscard]] Nanos next_peak(Nanos t) const;
   [[nodiscard]] double frequency_hz() const { return frequency_hz_; }
   [[nodiscard]] double amplitude() const { return amplitude_; }
 

@@ -54,6 +54,7 @@ private:
   std::uint64_t part_events_ = 0;
   std::array<std::uint32_t, kCounterCount> values_{};
   std::array<bool, kCounterCount> overflow_{};
+  friend bool operator==(const ProductionCounters&, const ProductionCounters&) = default;
 };
 
 } // namespace hilrig::models::ans1

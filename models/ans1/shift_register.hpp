@@ -30,6 +30,7 @@ public:
 private:
   std::bitset<kShiftRegisterBits> bits_;
   bool capture_ = false;
+  friend bool operator==(const ShiftRegister&, const ShiftRegister&) = default;
 };
 
 } // namespace hilrig::models::ans1

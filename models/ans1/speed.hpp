@@ -39,6 +39,7 @@ public:
 private:
   double value_ = 0.0;
   double measured_ = 0.0;
+  friend bool operator==(const SpeedFilter&, const SpeedFilter&) = default;
 };
 
 } // namespace hilrig::models::ans1

@@ -21,6 +21,11 @@ public:
   // True while the output is held off because its timer expired (DA16 w16 bit reads 0).
   [[nodiscard]] bool expired() const { return expired_; }
   void reset() { *this = TimedLimit{}; }
+  // When a running timer expires (the first step at or after it changes the state); max when
+  // none runs. What scan skipping wakes for.
+  [[nodiscard]] Nanos expiry(std::uint16_t timer_ms) const {
+    return running_ ? start_ + milliseconds(timer_ms) : Nanos::max();
+  }
 
 private:
   Nanos start_{};
@@ -29,6 +34,7 @@ private:
   bool expired_ = false;
   bool hold_ = false; // Time-Only re-trigger: off until the position moves one count
   std::uint16_t hold_position_ = 0;
+  friend bool operator==(const TimedLimit&, const TimedLimit&) = default;
 };
 
 } // namespace hilrig::models::ans1

@@ -93,6 +93,7 @@ RunOutput Executive::run(const RunSpec& spec) const {
   in.record_motion = false;
   in.host_link = host_link_ ? &host_link_ : nullptr;
   in.stop = stop_;
+  in.exact_scan = exact_scan_;
   for (const CheckSpec& c : s.checks)
     in.record_motion = in.record_motion || std::holds_alternative<checks::BrakeParams>(c.params);
   if (spec.fault) {

@@ -47,6 +47,9 @@ public:
   // Once `stop` is requested, the current run stops at its next event (every rig-driven line
   // driven inactive, the run marked interrupted) and no further run starts. Outlives run_all.
   void stop_on(const StopRequest* stop) { stop_ = stop; }
+  // Every virtual DUT scans every period instead of skipping the scans that change nothing
+  // (docs/virtual-time.md): the oracle the skipping is compared against, byte for byte.
+  void scan_every_period(bool on) { exact_scan_ = on; }
 
   // Runs one run. A rig fault inside the run is reported in result.error, not thrown.
   [[nodiscard]] RunOutput run(const RunSpec& run) const;
@@ -73,6 +76,7 @@ private:
   RunBackend backend_;
   HostLinkFactory host_link_;
   const StopRequest* stop_ = nullptr;
+  bool exact_scan_ = false;
 };
 
 } // namespace hilrig::campaign

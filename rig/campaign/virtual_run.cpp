@@ -57,6 +57,7 @@ public:
     make_lines();
     drive_resolver();
     dut_ = info->make(sched_, dut_params(*info, s_.dut), in_.variant, in_.seed);
+    if (in_.exact_scan) dut_->scan_every_period();
     std::map<std::string, std::string, std::less<>> pins;
     for (const Wire& w : s_.wiring) pins[w.board] = w.rig;
     dut_->attach(bus_, pins);

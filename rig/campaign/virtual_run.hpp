@@ -30,6 +30,7 @@ struct RunInputs {
   const HostLinkFactory* host_link = nullptr; // how host actions reach the DUT (null: in process)
   const StopRequest* stop = nullptr;          // when requested, the run stops at its next event
   RunGuards guards{};                         // a stalled or flooding run stops with a rig fault
+  bool exact_scan = false;                    // the DUT scans every period (the skipping's oracle)
 };
 
 struct VirtualRun {

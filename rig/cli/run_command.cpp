@@ -237,6 +237,7 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     campaign::Executive exec(p.c, p.rig ? hardware::hardware_backend(*p.rig, p.c.file, o.rig_ports)
                                         : campaign::RunBackend{});
     exec.use_host_link(p.link);
+    exec.scan_every_period(o.exact_scan);
     if (stop != nullptr) exec.stop_on(stop);
     std::size_t failure_traces = 0;
     std::optional<rig::AppendFile> can_log; // one block per run: a failed write keeps the runs before
@@ -532,6 +533,9 @@ void add_run_command(CLI::App& app) {
          "[dut] backend")
       ->check(CLI::IsMember({std::string("virtual"), std::string("hardware")}));
   cmd->add_option("--rig", options->rig, "the rig config of a hardware run (docs/rig-config.md)");
+  cmd->add_flag("--exact-scan", options->exact_scan,
+                "virtual DUTs scan every period instead of skipping the scans that change nothing: the "
+                "oracle of scan skipping, with byte-identical outputs (docs/virtual-time.md)");
   cmd->add_flag(
       "--progress", options->progress_lines,
       "a line per finished run on stderr (outcome, wall time, ETA), also when it is not a terminal");

@@ -44,6 +44,7 @@ struct RunOptions {
   bool progress_lines = false;       // --progress: one line per run, also when err is not a terminal
   std::string host_link{campaign::kInProcessLink}; // --host-link: in-process or modbus-rtu-pty
   campaign::HostLinkFactory host_link_factory;     // set by a caller: the link to use instead
+  bool exact_scan = false;    // --exact-scan: DUTs scan every period (the oracle of scan skipping)
   bool handle_signals = true; // SIGINT/SIGTERM stop the run, outputs inactive, results written, exit 3
   // --backend: "virtual" or "hardware"; "" follows the campaign's [dut] backend (or --rig).
   std::string backend;

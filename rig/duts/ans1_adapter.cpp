@@ -48,6 +48,7 @@ public:
   [[nodiscard]] std::uint16_t host_read(std::size_t word) const override {
     return device_.host().read(static_cast<int>(word));
   }
+  void scan_every_period() override { device_.scan_every_period(); }
 
 private:
   static bool wire_point(virt::VirtualBus& bus, const std::string& pin, const std::string& line,

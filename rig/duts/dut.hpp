@@ -157,6 +157,10 @@ public:
   virtual void panel(std::size_t action) {
     throw std::logic_error("this DUT has no front-panel action " + std::to_string(action));
   }
+  // Scan every period: the oracle of a model that skips the scans that change nothing
+  // (docs/virtual-time.md; `hilrig run --exact-scan`). Called before the run starts; a model
+  // that never skips has nothing to do.
+  virtual void scan_every_period() {}
 };
 
 // seed: the run's seed, for what a real board leaves to chance (e.g. its scan phase).

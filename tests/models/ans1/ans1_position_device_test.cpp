@@ -351,7 +351,9 @@ using testing::Bench;
 TEST(Ans1Device, HostSwitchToSlaveModeScansEvery40us) {
   // CB2 through the host words (spec §5.3): word 1 bit 2 = SlaveMode; command word
   // T (bit 15) | Apply w1 (bit 7) | block 2 = 0x8082, written first with T = 0.
-  Bench bench;
+  Params every_period;
+  every_period.exact_scan = true; // counts scans: none skipped
+  Bench bench(every_period);
   bench.run_until(1_ms);
   bench.device().host().write(1, 0x0004);
   bench.device().host().write(0, 0x0082);

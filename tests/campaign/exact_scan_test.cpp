@@ -1,0 +1,92 @@
+// Issue 20: scan skipping is exact. Every shipped campaign (campaigns/**.toml but the RT VM
+// lane's) runs twice as `hilrig run` runs it: skipping the scans that change nothing (the
+// default) and with --exact-scan (a scan every period, the oracle). results.json and trace.vcd
+// must be the same bytes, and junit.xml too once its wall-clock attributes (time, timestamp),
+// which differ between any two runs, are blanked (docs/virtual-time.md).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <regex>
+#include <sstream>
+
+#include "rig/cli/run_command.hpp"
+#include "test_support.hpp"
+#include "tests/tools/scratch_files.hpp"
+
+namespace hilrig::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> shipped_campaigns() {
+  std::vector<fs::path> out;
+  const fs::path root = fs::path(HILRIG_SOURCE_DIR) / "campaigns";
+  for (const auto& e : fs::recursive_directory_iterator(root)) {
+    if (e.path().extension() != ".toml") continue;
+    if (fs::relative(e.path(), root).begin()->string() == "lane") continue; // the RT VM lane
+    out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The first line where two texts differ, for a readable failure (the VCDs run to megabytes).
+std::string first_difference(const std::string& a, const std::string& b) {
+  std::istringstream sa(a);
+  std::istringstream sb(b);
+  std::string la;
+  std::string lb;
+  for (std::size_t line = 1;; ++line) {
+    const bool ga = static_cast<bool>(std::getline(sa, la));
+    const bool gb = static_cast<bool>(std::getline(sb, lb));
+    if (!ga && !gb) return "same lines";
+    if (ga != gb || la != lb)
+      return "line " + std::to_string(line) + ": skipping \"" + la + "\", every scan \"" + lb + "\"";
+  }
+}
+
+std::string without_wall_clock(const std::string& junit) {
+  static const std::regex wall(R"( (time|timestamp)="[^"]*")");
+  return std::regex_replace(junit, wall, " $1=\"\"");
+}
+
+fs::path run(const fs::path& file, bool exact_scan) {
+  const fs::path out =
+      hilrig::test::scratch_dir("campaign", (exact_scan ? "exact_" : "skip_") + file.stem().string());
+  std::ostringstream err;
+  RunOptions o;
+  o.file = file.string();
+  o.out = out;
+  o.shard = "0/1";
+  o.exact_scan = exact_scan;
+  EXPECT_NE(run_campaign(o, err), 2) << err.str();
+  return out;
+}
+
+TEST(ExactScan, EveryShippedCampaignGivesTheSameBytesAsScanningEveryPeriod) {
+  const auto files = shipped_campaigns();
+  ASSERT_GE(files.size(), 30U);
+  for (const fs::path& file : files) {
+    SCOPED_TRACE(file.filename().string());
+    const fs::path skip = run(file, false);
+    const fs::path every = run(file, true);
+    for (const char* name : {"results.json", "junit.xml", "trace.vcd"}) {
+      SCOPED_TRACE(name);
+      ASSERT_TRUE(fs::exists(every / name));
+      const bool junit = std::string(name) == "junit.xml";
+      std::string a = hilrig::test::read_file(skip / name);
+      std::string b = hilrig::test::read_file(every / name);
+      if (junit) {
+        a = without_wall_clock(a);
+        b = without_wall_clock(b);
+      }
+      EXPECT_FALSE(b.empty());
+      EXPECT_TRUE(a == b) << first_difference(a, b);
+    }
+  }
+}
+
+} // namespace
+} // namespace hilrig::cli

@@ -1,0 +1,84 @@
+// Exact scan skipping (docs/virtual-time.md): a device that nothing reaches runs no scans
+// beyond its first; anything it reads wakes the next scan on its period grid, where scanning
+// every period would have scanned. The byte-for-byte comparison of whole campaigns is
+// tests/campaign/exact_scan_test.cpp.
+#include <gtest/gtest.h>
+
+#include "ans1_bench.hpp"
+
+namespace hilrig::models::ans1 {
+namespace {
+
+using namespace hilrig::literals;
+using testing::Bench;
+
+Params every_period() {
+  Params p;
+  p.exact_scan = true;
+  return p;
+}
+
+// CB2 bit 3 (QuadEnc): the encoder, whose count moves only on its edges.
+void use_encoder(Bench& b) {
+  PositionSetup p = b.device().position_setup();
+  p.sensor = SensorType::Quadrature;
+  b.device().configure_position(p);
+}
+
+TEST(ScanSkipping, StandstillCostsNoScansWhileScanningEveryPeriodCostsOneAPeriod) {
+  // ans1 manual (seeds/000_08a2edf5547d4d1e.txt L572-L576, spec/ans1.md L187): a master
+  // scans every 10 us.
+  Bench oracle(every_period());
+  use_encoder(oracle);
+  oracle.run_until(1_s);
+  EXPECT_EQ(oracle.device().scans(), 100'001U); // t = 0, 10 us, ..., 1 s
+  Bench skipping;
+  use_encoder(skipping);
+  skipping.run_until(1_s);
+  const std::uint64_t one_second = skipping.device().scans();
+  EXPECT_LE(one_second, 3U); // the first scan settles the state, the second finds it settled
+  skipping.run_until(10_s);
+  EXPECT_EQ(skipping.device().scans(), one_second); // 9 s more standstill: no scan at all
+}
+
+TEST(ScanSkipping, AnInputEdgeWakesTheScanOnTheGridAndIsSeenThereAsEveryPeriod) {
+  // Inputs are read at the scan (spec §4.0): an edge at 5,003 us is read by the scan at
+  // 5,010 us; one at exactly 7,000 us by the scan at 7,000 us (a scan sees every change at
+  // its instant). Sweep edges across one period around grid points on both benches.
+  for (const Nanos at : {5'003_us, 6'999_us, 7'000_us, 7'001_us, 7'009_us, 7'010_us}) {
+    SCOPED_TRACE(at.count());
+    Bench oracle(every_period());
+    Bench skipping;
+    for (Bench* b : {&oracle, &skipping}) {
+      use_encoder(*b);
+      b->run_until(4_ms);
+      b->input_at(at, 3, true);
+      b->input_at(at + 20_us, 3, false);
+    }
+    for (Nanos t = 4_ms; t <= 8_ms; t += 1_us) {
+      oracle.run_until(t);
+      skipping.run_until(t);
+      ASSERT_EQ(oracle.device().input_states(), skipping.device().input_states()) << t.count();
+      ASSERT_EQ(oracle.device().electrical_inputs(), skipping.device().electrical_inputs()) << t.count();
+    }
+    EXPECT_LT(skipping.device().scans(), oracle.device().scans() / 10);
+  }
+}
+
+TEST(ScanSkipping, AResolverIsReadAtEveryExcitationPeakEvenAtStandstill) {
+  // The stators are sampled at each excitation peak, positive and negative (Params,
+  // 5 kHz: every 100 us). A peak that reads the same angle keeps the state; the scan after
+  // it still runs, one in ten of a scan every period.
+  Bench oracle(every_period());
+  Bench skipping;
+  oracle.run_until(100_ms);
+  skipping.run_until(100_ms);
+  EXPECT_EQ(oracle.device().scans(), 10'001U);
+  EXPECT_GE(skipping.device().scans(), 1'000U);             // one per peak: 1,000 peaks in 100 ms
+  EXPECT_LE(skipping.device().scans(), 1'000U + 100U + 2U); // and one after each 1 ms history tick
+  EXPECT_EQ(oracle.device().transducer_count(), skipping.device().transducer_count());
+  EXPECT_EQ(oracle.device().resolver_fault(), skipping.device().resolver_fault());
+}
+
+} // namespace
+} // namespace hilrig::models::ans1
