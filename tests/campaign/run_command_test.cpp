@@ -182,9 +182,11 @@ TEST(RunCommand, SignalBetweenRunsIsReportedAsSuch) {
   campaign::StopRequest stop;
   exec.stop_on(&stop);
   // The sink runs after each run and before the executive looks at the stop request.
-  const rig::CampaignResult r =
-      exec.run_all(c.runs, c.seed, rig::Shard{0, 1}, {},
-                   [&](const campaign::RunSpec&, const campaign::RunOutput&) { stop.request(SIGTERM); });
+  const rig::CampaignResult r = exec.run_all(c.runs, c.seed, rig::Shard{0, 1}, {},
+                                             [&](const campaign::RunSpec&, const campaign::RunOutput&) {
+                                               stop.request(SIGTERM);
+                                               return std::string{}; // no trace kept
+                                             });
   ASSERT_EQ(r.runs.size(), 1U);
   EXPECT_FALSE(r.runs[0].interrupted);
   EXPECT_EQ(r.interrupted, std::optional<std::string>("SIGTERM"));
@@ -244,6 +246,10 @@ TEST(RunCommand, ResultsJsonIsTheFoldedRunLog) {
                                std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
   EXPECT_FALSE(written["wall_clock"]["host"].get<std::string>().empty());
   written.erase("wall_clock");
+  // hilrig run keeps the first run's trace (trace.vcd) and names it in that run; the bare
+  // executive keeps none.
+  ASSERT_EQ(written["runs"][0]["trace"], "trace.vcd");
+  for (auto& r : written["runs"]) r.erase("trace");
   EXPECT_EQ(written.dump(), nlohmann::json::parse(rig::to_json_text(campaign::Executive(c).run_all(
                                                       c.runs, c.seed, rig::Shard{0, 1})))
                                 .dump());
