@@ -60,7 +60,7 @@ public:
   OutputState scan(const ScanState& scan, bool retrigger_restarts);
   [[nodiscard]] const OutputState& state() const { return state_; }
   // The earliest time at which scan() with the same inputs can give another state (its timer).
-  [[nodiscard]] Nanos next_change() const { return timer_.expiry(setup_.timer_ms); }
+  [[nodiscard]] Nanos next_change() const { return timer_.expiry(); }
 
 private:
   OutputSetup setup_{};

@@ -12,6 +12,7 @@ bool TimedLimit::step(bool calc, std::uint16_t p, Nanos now, TimerType type, std
   const bool rising = calc && !previous_calc_;
   previous_calc_ = calc;
   const Nanos limit = milliseconds(timer_ms) + timer_error;
+  limit_ = limit;
 
   if (type == TimerType::TimeOrPosition) {
     if (rising) {

@@ -22,13 +22,13 @@ public:
   [[nodiscard]] bool expired() const { return expired_; }
   void reset() { *this = TimedLimit{}; }
   // When a running timer expires (the first step at or after it changes the state); max when
-  // none runs. What scan skipping wakes for.
-  [[nodiscard]] Nanos expiry(std::uint16_t timer_ms) const {
-    return running_ ? start_ + milliseconds(timer_ms) : Nanos::max();
-  }
+  // none runs. What scan skipping wakes for: the limit the last step judged against, so the
+  // deadline and the expiry are one computation (a reprogrammed timer wakes the scan anyway).
+  [[nodiscard]] Nanos expiry() const { return running_ ? start_ + limit_ : Nanos::max(); }
 
 private:
   Nanos start_{};
+  Nanos limit_{}; // timer_ms + timer_error at the last step
   bool previous_calc_ = false;
   bool running_ = false;
   bool expired_ = false;

@@ -90,5 +90,31 @@ TEST(ExactScan, EveryShippedCampaignGivesTheSameBytesAsScanningEveryPeriod) {
   }
 }
 
+// The knobs move what a scan decides in time (a timer's expiry with timer_error): the deadline
+// scan skipping wakes for must move with it. ans1_timed swept across its thresholds both ways
+// (docs/power.md: the on time is ceil((timer + e) / 10 us) scans), including values at which
+// the pulse widths fail.
+TEST(ExactScan, KnobsAwayFromTheManualGiveTheSameBytes) {
+  std::string text = hilrig::test::read_file(fs::path(HILRIG_SOURCE_DIR) / "campaigns/ans1/ans1_timed.toml");
+  const std::string model = "[dut]\nmodel = \"ans1\"\n";
+  const std::size_t at = text.find(model);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + model.size(), "[dut.params]\ntimer_error = \"0ns\"\n");
+  text += "\n[[sweep]]\nkey = \"dut.params.timer_error\"\n"
+          "values = [\"-1010001ns\", \"-1010000ns\", \"-1009999ns\", \"-3ms\", \"1ms\", \"1000001ns\", "
+          "\"7ms\"]\n";
+  const fs::path file = hilrig::test::write_file(hilrig::test::scratch_dir("campaign", "exact_knobs"),
+                                                 "ans1_timed_knobs.toml", text);
+  const fs::path skip = run(file, false);
+  const fs::path every = run(file, true);
+  for (const char* name : {"results.json", "junit.xml"}) {
+    SCOPED_TRACE(name);
+    const std::string a = without_wall_clock(hilrig::test::read_file(skip / name));
+    const std::string b = without_wall_clock(hilrig::test::read_file(every / name));
+    EXPECT_NE(b.find("\"fail\""), std::string::npos); // some points are beyond the limit
+    EXPECT_TRUE(a == b) << first_difference(a, b);
+  }
+}
+
 } // namespace
 } // namespace hilrig::cli

@@ -26,7 +26,7 @@ void use_encoder(Bench& b) {
 }
 
 TEST(ScanSkipping, StandstillCostsNoScansWhileScanningEveryPeriodCostsOneAPeriod) {
-  // ans1 manual (seeds/000_08a2edf5547d4d1e.txt L572-L576, spec/ans1.md L187): a master
+  // ans1 manual (seeds/000_08a2edf5547d4d1e.txt L572-L576, docs/spec/ans1.md L187): a master
   // scans every 10 us.
   Bench oracle(every_period());
   use_encoder(oracle);
