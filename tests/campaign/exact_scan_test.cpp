@@ -21,17 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> shipped_campaigns() {
-  std::vector<fs::path> out;
-  const fs::path root = fs::path(HILRIG_SOURCE_DIR) / "campaigns";
-  for (const auto& e : fs::recursive_directory_iterator(root)) {
-    if (e.path().extension() != ".toml") continue;
-    if (fs::relative(e.path(), root).begin()->string() == "lane") continue; // the RT VM lane
-    out.push_back(e.path());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
+using campaign::test::shipped_campaigns;
 
 // The first line where two texts differ, for a readable failure (the VCDs run to megabytes).
 std::string first_difference(const std::string& a, const std::string& b) {

@@ -33,6 +33,20 @@ inline std::vector<std::string> campaigns_of(const std::string& device) {
   return files;
 }
 
+// Every shipped campaign but the RT VM lane's (campaigns/lane/ needs the lane's rig), in
+// path order.
+inline std::vector<std::filesystem::path> shipped_campaigns() {
+  std::vector<std::filesystem::path> out;
+  const std::filesystem::path root = std::filesystem::path(HILRIG_SOURCE_DIR) / "campaigns";
+  for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
+    if (e.path().extension() != ".toml") continue;
+    if (std::filesystem::relative(e.path(), root).begin()->string() == "lane") continue;
+    out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 // Reference PLS (on 100, off 300, scan 200 us, delay 50 us, preset -50), encoder 100 lines
 // (400 counts/turn), the shaft at count -50 swinging forward and back at 600 rpm (250 us
 // per count) in swings of 100.07 ms. The throughput check "on_latency" judges [50, 250] us.
