@@ -106,7 +106,7 @@ void TracedHostWords::note(Word& w, std::uint16_t value, std::optional<std::uint
   w.seen = true;
   w.last = value;
   trace_.value(w.signal, sched_.now(), value);
-  if (bit_signal) trace_.value(*bit_signal, sched_.now(), (value >> bit) & 1U);
+  if (bit_signal) trace_.value(*bit_signal, sched_.now(), (static_cast<unsigned>(value) >> bit) & 1U);
 }
 
 void TracedHostWords::write(std::size_t word, std::uint16_t value) {
