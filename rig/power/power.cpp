@@ -34,6 +34,15 @@ std::optional<Excess> excess(const rig::Measurement& m) {
   return std::nullopt;
 }
 
+// The knob of a press plant's brake: every brake torque the scenario gives, from the start and
+// in each [[plant.change]] (which states the whole parameter set in force from its time).
+void scale_brake_torque(campaign::Scenario& s, double factor) {
+  if (!s.plant) return;
+  s.plant->press.brake_torque *= factor;
+  for (plants::ParamChange<plants::PressParams>& change : s.plant->press_changes)
+    change.params.brake_torque *= factor;
+}
+
 // One probe's finding: the check's outcome over every nominal run, and its most failing measurement.
 struct Finding {
   Probe probe = Probe::Pass;
@@ -151,13 +160,28 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
   scale.sign = knob.direction == KnobDirection::Up ? 1 : -1;
   // How a probe sets the knob at a deviation, in every scenario point.
   std::function<void(campaign::Scenario&, double)> set;
-  if (knob.target == KnobTarget::MotionBrakeDecel) {
+  std::string knob_name = knob.param;
+  const campaign::PlantSpec* plant = c.points.front().plant ? &*c.points.front().plant : nullptr;
+  if (knob.target == KnobTarget::MotionBrakeDecel && plant != nullptr &&
+      plant->kind == campaign::PlantKind::Press) {
+    // A press plant brakes the shaft: its knob is a factor on every brake torque the
+    // campaign gives (the nominal and each [[plant.change]]'s, which would otherwise put a
+    // worn brake's torque back), down: a weaker brake stops later at every instant.
+    scale.kind = duts::ParamKind::Number;
+    scale.nominal = 1.0;
+    scale.min = 0.01; // a brake that still stops the shaft
+    scale.max = 1.0;
+    knob_name = "plant brake_torque factor";
+    set = [scale](campaign::Scenario& s, double deviation) {
+      scale_brake_torque(s, scale.value_at(deviation));
+    };
+  } else if (knob.target == KnobTarget::MotionBrakeDecel) {
     const campaign::Move* brake = nullptr;
     for (const campaign::Move& m : c.points.front().motion.moves)
       if (m.kind == campaign::MoveKind::PressStroke && brake == nullptr) brake = &m;
-    if (brake == nullptr || c.points.front().plant) {
-      row.reason = "no knob: the stop time is the machine's, and this campaign's brake is not a motion "
-                   "press_stroke (a [plant] brakes the shaft)";
+    if (brake == nullptr || plant != nullptr) {
+      row.reason = "no knob: the stop time is the machine's, and this campaign's brake is neither a motion "
+                   "press_stroke nor a press [plant]";
       return row;
     }
     scale.kind = duts::ParamKind::Number;
@@ -187,7 +211,7 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
     };
   }
   const bool duration = scale.kind == duts::ParamKind::Duration;
-  row.knob = knob.param;
+  row.knob = knob_name;
   row.direction = knob.direction == KnobDirection::Up ? "up" : "down";
   row.nominal = scale.shown(0.0);
 
@@ -202,7 +226,7 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
       std::isfinite(room) ? room : 1000.0 * std::max(std::abs(scale.nominal), spec.first_step);
   spec.max_probes = 48;
   if (spec.max_deviation <= 0.0) {
-    row.reason = fmt::format("never fails within knob range: {} is already at its range's end", knob.param);
+    row.reason = fmt::format("never fails within knob range: {} is already at its range's end", knob_name);
     return row;
   }
 
@@ -214,7 +238,7 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
                             name);
     const Probe p = f.probe;
     if (options.progress)
-      options.progress(fmt::format("power: {}: {}: {} = {:.6g}{}: {}", c.name, name, knob.param,
+      options.progress(fmt::format("power: {}: {}: {} = {:.6g}{}: {}", c.name, name, knob_name,
                                    scale.shown(deviation), row.knob_unit.empty() ? "" : " " + row.knob_unit,
                                    p == Probe::Pass   ? "pass"
                                    : p == Probe::Fail ? "fail"
@@ -229,7 +253,7 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
     row.reason = b.reason;
     if (b.reason.rfind("never fails", 0) == 0)
       row.reason =
-          fmt::format("never fails within knob range {} {:.6g} .. {:.6g}{}", knob.param, scale.shown(0.0),
+          fmt::format("never fails within knob range {} {:.6g} .. {:.6g}{}", knob_name, scale.shown(0.0),
                       scale.shown(spec.max_deviation), row.knob_unit.empty() ? "" : " " + row.knob_unit);
     for (const auto& [deviation, f] : findings)
       if (f.probe == Probe::Error) row.reason += fmt::format(" ({})", f.error);
@@ -291,6 +315,15 @@ Probe probe_param(const campaign::Campaign& c, const std::string& check, const s
   const campaign::Campaign base = probe_base(c, check);
   return judge_check(run_probe(
                          base, [&](campaign::Scenario& s) { s.dut.params[param].value = value; }, seed),
+                     check)
+      .probe;
+}
+
+Probe probe_plant_brake_factor(const campaign::Campaign& c, const std::string& check, double factor,
+                               std::uint64_t seed) {
+  const campaign::Campaign base = probe_base(c, check);
+  return judge_check(run_probe(
+                         base, [&](campaign::Scenario& s) { scale_brake_torque(s, factor); }, seed),
                      check)
       .probe;
 }

@@ -64,6 +64,11 @@ struct PowerOptions {
 [[nodiscard]] Probe probe_param(const campaign::Campaign& c, const std::string& check,
                                 const std::string& param, const duts::ParamValue& value, std::uint64_t seed);
 
+// The same at a factor on every brake torque of a press [plant] (the nominal and each
+// [[plant.change]]): the knob of brake_stop_time where a press plant brakes the shaft.
+[[nodiscard]] Probe probe_plant_brake_factor(const campaign::Campaign& c, const std::string& check,
+                                             double factor, std::uint64_t seed);
+
 // Whether a row's margin (or the board's worst-case margin, where known) is over max_pct, or
 // the row has no margin at all.
 [[nodiscard]] bool over_margin(const PowerRow& row, double max_pct);

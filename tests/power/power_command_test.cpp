@@ -81,15 +81,15 @@ TEST(PowerCommand, MaxMarginGatesTheExitStatusAndPowerJsonIsWritten) {
   EXPECT_TRUE(std::filesystem::exists(dir / "power.html"));
 }
 
-// A check with no knob (brake stop time where a [plant] brakes the shaft) is in the table
-// with its reason, and fails a --max-margin gate.
+// A check with no knob (a value check: a word, not a timing) is in the table with its reason,
+// and fails a --max-margin gate.
 TEST(PowerCommand, ACheckWithoutAKnobIsNamedNotOmitted) {
   PowerOptions o;
-  o.file = kSource + "/campaigns/ans1/ans1_press_plant.toml";
+  o.file = kSource + "/campaigns/ssi7361/ssi7361_data_types.toml";
   o.max_margin_pct = 100.0;
   std::ostringstream out, err;
   EXPECT_EQ(power_campaign(o, out, err), kCheckFailed);
-  EXPECT_NE(out.str().find("no knob:"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("no knob: a value check"), std::string::npos) << out.str();
   EXPECT_NE(err.str().find("no margin"), std::string::npos) << err.str();
 }
 
