@@ -30,13 +30,57 @@ Smd23e::Smd23e(Scheduler& scheduler, Params params)
     w[6] = 1024;
     w[7] = 50;
     w[8] = 20;
-    if (auto c = validate_config(w)) {
-      cfg_ = *c;
-      configured_ = true;
-      config_error_ = false;
-      idle_percent_ = cfg_.words[7];
-    }
+    flash_config_ = validate_config(w);
   }
+  load_flash();
+}
+
+void Smd23e::load_flash() {
+  if (flash_config_) {
+    cfg_ = *flash_config_;
+    configured_ = true;
+    config_error_ = false;
+    idle_percent_ = cfg_.words[7];
+  }
+  segments_ = flash_segments_; // restored at power-up, runnable once configured (L1132, L1205)
+}
+
+void Smd23e::power_off() {
+  if (!powered_) return;
+  if (run_ || pause_event_.valid()) immediate_stop(); // motor power gone: the steps stop here
+  powered_ = false;
+}
+
+void Smd23e::power_on() {
+  if (powered_) return;
+  powered_ = true;
+  epoch_ = sched_.now() - p_.heartbeat_phase;
+  // RAM is gone: configuration, RAM assembled move, every flag and error (L2284, L2372).
+  cfg_ = Config{};
+  configured_ = false;
+  config_mode_ = false;
+  config_error_ = true;
+  flash_locked_ = false; // the lock-out after a flash save lasts until power is cycled (L2331)
+  flash_result_ = 0;
+  cmd_err_ = in_err_ = move_complete_ = homed_ = hold_state_ = inv_par_ = false;
+  limit_cond_ = stall_ = drv_fault_ = lock_cw_ = lock_ccw_ = false;
+  program_mode_ = transmit_segment_ = false;
+  net_loss_ = false;
+  pos_invalid_ = true; // 0x6408 includes Position Invalid (L2284); a flash load leaves it set
+  last_jerk_ = 0;
+  armed_ = 0;
+  held_.reset();
+  idle_percent_.reset();
+  pending_idle_percent_.reset();
+  segments_.clear();
+  // Motor Position and Encoder Position count from 0 again: the shaft stays where it is.
+  reg_offset_ = -step_position(sched_.now());
+  enc_offset_ = 0;
+  enc_offset_ = -encoder_position();
+  captured_ = 0;
+  last_motion_end_ = sched_.now();
+  load_flash();
+  if (hot_) over_temperature(); // still hot: the driver faults again once enabled ([MODEL])
 }
 
 Smd23e::~Smd23e() {
@@ -101,6 +145,7 @@ RegisterStatus Smd23e::write_holding_registers(std::uint16_t address, std::span<
 void Smd23e::write_outputs(const Words& words) {
   const Words previous = out_;
   out_ = words;
+  if (!powered_) return; // unseen; at power-up the words already held are no edge ([MODEL])
   process(previous);
   if (hot_) {
     over_temperature(); // the driver enabled while still over temperature faults at once ([MODEL])
@@ -164,6 +209,7 @@ std::uint16_t Smd23e::status2() const {
 
 Words Smd23e::input_words() const {
   Words in{};
+  if (!powered_) return in; // [MODEL] no answer while off: the host reads 0
   if (config_mode_) {
     const bool read_present = (out_[1] & cfgw::kReadPresent) != 0 && configured_;
     const Words& src = read_present ? cfg_.words : out_;
@@ -336,13 +382,14 @@ void Smd23e::process_config(const Words& previous) {
     pending_idle_percent_ = applied.words[7];
     configured_ = true;
     config_error_ = false;
-    pos_invalid_ = true; // a configuration written sets Position Invalid (L2846)
-    segments_.clear();   // and erases the RAM assembled move (L1132)
+    pos_invalid_ = true;         // a configuration written sets Position Invalid (L2846)
+    segments_ = flash_segments_; // and erases the RAM assembled move (L1132); a flash one stays ([MODEL])
     last_motion_end_ = sched_.now();
   }
   if (save) {
     flash_result_ = 0xAAAA;
     flash_locked_ = true;
+    flash_config_ = applied;
   }
 }
 
@@ -474,6 +521,7 @@ void Smd23e::process_command(const Words& previous) {
       transmit_segment_ = false;
       if ((lsw & lsw::kSaveAssembled) != 0) {
         flash_locked_ = true;
+        flash_segments_ = segments_;
       }
       return;
     }

@@ -96,6 +96,15 @@ public:
   void set_temperature_warning(bool warn) { temp_warn_ = warn; }
   void network_link(bool up);
 
+  // The supply goes off / comes back ([[power_cycle]], README "Power cycle"). Off: the step
+  // train stops where it is, the unit answers nothing (input words 0) and ignores its inputs.
+  // On: as at power-up (L2243, L2284): Command Mode; the flash configuration and assembled
+  // move loaded (L1132, L1836, L2235, L2433), or 0x6408 without one; every error and the
+  // post-save lock-out cleared (L2331, L2476); Motor and Encoder Position 0, Position Invalid.
+  void power_off();
+  void power_on();
+  [[nodiscard]] bool powered() const { return powered_; }
+
 private:
   enum class Kind : std::uint8_t { Position, EncoderMove, Jog, Registration, Home, Blend, Dwell };
   enum class HomeStage : std::uint8_t { Search, Pause1, Back, Pause2, Creep, ProxCreep };
@@ -204,6 +213,12 @@ private:
   bool config_error_ = true;
   bool flash_locked_ = false;
   std::uint16_t flash_result_ = 0;
+  bool powered_ = true;
+  // Flash memory: what survives a power cycle (Save Configuration L2331, Save Assembled Move
+  // L2476); RAM copies above are loaded from it at power-up.
+  std::optional<Config> flash_config_;
+  std::vector<Segment> flash_segments_;
+  void load_flash(); // at power-up
 
   // Status flags.
   bool cmd_err_ = false;

@@ -693,7 +693,7 @@ void Smd23e::on_input(int input, Level level) {
   const bool before = input_active(input);
   raw_[static_cast<std::size_t>(input)] = level;
   const bool after = input_active(input);
-  if (before == after || !configured_ || config_mode_) {
+  if (before == after || !powered_ || !configured_ || config_mode_) {
     return;
   }
   switch (function_of(input)) {

@@ -80,6 +80,14 @@ public:
     follow(); // an over-temperature stops the step train
   }
 
+  void power(bool on) override {
+    if (on)
+      device_.power_on();
+    else
+      device_.power_off();
+    follow(); // power off stops the step train where it is
+  }
+
 private:
   // Emits the steps the shaft has turned since the last call, then sleeps until the next.
   void follow() {
@@ -214,6 +222,16 @@ DutInfo smd23e_info() {
        "(L564, L2895); `until`: cooled, the bit clears",
        FaultSite::Board, true},
   };
+  info.power_cycle =
+      "flash survives: a configuration saved with Save Configuration (Config Word bit 10) or "
+      "flash_config_valid "
+      "is loaded at power-up, else SW1 0x6408 (L1836, L2235, L2284, L2372); an assembled move saved with LSW "
+      "bit 5 is restored (L1132, L1205). RAM is lost: an unsaved configuration and assembled move (L2235, "
+      "L1132), every error bit, and the lock-out after a flash save, which lasts until power is cycled "
+      "(L2331, L2476). Command Mode (L2243), Motor and Encoder Position 0 and Position Invalid [MODEL: no "
+      "absolute position]. While off [MODEL]: the step train stops where it is, input words read 0, inputs "
+      "and output words are unseen (words held at power-up are no edge); an over-temperature still present "
+      "faults the driver again";
   info.host = HostInterface{m::kWords, m::kWords, false, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t seed) -> std::unique_ptr<Dut> {

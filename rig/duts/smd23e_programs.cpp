@@ -36,6 +36,7 @@ struct Configuration {
   bool home_proximity = false;
   bool anti_resonance = true;
   bool drive_enable = true;
+  bool save_to_flash = false;
   std::int64_t starting_speed = 1;
   std::int64_t steps_per_turn = 200;
   std::int64_t encoder_pulses = 1024;
@@ -47,8 +48,9 @@ Words configuration(const Configuration& c) {
   w[0] = static_cast<std::uint16_t>(bit(15) | bit(14, !c.anti_resonance) | bit(13, c.stall_detection) |
                                     bit(11, c.home_proximity) | bit(10, c.encoder) | (c.input3 << 6) |
                                     (c.input2 << 3) | c.input1);
-  w[1] = static_cast<std::uint16_t>(bit(15, c.drive_enable) | bit(2, c.input3_active == 1) |
-                                    bit(1, c.input2_active == 1) | bit(0, c.input1_active == 1));
+  w[1] = static_cast<std::uint16_t>(bit(15, c.drive_enable) | bit(10, c.save_to_flash) |
+                                    bit(2, c.input3_active == 1) | bit(1, c.input2_active == 1) |
+                                    bit(0, c.input1_active == 1));
   put_multiword(w, 2, c.starting_speed);
   w[4] = word(c.steps_per_turn);
   w[6] = word(c.encoder_pulses);
@@ -143,6 +145,9 @@ std::vector<ProgramBlockInfo> smd23e_programs() {
               {"home_proximity", &C::home_proximity, "Home proximity from LSW bit 11 (bit 11)"},
               {"anti_resonance", &C::anti_resonance, "anti-resonance on (bit 14 clear)"},
               {"drive_enable", &C::drive_enable, "Driver enable (word 1 bit 15)"},
+              {"save_to_flash", &C::save_to_flash,
+               "Save Configuration (word 1 bit 10, on its 0->1 edge): to flash, loaded at power-up; the unit "
+               "then answers nothing until power is cycled (L2331)"},
               {"starting_speed", &C::starting_speed, "Starting Speed, steps/s (words 2-3)", 1, 1'999'999},
               {"steps_per_turn", &C::steps_per_turn, "Motor Steps/Turn (word 4)", 200, 32767},
               {"encoder_pulses", &C::encoder_pulses, "Encoder Pulses/Turn (word 6)", 1024, 1024, {}, true},

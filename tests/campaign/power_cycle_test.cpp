@@ -116,9 +116,14 @@ TEST_P(PowerCycleCampaign, PassesAndItsChecksJudgeThePowerCycle) {
 INSTANTIATE_TEST_SUITE_P(
     Shipped, PowerCycleCampaign,
     // 7361: CMDErr clears only on a valid cycle (seeds/004 L2037) or a power cycle (L254-256,
-    // L921-923). 4501: no non-volatile memory, mode 1 at power-up (seeds/001 L176).
+    // L921-923). 4501: no non-volatile memory, mode 1 at power-up (seeds/001 L176). SMD23E: after
+    // a flash save the unit answers nothing until power is cycled (seeds/003 L2331), and loads the
+    // saved configuration at power-up (L2235, L2243).
     ::testing::Values(Shipped{"ssi7361", "ssi7361_power_cycle.toml", {"errors_cleared"}},
-                      Shipped{"amci4501", "amci4501_power_cycle.toml", {"mode_1_after_power_up"}}),
+                      Shipped{"amci4501", "amci4501_power_cycle.toml", {"mode_1_after_power_up"}},
+                      Shipped{"smd23e",
+                              "smd23e_power_cycle.toml",
+                              {"flash_configuration_at_power_up", "moves_after_power_up"}}),
     [](const ::testing::TestParamInfo<Shipped>& p) { return std::string(p.param.device); });
 
 } // namespace
