@@ -22,6 +22,17 @@ TEST(PhaseCoverage, CrossingsSteppingSevenMicrosecondsCoverEveryBinOfATenMicrose
   EXPECT_EQ(cov.describe(10_us), "10/10 bins of the 10 us period covered");
 }
 
+TEST(PhaseCoverage, CyclesSteppingThreePointSevenMicrosecondsCoverEveryTenthOfAMicrosecond) {
+  // ans1_throughput.toml: 100 cycles of 190.0037 ms, i.e. 3.7 us later in the 10 us scan each;
+  // 37 and 100 share no factor, so the hundred crossings fill all hundred 0.1 us bins, and 99
+  // of them leave one bin empty.
+  std::vector<Nanos> crossings;
+  for (std::int64_t k = 0; k < 100; ++k) crossings.push_back(35'041'667_ns + k * 190'003'700_ns);
+  EXPECT_EQ(phase_coverage(crossings, 10_us, 100).covered, 100U);
+  crossings.pop_back();
+  EXPECT_EQ(phase_coverage(crossings, 10_us, 100).covered, 99U);
+}
+
 TEST(PhaseCoverage, FourMicrosecondStepsLeaveHalfTheBinsEmpty) {
   // The campaign before issue 16: 180.014 ms pairs, 4 us a swing: phases 0, 4, 8, 2, 6.
   std::vector<Nanos> crossings;
