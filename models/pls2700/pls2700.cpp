@@ -247,8 +247,8 @@ void Pls2700::after_program(const Setup& before, int entered_output) {
 }
 
 std::uint8_t Pls2700::write_btw(std::span<const std::uint16_t> words) {
-  if (words.empty() || words.size() > kMaxBtwWords) {
-    return error_byte_; // a PLC cannot send these
+  if (words.empty() || words.size() > kMaxBtwWords || !powered_) {
+    return error_byte(); // a PLC cannot send these; an unpowered module takes none
   }
   const bool latch = fault_ != Fault::ErrorLatchMissing;
   if (latch && (error_byte_ != error::kNone || any_fault_latched()) && words[0] != kClearErrors) {
@@ -311,6 +311,7 @@ std::uint16_t Pls2700::tach_word(int channel) const {
 bool Pls2700::input_energized(int channel) const { return is_high((*inputs_)[index(channel)].level); }
 
 std::uint16_t Pls2700::btr_word(std::size_t word) const {
+  if (!powered_) return 0; // [MODEL] an unpowered module answers no block transfer
   if (model_.channels == 1) {
     switch (word) {
     case 0:
@@ -378,10 +379,39 @@ bool Pls2700::keyboard_delete_pair(int output, int pair) {
   return true;
 }
 
-void Pls2700::power_cycle() {
+void Pls2700::power_off() {
+  if (!powered_) return;
+  powered_ = false;
+  scheduler_.cancel(update_event_);
+  update_event_ = {};
+  output_states_ = 0;
+  drive_outputs(0);
+}
+
+void Pls2700::power_on() {
+  if (powered_) return;
+  powered_ = true;
   for (HoleTable& h : holes_) {
-    h.rebuild();
+    h.rebuild(); // from the stored pairs (L1074)
   }
+  setup_.mask = params_.power_up_mask; // R-M-2 [I]: the mask's retention is not stated
+  error_byte_ = error::kNone;          // [MODEL] a programming error is not kept in nvRAM
+  for (std::size_t ch = 0; ch < 2; ++ch) {
+    raw_[ch] = mp_[ch] = raw_step_[ch] = 0;
+    have_raw_[ch] = false; // the absolute resolver is read afresh at the first update
+    fault_present_[ch] = fault_latched_[ch] = false;
+    advance_speed_[ch] = AdvanceSpeed(advance_window_updates(params_.advance_speed_window, period_), period_);
+    cycles_[ch] = CycleLogic{};
+    cycles_[ch].set_trigger(setup_.channels[ch].trigger);
+    InputQueue& q = (*inputs_)[ch];
+    q.head = q.count = 0; // edges while off were not seen; the level stays
+  }
+  last_update_ = Nanos{-1};
+  first_update_ = excitation_.peak_at_or_after(scheduler_.now() + params_.update_phase);
+  for (std::size_t ch = 0; ch < 2; ++ch) {
+    restart_tach(ch);
+  }
+  schedule_update(first_update_);
 }
 
 } // namespace hilrig::models::pls2700

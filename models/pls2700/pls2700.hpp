@@ -58,13 +58,13 @@ public:
   [[nodiscard]] std::uint16_t btr_word(std::size_t index) const;
   [[nodiscard]] std::size_t btr_words() const { return static_cast<std::size_t>(model_.btr_words); }
   // 2731-04 single-transfer input word (§5.2); the same word on other models.
-  [[nodiscard]] std::uint16_t single_transfer_word() const { return position_word(1); }
+  [[nodiscard]] std::uint16_t single_transfer_word() const { return powered_ ? position_word(1) : 0; }
   [[nodiscard]] std::uint16_t position_word(int channel) const; // channel 1 or 2
   [[nodiscard]] std::uint16_t tach_word(int channel) const;
   [[nodiscard]] std::uint16_t status_word() const {
     return static_cast<std::uint16_t>((error_byte_ << 8) | output_states_);
   }
-  [[nodiscard]] std::uint8_t error_byte() const { return error_byte_; }
+  [[nodiscard]] std::uint8_t error_byte() const { return powered_ ? error_byte_ : 0; }
 
   // ---- Front panel (keyboard in Program Mode); false outside Program Mode ----
   // The Program switch (L543): toward the back (true) = Program Mode, front = Display Mode.
@@ -73,14 +73,25 @@ public:
   // keyboard not disabled by the host's 8100h ("locked into display mode from the processor",
   // L543, L1356). The modes are the front panel's only (L537): the host's words act in either.
   [[nodiscard]] bool program_mode() const {
-    return switch_program_ && params_.program_jumper_fitted && !setup_.keyboard_disabled;
+    return powered_ && switch_program_ && params_.program_jumper_fitted && !setup_.keyboard_disabled;
   }
   bool autozero(int channel); // R-CO-3: CLEAR while the position is displayed (L368, L534-535)
   // R-LS-7/R-LS-5: CLEAR on pair `pair` (1-based) of `output` deletes it; where another
   // pair overlapped it the output stays off (W8) until that pair is re-entered or power cycles.
   bool keyboard_delete_pair(int output, int pair);
-  // Power cycle: the position tables are rebuilt from the stored pairs; nvRAM is kept.
-  void power_cycle();
+  // The supply off / back on (README "Power cycle"). The nvRAM setup is kept (L322, L776): pairs,
+  // advances, SF, offsets, tach codes, the keyboard lock (L1357). Back on, the position tables are
+  // rebuilt from the stored pairs (L1074: an OFF space a deleted overlapping pair left is gone),
+  // the position read afresh from the absolute resolver, errors and a latched transducer fault
+  // cleared (re-detected if still there), the mask FFh (R-M-2), the tach and 2742-18 cycles
+  // restarted. Off: outputs off, no updates, the host reads 0 and its writes are ignored.
+  void power_off();
+  void power_on();
+  void power_cycle() {
+    power_off();
+    power_on();
+  }
+  [[nodiscard]] bool powered() const { return powered_; }
 
   // ---- State ----
   [[nodiscard]] int machine_position(int channel) const { return mp_[index(channel)]; }
@@ -156,6 +167,7 @@ private:
   std::uint8_t output_states_ = 0;
   std::uint8_t error_byte_ = 0;
   std::uint64_t updates_ = 0;
+  bool powered_ = true;
   EventId update_event_{};
 };
 

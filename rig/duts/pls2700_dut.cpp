@@ -62,8 +62,20 @@ public:
       (void)device_.autozero(static_cast<int>(action) - 1);
       return;
     default:
+      if (action < 4 + p::kOutputCount) { // delete_last_pair_N
+        const int output = static_cast<int>(action) - 3;
+        (void)device_.keyboard_delete_pair(output, device_.setup().outputs[action - 4].pair_count);
+        return;
+      }
       throw std::logic_error("pls2700: no front-panel action " + std::to_string(action));
     }
+  }
+
+  void power(bool on) override {
+    if (on)
+      device_.power_on();
+    else
+      device_.power_off();
   }
 
 private:
@@ -213,6 +225,21 @@ DutInfo pls2700_info() {
                      "(L535) and while the channel's transducer fault is latched"},
       {"autozero_2", "the same for channel 2 (2732, 2742 and 2742-18 only; ignored on a one-channel module)"},
   };
+  for (int out = 1; out <= p::kOutputCount; ++out)
+    info.panel.push_back(
+        {"delete_last_pair_" + std::to_string(out),
+         "CLEAR on output " + std::to_string(out) +
+             "'s last ON/OFF pair in Program Mode deletes it (L1078); where it overlapped another pair "
+             "the output stays OFF over it until that pair is entered again or power is cycled (L1074); "
+             "ignored in Display Mode (L535)"});
+  info.power_cycle =
+      "nvRAM keeps every parameter (L322, L776): setpoint pairs, advances, Scale Factor, Circular "
+      "Offset, tach response, the keyboard lock (L1357); the resolver is absolute, so the position is "
+      "the same after power-up. Back on, the setpoint tables are rebuilt from the stored pairs: an OFF "
+      "space a deleted overlapping pair left is gone (L1058, L1074). [MODEL] lost: the programming "
+      "error byte, a latched transducer fault (detected again if still there), the output mask (FFh, "
+      "power_up_mask, R-M-2), the tach value and 2742-18 cycles (they start again); while off: outputs "
+      "off, no updates, every host word reads 0 and block transfers are ignored; no power-up delay";
   info.faults = {
       {"transducer_loss", "the resolver lost (cable off: both stators at amplitude 0)" + reaction,
        FaultSite::OpenStators, true},

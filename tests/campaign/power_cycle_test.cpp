@@ -119,11 +119,15 @@ INSTANTIATE_TEST_SUITE_P(
     // L921-923). 4501: no non-volatile memory, mode 1 at power-up (seeds/001 L176). SMD23E: after
     // a flash save the unit answers nothing until power is cycled (seeds/003 L2331), and loads the
     // saved configuration at power-up (L2235, L2243).
-    ::testing::Values(Shipped{"ssi7361", "ssi7361_power_cycle.toml", {"errors_cleared"}},
-                      Shipped{"amci4501", "amci4501_power_cycle.toml", {"mode_1_after_power_up"}},
-                      Shipped{"smd23e",
-                              "smd23e_power_cycle.toml",
-                              {"flash_configuration_at_power_up", "moves_after_power_up"}}),
+    ::testing::Values(
+        Shipped{"ssi7361", "ssi7361_power_cycle.toml", {"errors_cleared"}},
+        Shipped{"amci4501", "amci4501_power_cycle.toml", {"mode_1_after_power_up"}},
+        Shipped{
+            "smd23e", "smd23e_power_cycle.toml", {"flash_configuration_at_power_up", "moves_after_power_up"}},
+        // 2700: the OFF space a deleted overlapping pair leaves lasts until power is
+        // cycled (seeds/002 L1074); nvRAM keeps the pairs (L776). Without the cycle the
+        // module also answers while it should be off.
+        Shipped{"pls2700", "pls2700_power_cycle.toml", {"no_answer_while_off", "on_after_power_up"}}),
     [](const ::testing::TestParamInfo<Shipped>& p) { return std::string(p.param.device); });
 
 } // namespace
