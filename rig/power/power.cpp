@@ -48,6 +48,7 @@ struct Finding {
   Probe probe = Probe::Pass;
   std::optional<rig::Measurement> worst;
   std::optional<Excess> worst_excess;
+  std::optional<rig::Measurement> coverage; // the least covered run's `<check>.phase_coverage`
   std::string error;
 };
 
@@ -63,6 +64,9 @@ Finding judge_check(const rig::CampaignResult& result, const std::string& check)
     for (const rig::CheckResult& c : run.checks) {
       if (c.check != check) continue;
       judged = true;
+      for (const rig::Measurement& m : c.measurements)
+        if (m.name == check + ".phase_coverage" && (!f.coverage || m.value < f.coverage->value))
+          f.coverage = m;
       const rig::Outcome o = c.outcome();
       if (o == rig::Outcome::Error) {
         f.probe = Probe::Error;
@@ -140,6 +144,20 @@ std::string kind_of_check(const campaign::Campaign& c, const std::string& name) 
   for (const campaign::Scenario& s : c.points)
     if (const campaign::CheckSpec* k = s.check(name)) return k->kind;
   return {};
+}
+
+// A latency check meets the board's worst case only for a stimulus just after a scan: the row
+// says how much of the scan its stimulus met (docs/campaigns.md, "Phase coverage"), or that it
+// does not know. A response the model puts at a fixed delay (WorstCase::Knob) has no phase.
+void describe_phase_coverage(PowerRow& row, const Finding& f, const Knob& knob) {
+  if (f.coverage) {
+    row.phase_coverage = "phase coverage " + f.coverage->detail;
+    row.phase_coverage_complete = f.coverage->detail.find("incomplete") == std::string::npos;
+  } else if (row.kind == "throughput" && knob.worst_case != WorstCase::Knob) {
+    row.phase_coverage = "phase coverage not measured (the check has no scan_us): its stimulus may "
+                         "meet one phase of the board's scan only, and the board's worst case lie beyond "
+                         "what it read";
+  }
 }
 
 // One side of the check's knob: `side` replaces a two-sided knob's direction.
@@ -261,6 +279,7 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
   }
   row.threshold = scale.shown(*b.threshold);
   const Finding& at = findings.at(*b.threshold);
+  describe_phase_coverage(row, at, knob);
   if (at.worst) {
     row.measurement = at.worst->name;
     row.unit = at.worst->unit;

@@ -38,6 +38,12 @@ struct PowerRow {
   // `unit`, and its distance beyond the limit: what the campaign lets through unseen.
   std::optional<double> board_worst;
   std::optional<double> board_margin_pct;
+  // The phase coverage the check's stimulus met (its `<check>.phase_coverage` sentence, the
+  // least covered run's) for a check whose reading depends on where the stimulus falls in the
+  // board's scan; why it is unknown when the check reports none (no scan_us); "" otherwise.
+  // A board worst case beyond the limit that the rig let pass is explained here.
+  std::string phase_coverage;
+  bool phase_coverage_complete = false;
   std::string detail; // the failing measurement's sentence
   std::string reason; // why there is no threshold ("" when there is one)
 };

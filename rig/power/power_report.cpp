@@ -26,6 +26,15 @@ std::string check_text(const PowerRow& r) {
   return r.two_sided ? r.check + " (" + r.direction + ")" : r.check;
 }
 
+// The HTML table's last column: why there is no threshold, what failed without a value, and
+// an incomplete or unknown phase coverage.
+std::string reason_text(const PowerRow& r) {
+  std::string text = r.reason.empty() && !r.margin_pct ? r.detail : r.reason;
+  if (!r.phase_coverage.empty() && !r.phase_coverage_complete)
+    text += (text.empty() ? "" : "; ") + r.phase_coverage;
+  return text;
+}
+
 } // namespace
 
 std::string to_power_json(const PowerResult& result) {
@@ -55,6 +64,9 @@ std::string to_power_json(const PowerResult& result) {
     j["margin_pct"] = optional_number(r.margin_pct);
     j["board_worst"] = optional_number(r.board_worst);
     j["board_margin_pct"] = optional_number(r.board_margin_pct);
+    j["phase_coverage"] =
+        r.phase_coverage.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.phase_coverage);
+    j["phase_coverage_complete"] = r.phase_coverage_complete;
     j["detail"] = r.detail;
     j["reason"] = r.reason.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.reason);
     doc["checks"].push_back(std::move(j));
@@ -77,6 +89,8 @@ std::string to_power_text(const PowerResult& result) {
                          percent(r.board_margin_pct));
       if (!r.margin_pct)
         out += fmt::format("{:<20} fails without a value beyond a limit: {}\n", "", r.detail);
+      if (!r.phase_coverage.empty() && !r.phase_coverage_complete)
+        out += fmt::format("{:<20} {}\n", "", r.phase_coverage);
     } else {
       out += fmt::format("{:<20} {:<17} {}\n", check_text(r), r.kind, r.reason);
     }
@@ -107,7 +121,7 @@ std::string to_power_html(const PowerResult& result) {
         rig::xml_escape(with_unit(r.threshold, r.knob_unit)), rig::xml_escape(with_unit(r.measured, r.unit)),
         rig::xml_escape(with_unit(r.limit, r.unit)), rig::xml_escape(margin_text(r)),
         rig::xml_escape(with_unit(r.board_worst, r.unit)), rig::xml_escape(percent(r.board_margin_pct)),
-        rig::xml_escape(r.reason.empty() && !r.margin_pct ? r.detail : r.reason));
+        rig::xml_escape(reason_text(r)));
   out += "</table>\n</body></html>\n";
   return out;
 }

@@ -42,12 +42,12 @@ TEST(Executive, ShippedPassingCampaignPasses) {
       ASSERT_NE(min, nullptr);
       EXPECT_GE(min->value, lo) << run.name << " " << check;
       EXPECT_LE(max->value, hi) << run.name << " " << check;
-      // Ten forward (or backward) swings cross each setpoint once each way, and their
-      // phases in the 200 us scan fill the ten bins (140 us = 7 x 20 us later each pair).
-      EXPECT_EQ(count->value, 10.0) << run.name << " " << check;
+      // A hundred swing cycles cross each setpoint once each way, and their phases in the
+      // 200 us scan fill the hundred 2 us bins (74 us = 37 x 2 us later each cycle).
+      EXPECT_EQ(count->value, 100.0) << run.name << " " << check;
       const auto* cov = find(run, std::string(check) + ".phase_coverage");
       ASSERT_NE(cov, nullptr);
-      EXPECT_EQ(cov->value, 10.0) << run.name << " " << check << ": " << cov->detail;
+      EXPECT_EQ(cov->value, 100.0) << run.name << " " << check << ": " << cov->detail;
     }
     // The host wrote the setpoints (100, 300) and read them back.
     ASSERT_EQ(run.observations.size(), 2U);
@@ -114,16 +114,17 @@ TEST(Executive, TheSeedMovesTheScanPhase) {
 }
 
 // The reference PLS sees a crossing at its next scan and drives the pin `delay` later: the
-// latency lies in [delay, delay + scan) (campaign header; scan 200 us). With 10/10 phase bins
-// of 20 us covered, some crossing falls within 20 us after a scan, so the shipped campaign
-// passes a board exactly at its 300 us limit (delay 100 us) and fails one whose worst case is
-// one bin or more beyond (delay 120, 121, 150 us), at any power-up scan phase (seed).
-TEST(Executive, ReferenceThroughputPassesAtTheLimitAndFailsOneBinBeyondAtAnyPhase) {
+// latency lies in [delay, delay + scan) (campaign header; scan 200 us). With 100/100 phase bins
+// of 2 us covered, some crossing falls within 2 us after a scan, so the shipped campaign passes
+// a board exactly at its 300 us limit (delay 100 us) and fails one whose worst case is one bin
+// (302 us, 0.67 %) or more beyond: 303 us is the limit + 1 % (delay 102, 103, 150 us), at any
+// power-up scan phase (seed).
+TEST(Executive, ReferenceThroughputPassesAtTheLimitAndFailsOnePercentBeyondAtAnyPhase) {
   const std::string path = test::shipped("reference_pls_pass.toml");
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
-  for (const int delay_us : {50, 100, 120, 121, 150}) {
+  for (const int delay_us : {50, 100, 102, 103, 150}) {
     std::string t = text.str();
     const std::string shipped = "delay = \"50us\"";
     ASSERT_NE(t.find(shipped), std::string::npos);
@@ -132,7 +133,7 @@ TEST(Executive, ReferenceThroughputPassesAtTheLimitAndFailsOneBinBeyondAtAnyPhas
     ASSERT_NE(sweep, std::string::npos);
     t.erase(sweep); // one board: this delay
     const Campaign c = parse_campaign(t, path);
-    for (const std::uint64_t base : {1ULL, 2ULL, 3ULL, 4ULL, 42ULL}) {
+    for (const std::uint64_t base : {1ULL, 2ULL, 3ULL, 42ULL}) {
       RunSpec run = c.runs[0];
       run.seed = run_seed(base, run.index);
       const rig::RunResult r = Executive(c).run(run).result;
@@ -143,7 +144,7 @@ TEST(Executive, ReferenceThroughputPassesAtTheLimitAndFailsOneBinBeyondAtAnyPhas
         EXPECT_EQ(max->outcome, want)
             << delay_us << " us, seed " << base << ", " << check << ": " << max->value;
         EXPECT_LT(max->value, delay_us + 200.0);
-        EXPECT_GT(max->value, delay_us + 180.0);
+        EXPECT_GT(max->value, delay_us + 198.0);
       }
     }
   }

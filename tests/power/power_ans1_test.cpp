@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
 
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/power/power.hpp"
+#include "rig/power/power_report.hpp"
 
 namespace hilrig::power {
 namespace {
@@ -55,6 +57,8 @@ TEST(PowerAns1, ThroughputThresholdOutputDelayIsWhereTheManualsArithmeticPutsIt)
       EXPECT_GT(*row.board_margin_pct, 0.0);
       EXPECT_LE(*row.board_margin_pct, 0.5 + 1e-9);
       EXPECT_FALSE(over_margin(row, 1.0)); // the gate: within 1 % beyond the limit
+      EXPECT_EQ(row.phase_coverage, "phase coverage 100/100 bins of the 10 us period covered");
+      EXPECT_TRUE(row.phase_coverage_complete);
     }
   }
 }
@@ -149,6 +153,71 @@ TEST(PowerAns1, BrakeReportNoLongerFailsFirstTheLimitIsReached) {
   EXPECT_DOUBLE_EQ(*row.limit, 150.0);
   EXPECT_GT(*row.measured, 150.0);
   EXPECT_LE(*row.measured, 150.0003);
+}
+
+// ans1_faults.toml `lead`: output 1 on from 100 with a 10 ms fixed lead (CB5) at 100 rpm =
+// 600 counts/s: the board advances it 6 counts (ans1 manual seeds/000_08a2edf5547d4d1e.txt:893,
+// W-13), so the edge is at 94, judged +-0.5 count. The edge reaches the pin up to one 10 us scan
+// plus output_delay after the board's position reached 94 (seeds/000_08a2edf5547d4d1e.txt:572,
+// docs/spec/ans1.md L187): it leaves the window once (scan wait + delay) x 600 counts/s > 0.5,
+// i.e. the delay that fails lies in (833.333 - 10, 833.333] us, whatever the scan phase, and a
+// delay of at most 823.333 us passes. (With the old +-1 count the model's whole range, 1 ms,
+// never failed it.)
+TEST(PowerAns1, FaultsLeadFailsOnceTheOutputDelayMovesTheEdgeHalfACount) {
+  const campaign::Campaign c =
+      campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_faults.toml");
+  for (const std::int64_t ns : {10'000, 500'000, 823'000, 823'333}) {
+    SCOPED_TRACE(ns);
+    EXPECT_EQ(probe_param(c, "lead", "output_delay", Nanos{ns}, c.seed), Probe::Pass);
+  }
+  for (const std::int64_t ns : {833'334, 834'000, 900'000, 1'000'000}) {
+    SCOPED_TRACE(ns);
+    EXPECT_EQ(probe_param(c, "lead", "output_delay", Nanos{ns}, c.seed), Probe::Fail);
+  }
+}
+
+// ans1_die_protection.toml `die2_fault_latency` judges one crossing (the die fault output goes
+// off once, on the first fault, and stays off in action 0: ans1 manual
+// seeds/000_08a2edf5547d4d1e.txt:1072), so it meets one phase of the 10 us scan: the board's
+// worst case at its threshold lies far beyond the 20 us limit (L572), and the row says why
+// instead of passing the gap in silence.
+TEST(PowerAns1, ASingleCrossingLatencyCheckNamesItsUnmeasuredPhaseCoverage) {
+  const campaign::Campaign c =
+      campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_die_protection.toml");
+  PowerOptions options;
+  options.checks = {"die2_fault_latency"};
+  const PowerResult r = measure_power(c, options);
+  ASSERT_EQ(r.rows.size(), 1u);
+  const PowerRow& row = r.rows[0];
+  ASSERT_TRUE(row.threshold && row.board_margin_pct) << row.reason;
+  EXPECT_GT(*row.threshold, 10.0);
+  EXPECT_LE(*row.threshold, 20.0); // one crossing waits 0..10 us for its scan
+  EXPECT_GT(*row.board_margin_pct, 1.0);
+  EXPECT_FALSE(row.phase_coverage_complete);
+  EXPECT_EQ(row.phase_coverage.rfind("phase coverage not measured (the check has no scan_us)", 0), 0u)
+      << row.phase_coverage;
+  EXPECT_NE(to_power_text(r).find("phase coverage not measured"), std::string::npos);
+  EXPECT_NE(to_power_json(r).find("\"phase_coverage_complete\": false"), std::string::npos);
+}
+
+// ans1_die_protection.toml `die4_fault_latency`: a Normally False die monitor with action 1
+// (self-reset; ans1 manual seeds/000_08a2edf5547d4d1e.txt:2093-2097) turns its fault output off
+// at every inactive -> active edge (L1072, L1081) and back on at the next release, so a square
+// wave on its input gives a crossing per closing: 100 closings 4.0037 ms apart meet every 0.1 us
+// phase of the 10 us scan. Each latency is the input's wait for a scan (0..10 us) plus the
+// output delay, at most 20 us at the nominal 10 us (master throughput, L572): a board whose
+// worst case is exactly 20 us passes, one 0.505 % (10.101 us) or 1 % (10.2 us) beyond fails,
+// at the campaign's and other power-up scan phases.
+TEST(PowerAns1, DieFaultLatencyFailsOnePercentBeyondTheLimitAtEveryScanPhase) {
+  const campaign::Campaign c =
+      campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_die_protection.toml");
+  for (const std::uint64_t seed : {c.seed, std::uint64_t{1}, std::uint64_t{2}}) {
+    SCOPED_TRACE(seed);
+    for (const std::int64_t ns : {9'000, 10'000})
+      EXPECT_EQ(probe_param(c, "die4_fault_latency", "output_delay", Nanos{ns}, seed), Probe::Pass) << ns;
+    for (const std::int64_t ns : {10'101, 10'200, 11'000})
+      EXPECT_EQ(probe_param(c, "die4_fault_latency", "output_delay", Nanos{ns}, seed), Probe::Fail) << ns;
+  }
 }
 
 TEST(PowerRows, AMarginOverTheGateOrNoMarginAtAllIsOver) {
