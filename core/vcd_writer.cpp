@@ -10,6 +10,7 @@
 // b<binary> (two's complement within the width), Reals "real" vars written as r<shortest
 // round-trip decimal>. Identifier codes are base-94 over the printable ASCII '!'..'~'.
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <ostream>
 #include <stdexcept>
@@ -99,41 +100,43 @@ void write_scope(std::ostream& out, const Scope& scope, const std::vector<Signal
   }
 }
 
-// Appends one value change ("1!", "b110 #", "r1.25 $") and its newline to `out`.
+// Appends one value change ("1!", "b110 #", "r1.25 $") and its newline to `out`, formatted
+// into a local line first: one append per change (a long run writes millions).
 void append_value(std::string& out, const SignalInfo& s, std::string_view id, std::int64_t v, double r) {
+  char line[128];
+  std::size_t n = 0;
   switch (s.kind) {
   case SignalKind::Wire:
-    out += v != 0 ? '1' : '0';
-    out += id;
-    out += '\n';
-    return;
+    line[n++] = v != 0 ? '1' : '0';
+    break;
   case SignalKind::Integer: {
     auto bits = static_cast<std::uint64_t>(v);
     if (s.width < 64) bits &= (std::uint64_t{1} << s.width) - 1U;
-    char buf[66];
-    int n = 0;
-    do {
-      buf[n++] = static_cast<char>('0' + (bits & 1U));
-      bits >>= 1U;
-    } while (bits != 0);
-    out += 'b';
-    while (n > 0) out += buf[--n];
-    out += ' ';
-    out += id;
-    out += '\n';
-    return;
+    const int digits = bits == 0 ? 1 : 64 - std::countl_zero(bits);
+    line[n++] = 'b';
+    for (int i = digits - 1; i >= 0; --i)
+      line[n++] = static_cast<char>('0' + ((bits >> static_cast<unsigned>(i)) & 1U));
+    line[n++] = ' ';
+    break;
   }
   case SignalKind::Real: {
-    char buf[32];
-    const auto res = std::to_chars(buf, buf + sizeof buf, r);
-    out += 'r';
-    out.append(buf, static_cast<std::size_t>(res.ptr - buf));
-    out += ' ';
+    line[n++] = 'r';
+    const auto res = std::to_chars(line + n, line + 64, r);
+    n = static_cast<std::size_t>(res.ptr - line);
+    line[n++] = ' ';
+    break;
+  }
+  }
+  if (n + id.size() + 1 > sizeof line) { // never for a real trace (5 characters name 7e9 signals)
+    out.append(line, n);
     out += id;
     out += '\n';
     return;
   }
-  }
+  id.copy(line + n, id.size());
+  n += id.size();
+  line[n++] = '\n';
+  out.append(line, n);
 }
 
 void write_value(std::ostream& out, const SignalInfo& s, std::size_t index, std::int64_t v, double r) {

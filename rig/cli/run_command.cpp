@@ -266,7 +266,11 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
       if (rig::run_outcome(output.result) != rig::Outcome::Pass && failure_traces < kMaxFailureTraces) {
         ++failure_traces;
         const std::string stem = fmt::format("trace-run{}", run.index);
-        write_trace_files(dir, stem, *output.trace, output.result, true);
+        if (kept.empty()) {
+          write_trace_files(dir, stem, *output.trace, output.result, true);
+        } else {
+          link_trace_files(dir, "trace", stem, *output.trace, output.result); // the same bytes, once
+        }
         kept = stem + ".vcd";
       }
       if (!output.trace->can_frames().empty()) {

@@ -107,6 +107,23 @@ std::string gtkw_text(const std::string& vcd_name, const std::string& title, con
   return text;
 }
 
+namespace {
+
+// STEM.<check>.gtkw for each check of `run` that failed (or erred).
+void write_gtkw_files(const std::filesystem::path& dir, const std::string& stem, const TraceRecorder& trace,
+                      const rig::RunResult& run) {
+  for (const rig::CheckResult& check : run.checks) {
+    if (!failed(run, check)) continue;
+    const GtkwView view = view_of(check, trace);
+    const std::string title = fmt::format("run {} ({}): check {} {}", run.index, run.name, check.check,
+                                          rig::to_string(rig::judgement_in(run, check)));
+    rig::write_file_atomically(dir / fmt::format("{}.{}.gtkw", stem, plain_name(check.check)),
+                               gtkw_text(stem + ".vcd", title, view, trace.signals()));
+  }
+}
+
+} // namespace
+
 void write_trace_files(const std::filesystem::path& dir, const std::string& stem, TraceRecorder& trace,
                        const rig::RunResult& run, bool gtkw_for_failures) {
   std::vector<TraceSample> marks;
@@ -120,18 +137,15 @@ void write_trace_files(const std::filesystem::path& dir, const std::string& stem
       marks.push_back(TraceSample{w.end, signal, 0, 0.0});
     }
   }
-  std::ostringstream vcd;
-  write_vcd(trace, vcd, "", marks);
-  rig::write_file_atomically(dir / (stem + ".vcd"), vcd.str());
-  if (!gtkw_for_failures) return;
-  for (const rig::CheckResult& check : run.checks) {
-    if (!failed(run, check)) continue;
-    const GtkwView view = view_of(check, trace);
-    const std::string title = fmt::format("run {} ({}): check {} {}", run.index, run.name, check.check,
-                                          rig::to_string(rig::judgement_in(run, check)));
-    rig::write_file_atomically(dir / fmt::format("{}.{}.gtkw", stem, plain_name(check.check)),
-                               gtkw_text(stem + ".vcd", title, view, trace.signals()));
-  }
+  rig::write_file_atomically(dir / (stem + ".vcd"),
+                             [&](std::ostream& vcd) { write_vcd(trace, vcd, "", marks); });
+  if (gtkw_for_failures) write_gtkw_files(dir, stem, trace, run);
+}
+
+void link_trace_files(const std::filesystem::path& dir, const std::string& written_stem,
+                      const std::string& stem, const TraceRecorder& trace, const rig::RunResult& run) {
+  rig::link_file_atomically(dir / (written_stem + ".vcd"), dir / (stem + ".vcd"));
+  write_gtkw_files(dir, stem, trace, run);
 }
 
 } // namespace hilrig::cli

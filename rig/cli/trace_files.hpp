@@ -18,6 +18,10 @@ namespace hilrig::cli {
 // leaves a whole file or none. Declares the check.<name> wires on `trace`.
 void write_trace_files(const std::filesystem::path& dir, const std::string& stem, TraceRecorder& trace,
                        const rig::RunResult& run, bool gtkw_for_failures);
+// The same run's trace under a second stem: STEM.vcd a hard link to WRITTEN_STEM.vcd (written by
+// write_trace_files for this run, so the same bytes), and the .gtkw files of its failed checks.
+void link_trace_files(const std::filesystem::path& dir, const std::string& written_stem,
+                      const std::string& stem, const TraceRecorder& trace, const rig::RunResult& run);
 
 // The window a save file opens on (exposed for tests): [begin, end] in ns.
 struct GtkwView {

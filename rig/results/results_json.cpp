@@ -305,36 +305,6 @@ std::string to_json_text(const CampaignResult& r) {
   return text + "\n";
 }
 
-void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path tmp = path.string() + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw std::runtime_error(fmt::format("cannot write {}: {}", tmp.string(), std::strerror(errno)));
-  // On any failure (ENOSPC, EFBIG, EIO) the half-written temporary is removed: a failed write
-  // leaves the previous file, or none, and no *.tmp.
-  const auto fail = [&](const char* what, int err) {
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    throw std::runtime_error(fmt::format("cannot {} {}: {}", what, tmp.string(), std::strerror(err)));
-  };
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      fail("write", errno);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0) fail("flush", errno);
-  if (::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    throw std::runtime_error(fmt::format("cannot flush {}: {}", tmp.string(), std::strerror(err)));
-  }
-  std::filesystem::rename(tmp, path);
-}
-
 void write_results_file(const std::filesystem::path& path, const CampaignResult& result) {
   write_file_atomically(path, to_json_text(result));
 }

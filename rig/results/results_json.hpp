@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "rig/results/atomic_file.hpp" // write_file_atomically, which write_results_file uses
 #include "rig/results/campaign_result.hpp"
 
 namespace hilrig::rig {
@@ -33,8 +34,6 @@ inline constexpr int kResultsVersion = 2; // 2: outcome words, campaign_sha256, 
 // complete file or the new one, never half a file. Call it again as runs finish to keep a
 // readable partial-progress file (complete = false until the last run).
 void write_results_file(const std::filesystem::path& path, const CampaignResult& result);
-// Same atomic write for any text (used by the junit and html writers too).
-void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 // Throws std::runtime_error when the file cannot be read or is not a results file. A run log
 // (*.jsonl, rig/results/run_log.hpp) is folded: its header and whole records, finalized.
 [[nodiscard]] CampaignResult read_results_file(const std::filesystem::path& path);

@@ -72,6 +72,9 @@ TEST(RunCommand, FailedCheckExitsOne) {
   EXPECT_EQ(run(file.string(), dir / "out"), 1);
   // A run that failed leaves its trace as evidence.
   EXPECT_TRUE(fs::exists(dir / "out" / "trace-run0.vcd"));
+  // The first run's failure trace is its trace.vcd: the same bytes (written once, linked).
+  EXPECT_EQ(hilrig::test::read_file(dir / "out" / "trace-run0.vcd"),
+            hilrig::test::read_file(dir / "out" / "trace.vcd"));
 }
 
 TEST(RunCommand, BadFileExitsTwoWithFileLineColumnKey) {

@@ -218,6 +218,60 @@ TEST(WriteFileAtomically, FullDiskOrSizeLimitLeavesNoTmp) {
   EXPECT_EQ(slurp(path), "previous\n");
 }
 
+// Streamed: a file larger than the 1 MiB buffer, written in pieces of every size, arrives
+// whole; a second name linked to it reads the same bytes.
+TEST(WriteFileAtomically, StreamedWritesEveryByteAndLinksTheSameBytes) {
+  const fs::path dir = scratch("atomic_stream");
+  std::string expected;
+  for (std::size_t i = 0; expected.size() < (std::size_t{3} << 20U); ++i)
+    expected += std::string(i % 700, static_cast<char>('a' + i % 26)) + '\n';
+  expected += std::string(std::size_t{2} << 20U, 'z'); // one block larger than the buffer
+  write_file_atomically(dir / "big.vcd", [&](std::ostream& out) {
+    std::size_t at = 0;
+    for (std::size_t piece = 1; at < expected.size(); piece = piece * 3 % 100'003 + 1) {
+      const std::size_t n = std::min(piece, expected.size() - at);
+      if (n == 1) {
+        out.put(expected[at]);
+      } else {
+        out.write(expected.data() + at, static_cast<std::streamsize>(n));
+      }
+      at += n;
+    }
+  });
+  EXPECT_EQ(slurp(dir / "big.vcd"), expected);
+  EXPECT_FALSE(fs::exists(dir / "big.vcd.tmp"));
+  link_file_atomically(dir / "big.vcd", dir / "copy.vcd");
+  EXPECT_EQ(slurp(dir / "copy.vcd"), expected);
+  EXPECT_FALSE(fs::exists(dir / "copy.vcd.tmp"));
+}
+
+// Streamed onto a full disk, or a writer that throws: the error says why (or is the writer's),
+// no *.tmp is left and the previous file stays.
+TEST(WriteFileAtomically, StreamedFullDiskOrThrowingWriterLeavesThePreviousFile) {
+  const fs::path dir = scratch("atomic_stream_fail");
+  const fs::path path = dir / "trace.vcd";
+  write_file_atomically(path, "previous\n");
+  fs::create_symlink("/dev/full", dir / "trace.vcd.tmp");
+  try {
+    write_file_atomically(path, [](std::ostream& out) {
+      for (int i = 0; i < 100'000; ++i) out << "b1010 !\n";
+    });
+    ADD_FAILURE() << "a write to a full disk passed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_TRUE(says(e, ENOSPC)) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(fs::symlink_status(dir / "trace.vcd.tmp")));
+  EXPECT_EQ(slurp(path), "previous\n");
+  EXPECT_THROW(write_file_atomically(path,
+                                     [](std::ostream& out) {
+                                       out << "half";
+                                       throw std::invalid_argument("VCD: negative sample time");
+                                     }),
+               std::invalid_argument);
+  EXPECT_FALSE(fs::exists(dir / "trace.vcd.tmp"));
+  EXPECT_EQ(slurp(path), "previous\n");
+}
+
 } // namespace
 } // namespace hilrig::rig
 
