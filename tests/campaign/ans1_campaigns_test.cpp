@@ -101,7 +101,7 @@ TEST(Ans1Campaigns, AdvancesFollowW13AtEverySpeed) {
 // crossing waits more than 9.9 us for its scan: it passes a board whose worst case is exactly
 // 20 us (10 us delay) and fails one whose worst case is 20.2 us (limit + 1 %), and already one
 // at 20.101 us (0.505 %: no phase can stay 0.101 us clear of every crossing).
-TEST(Ans1Campaigns, ThroughputFailsAWorstCaseOneOnePercentBeyond20usAndPassesExactly20usAtAnyScanPhase) {
+TEST(Ans1Campaigns, ThroughputFailsAWorstCaseOnePercentBeyond20usAndPassesExactly20usAtAnyScanPhase) {
   const std::string path = ans1_dir() + "/ans1_throughput.toml";
   std::ifstream in(path);
   std::stringstream text;
