@@ -15,6 +15,7 @@ signals::CountMode count_mode(const Params& p) {
 
 Amci4501::Amci4501(Scheduler& scheduler, const Pins& pins, Params params)
     : scheduler_(scheduler), pins_(pins), params_(params),
+      cycle_driver_(scheduler, pins.cycle_output, params.cycle_output_on, params.output_off_skew),
       decoder_(count_mode(params), is_high(pins.a.level()), is_high(pins.b.level())) {
   if (params_.timer_resolution <= Nanos{0})
     throw std::invalid_argument("amci4501: timer_resolution must be > 0");
@@ -23,7 +24,8 @@ Amci4501::Amci4501(Scheduler& scheduler, const Pins& pins, Params params)
   deferred_.reserve(32);
   start_active_ = start_mark_ = active(pins.start.level(), params_.start_jumper);
   latch_active_ = latch_mark_ = active(pins.latch.level(), params_.latch_jumper);
-  set_cycle_output(false);
+  cycle_output_on_ = false; // off from power-up, not after a turn-off delay
+  pins_.cycle_output.set(!params_.cycle_output_on);
   pins_.a.on_edge([this](const Edge& e) { on_encoder(e); });
   pins_.b.on_edge([this](const Edge& e) { on_encoder(e); });
   if (pins_.z != nullptr) pins_.z->on_edge([this](const Edge& e) { on_index(e); });
@@ -264,7 +266,7 @@ void Amci4501::publish(std::span<const std::uint16_t> words, std::uint8_t first)
 
 void Amci4501::set_cycle_output(bool on) {
   cycle_output_on_ = on;
-  pins_.cycle_output.set(on ? params_.cycle_output_on : !params_.cycle_output_on);
+  cycle_driver_.set(on ? params_.cycle_output_on : !params_.cycle_output_on);
 }
 
 void Amci4501::arm_timeout(Nanos from) {

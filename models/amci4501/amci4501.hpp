@@ -26,6 +26,7 @@
 
 #include "core/line.hpp"
 #include "core/scheduler.hpp"
+#include "core/skewed_output.hpp"
 #include "models/amci4501/host_words.hpp"
 #include "models/amci4501/params.hpp"
 #include "models/amci4501/programming.hpp"
@@ -136,6 +137,7 @@ private:
   Scheduler& scheduler_;
   Pins pins_;
   Params params_;
+  SkewedOutput cycle_driver_; // the Cycle Output's driver, on pins_.cycle_output
   bool powered_ = true;
   signals::QuadratureDecoder decoder_;
   Config config_{};

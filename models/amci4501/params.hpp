@@ -24,6 +24,11 @@ struct Params {
   Nanos mode5_throughput = microseconds(100);
   // Response delay used by the "late_outputs" variant (beyond spec).
   Nanos late_throughput = microseconds(250);
+  // [MODEL] The manual gives one throughput for every response (L281), so the Cycle Output
+  // (an open collector sinking up to 20 mA, L277) turns off as fast as on. A detection-power
+  // knob (README, docs/power.md): a driver that turns off this much slower (< 0: turns on
+  // slower) than on stretches (shortens) every Cycle Output pulse at the pin by it.
+  Nanos output_off_skew{0};
   // Time measurements count a free-running timer of this resolution (L26, L32, L49).
   Nanos timer_resolution = microseconds(1);
   // Velocity words: counts per window, refreshed every window (L114).

@@ -119,6 +119,10 @@ void Ans1::attach(const Ans1Pins& pins) {
   for (int n = 1; n <= kOutputCount; ++n) {
     if (LineOutput* out = pins_.outputs[index(n)]) {
       out->set(level_of((pin_levels_ & bit(n)) != 0));
+      // From now on through the output driver: an output is on when its pin is high.
+      skewed_[index(n)] =
+          std::make_unique<SkewedOutput>(scheduler_, *out, Level::High, params_.output_off_skew);
+      pins_.outputs[index(n)] = skewed_[index(n)].get();
     }
   }
   wake();

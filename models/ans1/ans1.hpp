@@ -20,6 +20,7 @@
 #include <optional>
 
 #include "core/scheduler.hpp"
+#include "core/skewed_output.hpp"
 #include "models/ans1/ans1_pins.hpp"
 #include "models/ans1/host_interface.hpp"
 #include "models/ans1/monitors.hpp"
@@ -173,6 +174,7 @@ private:
   Params params_;
   Variant variant_;
   Ans1Pins pins_{};
+  std::array<std::unique_ptr<SkewedOutput>, kOutputCount> skewed_; // the output drivers, on pins_
   ResolverExcitation excitation_;
   std::shared_ptr<QuadState> quad_;
 

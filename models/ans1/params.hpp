@@ -15,6 +15,12 @@ struct Params {
   // A slave's throughput is 50 us (L576): 40 us scan + 10 us output delay.
   Nanos slave_scan_period = microseconds(40);
   Nanos output_delay = microseconds(10);
+  // [MODEL] The manual states one throughput for both edges ("10 to 20 microseconds,
+  // depending on load", L572-L574): the model turns each output off as fast as on. A
+  // detection-power knob (README, docs/power.md): a driver that turns off this much slower
+  // (< 0: turns on slower) than it turns on, e.g. a sourcing output (L1658) or a solid-state
+  // relay (L1562) on its load, stretches (shortens) every ON pulse at the pin by it.
+  Nanos output_off_skew{0};
   // [MODEL] Where the first scan falls after power-up (the manual gives none: the scan clock
   // free-runs against the machine). The rig draws it from the run's seed, in [0, scan).
   Nanos scan_phase{0};

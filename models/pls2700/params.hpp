@@ -43,6 +43,11 @@ struct Params {
   // Output driver delay d_drv and 2742-18 input delay (T_ON/T_OFF, max 3 ms, L1724) [X].
   Nanos output_delay{0};
   Nanos input_delay{0};
+  // [MODEL] The manual gives one throughput for the outputs (200 / 400 us, L253, L455), so an
+  // output turns off as fast as on. A detection-power knob (README, docs/power.md): a driver
+  // that turns off this much slower (< 0: turns on slower) than on stretches (shortens) every
+  // ON pulse at the pin by it.
+  Nanos output_off_skew{0};
   // First update tick relative to construction, moved on to the next reference peak (the
   // update clock is locked to the reference). A real board's phase is arbitrary: the rig
   // (rig/duts/pls2700_dut.cpp) draws it from the run's seed.

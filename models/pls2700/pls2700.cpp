@@ -37,6 +37,16 @@ Pls2700::~Pls2700() { scheduler_.cancel(update_event_); }
 void Pls2700::attach(const Pls2700Pins& pins) {
   pins_ = pins;
   *outputs_ = pins.outputs;
+  if (params_.output_off_skew != Nanos{0}) {
+    drivers_ = std::make_shared<std::array<std::unique_ptr<SkewedOutput>, kOutputCount>>();
+    for (std::size_t i = 0; i < outputs_->size(); ++i) {
+      if (LineOutput* out = (*outputs_)[i]) {
+        (*drivers_)[i] =
+            std::make_unique<SkewedOutput>(scheduler_, *out, Level::High, params_.output_off_skew);
+        (*outputs_)[i] = (*drivers_)[i].get();
+      }
+    }
+  }
   for (std::size_t ch = 0; ch < 2; ++ch) {
     LineInput* in = pins.inputs[ch];
     if (in == nullptr || !model_.has_inputs) {
@@ -198,7 +208,8 @@ void Pls2700::drive_outputs(std::uint8_t levels) {
     write(*outputs_, levels);
     return;
   }
-  scheduler_.after(params_.output_delay, [pins = outputs_, levels, write] { write(*pins, levels); });
+  scheduler_.after(params_.output_delay,
+                   [pins = outputs_, keep = drivers_, levels, write] { write(*pins, levels); });
 }
 
 bool Pls2700::any_fault_latched() const {

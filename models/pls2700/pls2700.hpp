@@ -19,6 +19,7 @@
 #include <span>
 
 #include "core/scheduler.hpp"
+#include "core/skewed_output.hpp"
 #include "models/pls2700/advance_speed.hpp"
 #include "models/pls2700/cycle.hpp"
 #include "models/pls2700/faults.hpp"
@@ -163,6 +164,8 @@ private:
   std::array<CycleLogic, 2> cycles_{};
   std::shared_ptr<InputState> inputs_;
   std::shared_ptr<OutputPins> outputs_;
+  // The output drivers outputs_ points at (kept alive by a pending delayed write too).
+  std::shared_ptr<std::array<std::unique_ptr<SkewedOutput>, kOutputCount>> drivers_;
   std::array<HoleTable, kOutputCount> holes_{};
   std::uint8_t output_states_ = 0;
   std::uint8_t error_byte_ = 0;

@@ -77,6 +77,7 @@ m::Params amci4501_params(const DutParams& params) {
   p.throughput = params.duration("throughput");
   p.mode5_throughput = params.duration("mode5_throughput");
   p.late_throughput = params.duration("late_throughput");
+  p.output_off_skew = params.duration("output_off_skew");
   p.timer_resolution = params.duration("timer_resolution");
   p.velocity_window = params.duration("velocity_window");
   p.default_timeout = params.duration("default_timeout");
@@ -119,6 +120,12 @@ DutInfo amci4501_info() {
        between(0_us, 10_ms)},
       {"late_throughput", ParamKind::Duration, d.late_throughput, "response delay of variant late_outputs",
        between(0_us, 10_ms)},
+      // A detection-power knob (docs/power.md): up to 100 ms either way, beyond every Cycle
+      // Output width the shipped campaigns judge (Start to Latch <= 43 ms).
+      {"output_off_skew", ParamKind::Duration, d.output_off_skew,
+       "[KNOB] the Cycle Output's turn-off delay minus its turn-on delay (0; one throughput, L281): > 0 "
+       "stretches every pulse at the pin, < 0 shortens it",
+       between(-100_ms, 100_ms)},
       {"timer_resolution", ParamKind::Duration, d.timer_resolution, "time measurement tick (L26)",
        between(1_ns, 1_ms)},
       {"velocity_window", ParamKind::Duration, d.velocity_window, "velocity counts per window (L114)",

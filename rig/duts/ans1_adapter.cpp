@@ -86,6 +86,12 @@ const std::array kAns1Fields{
       between(1_us, 1_ms)},
     F{"output_delay", &a::Params::output_delay, "scan to output pin (10 us: 10-20 us throughput, L572)",
       between(0_us, 1_ms)},
+    // A detection-power knob (docs/power.md): up to 100 ms either way, longer than any pulse
+    // width the shipped campaigns judge (a production cycle of 100 ms, ans1_counters).
+    F{"output_off_skew", &a::Params::output_off_skew,
+      "[KNOB] an output's turn-off delay minus its turn-on delay (0; one throughput for both edges, "
+      "L572): > 0 stretches every ON pulse at the pin, < 0 shortens it",
+      between(-100_ms, 100_ms)},
     F{"brake_sample_start_ms", &a::Params::brake_sample_start_ms,
       "brake debounce: the first of 16 1-ms samples after the application edge (16 ms, L1039)",
       between(1.0, 1000.0)},

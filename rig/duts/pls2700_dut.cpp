@@ -133,6 +133,7 @@ p::Params pls2700_params(const DutParams& params) {
   q.fault_turns_off_all_outputs = params.boolean("fault_all_outputs");
   q.power_up_mask = static_cast<std::uint8_t>(params.integer("power_up_mask") & 0xFF);
   q.output_delay = params.duration("output_delay");
+  q.output_off_skew = params.duration("output_off_skew");
   q.input_delay = params.duration("input_delay");
   q.advance_speed_window = params.duration("advance_speed_window");
   q.program_switch_at_program = params.text("program_switch") == "program";
@@ -187,6 +188,12 @@ DutInfo pls2700_info() {
       {"power_up_mask", ParamKind::Integer, static_cast<std::int64_t>(d.power_up_mask),
        "output mask at power-up", between(0.0, 255.0)},
       {"output_delay", ParamKind::Duration, d.output_delay, "update to output pin", between(0_us, 10_ms)},
+      // A detection-power knob (docs/power.md): up to 100 ms either way, beyond every ON pulse
+      // the shipped campaigns judge (one a turn, 62 .. 65 ms).
+      {"output_off_skew", ParamKind::Duration, d.output_off_skew,
+       "[KNOB] an output's turn-off delay minus its turn-on delay (0; one throughput, L253): > 0 "
+       "stretches every ON pulse at the pin, < 0 shortens it",
+       between(-100_ms, 100_ms)},
       {"input_delay", ParamKind::Duration, d.input_delay, "2742-18 input T_ON/T_OFF", between(0_us, 3_ms)},
       {"update_phase_from_seed",
        ParamKind::Boolean,

@@ -32,6 +32,11 @@ constexpr std::array kKnobs{
     Row{"reference_pls", "throughput", "delay", KnobDirection::Up, WorstCase::KnobPlusParam, "scan"},
     // A timed output's on time is its timer (models/ans1/README.md): a timer running long or short.
     Row{"ans1", "pulse_width", "timer_error", KnobDirection::Both},
+    // Every ON pulse at a pin, timed or not, is as long as the board commands it plus its
+    // driver's turn-off delay minus its turn-on delay (models/*/README.md, output_off_skew).
+    Row{"ans1", "pulse_width", "output_off_skew", KnobDirection::Both},
+    Row{"pls2700", "pulse_width", "output_off_skew", KnobDirection::Both},
+    Row{"amci4501", "pulse_width", "output_off_skew", KnobDirection::Both},
     // The 7361's clock pulses are halves of its clock period T, its frames start every TINT
     // (models/ssi7361/README.md).
     Row{"ssi7361", "pulse_width", "clock_period_error", KnobDirection::Both},
@@ -47,6 +52,20 @@ bool value_check(std::string_view kind) {
 }
 
 } // namespace
+
+std::vector<Knob> knobs_for(std::string_view model, std::string_view kind) {
+  std::vector<Knob> out;
+  for (const Row& r : kKnobs)
+    if (r.model == model && r.kind == kind)
+      out.push_back(Knob{KnobTarget::DutParam,
+                         std::string(r.param),
+                         r.direction,
+                         {},
+                         r.worst_case,
+                         std::string(r.plus_param)});
+  if (out.empty()) out.push_back(knob_for(model, kind));
+  return out;
+}
 
 Knob knob_for(std::string_view model, std::string_view kind) {
   for (const Row& r : kKnobs)

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace hilrig::power {
 
@@ -35,7 +36,10 @@ struct Knob {
   std::string plus_param; // KnobPlusParam: the parameter added (a duration)
 };
 
-// The knob for a check of `kind` on the model `model`.
+// The (first) knob for a check of `kind` on the model `model`.
 [[nodiscard]] Knob knob_for(std::string_view model, std::string_view kind);
+// Every board timing that moves such a check (an ANS1 pulse: its timer and its output driver),
+// each bisected on its own; one entry (perhaps a no-knob reason) when there is one or none.
+[[nodiscard]] std::vector<Knob> knobs_for(std::string_view model, std::string_view kind);
 
 } // namespace hilrig::power

@@ -160,19 +160,43 @@ void describe_phase_coverage(PowerRow& row, const Finding& f, const Knob& knob) 
   }
 }
 
+const checks::PulseWidthSpec* pulse_spec(const campaign::Campaign& c, const std::string& name) {
+  for (const campaign::Scenario& s : c.points)
+    if (const campaign::CheckSpec* k = s.check(name))
+      if (const auto* p = std::get_if<checks::PulseWidthParams>(&k->params)) return &p->spec;
+  return nullptr;
+}
+
+// A pulse-width knob's side that lengthens the judged pulse (an ON pulse when the knob moves
+// up; a pulse at the low level is the gap between ON pulses, shortened) against a check with no
+// max_us, or shortens it against one with no min_us, breaks no width limit: named, not bisected.
+std::optional<std::string> no_width_limit(const checks::PulseWidthSpec& spec, KnobDirection side) {
+  const bool longer = (side == KnobDirection::Up) == (spec.level == Level::High);
+  if (longer && !spec.max) return "no knob this way: the pulse gets longer, and the check has no max_us";
+  if (!longer && !spec.min) return "no knob this way: the pulse gets shorter, and the check has no min_us";
+  return std::nullopt;
+}
+
 // One side of the check's knob: `side` replaces a two-sided knob's direction.
 PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std::uint64_t seed,
-                       const PowerOptions& options, std::optional<KnobDirection> side) {
+                       const PowerOptions& options, Knob knob, std::optional<KnobDirection> side) {
   PowerRow row;
   row.check = name;
   row.kind = kind_of_check(c, name);
   const std::string& model = c.points.front().dut.model;
-  Knob knob = knob_for(model, row.kind);
   if (side) knob.direction = *side;
   row.two_sided = side.has_value();
   if (knob.param.empty()) {
     row.reason = knob.no_knob;
     return row;
+  }
+  if (const checks::PulseWidthSpec* pulse = pulse_spec(c, name)) {
+    if (auto why = no_width_limit(*pulse, knob.direction)) {
+      row.knob = knob.param;
+      row.direction = knob.direction == KnobDirection::Up ? "up" : "down";
+      row.reason = *why;
+      return row;
+    }
   }
   KnobScale scale;
   scale.sign = knob.direction == KnobDirection::Up ? 1 : -1;
@@ -318,12 +342,22 @@ PowerResult measure_power(const campaign::Campaign& c, const PowerOptions& optio
     if (!options.checks.empty() &&
         std::find(options.checks.begin(), options.checks.end(), name) == options.checks.end())
       continue;
-    const Knob knob = knob_for(out.device, kind_of_check(c, name));
-    if (knob.direction == KnobDirection::Both && !knob.param.empty()) {
-      out.rows.push_back(measure_check(c, name, out.seed, options, KnobDirection::Up));
-      out.rows.push_back(measure_check(c, name, out.seed, options, KnobDirection::Down));
-    } else {
-      out.rows.push_back(measure_check(c, name, out.seed, options, std::nullopt));
+    if (const checks::PulseWidthSpec* pulse = pulse_spec(c, name); pulse && !pulse->min && !pulse->max) {
+      PowerRow row;
+      row.check = name;
+      row.kind = "pulse_width";
+      row.reason = "no knob: no width limit (neither min_us nor max_us): the check judges that the pulse "
+                   "comes (min_pulses), not its width";
+      out.rows.push_back(row);
+      continue;
+    }
+    for (const Knob& knob : knobs_for(out.device, kind_of_check(c, name))) {
+      if (knob.direction == KnobDirection::Both && !knob.param.empty()) {
+        out.rows.push_back(measure_check(c, name, out.seed, options, knob, KnobDirection::Up));
+        out.rows.push_back(measure_check(c, name, out.seed, options, knob, KnobDirection::Down));
+      } else {
+        out.rows.push_back(measure_check(c, name, out.seed, options, knob, std::nullopt));
+      }
     }
   }
   return out;

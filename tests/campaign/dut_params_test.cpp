@@ -103,6 +103,7 @@ TEST(DutParams, EveryAns1ReadmeChoiceIsSettableAndListed) {
       {"time_only_retrigger_restarts", [](const P& p) { return ParamValue{p.time_only_retrigger_restarts}; }},
       {"brake_sample_start_ms", [](const P& p) { return ParamValue{p.brake_sample_start_ms}; }},
       {"timer_error", [](const P& p) { return ParamValue{p.timer_error}; }},
+      {"output_off_skew", [](const P& p) { return ParamValue{p.output_off_skew}; }},
   };
   expect_every_readme_choice_reaches_its_field(*find_dut("ans1"), readme,
                                                [](const DutParams& v) { return ans1_params(v); });

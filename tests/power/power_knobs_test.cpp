@@ -167,6 +167,78 @@ TEST(PowerSmd23e, StepClockErrorFailsThePeakJustBeyondOnePercent) {
   EXPECT_EQ(probe_param(c, "trapezoid", "step_clock_error", -0.0100, c.seed), Probe::Fail);
 }
 
+// output_off_skew: an output driver that turns off slower (or on slower) than on, so every ON
+// pulse reaches the pin longer (shorter) by the skew (core/skewed_output.hpp; unit and
+// property tests in tests/core/skewed_output_test.cpp). Each manual states one throughput for
+// both edges of an output, so the on width at the pin is the board's commanded width:
+//
+// ans1_counters batch1_done_width: the batch output is on from one GMP 180 to the next, one turn
+// at 600 rpm = 100 ms exactly (ans1 manual seeds/000_08a2edf5547d4d1e.txt:2211-2214, batch
+// overflow output; both edges carry the same scan phase and output delay, L572, since 100 ms is
+// 10000 whole 10 us scans), judged within 100 ms +- 10 us: the skew passes at +-10 us exactly
+// (inclusive) and fails 1 ns beyond.
+TEST(PowerPulseKnobs, Ans1BatchOutputFailsOneNanosecondBeyondTenMicrosecondsOfSkew) {
+  const campaign::Campaign c = load("campaigns/ans1/ans1_counters.toml");
+  sweep_ns(c, "batch1_done_width", "output_off_skew", 9'998, 10'002, 1, 10'001, +1);
+  sweep_ns(c, "batch1_done_width", "output_off_skew", -9'998, -10'002, 1, -10'001, -1);
+}
+
+// amci4501_pass cycle_output_start_to_latch: the Cycle Output is on from Start to Latch (4501
+// manual seeds/001_8422c5eec3a3e376.txt:7), both edges one throughput late (L281), so its width
+// at the pin is Latch - Start exactly: 43,000 us (1 -> 44 ms) and five of 2,000 us, which the
+// check's limits are. Any skew fails: 1 ns up breaks 43,000 us, 1 ns down breaks 2,000 us.
+TEST(PowerPulseKnobs, Amci4501CycleOutputWidthFailsOnANanosecondOfSkew) {
+  const campaign::Campaign c = load("campaigns/amci4501/amci4501_pass.toml");
+  EXPECT_EQ(probe_param(c, "cycle_output_start_to_latch", "output_off_skew", Nanos{0}, c.seed), Probe::Pass);
+  for (const std::int64_t ns : {1, 2, 1000})
+    for (const int sign : {+1, -1})
+      EXPECT_EQ(probe_param(c, "cycle_output_start_to_latch", "output_off_skew", Nanos{sign * ns}, c.seed),
+                Probe::Fail)
+          << sign * ns;
+}
+
+// pls2700_advance_chatter one_pulse_a_turn, judged within 62 .. 65 ms: whatever the nominal width
+// (the ON arc over the speed, on the 200 us update grid, 2700 manual
+// seeds/002_46e90574ec92805f.txt:253), every pulse at the pin is that width plus the skew, so the
+// two thresholds lie exactly the window's width apart: up - down = 65 - 62 ms + 2 ns (each side
+// fails one ns beyond its edge). The pulses all have one width, read off the up threshold.
+TEST(PowerPulseKnobs, Pls2700ThresholdsLieTheWindowsWidthApart) {
+  const campaign::Campaign c = load("campaigns/pls2700/pls2700_advance_chatter.toml");
+  PowerOptions options;
+  options.checks = {"one_pulse_a_turn"};
+  const PowerResult r = measure_power(c, options);
+  ASSERT_EQ(r.rows.size(), 2u);
+  const PowerRow& up = row_of(r, "one_pulse_a_turn", "up");
+  const PowerRow& down = row_of(r, "one_pulse_a_turn", "down");
+  EXPECT_EQ(up.knob, "output_off_skew");
+  ASSERT_TRUE(up.threshold && down.threshold) << up.reason << down.reason;
+  EXPECT_NEAR(*up.threshold - *down.threshold, 3000.002, 1e-6); // us
+  const auto width_ns = static_cast<std::int64_t>(std::llround((65000.0 - (*up.threshold - 0.001)) * 1e3));
+  EXPECT_EQ(width_ns % 200'000, 0) << "a whole number of 200 us updates: " << width_ns;
+  EXPECT_EQ(probe_param(c, "one_pulse_a_turn", "output_off_skew", Nanos{65'000'000 - width_ns}, c.seed),
+            Probe::Pass);
+  EXPECT_EQ(probe_param(c, "one_pulse_a_turn", "output_off_skew", Nanos{65'000'001 - width_ns}, c.seed),
+            Probe::Fail);
+}
+
+// Named, not bisected: a pulse_width check with no width limit (ans1_faults stop_fault judges
+// that the stop-overrun pulse comes) and the side of a one-sided window that breaks no limit
+// (pls2700_faults one_pulse_a_turn: min_us only, so a longer pulse cannot fail it).
+TEST(PowerPulseKnobs, ChecksAWidthCannotFailAreNamed) {
+  PowerOptions options;
+  options.checks = {"stop_fault"};
+  const PowerResult faults = measure_power(load("campaigns/ans1/ans1_faults.toml"), options);
+  ASSERT_EQ(faults.rows.size(), 1u);
+  EXPECT_NE(faults.rows[0].reason.find("no width limit"), std::string::npos) << faults.rows[0].reason;
+  options.checks = {"one_pulse_a_turn"};
+  const PowerResult pls = measure_power(load("campaigns/pls2700/pls2700_faults.toml"), options);
+  ASSERT_EQ(pls.rows.size(), 2u);
+  EXPECT_NE(row_of(pls, "one_pulse_a_turn", "up").reason.find("no max_us"), std::string::npos);
+  EXPECT_FALSE(row_of(pls, "one_pulse_a_turn", "up").threshold);
+  ASSERT_TRUE(row_of(pls, "one_pulse_a_turn", "down").threshold);
+  EXPECT_EQ(knobs_for("ans1", "pulse_width").size(), 2u);
+}
+
 // Each knob's range is checked by the parser (the campaign's file:line:column: key: range),
 // before anything runs: one value at each end of the range is accepted, one beyond it refused.
 TEST(PowerKnobs, KnobValuesOutsideTheirRangeAreBadInput) {
