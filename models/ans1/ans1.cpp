@@ -128,6 +128,62 @@ void Ans1::attach(const Ans1Pins& pins) {
   wake();
 }
 
+// ---------------------------------------------------------------- power
+
+void Ans1::power_off() {
+  if (!powered_) return;
+  powered_ = false;
+  scheduler_.cancel(scan_event_);
+  scheduler_.cancel(speed_event_);
+  scheduler_.cancel(write_event_);
+  scan_event_ = speed_event_ = write_event_ = {};
+  scan_at_ = Nanos::max();
+  write_count_ = 0;
+  queued_levels_ = pin_levels_ = outputs_ = 0;
+  for (LineOutput* out : pins_.outputs) {
+    if (out != nullptr) out->set(Level::Low); // no supply: nothing conducts
+  }
+}
+
+void Ans1::power_on() {
+  if (powered_) return;
+  powered_ = true;
+  // Machine Revolutions is "stored in non-volatile memory" (L1215) [MODEL: its count at power-off].
+  const std::uint32_t revolutions = monitors_.counters().value(CounterId::Revolutions);
+  // RAM starts again as at construction.
+  position_ = PositionSetup{};
+  sr_setup_ = ShiftRegisterSetup{};
+  channels_ = {};
+  monitors_ = Monitors(monitor_faults(variant_), params_.brake_sample_start_ms);
+  monitors_.configure(MonitorSetup{}, position_.full_scale_count);
+  quad_->decoder =
+      signals::QuadratureDecoder(signals::CountMode::X4, quad_->a != nullptr && is_high(quad_->a->level()),
+                                 quad_->b != nullptr && is_high(quad_->b->level()));
+  resolver_count_ = 0;
+  resolver_angle_ = 0;
+  resolver_seen_ = false; // absolute: read afresh at the first scan (L768)
+  last_peak_ = Nanos::min();
+  resolver_fault_active_ = resolver_fault_latched_ = false;
+  gmp_ = previous_gmp_ = 0;
+  first_scan_ = true;
+  electrical_inputs_ = active_inputs_ = previous_active_inputs_ = 0;
+  ls_ = outputs_ = 0;
+  masks_ = OutputStatusMasks{};
+  shift_register_ = ShiftRegister{};
+  output_force_enable_ = output_force_state_ = input_force_enable_ = input_force_state_ = 0;
+  speed_ = SpeedFilter{};
+  speed_reference_count_ = 0;
+  rpm_clamped_ = false;
+  last_wrap_ = Nanos::min();
+  time_of_rotation_ = 0;
+  changed_outside_ = true;
+  grid_origin_ = scheduler_.now() + params_.scan_phase - scan_period();
+  configure(host_.power_up()); // wakes the scan on the new grid
+  monitors_.preset_counter(CounterId::Revolutions, revolutions);
+  if (scan_at_ == Nanos::max()) schedule_scan(scheduler_.now() + params_.scan_phase);
+  speed_event_ = scheduler_.at(scheduler_.now() + params_.speed_update_period, [this] { speed_update(); });
+}
+
 // ---------------------------------------------------------------- programming
 
 void Ans1::configure_position(const PositionSetup& setup) {

@@ -82,6 +82,13 @@ public:
   // Clear Errors: drops a latched resolver fault whose signals are valid again, and the
   // brake overrun faults.
   void clear_errors();
+  // The supply off / back on (README "Power cycle"). Off: no scans, every output off, the host
+  // reads 0. On: as at power-up, with what flash keeps (HostInterface::power_up: stored programs,
+  // the global parameters, the Machine Revolutions count, L1215, L2224-L2250); the resolver is
+  // absolute (L768), an encoder count starts at 0 (A36).
+  void power_off();
+  void power_on();
+  [[nodiscard]] bool powered() const { return powered_; }
   // Slave mode: the position a master ANS1 sends, in transducer counts (mod CPC).
   void set_slave_position(std::int64_t count) {
     slave_count_ = count;
@@ -209,6 +216,7 @@ private:
   std::uint16_t input_force_state_ = 0;
   std::uint64_t scans_ = 0;
   bool in_scan_ = false;
+  bool powered_ = true;
   // Skipping: the grid's origin (the last scan, or one period before the first), the pending
   // scan's time (max while asleep), and whether anything changed outside since the last scan.
   Nanos grid_origin_{};

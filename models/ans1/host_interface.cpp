@@ -19,6 +19,7 @@ void HostInterface::write_block(const HostWords& words) {
 
 HostWords HostInterface::status() const {
   HostWords w{};
+  if (!device_.powered()) return w; // [MODEL] an unpowered module answers 0
   compose_data_block(selection_, device_, active_program_, w);
   unsigned s = selection_.attribute & 0x1FU;
   if (ack_) s |= kAcknowledgeBit;
@@ -41,6 +42,31 @@ void HostInterface::scan() {
     ack_ = false;
   }
   transmit_seen_ = transmit;
+}
+
+Ans1Setup HostInterface::power_up() {
+  transmit_seen_ = (commands_[0] & kTransmitBit) != 0;
+  ack_ = false;
+  error_ = ErrorCode::None;
+  hardware_fault_ = false;
+  selection_ = DataSelection{};
+  Ans1Setup s; // factory defaults (L2236)
+  if (saved_global_) {
+    s.position = saved_global_->position;
+    s.monitors.brake = saved_global_->monitors.brake;
+  }
+  const auto& p = programs_[active_program_];
+  if (active_program_ != 0 && p) {
+    if (!p->checksum_ok) {
+      hardware_fault_ = true; // the program read from memory fails its checksum (L2298)
+      return s;
+    }
+    s.outputs = p->setup.outputs;
+    s.shift_register = p->setup.shift_register;
+    s.monitors.die = p->setup.monitors.die;
+    s.monitors.production = p->setup.monitors.production;
+  }
+  return s;
 }
 
 void HostInterface::corrupt_program(int slot) {

@@ -48,6 +48,10 @@ public:
 
   // ---- device side ----
   void scan();
+  // Power-up: the handshake and errors start again (a Transmit the host already holds is no
+  // edge [MODEL]); returns the setup flash gives: the global parameters Save Global stored
+  // (CB2, CB8, L2239) and the program last saved or loaded (L2236) [MODEL], else factory defaults.
+  [[nodiscard]] Ans1Setup power_up();
 
   // ---- state, for reports and tests ----
   [[nodiscard]] ErrorCode error() const { return error_; }

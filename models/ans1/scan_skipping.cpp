@@ -77,7 +77,7 @@ Nanos Ans1::grid_at_or_after(Nanos t) const {
 
 void Ans1::wake() {
   changed_outside_ = true;
-  if (params_.exact_scan || in_scan_) {
+  if (params_.exact_scan || in_scan_ || !powered_) {
     return; // scanning every period, or the running scan schedules the next
   }
   wake_now();

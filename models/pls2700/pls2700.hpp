@@ -70,6 +70,7 @@ public:
   // ---- Front panel (keyboard in Program Mode); false outside Program Mode ----
   // The Program switch (L543): toward the back (true) = Program Mode, front = Display Mode.
   void set_program_switch(bool program) { switch_program_ = program; }
+  [[nodiscard]] bool program_switch() const { return switch_program_; }
   // Program Mode, PRG LED on (L534): the switch at program, its jumper fitted (L545) and the
   // keyboard not disabled by the host's 8100h ("locked into display mode from the processor",
   // L543, L1356). The modes are the front panel's only (L537): the host's words act in either.

@@ -2,6 +2,7 @@
 hilrig_library(hilrig_cli_serve
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/serve_command.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/serve_controls.cpp
     ${CMAKE_CURRENT_LIST_DIR}/serve_devices.cpp
     ${CMAKE_CURRENT_LIST_DIR}/serve_far_side.cpp
     ${CMAKE_CURRENT_LIST_DIR}/serve_params.cpp

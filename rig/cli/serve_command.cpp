@@ -231,6 +231,8 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
   model_options.motion = options.motion;
   Scheduler scheduler;
   const ServedModel model = device->build(scheduler, model_options);
+  // The board's map behind the rig's controls (docs/serve.md "Rig controls").
+  ControlledRegisters registers(*model.registers, model.controls, scheduler);
   std::unique_ptr<ServedFarSide> far;
   if (!options.far.config.empty()) {
     far = std::make_unique<ServedFarSide>(scheduler, options.far, model, options.device);
@@ -244,7 +246,7 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
     server_options.port = options.port;
     server_options.limits = options.tcp_limits;
     server_options.poll_period = options.tick;
-    drivers::modbus::TcpServer server(*model.registers, server_options);
+    drivers::modbus::TcpServer server(registers, server_options);
     endpoint.port = server.port();
     endpoint.tcp_stats = &server.stats();
     if (on_ready) {
@@ -263,10 +265,10 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
   std::optional<drivers::modbus::RtuServer> server;
   if (options.link == ServeLink::Pty) {
     pty.emplace();
-    server.emplace(*model.registers, pty->master_fd(), server_options);
+    server.emplace(registers, pty->master_fd(), server_options);
     endpoint.serial_path = pty->slave_path();
   } else {
-    server.emplace(*model.registers, server_options);
+    server.emplace(registers, server_options);
     endpoint.serial_path = options.serial_device;
   }
   endpoint.note = server->rs485_note();

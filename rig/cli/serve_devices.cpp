@@ -53,7 +53,9 @@ ServedModel build_smd23e(Scheduler& scheduler, const ServeModelOptions& o) {
   params.has_encoder = params.has_encoder && !o.no_encoder;
   auto device = std::make_shared<models::smd23e::Smd23e>(scheduler, params);
   RegisterMap* map = device.get();
-  return {std::move(device), map, {}};
+  BoardControls controls;
+  controls.power = [d = device.get()](bool on) { on ? d->power_on() : d->power_off(); };
+  return {std::move(device), map, {}, std::move(controls)};
 }
 
 // The ANS1 with no pins attached: no resolver signals (so Resolver Fault is set until a rig
@@ -80,7 +82,9 @@ ServedModel build_ans1(Scheduler& scheduler, const ServeModelOptions& o) {
   auto attach = [device = &served->device](far::FarSide& far) {
     device->attach(models::ans1::wire_pins_by_map(far, far.pin_map()));
   };
-  return {std::move(served), map, attach};
+  BoardControls controls;
+  controls.power = [d = &served->device](bool on) { on ? d->power_on() : d->power_off(); };
+  return {std::move(served), map, attach, std::move(controls)};
 }
 
 // The SSI 7361 with its clock and data lines on a private virtual bus and no encoder on them
@@ -103,7 +107,9 @@ ServedModel build_ssi7361(Scheduler& scheduler, const ServeModelOptions& o) {
   params.variant = *variant;
   auto served = std::make_shared<Served>(scheduler, params);
   RegisterMap* map = &served->map;
-  return {std::move(served), map, {}};
+  BoardControls controls;
+  controls.power = [d = &served->module](bool on) { on ? d->power_on() : d->power_off(); };
+  return {std::move(served), map, {}, std::move(controls)};
 }
 
 // The 4501 with its encoder, Start, Latch and Cycle Output lines on a private virtual bus,
@@ -129,7 +135,9 @@ ServedModel build_amci4501(Scheduler& scheduler, const ServeModelOptions& o) {
   params.variant = *variant;
   auto served = std::make_shared<Served>(scheduler, params);
   RegisterMap* map = &served->map;
-  return {std::move(served), map, {}};
+  BoardControls controls;
+  controls.power = [d = &served->module](bool on) { on ? d->power_on() : d->power_off(); };
+  return {std::move(served), map, {}, std::move(controls)};
 }
 
 // "constant:<rpm>rpm" (e.g. "constant:300rpm", "constant:-12.5rpm"): the transducer's speed.
@@ -180,7 +188,12 @@ ServedModel build_pls2700(Scheduler& scheduler, const ServeModelOptions& o) {
     }
   }
   RegisterMap* map = &served->map;
-  return {std::move(served), map, {}};
+  BoardControls controls;
+  p::Pls2700* module = &served->module;
+  controls.power = [module](bool on) { on ? module->power_on() : module->power_off(); };
+  controls.set_program_switch = [module](bool program) { module->set_program_switch(program); };
+  controls.program_switch = [module] { return module->program_switch(); };
+  return {std::move(served), map, {}, std::move(controls)};
 }
 
 template <typename Names> std::string names_of(const Names& variants) {

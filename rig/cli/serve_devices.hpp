@@ -13,6 +13,7 @@
 
 #include "core/register_map.hpp"
 #include "core/scheduler.hpp"
+#include "rig/cli/serve_controls.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::far {
@@ -44,6 +45,8 @@ struct ServedModel {
   RegisterMap* registers = nullptr;
   // Wires the model's pins to a far side (rig/far): empty when the model has no pins to offer.
   std::function<void(far::FarSide&)> attach_far;
+  // The rig's controls of the board (serve_controls.hpp): its supply, its Program switch.
+  BoardControls controls;
 };
 
 // Where the device's host words sit: command (output) word k is holding register

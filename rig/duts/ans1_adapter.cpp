@@ -49,6 +49,12 @@ public:
     return device_.host().read(static_cast<int>(word));
   }
   void scan_every_period() override { device_.scan_every_period(); }
+  void power(bool on) override {
+    if (on)
+      device_.power_on();
+    else
+      device_.power_off();
+  }
 
 private:
   static bool wire_point(virt::VirtualBus& bus, const std::string& pin, const std::string& line,
@@ -165,6 +171,16 @@ DutInfo ans1_info() {
            reaction,
        FaultSite::StatorRatio, true},
   };
+  info.power_cycle =
+      "flash keeps the stored programs (CB15 Save Program, L2224) and the global parameters Save Global "
+      "stored (CB2 position setup and presets, CB8 brake monitor, L2239); at power-up the ANS1 runs the "
+      "program last saved or loaded [MODEL, L2236], else factory defaults (\"If power is cycled before these "
+      "parameters are saved to a program, the ANS1 will power up with factory default settings\", L2236); "
+      "the Machine Revolutions count is kept (non-volatile, L1215). The resolver is absolute (L768): the "
+      "position is the same. Lost (RAM): unsaved programming, errors and Hardware Fault, a latched Resolver "
+      "Fault and brake faults, forced outputs and inputs, the shift register, the other counters, speed, "
+      "an encoder count (0 at power-up, A36) [MODEL]. While off: no scans, every output off, every status "
+      "word 0; a Transmit already set at power-up is no edge";
   info.host = HostInterface{static_cast<std::size_t>(a::kHostWords), static_cast<std::size_t>(a::kHostWords),
                             true, 15, 15};
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,

@@ -38,10 +38,11 @@ constexpr auto kDeadline = std::chrono::seconds(30);
 // One `hilrig serve pls2700 ...` child process, stopped with SIGTERM when the test is done.
 class Served {
 public:
-  Served(const std::string& name, const std::vector<std::string>& options) {
+  Served(const std::string& name, const std::vector<std::string>& options,
+         const std::string& device = "pls2700") {
     dir_ = test::scratch_dir("campaign", "serve_cli_" + name);
     const fs::path port_file = dir_ / "port";
-    std::vector<std::string> args{HILRIG_EXE, "serve", "pls2700"};
+    std::vector<std::string> args{HILRIG_EXE, "serve", device};
     args.insert(args.end(), options.begin(), options.end());
     for (const char* a : {"--modbus-tcp", "127.0.0.1:0", "--port-file"}) args.emplace_back(a);
     args.push_back(port_file.string());
@@ -112,6 +113,23 @@ public:
     return r;
   }
 
+  Read holding_registers(int address, int n) {
+    Read r;
+    r.words.assign(static_cast<std::size_t>(n), 0);
+    if (client() == nullptr) {
+      r.error = -1;
+      return r;
+    }
+    if (modbus_read_registers(ctx_, address, n, r.words.data()) != n) r.error = errno;
+    return r;
+  }
+  // FC16: 0, or the Modbus exception's errno.
+  int write(int address, const std::vector<std::uint16_t>& words) {
+    if (client() == nullptr) return -1;
+    const int n = static_cast<int>(words.size());
+    return modbus_write_registers(ctx_, address, n, words.data()) == n ? 0 : errno;
+  }
+
 private:
   fs::path dir_;
   pid_t pid_ = -1;
@@ -168,6 +186,88 @@ TEST(ServeCli, MotionTurnsTheTransducerAndAParamFaultsIt) {
     EXPECT_EQ(r.words[0], 0x8000);
     EXPECT_EQ(r.words[1], 0x8000);
   }
+}
+
+// Polls input register `address` until `pred` holds for it, or the deadline; the last word read.
+template <class Pred> std::uint16_t input_until(Served& s, int address, Pred pred) {
+  std::uint16_t last = 0;
+  for (const auto until = Clock::now() + kDeadline; Clock::now() < until;) {
+    const auto r = s.input_registers(address, 1);
+    if (r.error != 0) break;
+    last = r.words[0];
+    if (pred(last)) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return last;
+}
+
+// docs/serve.md "Rig controls": holding 9000 the supply (1 on, 0 off), 9001 a timed power cycle
+// (off now, on that many ms later), 9002 the Program switch (1 Program, 0 Display).
+constexpr int kSupply = 9000;
+constexpr int kPowerCycle = 9001;
+constexpr int kProgramSwitch = 9002;
+
+// pls2700 manual (seeds/002_46e90574ec92805f.txt): the keyboard lock 8100h is "retained through
+// power loss" (L1356-1357) and the setpoints are in nvRAM (L776); the resolver is absolute. A 2741
+// (BTR: position, tach, status; BTW at holding 0, error byte at 64) turning at 300 rpm: output 1
+// programmed 0..SF-1 (ON 0 OFF 359 at SF 360) is on; with the supply off every word reads 0 and
+// the outputs are off; back on, the output is on again without reprogramming.
+TEST(ServeCli, APlcPowersTheServedBoardOffAndOnThroughTheRigControls) {
+  Served s("power", {"--model", "2741", "--motion", "constant:300rpm"});
+  ASSERT_EQ(s.holding_registers(kSupply, 1).words, std::vector<std::uint16_t>{1}) << s.why_not();
+  ASSERT_EQ(s.write(0, {0xC011, 0x0000, 0x0000, 0x0359}), 0);
+  ASSERT_EQ(s.holding_registers(64, 1).words[0], 0);
+  EXPECT_EQ(input_until(s, 2, [](std::uint16_t w) { return (w & 1) != 0; }) & 1, 1);
+  ASSERT_EQ(s.write(kSupply, {0}), 0);
+  EXPECT_EQ(s.holding_registers(kSupply, 1).words, std::vector<std::uint16_t>{0});
+  EXPECT_EQ(s.input_registers(0, 3).words, std::vector<std::uint16_t>(3, 0));
+  ASSERT_EQ(s.write(kSupply, {1}), 0);
+  EXPECT_EQ(input_until(s, 2, [](std::uint16_t w) { return (w & 1) != 0; }) & 1, 1);
+  // A timed cycle: off at once, back on 50 ms later by itself.
+  ASSERT_EQ(s.write(kPowerCycle, {50}), 0);
+  EXPECT_EQ(s.holding_registers(kSupply, 1).words, std::vector<std::uint16_t>{0});
+  EXPECT_EQ(input_until(s, 2, [](std::uint16_t w) { return (w & 1) != 0; }) & 1, 1);
+  EXPECT_EQ(s.holding_registers(kSupply, 1).words, std::vector<std::uint16_t>{1});
+  // Values a control does not take are refused; a write across the board's and the controls'
+  // addresses too.
+  EXPECT_EQ(s.write(kSupply, {2}), EMBXILVAL);
+  EXPECT_EQ(s.write(kPowerCycle, {0}), EMBXILVAL);
+  EXPECT_EQ(s.write(kSupply - 1, {1, 1}), EMBXILADD);
+}
+
+// L543: the Program switch toward the back is Program Mode; L368, L534: CLEAR then zeroes the
+// position, which the host sees — here the keyboard is not modelled beyond the switch, so the
+// switch's position is read back; Display Mode ignores the keyboard (L535).
+TEST(ServeCli, TheProgramSwitchMovesDuringServing) {
+  Served s("switch", {"--model", "2741", "--param", "program_switch=display"});
+  ASSERT_EQ(s.holding_registers(kProgramSwitch, 1).words, std::vector<std::uint16_t>{0}) << s.why_not();
+  ASSERT_EQ(s.write(kProgramSwitch, {1}), 0);
+  EXPECT_EQ(s.holding_registers(kProgramSwitch, 1).words, std::vector<std::uint16_t>{1});
+  ASSERT_EQ(s.write(kProgramSwitch, {0}), 0);
+  EXPECT_EQ(s.holding_registers(kProgramSwitch, 1).words, std::vector<std::uint16_t>{0});
+  EXPECT_EQ(s.write(kProgramSwitch, {3}), EMBXILVAL);
+}
+
+// smd23e manual (seeds/003_7a93cebfafae55cd.txt L2331): after Save Configuration the unit
+// "stops responding to commands and you must cycle power"; L2235: the saved configuration is
+// used "on every power up". Served: Configuration Mode words with Config Word bit 10 (0x0400)
+// at holding 1024, input word 9 = 0xAAAA; a power cycle through 9001; then SW1 (input 0) shows
+// Command Mode without Configuration Error (bit 13), no configuration written since.
+TEST(ServeCli, AServedSmd23eLockedByAFlashSaveComesBackAfterAPowerCycle) {
+  Served s("smd23e_power", {}, "smd23e");
+  // v_s 100 (words 2-3), 2048 steps/turn, encoder 1024, 50 % idle, 2.0 A (L2265-L2341).
+  const std::vector<std::uint16_t> config{0x8000, 0x8000, 0, 100, 2048, 0, 1024, 50, 20, 0};
+  ASSERT_EQ(s.write(1024, config), 0) << s.why_not();
+  std::vector<std::uint16_t> save = config;
+  save[1] = 0x8400;
+  ASSERT_EQ(s.write(1024, save), 0);
+  ASSERT_EQ(s.input_registers(9, 1).words[0], 0xAAAA);
+  ASSERT_EQ(s.write(1024, {0x0000, 0x8000}), 0); // Command Mode: not answered (locked)
+  EXPECT_EQ(s.input_registers(9, 1).words[0], 0xAAAA);
+  ASSERT_EQ(s.write(kPowerCycle, {20}), 0);
+  const std::uint16_t sw1 = input_until(s, 0, [](std::uint16_t w) { return w != 0; });
+  EXPECT_EQ(sw1 & 0xA000, 0) << std::hex << sw1; // Command Mode, Configuration Error 0
+  EXPECT_NE(sw1 & 0x4000, 0) << std::hex << sw1; // Controller OK
 }
 
 TEST(ServeCli, BadMotionOrParamIsRefusedBeforeServing) {
