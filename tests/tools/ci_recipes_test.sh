@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# docs/ci.md's recipes, run: the GNU parallel sharding block exactly as the document has it
-# (merged shards equal the unsharded run), and the nightly script twice over a small campaign
+# docs/ci.md's recipes, run: the GNU parallel, Slurm array and Kubernetes Indexed Job sharding
+# blocks exactly as the document has them (merged shards equal the unsharded run; Slurm and
+# Kubernetes stood in for by setting the index variables they set), and the nightly script twice over a small campaign
 # tree (a baseline made, then compared against), and against a stranger's baseline (refused).
 # Usage: ci_recipes_test.sh HILRIG SOURCE_DIR SCRATCH_DIR
 set -euo pipefail
@@ -14,13 +15,24 @@ ln -s "$src/campaigns" campaigns
 fail() { echo "FAIL: $*"; exit 1; }
 
 # 1. GNU parallel: the block between the ci-recipe markers, word for word.
-sed -n '/<!-- ci-recipe: gnu-parallel/,/<!-- \/ci-recipe -->/p' "$src/docs/ci.md" | sed '/^```\|^<!--/d' >parallel.sh
+# recipe NAME: the fenced block after <!-- ci-recipe: NAME, up to its <!-- /ci-recipe -->.
+recipe() {
+  python3 - "$src/docs/ci.md" "$1" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+m = re.search(r"<!-- ci-recipe: " + re.escape(sys.argv[2]) + r"\b.*?-->\n```[a-z]*\n(.*?)```\n<!-- /ci-recipe -->",
+              text, re.S)
+sys.stdout.write(m.group(1) if m else "")
+PY
+}
+recipe gnu-parallel >parallel.sh
 [ "$(wc -l <parallel.sh)" -ge 2 ] || fail "no GNU parallel recipe found in docs/ci.md"
 cat parallel.sh
 bash -e parallel.sh
-hilrig run campaigns/ans1/ans1_faults.toml --backend virtual --out out/whole >/dev/null
+hilrig run campaigns/ans1/ans1_faults.toml --backend virtual --out whole >/dev/null
 # The merged shards are the unsharded run: the same JSON but for the shard field.
-python3 - out/merged.json out/whole/results.json <<'PY' || fail "merged shards differ from the unsharded run"
+same_as_whole() {
+  python3 - "$1" whole/results.json <<'PY'
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:])
 for d in (a, b):
@@ -31,7 +43,55 @@ for d in (a, b):
         r.pop("trace", None)
 sys.exit(0 if a == b else 1)
 PY
+}
+same_as_whole out/merged.json || fail "GNU parallel: merged shards differ from the unsharded run"
 echo "ok: GNU parallel recipe: 4 shards merged equal the unsharded run"
+
+# 1b. Slurm array: the batch script once per index of its --array range, as sbatch would run
+# it (SLURM_ARRAY_TASK_ID, SLURM_ARRAY_TASK_COUNT), then the merge block.
+recipe slurm-array >slurm.sh
+recipe slurm-merge >slurm-merge.sh
+grep -q SLURM_ARRAY_TASK_ID slurm.sh || fail "no Slurm array recipe found in docs/ci.md"
+[ -s slurm-merge.sh ] || fail "no Slurm merge recipe found in docs/ci.md"
+range=$(sed -n 's/^#SBATCH --array=\([0-9]*\)-\([0-9]*\)$/\1 \2/p' slurm.sh)
+[ -n "$range" ] || fail "the Slurm recipe has no #SBATCH --array=FIRST-LAST"
+read -r first last <<<"$range"
+rm -rf out
+for ((i = first; i <= last; i++)); do
+  SLURM_ARRAY_TASK_ID=$i SLURM_ARRAY_TASK_COUNT=$((last - first + 1)) bash -e slurm.sh >/dev/null ||
+    fail "Slurm task $i"
+done
+[ -f "out/shard-$last/results.json" ] || fail "Slurm: no results.json from task $last"
+bash -e slurm-merge.sh
+same_as_whole out/merged.json || fail "Slurm: merged shards differ from the unsharded run"
+echo "ok: Slurm array recipe: $((last - first + 1)) tasks merged equal the unsharded run"
+
+# 1c. Kubernetes Indexed Job: the container's command and args once per completion index
+# (JOB_COMPLETION_INDEX), the results volume's mountPath mapped onto a scratch directory (as
+# the PersistentVolumeClaim would be), then the merge block with the same mapping.
+recipe k8s-indexed-job >job.yaml
+recipe k8s-merge >k8s-merge.sh
+mkdir -p volume
+python3 - job.yaml "$scratch/volume" >k8s-tasks.sh <<'PY' || fail "the Kubernetes recipe is not an Indexed Job"
+import shlex, sys, yaml
+job = yaml.safe_load(open(sys.argv[1]))
+spec = job["spec"]
+assert job["kind"] == "Job" and spec["completionMode"] == "Indexed"
+container = spec["template"]["spec"]["containers"][0]
+mount = container["volumeMounts"][0]["mountPath"]
+argv = [a.replace(mount + "/", sys.argv[2] + "/") for a in container["command"] + container["args"]]
+print(f"mount={shlex.quote(mount)}")
+for i in range(spec["completions"]):
+    print(f"JOB_COMPLETION_INDEX={i} {shlex.join(argv)} >/dev/null || exit 1")
+PY
+cat k8s-tasks.sh
+bash -e k8s-tasks.sh || fail "a Kubernetes completion index failed"
+mount=$(sed -n 's/^mount=//p' k8s-tasks.sh)
+sed -E "s#(^|[[:space:]\"'])$mount/#\1$scratch/volume/#g" k8s-merge.sh >k8s-merge-mapped.sh
+grep -q "hilrig merge" k8s-merge-mapped.sh || fail "no Kubernetes merge recipe found in docs/ci.md"
+bash -e k8s-merge-mapped.sh
+same_as_whole volume/merged.json || fail "Kubernetes: merged shards differ from the unsharded run"
+echo "ok: Kubernetes Indexed Job recipe: $(ls -d volume/shard-* | wc -l) indices merged equal the unsharded run"
 
 # 2. The nightly (scripts/ci-nightly.sh) over two campaigns: no baseline, then a baseline.
 mkdir -p tree/reference
