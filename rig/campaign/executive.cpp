@@ -8,6 +8,7 @@
 
 #include "rig/campaign/motion_record.hpp"
 #include "rig/campaign/virtual_run.hpp"
+#include "rig/campaign/window_traces.hpp"
 #include "rig/checks/debounce.hpp"
 #include "rig/checks/registry.hpp"
 #include "rig/results/results_json.hpp"
@@ -136,7 +137,11 @@ RunOutput Executive::run(const RunSpec& spec) const {
       } else {
         capture.bisection.reset();
       }
-      r.checks.push_back(checks::run_check(c.name, c.params, capture));
+      rig::CheckResult judged = checks::run_check(c.name, c.params, capture);
+      // The trace around what the report draws; a brake's stop is drawn on the motion instead.
+      if (v.trace && !std::holds_alternative<checks::BrakeParams>(c.params))
+        judged.traces = cut_window_traces(judged, *v.trace, lanes_of(c.params, *v.trace));
+      r.checks.push_back(std::move(judged));
     }
     if (!v.handshakes.empty()) r.checks.push_back(host_check(v.handshakes));
     if (!v.rig_timing.empty()) r.checks.push_back(rig_check(v.rig_timing));

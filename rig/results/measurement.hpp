@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,6 +51,35 @@ struct Series {
 struct Probe {
   Nanos width;
   bool accepted = false;
+};
+
+// What the trace held around one judged window, cut from the run's recording for the report's
+// timing diagram: the stimulus (the encoder's A/B, or the line a check drives), the shaft's
+// count and the output, each as its value at span.begin followed by its changes in the span.
+enum class LaneRole { Stimulus, Count, Output };
+
+[[nodiscard]] constexpr const char* to_string(LaneRole r) {
+  return r == LaneRole::Stimulus ? "stimulus" : r == LaneRole::Count ? "count" : "output";
+}
+
+struct LaneChange {
+  Nanos time;
+  std::int64_t value = 0; // a line: 0 or 1; the count: counts
+};
+
+struct TraceLane {
+  std::string name; // the trace's name: "enc.A", "shaft.count", "ls1"
+  LaneRole role = LaneRole::Output;
+  std::vector<LaneChange> changes; // the first: the value at span.begin
+  // Changes left out to fit the figure (more than one per pixel column of it; the first and
+  // last of each column are kept, so every level the lane held there is still drawn).
+  std::size_t thinned = 0;
+};
+
+struct WindowTrace {
+  TraceWindow around; // the measurement window it was cut for (Measurement::window)
+  TraceWindow span;   // what the excerpt covers
+  std::vector<TraceLane> lanes;
 };
 
 // An observation: a value read from the DUT (a status or data word) recorded by name.
@@ -114,6 +145,8 @@ struct CheckResult {
   std::vector<Series> series;
   Judgement judgement = Judgement::Error; // in its run; derived by finalize()
   std::vector<Probe> probes;              // a debounce check's probes, in the order they ran
+  // The trace around each window the report draws a timing diagram for (timing_figures()).
+  std::vector<WindowTrace> traces;
   // The measurements' outcome: Error when there is none (a check that judged nothing).
   [[nodiscard]] Outcome outcome() const {
     Outcome o = Outcome::Pass;

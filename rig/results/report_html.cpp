@@ -22,8 +22,8 @@ constexpr const char* kStyle =
     "details.run>summary{cursor:pointer;font-weight:bold}section.check{margin-left:.5em}"
     "ul.summary li{margin:.15em 0}";
 
-// Figures and measurement rows shown per check before the rest is only in the table.
-constexpr std::size_t kTimingFigures = 6;
+// Measurement rows shown per check before the rest is only in the table (timing diagrams:
+// timing_figures.hpp).
 constexpr std::size_t kLimitRows = 16;
 
 std::string badge_of(const char* word) {
@@ -127,18 +127,14 @@ std::string check_figures(const CheckResult& c, const RunResult& run) {
   if (!c.series.empty()) s += throughput_figures(c);
   if (!c.probes.empty()) s += debounce_figures(c);
   const auto rows = failing_first(c);
-  // One diagram per distinct window and edge (a latency's min and max may be the same one).
-  std::vector<std::pair<TraceWindow, std::optional<Nanos>>> drawn;
-  for (const auto& r : rows) {
-    if (on_motion || !has_timing(*r.m) || drawn.size() == kTimingFigures) continue;
-    const auto same = [&](const auto& d) {
-      return d.first.begin == r.m->window->begin && d.first.end == r.m->window->end && d.second == r.m->at;
-    };
-    if (std::any_of(drawn.begin(), drawn.end(), same)) continue;
-    drawn.emplace_back(*r.m->window, r.m->at);
-    s += figure(timing_diagram_svg(*r.m, r.shown),
-                fmt::format("{}: expected window (shaded, dashed limits) and the captured edge",
-                            xml_escape(r.m->name)));
+  if (!on_motion) {
+    for (const Measurement* m : timing_figures(c)) {
+      const WindowTrace* trace = trace_for(c, *m);
+      s += figure(timing_diagram_svg(*m, shown(c, *m), trace),
+                  fmt::format("{}: {}the expected window (shaded, limits dashed) and the captured edge",
+                              xml_escape(m->name),
+                              trace ? "the stimulus, the shaft's count and the output as captured; " : ""));
+    }
   }
   const std::span<const ShownMeasurement> gauge(rows.data(), std::min(rows.size(), kLimitRows));
   s +=

@@ -88,6 +88,60 @@ Measurement measurement_from(const json& j) {
   return m;
 }
 
+json window_json(const TraceWindow& w) {
+  return json{{"begin_ns", w.begin.count()}, {"end_ns", w.end.count()}};
+}
+
+TraceWindow window_from(const json& j, const char* where) {
+  return TraceWindow{Nanos{get<std::int64_t>(j, "begin_ns", where)},
+                     Nanos{get<std::int64_t>(j, "end_ns", where)}};
+}
+
+// Changes as [time_ns, value] pairs: the bulk of a timing check's entry.
+json traces_json(const std::vector<WindowTrace>& traces) {
+  json out = json::array();
+  for (const auto& t : traces) {
+    json lanes = json::array();
+    for (const auto& l : t.lanes) {
+      json changes = json::array();
+      for (const auto& c : l.changes) changes.push_back(json::array({c.time.count(), c.value}));
+      lanes.push_back(
+          json{{"name", l.name}, {"role", to_string(l.role)}, {"changes", changes}, {"thinned", l.thinned}});
+    }
+    out.push_back(json{{"around", window_json(t.around)}, {"span", window_json(t.span)}, {"lanes", lanes}});
+  }
+  return out;
+}
+
+LaneRole role_from(const std::string& s) {
+  for (const LaneRole r : {LaneRole::Stimulus, LaneRole::Count, LaneRole::Output})
+    if (s == to_string(r)) return r;
+  throw std::runtime_error(fmt::format("results: unknown lane role '{}'", s));
+}
+
+std::vector<WindowTrace> traces_from(const json& j) {
+  std::vector<WindowTrace> out;
+  for (const auto& t : j) {
+    WindowTrace w{window_from(field(t, "around", "trace"), "trace around"),
+                  window_from(field(t, "span", "trace"), "trace span"),
+                  {}};
+    for (const auto& l : field(t, "lanes", "trace")) {
+      TraceLane lane{get<std::string>(l, "name", "lane"),
+                     role_from(get<std::string>(l, "role", "lane")),
+                     {},
+                     get<std::size_t>(l, "thinned", "lane")};
+      for (const auto& c : field(l, "changes", "lane")) {
+        if (!c.is_array() || c.size() != 2 || !c[0].is_number_integer() || !c[1].is_number_integer())
+          throw std::runtime_error("results: a lane change is not [time_ns, value]");
+        lane.changes.push_back(LaneChange{Nanos{c[0].get<std::int64_t>()}, c[1].get<std::int64_t>()});
+      }
+      w.lanes.push_back(std::move(lane));
+    }
+    out.push_back(std::move(w));
+  }
+  return out;
+}
+
 json check_json(const CheckResult& c) {
   json ms = json::array();
   for (const auto& m : c.measurements) ms.push_back(measurement_json(m));
@@ -105,6 +159,7 @@ json check_json(const CheckResult& c) {
       ps.push_back(json{{"width_ns", p.width.count()}, {"accepted", p.accepted}});
     j["probes"] = ps;
   }
+  if (!c.traces.empty()) j["traces"] = traces_json(c.traces);
   return j;
 }
 
@@ -122,6 +177,7 @@ CheckResult check_from(const json& j) {
     for (const auto& p : j.at("probes"))
       c.probes.push_back(
           Probe{Nanos{get<std::int64_t>(p, "width_ns", "probe")}, get<bool>(p, "accepted", "probe")});
+  if (j.contains("traces")) c.traces = traces_from(j.at("traces"));
   return c;
 }
 

@@ -56,48 +56,141 @@ const char* outcome_colour(Judgement j) {
   return "#9a6700";
 }
 
-bool has_timing(const Measurement& m) {
-  if (!m.window) return false;
-  if (m.at) return m.window->end > m.window->begin;
-  return m.outcome != Outcome::Pass; // the edge the check waited for never came
+namespace {
+
+// The lane's value at t (its last change at or before t).
+std::int64_t value_at(const TraceLane& lane, Nanos t) {
+  std::int64_t v = lane.changes.empty() ? 0 : lane.changes.front().value;
+  for (const auto& c : lane.changes) {
+    if (c.time > t) break;
+    v = c.value;
+  }
+  return v;
 }
 
-std::string timing_diagram_svg(const Measurement& m, Judgement shown) {
+// A lane as a step line between y_of(value) levels across the plot.
+std::string step_line(const TraceLane& lane, const svg::Scale& x, double span_end, auto y_of,
+                      const char* colour) {
+  std::string pts;
+  std::int64_t v = lane.changes.front().value;
+  pts += fmt::format("{:.1f},{:.1f}", kLeft, y_of(v));
+  for (std::size_t i = 1; i < lane.changes.size(); ++i) {
+    const double px = x(static_cast<double>(lane.changes[i].time.count()));
+    pts += fmt::format(" {0:.1f},{1:.1f} {0:.1f},{2:.1f}", px, y_of(v), y_of(lane.changes[i].value));
+    v = lane.changes[i].value;
+  }
+  pts += fmt::format(" {:.1f},{:.1f}", x(span_end), y_of(v));
+  return fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"/>", pts,
+                     colour);
+}
+
+const char* lane_colour(LaneRole r) {
+  return r == LaneRole::Stimulus ? "#0969da" : r == LaneRole::Count ? "#8250df" : "#1f2328";
+}
+
+// The limits as the reader states them: "limit 100 µs after the start", "expected 9.5 .. 10.5 counts".
+std::string limit_words(const Measurement& m) {
+  const auto v = [&](const std::optional<double>& l) { return format_value(*l, m.unit); };
+  if (m.lower && m.upper) return fmt::format("expected {} .. {}", v(m.lower), v(m.upper));
+  if (m.upper) return (is_time_from_start(m) ? "limit: start + " : "at most ") + v(m.upper);
+  if (m.lower) return (is_time_from_start(m) ? "start + at least " : "at least ") + v(m.lower);
+  return "expected window";
+}
+
+} // namespace
+
+std::string timing_diagram_svg(const Measurement& m, Judgement shown, const WindowTrace* trace) {
   if (!m.window) return {};
-  const double b = static_cast<double>(m.window->begin.count());
-  const bool open = m.window->end == Nanos::max();
-  const double e = open ? b : static_cast<double>(m.window->end.count());
-  double lo = std::min(b, e), hi = std::max(b, e);
-  if (m.at) {
-    lo = std::min(lo, static_cast<double>(m.at->count()));
-    hi = std::max(hi, static_cast<double>(m.at->count()));
+  const TraceWindow span = trace ? trace->span : figure_span(m);
+  const double s0 = static_cast<double>(span.begin.count()), s1 = static_cast<double>(span.end.count());
+  const svg::Scale x(s0, s1, kLeft, kRight);
+  const auto px = [&](Nanos t) { return std::clamp(x(static_cast<double>(t.count())), kLeft, kRight); };
+  const char* edge_colour = outcome_colour(shown);
+  constexpr double kTop = 24, kLogic = 22, kCount = 40;
+  // The lanes: the trace's, or one output lane stepping at the captured edge.
+  std::vector<TraceLane> fallback;
+  if (!trace || trace->lanes.empty()) {
+    TraceLane out{"edge", LaneRole::Output, {{span.begin, 0}}, 0};
+    if (m.at) out.changes.push_back({*m.at, 1});
+    fallback.push_back(std::move(out));
   }
-  if (open) hi = std::max(hi + (hi - lo), b + 1e6); // an open window: at least 1 ms of it
-  const svg::Scale x = svg::padded(lo, hi, 0.2, 1000.0, kLeft, kRight);
-  const double win_end = open ? kRight : x(e);
-  std::string s = svg::open(kWidth, 96, "timing of " + m.name);
-  s += text(kLeft - 4, 30, "expected", "end") + text(kLeft - 4, 58, "edge", "end");
-  s += fmt::format(
-      "<rect x=\"{:.1f}\" y=\"16\" width=\"{:.1f}\" height=\"22\" fill=\"{}\" stroke=\"#1a7f37\"/>", x(b),
-      std::max(1.0, win_end - x(b)), kBand);
-  s += vline(x(b), 10, 66, kLimit, true) + (open ? std::string() : vline(x(e), 10, 66, kLimit, true));
-  s += text(x(b), 9, "window " + format_ns(b), anchor_at(x(b)), kLimit);
-  if (!open && x(e) - x(b) > 80) s += text(x(e), 9, format_ns(e), anchor_at(x(e)), kLimit);
-  if (m.at) {
-    const double a = static_cast<double>(m.at->count());
-    // The output as a step at the captured edge.
-    s += fmt::format(
-        "<polyline points=\"{0:.1f},62 {1:.1f},62 {1:.1f},46 {2:.1f},46\" fill=\"none\" stroke=\"{3}\" "
-        "stroke-width=\"2\"/>",
-        kLeft, x(a), kRight, outcome_colour(shown));
-    s += text(std::min(x(a) + 3, kRight), 44, "edge " + format_ns(a), anchor_at(x(a)), outcome_colour(shown));
+  const std::vector<TraceLane>& lanes = fallback.empty() ? trace->lanes : fallback;
+  double bottom = kTop;
+  for (const auto& l : lanes) bottom += l.role == LaneRole::Count ? kCount : kLogic;
+  std::string body;
+  // The expected window behind every lane, its limits dashed; a time from an event marks the event.
+  const std::optional<TraceWindow> want = expected_window(m);
+  const bool from_start = is_time_from_start(m);
+  const auto limit_line = [&](double at) {
+    return fmt::format("<line class=\"limit\" x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" "
+                       "stroke=\"{3}\" stroke-dasharray=\"4 3\"/>",
+                       at, kTop - 8, bottom, kLimit);
+  };
+  if (want) {
+    const double w0 = px(want->begin), w1 = want->end == Nanos::max() ? kRight : px(want->end);
+    body +=
+        fmt::format("<rect class=\"expected\" x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" "
+                    "fill=\"{}\" stroke=\"#1a7f37\"/>",
+                    w0, kTop - 4, std::max(1.0, w1 - w0), bottom - kTop + 4, kBand);
+    if (!from_start || m.lower) body += limit_line(w0);
+    if (want->end != Nanos::max()) body += limit_line(w1);
+    body += text(from_start ? w1 : (w0 + w1) / 2, 10, limit_words(m),
+                 anchor_at(from_start ? w1 : (w0 + w1) / 2), kLimit);
   } else {
-    s += fmt::format("<line x1=\"{}\" y1=\"62\" x2=\"{}\" y2=\"62\" stroke=\"{}\" stroke-width=\"2\"/>",
-                     kLeft, kRight, outcome_colour(shown));
-    s += text((kLeft + kRight) / 2, 56, "no edge captured", "middle", outcome_colour(shown));
+    body += text(kRight, 10, "no limit: reported only", "end", "#57606a");
   }
-  s += svg::x_axis(x, 70, time_label, "run time");
-  return s + svg::kClose;
+  if (from_start) {
+    const double at = px(m.window->begin);
+    body += vline(at, kTop - 8, bottom, "#57606a", false);
+    body += text(at, 20, "start " + format_time(m.window->begin), anchor_at(at), "#57606a");
+  }
+  double y = kTop;
+  std::string notes;
+  for (const auto& lane : lanes) {
+    const bool count = lane.role == LaneRole::Count;
+    const double h = count ? kCount : kLogic;
+    body +=
+        fmt::format("<g class=\"lane {}\" data-lane=\"{}\">", to_string(lane.role), xml_escape(lane.name));
+    body += text(kLeft - 4, y + h / 2 + 3, lane.name, "end", lane_colour(lane.role));
+    if (count) {
+      std::int64_t lo = lane.changes.front().value, hi = lo;
+      for (const auto& c : lane.changes) lo = std::min(lo, c.value), hi = std::max(hi, c.value);
+      const svg::Scale yc(static_cast<double>(lo), static_cast<double>(hi), y + h - 6, y + 6);
+      body += step_line(
+          lane, x, s1, [&](std::int64_t v) { return yc(static_cast<double>(v)); }, lane_colour(lane.role));
+      body +=
+          text(kLeft + 2, y + 8, std::to_string(lane.changes.front().value), "start", lane_colour(lane.role));
+      body +=
+          text(kRight - 2, y + 8, std::to_string(lane.changes.back().value), "end", lane_colour(lane.role));
+      if (m.at && *m.at >= span.begin && *m.at <= span.end)
+        body += text(px(*m.at) + 3, y + h - 2, fmt::format("count {} at the edge", value_at(lane, *m.at)),
+                     anchor_at(px(*m.at)), edge_colour);
+    } else {
+      body += step_line(
+          lane, x, s1, [&](std::int64_t v) { return v != 0 ? y + 4 : y + h - 5; },
+          lane.role == LaneRole::Output ? edge_colour : lane_colour(lane.role));
+    }
+    if (lane.thinned > 0) notes += fmt::format("{}: {} changes thinned to fit; ", lane.name, lane.thinned);
+    body += "</g>";
+    y += h;
+  }
+  if (m.at) {
+    body += fmt::format("<line class=\"edge\" x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" "
+                        "stroke=\"{3}\" stroke-width=\"1.5\"/>",
+                        px(*m.at), kTop - 4, bottom, edge_colour);
+    body += text(px(*m.at), bottom + 32,
+                 fmt::format("edge {}: {} {}", format_time(*m.at), m.name, format_value(m.value, m.unit)),
+                 anchor_at(px(*m.at)), edge_colour);
+  } else {
+    body += text((kLeft + kRight) / 2, bottom + 32, "no edge captured", "middle", edge_colour);
+  }
+  body += svg::x_axis(x, bottom + 2, time_label, "run time");
+  double height = bottom + 38;
+  if (!notes.empty()) {
+    body += text(kLeft, height + 6, notes.substr(0, notes.size() - 2), "start", "#57606a");
+    height += 12;
+  }
+  return svg::open(kWidth, height, "timing of " + m.name) + body + svg::kClose;
 }
 
 std::string limits_svg(std::span<const ShownMeasurement> rows) {

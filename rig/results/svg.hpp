@@ -11,20 +11,21 @@
 
 #include "rig/results/measurement.hpp"
 #include "rig/results/motion_record.hpp"
+#include "rig/results/timing_figures.hpp"
 
 namespace hilrig::rig {
 
 // The colour of an outcome word.
 [[nodiscard]] const char* outcome_colour(Judgement j);
 
-// The measurement's window shaded as the expected window, `at` as the captured edge (in the
-// colour of `shown`), on an axis of run time. Without `at`, the window is drawn with "no edge
-// captured". An open window (end = Nanos::max()) runs off the right edge. Empty without window.
-[[nodiscard]] std::string timing_diagram_svg(const Measurement& m, Judgement shown);
-
-// Whether the measurement gets a timing diagram: a window of some length with its captured
-// edge, or a window whose edge the check did not capture (a missing edge, failed).
-[[nodiscard]] bool has_timing(const Measurement& m);
+// A timing diagram around the measurement's window: the expected window (expected_window())
+// shaded over every lane with its limits marked, and the captured edge `at` (in the colour of
+// `shown`) or "no edge captured". With `trace`, the lanes are what the run captured over
+// its span: the stimulus (encoder A/B or the driven line), the shaft's count (a step line
+// with its values) and the output; without, one output lane stepping at `at`. Empty without
+// a window.
+[[nodiscard]] std::string timing_diagram_svg(const Measurement& m, Judgement shown,
+                                             const WindowTrace* trace = nullptr);
 
 // One row per measurement: its value (a dot in the colour of its word) against its limits
 // (the passing band shaded, each limit marked). Empty when no measurement has a limit.

@@ -14,12 +14,14 @@
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "models/ans1/variants.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
 #include "rig/results/merge.hpp"
 #include "rig/results/results_json.hpp"
+#include "rig/results/timing_figures.hpp"
 #include "test_support.hpp"
 
 namespace hilrig::campaign {
@@ -136,6 +138,81 @@ TEST(Ans1Campaigns, ThroughputFailsAWorstCaseOnePercentBeyond20usAndPassesExactl
       }
     }
   }
+}
+
+// The report's timing diagram shows what the run captured around the judged window: the
+// encoder's A/B (stimulus), the shaft's count and the output, cut from the run's own trace.
+// ans1_throughput.toml with an 11 us output delay (worst case 21 us against the 20 us limit,
+// ANS1 manual L572-L574 via docs/spec/ans1.md §3 L157): "on.max" fails and is drawn first.
+TEST(Ans1Campaigns, ThroughputDiagramCarriesStimulusCountAndOutputFromTheTrace) {
+  const std::string path = ans1_dir() + "/ans1_throughput.toml";
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string t = text.str();
+  const std::string dut = "[dut]\nmodel = \"ans1\"\n";
+  t.replace(t.find(dut), dut.size(), dut + "[dut.params]\noutput_delay = \"11us\"\n");
+  const Campaign c = parse_campaign(t, path);
+  const RunOutput out = Executive(c).run(c.runs[0]);
+  const rig::CheckResult& on = out.result.checks.at(0);
+  ASSERT_EQ(on.check, "on");
+  const auto drawn = rig::timing_figures(on);
+  ASSERT_FALSE(drawn.empty());
+  const rig::Measurement& worst = *drawn.front();
+  ASSERT_EQ(worst.outcome, Outcome::Fail) << worst.name;
+  ASSERT_EQ(on.traces.size(), drawn.size());
+  const rig::WindowTrace* w = rig::trace_for(on, worst);
+  ASSERT_NE(w, nullptr);
+  // The expected window: the crossing to the crossing + limit_us = 20.
+  const auto want = rig::expected_window(worst);
+  ASSERT_TRUE(want.has_value());
+  EXPECT_EQ(want->end - want->begin, Nanos{20'000});
+  EXPECT_LE(w->span.begin, worst.window->begin);
+  EXPECT_GE(w->span.end, std::max(*worst.at, want->end));
+  ASSERT_EQ(w->lanes.size(), 4U);
+  const std::vector<std::pair<std::string, rig::LaneRole>> lanes{{"enc.A", rig::LaneRole::Stimulus},
+                                                                 {"enc.B", rig::LaneRole::Stimulus},
+                                                                 {"shaft.count", rig::LaneRole::Count},
+                                                                 {"ls1", rig::LaneRole::Output}};
+  const auto value_at = [](const rig::TraceLane& lane, Nanos at) {
+    std::int64_t v = lane.changes.front().value;
+    for (const auto& ch : lane.changes)
+      if (ch.time <= at) v = ch.value;
+    return v;
+  };
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    EXPECT_EQ(w->lanes[i].name, lanes[i].first);
+    EXPECT_EQ(w->lanes[i].role, lanes[i].second);
+    EXPECT_EQ(w->lanes[i].thinned, 0U);
+    ASSERT_FALSE(w->lanes[i].changes.empty());
+    EXPECT_EQ(w->lanes[i].changes.front().time, w->span.begin);
+  }
+  // The window starts at the crossing of setpoint = 100 (rising): the count reads 100 there
+  // and 99 before its last change; the output goes high (level = "high") at the captured edge.
+  const rig::TraceLane& count = w->lanes[2];
+  EXPECT_EQ(value_at(count, worst.window->begin), 100);
+  EXPECT_EQ(count.changes.front().value, 99);
+  const rig::TraceLane& ls1 = w->lanes[3];
+  EXPECT_EQ(value_at(ls1, *worst.at - Nanos{1}), 0);
+  EXPECT_EQ(value_at(ls1, *worst.at), 1);
+  // The encoder lanes are the trace's own edges in the span, none left out.
+  for (const std::size_t i : {0U, 1U}) {
+    std::vector<rig::LaneChange> edges;
+    for (const Edge& e : out.trace->edges_of(w->lanes[i].name))
+      if (e.time >= w->span.begin && e.time <= w->span.end)
+        edges.push_back({e.time, e.level == Level::High ? 1 : 0});
+    ASSERT_EQ(w->lanes[i].changes.size(), edges.size() + 1) << w->lanes[i].name;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+      EXPECT_EQ(w->lanes[i].changes[k + 1].time, edges[k].time);
+      EXPECT_EQ(w->lanes[i].changes[k + 1].value, edges[k].value);
+    }
+  }
+  // results.json keeps them: written and read back, the same lanes.
+  const rig::RunResult back = rig::run_from_json(rig::run_to_json(out.result));
+  const auto& again = back.checks.at(0).traces;
+  ASSERT_EQ(again.size(), on.traces.size());
+  EXPECT_EQ(again[0].lanes[2].changes.size(), on.traces[0].lanes[2].changes.size());
+  EXPECT_EQ(again[0].lanes[3].changes.back().time, on.traces[0].lanes[3].changes.back().time);
 }
 
 // --seed moves the virtual ANS1's power-up scan phase: the latency series differ.

@@ -21,14 +21,55 @@ import sys
 # the summary's links to failed checks, each pointing at a section that exists.
 INSPECT = """JSON.stringify((() => {
   document.querySelectorAll('details').forEach(d => { d.open = true; });
+  const laidOut = e => e.getBoundingClientRect().width > 0 && e.getBoundingClientRect().height > 0;
+  // A timing diagram: its lanes by role, and whether its expected window and limit are drawn
+  // inside the figure's box.
+  const timing = svg => {
+    const box = svg.getBoundingClientRect();
+    const inside = e => { const r = e.getBoundingClientRect();
+      return r.left >= box.left - 1 && r.right <= box.right + 1 && r.top >= box.top - 1 && r.bottom <= box.bottom + 1; };
+    const lanes = role => [...svg.querySelectorAll('g.lane.' + role)].filter(laidOut).map(g => g.dataset.lane);
+    return {stimulus: lanes('stimulus'), count: lanes('count'), output: lanes('output'),
+            expected: [...svg.querySelectorAll('rect.expected')].filter(inside).length,
+            limits: [...svg.querySelectorAll('line.limit')].filter(inside).length};
+  };
   const sections = [...document.querySelectorAll('section.check')].map(s => [
     s.dataset.judgement,
-    [...s.querySelectorAll('figure.evidence > svg')].filter(
-        g => g.getBoundingClientRect().width > 0 && g.getBoundingClientRect().height > 0).length]);
+    [...s.querySelectorAll('figure.evidence > svg')].filter(laidOut).length,
+    [...s.querySelectorAll('figure.evidence > svg')].filter(g => g.querySelector('g.lane')).map(timing)]);
   const links = [...document.querySelectorAll('ul.failures a')].map(a => a.getAttribute('href'));
   const dangling = links.filter(h => !document.getElementById(h.slice(1)));
   return {sections, links, dangling};
 })())"""
+
+
+# Checks judged against the shaft: their diagrams show the encoder (stimulus) and the count.
+ON_SHAFT = ("throughput", "edge_at_position", "advance_counts")
+
+
+def timing_problems(name, check, timings, encoder):
+    """Each window results.json cut a trace for is one diagram with the run's lanes in it: the
+    stimulus (enc.A/enc.B, when the campaign wires the encoder: a resolver board's stators are
+    not drawn) and shaft.count for a check on the shaft, the check's output line,
+    and its expected window and limit drawn inside the figure (a limitless time: none)."""
+    traces = check.get("traces", [])
+    out = []
+    if len(timings) != len(traces):
+        return [f"{name}: {check['check']}: {len(timings)} timing diagrams for {len(traces)} cut windows"]
+    for t, cut in zip(timings, traces):
+        want = {role: [l["name"] for l in cut["lanes"] if l["role"] == role] for role in ("stimulus", "count", "output")}
+        for role, lanes in want.items():
+            if t[role] != lanes:
+                out.append(f"{name}: {check['check']}: {role} lanes drawn {t[role]}, captured {lanes}")
+        if check["kind"] in ON_SHAFT and t["count"] != ["shaft.count"]:
+            out.append(f"{name}: {check['check']}: no count lane in its timing diagram")
+        if check["kind"] in ON_SHAFT and encoder and t["stimulus"] != ["enc.A", "enc.B"]:
+            out.append(f"{name}: {check['check']}: stimulus lanes {t['stimulus']}, not the encoder's A/B")
+        if not t["output"]:
+            out.append(f"{name}: {check['check']}: no output lane in its timing diagram")
+        if t["expected"] > 1 or (t["expected"] == 1) != (t["limits"] > 0):
+            out.append(f"{name}: {check['check']}: expected window {t['expected']}, limit lines {t['limits']}")
+    return out
 
 
 def child_fds(read_end, write_end):
@@ -130,17 +171,23 @@ def main():
     else:
         reports.append(scratch / "failing" / "report.html")
 
+    sources = {p.stem: p for p in pathlib.Path(src, "campaigns").rglob("*.toml")}
     browser = Browser(chromium, scratch / "chromium-profile")
     judged_total = 0
+    drawn_traces = 0
     try:
         for report in reports:
             name = report.parent.name
             found = browser.inspect(report, report.parent / "report.png")
             results = json.loads((report.parent / "results.json").read_text())
             checks = [c for run in results["runs"] for c in run["checks"]]
+            toml = sources.get(name, failing if name == "failing" else None)
+            encoder = toml is not None and 'rig = "enc.A"' in toml.read_text()
             if len(found["sections"]) != len(checks):
                 problems.append(f"{name}: {len(found['sections'])} check sections, {len(checks)} in results.json")
-            for (word, figures), c in zip(found["sections"], checks):
+            for (word, figures, timings), c in zip(found["sections"], checks):
+                problems += timing_problems(name, c, timings, encoder)
+                drawn_traces += len(c.get("traces", []))
                 if word != c["outcome"]:
                     problems.append(f"{name}: {c['check']} reads {word}, results.json {c['outcome']}")
                 if word != "not judged":
@@ -158,11 +205,13 @@ def main():
                 problems.append(f"{name}: no screenshot")
     finally:
         browser.close()
+    if drawn_traces == 0:
+        problems.append("no timing diagram with the run's trace in any report")
     for p in problems:
         print("FAIL:", p)
     if not problems:
         print(f"{len(reports)} reports ({shipped} shipped, 1 failing), {judged_total} judged checks, "
-              "each with a figure")
+              f"each with a figure; {drawn_traces} timing diagrams with stimulus, count and output")
     return 1 if problems else 0
 
 

@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include <fmt/format.h>
+
 #include "rig/results/number_format.hpp"
 #include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
@@ -137,14 +139,16 @@ TEST(Svg, TimingDiagramWithAndWithoutTheEdge) {
   ASSERT_TRUE(has_timing(m));
   const std::string with = timing_diagram_svg(m, Judgement::Pass);
   EXPECT_NE(with.find("edge 1.001 ms"), std::string::npos) << with;
-  EXPECT_NE(with.find("window 1 ms"), std::string::npos) << with;
+  // A position tolerance crossed in time: the window itself is the expected one, both limits.
+  EXPECT_NE(with.find("expected 93 counts .. 95 counts"), std::string::npos) << with;
+  EXPECT_EQ(count_of(with, "class=\"limit\""), 2U) << with;
   // A missing edge: the window is drawn and says so, in the word's colour.
   m.at.reset();
   m.outcome = Outcome::Fail;
   ASSERT_TRUE(has_timing(m));
   const std::string missing = timing_diagram_svg(m, Judgement::Fail);
   EXPECT_NE(missing.find("no edge captured"), std::string::npos);
-  EXPECT_NE(missing.find("stroke=\"#cf222e\" stroke-width=\"2\""), std::string::npos);
+  EXPECT_NE(missing.find("stroke=\"#cf222e\" stroke-width=\"1.5\""), std::string::npos);
   // A passing window-only measurement (a handshake's write to Acknowledge) is no edge diagram.
   m.outcome = Outcome::Pass;
   EXPECT_FALSE(has_timing(m));
@@ -152,6 +156,72 @@ TEST(Svg, TimingDiagramWithAndWithoutTheEdge) {
   m.outcome = Outcome::Fail;
   m.window->end = Nanos::max();
   for (const double x : xs(timing_diagram_svg(m, Judgement::Fail))) EXPECT_LE(x, 600.0);
+}
+
+// A latency (throughput.max, limit 20 us from the crossing) that came 1 us late: the diagram
+// draws the lanes the run captured, in their order, the expected window [crossing, crossing
+// + 20 us] shaded with the limit dashed at crossing + 20 us, and the count at the edge.
+TEST(Svg, TimingDiagramDrawsTheCapturedLanesAndMarksTheLimit) {
+  Measurement m = measured("on.max", 21.0, std::nullopt, 20.0, Outcome::Fail);
+  m.unit = "us";
+  m.window = TraceWindow{Nanos{1'000'000}, Nanos{1'021'000}};
+  m.at = Nanos{1'021'000};
+  const auto want = expected_window(m);
+  ASSERT_TRUE(want.has_value());
+  EXPECT_EQ(want->begin, Nanos{1'000'000});
+  EXPECT_EQ(want->end, Nanos{1'020'000});
+  // The figure spans the window and the limit with a fifth of their 21 us either side.
+  const TraceWindow span = figure_span(m);
+  EXPECT_EQ(span.begin, Nanos{1'000'000 - 4'200});
+  EXPECT_EQ(span.end, Nanos{1'021'000 + 4'200});
+  WindowTrace w{*m.window, span, {}};
+  w.lanes.push_back({"enc.A", LaneRole::Stimulus, {{span.begin, 0}, {Nanos{999'999}, 1}}, 0});
+  w.lanes.push_back({"shaft.count", LaneRole::Count, {{span.begin, 99}, {Nanos{999'999}, 100}}, 0});
+  w.lanes.push_back({"ls1", LaneRole::Output, {{span.begin, 0}, {Nanos{1'021'000}, 1}}, 0});
+  const std::string svg = timing_diagram_svg(m, Judgement::Fail, &w);
+  const auto a = svg.find("data-lane=\"enc.A\""), c = svg.find("data-lane=\"shaft.count\""),
+             o = svg.find("data-lane=\"ls1\"");
+  ASSERT_NE(a, std::string::npos) << svg;
+  ASSERT_NE(c, std::string::npos);
+  ASSERT_NE(o, std::string::npos);
+  EXPECT_LT(a, c);
+  EXPECT_LT(c, o);
+  EXPECT_NE(svg.find("class=\"lane stimulus\""), std::string::npos);
+  EXPECT_NE(svg.find("limit: start + 20 µs"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("count 100 at the edge"), std::string::npos) << svg;
+  // x of crossing + 20 us on the 70..580 px plot of [995.8, 1025.2] us: 70 + 24.2/29.4 * 510.
+  const double limit_x = 70.0 + 24.2 / 29.4 * 510.0;
+  EXPECT_NE(svg.find(fmt::format("class=\"limit\" x1=\"{:.1f}\"", limit_x)), std::string::npos) << svg;
+  EXPECT_EQ(count_of(svg, "class=\"limit\""), 1U); // no lower limit: the start is no limit
+  EXPECT_NE(svg.find(fmt::format("class=\"expected\" x=\"{:.1f}\"", 70.0 + 4.2 / 29.4 * 510.0)),
+            std::string::npos);
+  for (const double x : xs(svg)) EXPECT_LE(x, 600.0);
+  // A time without a limit (the median) has no expected window: nothing shaded.
+  m.upper.reset();
+  EXPECT_FALSE(expected_window(m).has_value());
+  const std::string median = timing_diagram_svg(m, Judgement::Pass, &w);
+  EXPECT_EQ(median.find("class=\"expected\""), std::string::npos);
+  EXPECT_NE(median.find("no limit: reported only"), std::string::npos);
+}
+
+// Diagrams go to the windows that did not pass, then to those with a limit, one per window.
+TEST(Svg, TimingFiguresFailuresFirstThenLimitedOnePerWindow) {
+  CheckResult c;
+  const auto latency = [](const char* name, std::optional<double> upper, Outcome o, std::int64_t end) {
+    Measurement m = measured(name, 1.0, std::nullopt, upper, o);
+    m.unit = "us";
+    m.window = TraceWindow{Nanos{1000}, Nanos{end}};
+    m.at = Nanos{end};
+    return m;
+  };
+  c.measurements = {latency("min", std::nullopt, Outcome::Pass, 2000),
+                    latency("p99", 20.0, Outcome::Pass, 3000), latency("max", 20.0, Outcome::Fail, 3000),
+                    latency("other", 20.0, Outcome::Pass, 4000)};
+  const auto drawn = timing_figures(c);
+  ASSERT_EQ(drawn.size(), 3U);
+  EXPECT_EQ(drawn[0]->name, "max");   // failed
+  EXPECT_EQ(drawn[1]->name, "other"); // limited (p99 is max's window)
+  EXPECT_EQ(drawn[2]->name, "min");
 }
 
 TEST(Svg, HistogramKeepsEveryLimitOnTheCanvasAndHasEnoughBins) {

@@ -1,0 +1,30 @@
+#pragma once
+// The trace around each window the report draws (rig/results/timing_figures.hpp), cut from
+// the run's recording after the check was judged: what a timing diagram shows is what the
+// run captured, never recomputed.
+
+#include <vector>
+
+#include "core/trace.hpp"
+#include "rig/checks/check_params.hpp"
+#include "rig/results/measurement.hpp"
+
+namespace hilrig::campaign {
+
+// Pixel columns a lane is thinned to (two changes kept per column at most).
+inline constexpr std::size_t kLaneColumns = 500;
+
+// The lanes for a check's diagrams, as trace names: for a check judged against the shaft
+// (throughput, advance_counts, edge_at_position) the encoder's lines (stimulus) and
+// shaft.count; then the lines the check reads (output; a pulse or step line). Only names the
+// trace declares.
+[[nodiscard]] std::vector<std::pair<std::string, rig::LaneRole>> lanes_of(const checks::CheckParams& params,
+                                                                          const TraceRecorder& trace);
+
+// One WindowTrace per timing_figures(check) measurement, over its figure_span(), in one
+// pass over the trace's samples.
+[[nodiscard]] std::vector<rig::WindowTrace>
+cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
+                  const std::vector<std::pair<std::string, rig::LaneRole>>& lanes);
+
+} // namespace hilrig::campaign
