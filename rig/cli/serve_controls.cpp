@@ -43,8 +43,10 @@ RegisterStatus ControlledRegisters::read_holding_registers(std::uint16_t address
     if (a == kSupplyRegister) {
       if (!controls_.power) return RegisterStatus::IllegalDataAddress;
       out[i] = powered_ ? 1 : 0;
-    } else if (a == kPowerCycleRegister) {
-      if (!controls_.power) return RegisterStatus::IllegalDataAddress;
+    } else if (a == kPowerCycleRegister || a == kClearPairRegister) {
+      const bool known = a == kPowerCycleRegister ? static_cast<bool>(controls_.power)
+                                                  : static_cast<bool>(controls_.clear_last_pair);
+      if (!known) return RegisterStatus::IllegalDataAddress;
       out[i] = 0; // a command, not a state
     } else {
       if (!controls_.program_switch) return RegisterStatus::IllegalDataAddress;
@@ -69,10 +71,13 @@ RegisterStatus ControlledRegisters::write_holding_registers(std::uint16_t addres
     const auto a = static_cast<std::uint16_t>(address + i);
     const std::uint16_t v = values[i];
     const bool known = a == kProgramSwitchRegister ? static_cast<bool>(controls_.set_program_switch)
+                       : a == kClearPairRegister   ? static_cast<bool>(controls_.clear_last_pair)
                                                    : static_cast<bool>(controls_.power);
     if (!known) return RegisterStatus::IllegalDataAddress;
-    if ((a == kPowerCycleRegister && v == 0) || (a != kPowerCycleRegister && v > 1))
-      return RegisterStatus::IllegalDataValue;
+    const bool valid = a == kPowerCycleRegister  ? v >= 1
+                       : a == kClearPairRegister ? v >= 1 && v <= controls_.outputs
+                                                 : v <= 1;
+    if (!valid) return RegisterStatus::IllegalDataValue;
   }
   for (std::size_t i = 0; i < values.size(); ++i) {
     const RegisterStatus s = write_control(static_cast<std::uint16_t>(address + i), values[i]);
@@ -90,6 +95,8 @@ RegisterStatus ControlledRegisters::write_control(std::uint16_t address, std::ui
       back_on_ = {};
       set_power(true);
     });
+  } else if (address == kClearPairRegister) {
+    controls_.clear_last_pair(value);
   } else {
     controls_.set_program_switch(value == 1);
   }

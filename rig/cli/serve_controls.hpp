@@ -16,14 +16,18 @@ namespace hilrig::cli {
 inline constexpr std::uint16_t kSupplyRegister = 9000;        // 1 on, 0 off (reads the state)
 inline constexpr std::uint16_t kPowerCycleRegister = 9001;    // write T: off now, on T ms later
 inline constexpr std::uint16_t kProgramSwitchRegister = 9002; // 1 Program, 0 Display (2700)
+inline constexpr std::uint16_t kClearPairRegister = 9003;     // write N: CLEAR on output N's last pair
 inline constexpr std::uint16_t kFirstControl = kSupplyRegister;
-inline constexpr std::uint16_t kControlCount = 3;
+inline constexpr std::uint16_t kControlCount = 4;
 
 // What the served model offers; an empty function: the board has no such control.
 struct BoardControls {
   std::function<void(bool on)> power;
   std::function<void(bool program)> set_program_switch;
   std::function<bool()> program_switch; // where the switch stands
+  // The keyboard's CLEAR on output N's last setpoint pair (1..outputs); ignored in Display Mode.
+  std::function<void(int output)> clear_last_pair;
+  int outputs = 0;
 };
 
 class ControlledRegisters final : public RegisterMap {

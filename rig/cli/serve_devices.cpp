@@ -193,6 +193,11 @@ ServedModel build_pls2700(Scheduler& scheduler, const ServeModelOptions& o) {
   controls.power = [module](bool on) { on ? module->power_on() : module->power_off(); };
   controls.set_program_switch = [module](bool program) { module->set_program_switch(program); };
   controls.program_switch = [module] { return module->program_switch(); };
+  controls.clear_last_pair = [module](int output) {
+    (void)module->keyboard_delete_pair(
+        output, module->setup().outputs[static_cast<std::size_t>(output - 1)].pair_count);
+  };
+  controls.outputs = p::kOutputCount;
   return {std::move(served), map, {}, std::move(controls)};
 }
 

@@ -202,10 +202,12 @@ template <class Pred> std::uint16_t input_until(Served& s, int address, Pred pre
 }
 
 // docs/serve.md "Rig controls": holding 9000 the supply (1 on, 0 off), 9001 a timed power cycle
-// (off now, on that many ms later), 9002 the Program switch (1 Program, 0 Display).
+// (off now, on that many ms later), 9002 the Program switch (1 Program, 0 Display), 9003 CLEAR
+// on an output's last pair.
 constexpr int kSupply = 9000;
 constexpr int kPowerCycle = 9001;
 constexpr int kProgramSwitch = 9002;
+constexpr int kClearPair = 9003;
 
 // pls2700 manual (seeds/002_46e90574ec92805f.txt): the keyboard lock 8100h is "retained through
 // power loss" (L1356-1357) and the setpoints are in nvRAM (L776); the resolver is absolute. A 2741
@@ -235,17 +237,30 @@ TEST(ServeCli, APlcPowersTheServedBoardOffAndOnThroughTheRigControls) {
   EXPECT_EQ(s.write(kSupply - 1, {1, 1}), EMBXILADD);
 }
 
-// L543: the Program switch toward the back is Program Mode; L368, L534: CLEAR then zeroes the
-// position, which the host sees — here the keyboard is not modelled beyond the switch, so the
-// switch's position is read back; Display Mode ignores the keyboard (L535).
-TEST(ServeCli, TheProgramSwitchMovesDuringServing) {
-  Served s("switch", {"--model", "2741", "--param", "program_switch=display"});
+// L543: the Program switch toward the back is Program Mode, toward the front Display Mode, where
+// "the keyboard cannot modify parameters" (L535); CLEAR on a pair deletes it (L1078). The shaft
+// stands at 0 (constant:0rpm): output 1 programmed ON 0 OFF 100 is on (status word, input 2,
+// bit 0). CLEAR on its pair (9003 = 1) in Display Mode: ignored, still on; the switch to Program
+// (9002 = 1), CLEAR again: the pair is gone, output 1 off.
+TEST(ServeCli, TheProgramSwitchDecidesWhetherTheKeyboardMayDeleteAPair) {
+  Served s("switch", {"--model", "2741", "--motion", "constant:0rpm", "--param", "program_switch=display"});
   ASSERT_EQ(s.holding_registers(kProgramSwitch, 1).words, std::vector<std::uint16_t>{0}) << s.why_not();
+  ASSERT_EQ(s.write(0, {0xC011, 0x0000, 0x0000, 0x0100}), 0);
+  ASSERT_EQ(input_until(s, 2, [](std::uint16_t w) { return (w & 1) != 0; }) & 1, 1);
+  ASSERT_EQ(s.write(kClearPair, {1}), 0);
+  // Ignored in Display Mode: still on at every read for 10 ms, 50 of the module's 200 us updates
+  // (the server advances the board to the clock before each request).
+  for (const auto until = Clock::now() + std::chrono::milliseconds(10); Clock::now() < until;) {
+    const auto r = s.input_registers(2, 1);
+    ASSERT_EQ(r.error, 0);
+    ASSERT_EQ(r.words[0] & 1, 1);
+  }
   ASSERT_EQ(s.write(kProgramSwitch, {1}), 0);
   EXPECT_EQ(s.holding_registers(kProgramSwitch, 1).words, std::vector<std::uint16_t>{1});
-  ASSERT_EQ(s.write(kProgramSwitch, {0}), 0);
-  EXPECT_EQ(s.holding_registers(kProgramSwitch, 1).words, std::vector<std::uint16_t>{0});
+  ASSERT_EQ(s.write(kClearPair, {1}), 0);
+  EXPECT_EQ(input_until(s, 2, [](std::uint16_t w) { return (w & 1) == 0; }) & 1, 0);
   EXPECT_EQ(s.write(kProgramSwitch, {3}), EMBXILVAL);
+  EXPECT_EQ(s.write(kClearPair, {9}), EMBXILVAL); // outputs 1..8
 }
 
 // smd23e manual (seeds/003_7a93cebfafae55cd.txt L2331): after Save Configuration the unit
