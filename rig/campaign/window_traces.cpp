@@ -1,6 +1,8 @@
 #include "rig/campaign/window_traces.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -31,6 +33,26 @@ void thin(rig::TraceLane& lane, const rig::TraceWindow& span) {
   lane.changes = std::move(kept);
 }
 
+// A step line's rate from its changes in the span (every edge a step) and the step before it.
+std::vector<rig::LaneChange> step_rate(const std::vector<rig::LaneChange>& inside,
+                                       std::optional<Nanos> before, const rig::TraceWindow& span) {
+  std::vector<rig::LaneChange> out{{span.begin, 0}};
+  std::optional<Nanos> prev = before;
+  Nanos interval{0};
+  for (const rig::LaneChange& c : inside) {
+    if (prev && interval > Nanos{0} && c.time > *prev + 2 * interval && out.back().value != 0)
+      out.push_back({*prev + 2 * interval, 0}); // a pause: the next step was overdue
+    if (prev && c.time > *prev) {
+      interval = c.time - *prev;
+      out.push_back({c.time, std::llround(1e9 / static_cast<double>(interval.count()))});
+    }
+    prev = c.time;
+  }
+  if (prev && interval > Nanos{0} && *prev + 2 * interval <= span.end)
+    out.push_back({*prev + 2 * interval, 0});
+  return out;
+}
+
 } // namespace
 
 std::vector<std::pair<std::string, rig::LaneRole>> lanes_of(const checks::CheckParams& params,
@@ -52,6 +74,9 @@ std::vector<std::pair<std::string, rig::LaneRole>> lanes_of(const checks::CheckP
     add("shaft.count", rig::LaneRole::Count);
   }
   for (const std::string& line : checks::lines_of(params)) add(line, rig::LaneRole::Output);
+  if (const auto* move = std::get_if<checks::ShaftMoveParams>(&params);
+      move && trace.find(move->step_line) >= 0)
+    out.emplace_back(move->step_line + kRateSuffix, rig::LaneRole::Rate);
   return out;
 }
 
@@ -69,13 +94,15 @@ cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
   const auto& signals = trace.signals();
   std::vector<int> lane_of(signals.size(), -1);
   for (std::size_t l = 0; l < lanes.size(); ++l)
-    lane_of[static_cast<std::size_t>(trace.find(lanes[l].first))] = static_cast<int>(l);
+    if (lanes[l].second != rig::LaneRole::Rate)
+      lane_of[static_cast<std::size_t>(trace.find(lanes[l].first))] = static_cast<int>(l);
   struct Before {
     Nanos time{-1};
     std::int64_t value = 0;
   };
   std::vector<std::vector<Before>> before(out.size(), std::vector<Before>(lanes.size()));
   for (std::size_t l = 0; l < lanes.size(); ++l) {
+    if (lanes[l].second == rig::LaneRole::Rate) continue;
     const SignalInfo& info = signals[static_cast<std::size_t>(trace.find(lanes[l].first))];
     for (auto& b : before) b[l].value = info.has_initial ? info.initial : 0;
   }
@@ -99,6 +126,16 @@ cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
   for (std::size_t w = 0; w < out.size(); ++w) {
     for (std::size_t l = 0; l < lanes.size(); ++l) {
       rig::TraceLane& lane = out[w].lanes[l];
+      if (lane.role == rig::LaneRole::Rate) {
+        // From the step line's own lane, before it is thinned.
+        for (std::size_t s = 0; s < lanes.size(); ++s)
+          if (lanes[s].first + kRateSuffix == lane.name && lanes[s].second != rig::LaneRole::Rate)
+            lane.changes = step_rate(
+                inside[w][s], before[w][s].time >= Nanos{0} ? std::optional(before[w][s].time) : std::nullopt,
+                out[w].span);
+        thin(lane, out[w].span);
+        continue;
+      }
       auto& in = inside[w][l];
       std::stable_sort(in.begin(), in.end(),
                        [](const rig::LaneChange& a, const rig::LaneChange& b) { return a.time < b.time; });

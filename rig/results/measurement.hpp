@@ -56,10 +56,22 @@ struct Probe {
 // What the trace held around one judged window, cut from the run's recording for the report's
 // timing diagram: the stimulus (the encoder's A/B, or the line a check drives), the shaft's
 // count and the output, each as its value at span.begin followed by its changes in the span.
-enum class LaneRole { Stimulus, Count, Output };
+// A Rate lane is derived, not recorded: a step line's steps per second, each step's rate
+// (1 / the time since the step before) from that step on, 0 once the next step is overdue.
+enum class LaneRole { Stimulus, Count, Output, Rate };
 
 [[nodiscard]] constexpr const char* to_string(LaneRole r) {
-  return r == LaneRole::Stimulus ? "stimulus" : r == LaneRole::Count ? "count" : "output";
+  switch (r) {
+  case LaneRole::Stimulus:
+    return "stimulus";
+  case LaneRole::Count:
+    return "count";
+  case LaneRole::Output:
+    return "output";
+  case LaneRole::Rate:
+    return "rate";
+  }
+  return "output";
 }
 
 struct LaneChange {

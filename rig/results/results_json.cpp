@@ -114,7 +114,7 @@ json traces_json(const std::vector<WindowTrace>& traces) {
 }
 
 LaneRole role_from(const std::string& s) {
-  for (const LaneRole r : {LaneRole::Stimulus, LaneRole::Count, LaneRole::Output})
+  for (const LaneRole r : {LaneRole::Stimulus, LaneRole::Count, LaneRole::Output, LaneRole::Rate})
     if (s == to_string(r)) return r;
   throw std::runtime_error(fmt::format("results: unknown lane role '{}'", s));
 }

@@ -85,7 +85,10 @@ std::string step_line(const TraceLane& lane, const svg::Scale& x, double span_en
 }
 
 const char* lane_colour(LaneRole r) {
-  return r == LaneRole::Stimulus ? "#0969da" : r == LaneRole::Count ? "#8250df" : "#1f2328";
+  return r == LaneRole::Stimulus ? "#0969da"
+         : r == LaneRole::Count  ? "#8250df"
+         : r == LaneRole::Rate   ? "#bf3989"
+                                 : "#1f2328";
 }
 
 // The limits as the reader states them: "limit 100 µs after the start", "expected 9.5 .. 10.5 counts".
@@ -116,7 +119,10 @@ std::string timing_diagram_svg(const Measurement& m, Judgement shown, const Wind
   }
   const std::vector<TraceLane>& lanes = fallback.empty() ? trace->lanes : fallback;
   double bottom = kTop;
-  for (const auto& l : lanes) bottom += l.role == LaneRole::Count ? kCount : kLogic;
+  const auto levels = [](const TraceLane& l) {
+    return l.role == LaneRole::Count || l.role == LaneRole::Rate;
+  };
+  for (const auto& l : lanes) bottom += levels(l) ? kCount : kLogic;
   std::string body;
   // The expected window behind every lane, its limits dashed; a time from an event marks the event.
   const std::optional<TraceWindow> want = expected_window(m);
@@ -147,7 +153,8 @@ std::string timing_diagram_svg(const Measurement& m, Judgement shown, const Wind
   double y = kTop;
   std::string notes;
   for (const auto& lane : lanes) {
-    const bool count = lane.role == LaneRole::Count;
+    const bool count = levels(lane);
+    const std::string unit = lane.role == LaneRole::Rate ? " steps/s" : "";
     const double h = count ? kCount : kLogic;
     body +=
         fmt::format("<g class=\"lane {}\" data-lane=\"{}\">", to_string(lane.role), xml_escape(lane.name));

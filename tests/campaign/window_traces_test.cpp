@@ -89,5 +89,43 @@ TEST(WindowTraces, ADenseLaneIsThinnedPerPixelColumnKeepingItsLevels) {
     EXPECT_LT(lane.changes[i - 1].time, lane.changes[i].time);
 }
 
+// shaft_move's step rate against time: each step's rate is 1 / the time since the step
+// before (every edge of the step line a step); the rate drops to 0 once the next step is
+// overdue (twice the last interval without one).
+TEST(WindowTraces, StepRateFromTheStepLineBeforeThinning) {
+  TraceRecorder trace;
+  const auto step = trace.declare("shaft.step");
+  trace.set_initial(step, 0);
+  // Steps every 1 ms from 1 ms to 5 ms (1000 steps/s), then every 0.5 ms to 8 ms (2000/s),
+  // then none.
+  std::vector<Nanos> steps;
+  for (std::int64_t t = 1'000'000; t <= 5'000'000; t += 1'000'000) steps.push_back(Nanos{t});
+  for (std::int64_t t = 5'500'000; t <= 8'000'000; t += 500'000) steps.push_back(Nanos{t});
+  Level l = Level::Low;
+  for (const Nanos t : steps) {
+    l = l == Level::Low ? Level::High : Level::Low;
+    trace.edge(step, Edge{t, l});
+  }
+  const rig::CheckResult c = one_window(Nanos{2'500'000}, Nanos{8'000'000});
+  const auto span = rig::figure_span(c.measurements[0]); // 5.5 ms + 1.1 ms either side
+  ASSERT_EQ(span.begin, Nanos{1'400'000});
+  ASSERT_EQ(span.end, Nanos{9'100'000});
+  const auto cut = cut_window_traces(c, trace,
+                                     {{"shaft.step", rig::LaneRole::Output},
+                                      {std::string("shaft.step") + kRateSuffix, rig::LaneRole::Rate}});
+  ASSERT_EQ(cut.size(), 1U);
+  const rig::TraceLane& rate = cut[0].lanes[1];
+  EXPECT_EQ(rate.name, "shaft.step rate");
+  const std::vector<std::pair<std::int64_t, std::int64_t>> want{
+      {1'400'000, 0},    {2'000'000, 1000}, {3'000'000, 1000}, {4'000'000, 1000},
+      {5'000'000, 1000}, {5'500'000, 2000}, {6'000'000, 2000}, {6'500'000, 2000},
+      {7'000'000, 2000}, {7'500'000, 2000}, {8'000'000, 2000}, {9'000'000, 0}};
+  ASSERT_EQ(rate.changes.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    EXPECT_EQ(rate.changes[i].time.count(), want[i].first) << i;
+    EXPECT_EQ(rate.changes[i].value, want[i].second) << i;
+  }
+}
+
 } // namespace
 } // namespace hilrig::campaign

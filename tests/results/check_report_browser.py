@@ -29,7 +29,7 @@ INSPECT = """JSON.stringify((() => {
     const inside = e => { const r = e.getBoundingClientRect();
       return r.left >= box.left - 1 && r.right <= box.right + 1 && r.top >= box.top - 1 && r.bottom <= box.bottom + 1; };
     const lanes = role => [...svg.querySelectorAll('g.lane.' + role)].filter(laidOut).map(g => g.dataset.lane);
-    return {stimulus: lanes('stimulus'), count: lanes('count'), output: lanes('output'),
+    return {stimulus: lanes('stimulus'), count: lanes('count'), output: lanes('output'), rate: lanes('rate'),
             expected: [...svg.querySelectorAll('rect.expected')].filter(inside).length,
             limits: [...svg.querySelectorAll('line.limit')].filter(inside).length};
   };
@@ -51,13 +51,15 @@ def timing_problems(name, check, timings, encoder):
     """Each window results.json cut a trace for is one diagram with the run's lanes in it: the
     stimulus (enc.A/enc.B, when the campaign wires the encoder: a resolver board's stators are
     not drawn) and shaft.count for a check on the shaft, the check's output line,
-    and its expected window and limit drawn inside the figure (a limitless time: none)."""
+    and its expected window and limit drawn inside the figure (a limitless time: none); a
+    shaft_move also its step rate against time."""
     traces = check.get("traces", [])
     out = []
     if len(timings) != len(traces):
         return [f"{name}: {check['check']}: {len(timings)} timing diagrams for {len(traces)} cut windows"]
     for t, cut in zip(timings, traces):
-        want = {role: [l["name"] for l in cut["lanes"] if l["role"] == role] for role in ("stimulus", "count", "output")}
+        want = {role: [l["name"] for l in cut["lanes"] if l["role"] == role]
+                for role in ("stimulus", "count", "output", "rate")}
         for role, lanes in want.items():
             if t[role] != lanes:
                 out.append(f"{name}: {check['check']}: {role} lanes drawn {t[role]}, captured {lanes}")
@@ -65,6 +67,8 @@ def timing_problems(name, check, timings, encoder):
             out.append(f"{name}: {check['check']}: no count lane in its timing diagram")
         if check["kind"] in ON_SHAFT and encoder and t["stimulus"] != ["enc.A", "enc.B"]:
             out.append(f"{name}: {check['check']}: stimulus lanes {t['stimulus']}, not the encoder's A/B")
+        if check["kind"] == "shaft_move" and len(t["rate"]) != 1:
+            out.append(f"{name}: {check['check']}: no step rate against time in its timing diagram")
         if not t["output"]:
             out.append(f"{name}: {check['check']}: no output lane in its timing diagram")
         if t["expected"] > 1 or (t["expected"] == 1) != (t["limits"] > 0):
