@@ -17,6 +17,7 @@
 #include "rig/campaign/plant_spec.hpp"
 #include "rig/checks/check_params.hpp"
 #include "rig/duts/dut.hpp"
+#include "signals/ssi_frame.hpp"
 
 namespace hilrig::campaign {
 
@@ -66,6 +67,20 @@ struct ResolverSpec {
   // The reference's phase at time 0, degrees: amplitude * sin(2 pi f t + phase). A board
   // whose reference is a cosine (the Series 2700 model) takes 90.
   double phase_deg = 0.0;
+  SourcePos where;
+};
+
+// [ssi]: the SSI transducer the rig plays for a board that is the SSI master (the 7361): it
+// answers the board's clock on clock_line with the shaft's position on data_line, latched at
+// each frame's first falling clock edge (signals/ssi_slave.hpp). The shaft is the [plant]'s
+// where there is one, else the [motion]'s: a single-turn transducer of counts_per_turn counts,
+// floor(turns x counts_per_turn) wrapped to one turn. No data_line: no transducer.
+struct SsiSpec {
+  std::string clock_line; // rig line wired to the board's clock output
+  std::string data_line;  // rig line wired to the board's data input
+  std::uint32_t counts_per_turn = 4096;
+  signals::SsiFrameFormat format{}; // frame_bits, data_msb, data_bits, code
+  Nanos monoflop = microseconds(16);
   SourcePos where;
 };
 
@@ -194,6 +209,7 @@ struct Scenario {
   std::vector<Wire> wiring;
   EncoderSpec encoder;
   ResolverSpec resolver;
+  SsiSpec ssi;
   MotionSpec motion;
   std::optional<PlantSpec> plant; // a plant turns the shaft instead of the motion
   std::vector<Stimulus> stimuli;

@@ -46,6 +46,7 @@ public:
                        out.scenario.encoder); // a move that cannot follow is bad input
     read_plant_table(out.scenario);
     read_stimuli(out.scenario);
+    read_ssi(out.scenario);
     read_host(out.scenario);
     read_device_faults(out.scenario);
     read_power_cycles(out.scenario);
@@ -284,6 +285,49 @@ private:
     res.phase_deg = r.opt_number("phase_deg").value_or(res.phase_deg);
     if (!(res.phase_deg >= -360.0 && res.phase_deg <= 360.0))
       r.fail("phase_deg", "a phase in -360..360 degrees");
+    r.finish();
+  }
+
+  // [ssi] (campaign.hpp SsiSpec): the lines, the transducer's counts a turn and its frame.
+  void read_ssi(Scenario& s) {
+    const toml::table* t = root_.opt_table("ssi");
+    if (t == nullptr) return;
+    TableReader r(file_, *t, "ssi");
+    SsiSpec& ssi = s.ssi;
+    ssi.where = r.where();
+    ssi.clock_line = r.string("clock");
+    const Wire* clock = s.wire_for_rig(ssi.clock_line);
+    if (clock == nullptr || clock->analog || clock->direction != PinDirection::Output)
+      r.fail("clock",
+             fmt::format("a rig line wired to the board's clock output (\"{}\" is not)", ssi.clock_line));
+    ssi.data_line = driven_line(s, r, "data")->rig;
+    for (const Stimulus& st : s.stimuli)
+      if (st.line == ssi.data_line)
+        r.fail("data", fmt::format("a line no [[stimulus]] drives (the transducer does; \"{}\" has one)",
+                                   ssi.data_line));
+    signals::SsiFrameFormat& f = ssi.format;
+    f.frame_bits = static_cast<unsigned>(r.opt_integer("frame_bits").value_or(25));
+    if (f.frame_bits < 1 || f.frame_bits > 32) r.fail("frame_bits", "clocks a frame in 1..32");
+    f.data_msb = static_cast<unsigned>(r.opt_integer("data_msb").value_or(1));
+    if (f.data_msb < 1 || f.data_msb > f.frame_bits) r.fail("data_msb", "a stream bit in 1..frame_bits");
+    const std::int64_t bits = r.integer("data_bits");
+    if (bits < 1 || bits > 32 || f.data_msb + static_cast<unsigned>(bits) - 1 > f.frame_bits)
+      r.fail("data_bits",
+             "a data field of 1..32 bits that ends inside the frame (data_msb + data_bits - 1 <= "
+             "frame_bits)");
+    f.data_bits = static_cast<unsigned>(bits);
+    const std::string code = r.opt_string("code").value_or("binary");
+    if (code != "binary" && code != "gray") r.fail("code", "binary or gray");
+    f.code = code == "gray" ? signals::SsiCode::Gray : signals::SsiCode::Binary;
+    const std::int64_t cpt =
+        r.opt_integer("counts_per_turn").value_or(std::int64_t{1} << std::min(bits, std::int64_t{24}));
+    if (cpt < 1 || static_cast<double>(cpt) > std::ldexp(1.0, static_cast<int>(bits)))
+      r.fail("counts_per_turn",
+             "counts a turn in 1 .. 2^data_bits (a single-turn position fits the data field)");
+    ssi.counts_per_turn = static_cast<std::uint32_t>(cpt);
+    ssi.monoflop = r.opt_duration("monoflop").value_or(ssi.monoflop);
+    if (ssi.monoflop <= Nanos{0} || ssi.monoflop > milliseconds(1))
+      r.fail("monoflop", "a monoflop time above 0, at most 1ms (typically 12 to 20 us, L1091)");
     r.finish();
   }
 

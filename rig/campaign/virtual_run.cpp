@@ -15,6 +15,8 @@
 #include "rig/campaign/rig_drive.hpp"
 #include "rig/campaign/run_trace.hpp"
 #include "rig/duts/dut.hpp"
+#include "signals/ssi_slave.hpp"
+#include "signals/ssi_slave_node.hpp"
 
 namespace hilrig::campaign {
 
@@ -56,6 +58,7 @@ public:
     if (info == nullptr) throw RigFault("no DUT model " + s_.dut.model);
     make_lines();
     drive_resolver();
+    drive_ssi();
     dut_ = info->make(sched_, dut_params(*info, s_.dut), in_.variant, in_.seed);
     if (in_.exact_scan) dut_->scan_every_period();
     std::map<std::string, std::string, std::less<>> pins;
@@ -102,6 +105,10 @@ private:
         virt::DigitalLine& line = bus_.line(w.rig, plant_->initial_level(w.rig));
         plant_->own(w.rig, line.driver());
         owned_.push_back(&line.driver());
+        continue;
+      }
+      if (w.rig == s_.ssi.data_line) { // the transducer's (drive_ssi), idle high
+        owned_.push_back(&bus_.line(w.rig, Level::High).driver());
         continue;
       }
       virt::DigitalLine& line = bus_.line(w.rig, drive_.initial_level(w.rig));
@@ -186,6 +193,28 @@ private:
     trace_stators(sched_, *trace_, r, sin, cos, s_.end);
   }
 
+  // The [ssi] transducer answers the board's clock with the shaft's position: the plant's
+  // angle as it moved (what it reads at a latch has happened), or the motion's.
+  void drive_ssi() {
+    const SsiSpec& spec = s_.ssi;
+    if (spec.data_line.empty()) return;
+    const double per_turn = s_.encoder.counts_per_turn();
+    std::function<double(Nanos)> turns;
+    if (plant_) {
+      turns = [motion = &plant_->motion(), per_turn](Nanos t) { return motion->position(t) / per_turn; };
+    } else {
+      const auto profile = std::make_shared<const signals::MotionProfile>(motion_.profile);
+      turns = [profile, per_turn](Nanos t) { return profile->position(t) / per_turn; };
+    }
+    signals::SsiSlaveParams params;
+    params.format = spec.format;
+    params.monoflop = spec.monoflop;
+    ssi_ =
+        std::make_unique<signals::SsiSlave>(params, signals::counts_from_turns(turns, spec.counts_per_turn));
+    ssi_node_ = std::make_unique<signals::SsiSlaveNode>(sched_, *ssi_, bus_.line(spec.clock_line).reader(),
+                                                        bus_.line(spec.data_line).driver());
+  }
+
   // [[device_fault]] of the board itself: the model raises it at `at`, its condition ends at
   // `until` (the resolver faults are in the stator waveforms).
   void schedule_board_faults() {
@@ -213,6 +242,8 @@ private:
   RigDrive drive_;
   std::unique_ptr<PlantDrive> plant_; // when a plant turns the shaft
   std::unique_ptr<duts::Dut> dut_;
+  std::unique_ptr<signals::SsiSlave> ssi_; // the [ssi] transducer, on its lines
+  std::unique_ptr<signals::SsiSlaveNode> ssi_node_;
   std::vector<LineOutput*> owned_; // the lines the rig drives
   std::unique_ptr<HostWords> words_;
   std::unique_ptr<ShaftTrace> shaft_;

@@ -36,6 +36,10 @@ EdgeSchedule build_schedule(const campaign::RunInputs& in, const DrivePlan& plan
   if (s.plant)
     throw campaign::RigFault("a [plant] closes the loop through the board's outputs, which the precomputed "
                              "schedule of a rig run cannot: plant campaigns run on the virtual backend");
+  if (!s.ssi.data_line.empty())
+    throw campaign::RigFault(
+        "an [ssi] transducer answers the board's clock as it comes, which the precomputed "
+        "schedule of a rig run cannot: [ssi] campaigns run on the virtual backend");
   EdgeSchedule out;
   out.motion = campaign::build_motion("", s.motion, s.encoder);
   Scheduler sched;
