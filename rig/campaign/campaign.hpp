@@ -34,7 +34,8 @@ struct DutSpec {
   std::string model; // a registry name, or "external" (a real board)
   std::string variant = "nominal";
   std::string backend = "virtual";
-  ParamMap params; // every declared parameter (defaults filled in)
+  std::string serial; // [dut] serial: the board's serial number, for the outputs; "" when not given
+  ParamMap params;    // every declared parameter (defaults filled in)
   std::map<std::string, duts::PinDirection, std::less<>> external_pins; // "external" only
   SourcePos where;
 };

@@ -162,6 +162,8 @@ rig::CampaignResult Executive::planned(const std::vector<RunSpec>& runs, std::ui
   result.campaign = campaign_.name;
   result.device = campaign_.points.empty() ? std::string() : campaign_.points.front().dut.model;
   result.campaign_sha256 = campaign_.sha256;
+  result.campaign_file = campaign_.file;
+  result.dut_serial = campaign_.points.empty() ? std::string() : campaign_.points.front().dut.serial;
   result.tool_version = rig::tool_version();
   result.seed = seed;
   result.shard = shard;

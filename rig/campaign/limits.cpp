@@ -1,5 +1,6 @@
 #include "rig/campaign/limits.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -16,6 +17,13 @@ std::string duration_text(Nanos d) {
     if (d.count() != 0 && d.count() % u.ns == 0) return fmt::format("{}{}", d.count() / u.ns, u.suffix);
   return d.count() == 0 ? std::string("0s") : fmt::format("{}ns", d.count());
 }
+
+bool is_label(const std::string& text) {
+  return !text.empty() && text.size() <= limits::kMaxLabel &&
+         std::all_of(text.begin(), text.end(), [](char c) { return c >= 0x20 && c <= 0x7E; });
+}
+
+std::string label_range() { return fmt::format("1 .. {} printable ASCII characters", limits::kMaxLabel); }
 
 std::string range_text(duts::ParamKind kind, const duts::ParamRange& range) {
   if (kind == duts::ParamKind::Text) {

@@ -66,6 +66,10 @@ inline constexpr std::size_t kMaxRuns = 10'000;
 inline constexpr std::uintmax_t kMaxFileBytes = 1U << 20U;
 inline constexpr std::size_t kMaxKeyParts = 64;
 
+// A label the outputs carry for traceability ([dut] serial, --station): 1 .. 64 printable
+// ASCII characters, so it reads the same in a report, an XML attribute and a terminal.
+inline constexpr std::size_t kMaxLabel = 64;
+
 } // namespace hilrig::campaign::limits
 
 namespace hilrig::campaign {
@@ -74,5 +78,8 @@ namespace hilrig::campaign {
 [[nodiscard]] std::string duration_text(Nanos d);
 // "1us .. 1ms", "-32768 .. 32767", "one of rising, falling".
 [[nodiscard]] std::string range_text(duts::ParamKind kind, const duts::ParamRange& range);
+// Whether `text` is a traceability label (limits::kMaxLabel), and the range an error names.
+[[nodiscard]] bool is_label(const std::string& text);
+[[nodiscard]] std::string label_range();
 
 } // namespace hilrig::campaign

@@ -150,6 +150,9 @@ private:
     dut.where = r.where();
     dut.model = r.string("model");
     dut.backend = r.opt_string("backend").value_or("virtual");
+    dut.serial = r.opt_string("serial").value_or("");
+    if (r.has("serial") && !is_label(dut.serial))
+      r.fail("serial", "the board's serial number: " + label_range());
     if (dut.backend != "virtual" && dut.backend != "hardware" && dut.backend != "gpiod")
       r.fail("backend", "\"virtual\" or \"hardware\" (\"gpiod\" is the same)");
     if (dut.model == "external") {

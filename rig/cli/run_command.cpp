@@ -22,6 +22,7 @@
 #include "core/trace.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
+#include "rig/campaign/limits.hpp"
 #include "rig/campaign/modbus_host_link.hpp"
 #include "rig/cli/exit_status.hpp"
 #include "rig/cli/output_dir.hpp"
@@ -33,8 +34,9 @@
 #include "rig/cli/wall_clock.hpp"
 #include "rig/hardware/hardware_backend.hpp"
 #include "rig/results/append_file.hpp"
+#include "rig/results/atomic_file.hpp"
+#include "rig/results/fold_run_log.hpp"
 #include "rig/results/junit.hpp"
-#include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
 #include "rig/results/run_log.hpp"
 #include "rig/results/suite_index.hpp"
@@ -208,7 +210,8 @@ int prepare(const RunOptions& o, const std::string& file, bool in_suite, Prepare
 // wall-clock facts for junit.xml, and its exit status.
 struct Ran {
   int status = kPassed;
-  std::optional<rig::CampaignResult> result;
+  std::optional<rig::CampaignResult> result; // without its runs: they are in its run log
+  std::filesystem::path log;
   rig::JunitClock clock;
 };
 
@@ -292,30 +295,36 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     // Each run is appended to the run log as it finishes (and not kept), so a campaign costs the
     // same per run however long it is, and a crash or SIGKILL leaves every finished run; the
     // log is folded into results.json below.
-    rig::RunLog log(dir / rig::kRunLogName, exec.planned(p.runs, p.seed, part));
+    rig::CampaignResult header = exec.planned(p.runs, p.seed, part);
+    header.station = o.station;
+    header.host_link = o.host_link_factory ? "custom" : o.host_link;
+    header.backend = p.rig ? "hardware" : "virtual";
+    rig::RunLog log(dir / rig::kRunLogName, header);
     const rig::CampaignResult done = exec.run_all(p.runs, p.seed, part, started, sink,
                                                   [&](const rig::RunResult& run) { log.append(run); });
-    rig::CampaignResult result = rig::read_run_log(log.path());
-    result.interrupted = done.interrupted;
-    result.started_at = ran.clock.started_at;
-    result.host = ran.clock.hostname;
-    rig::finalize(result);
-    rig::write_results_file(dir / "results.json", result);
-    rig::write_file_atomically(dir / "junit.xml", rig::to_junit_xml(result, ran.clock));
-    rig::write_file_atomically(dir / "report.html", rig::to_report_html(result));
+    // The fold reads the log a record at a time: its memory does not grow with the runs either.
+    rig::CampaignResult facts;
+    facts.interrupted = done.interrupted;
+    facts.started_at = ran.clock.started_at;
+    facts.host = ran.clock.hostname;
+    rig::CampaignResult result = rig::fold_run_log(log.path(), dir, facts, ran.clock);
+    ran.log = log.path();
 
     const auto& t = result.totals;
     out << fmt::format("{}: {} run(s), {} passed, {} failed, {} errored; faults caught {}/{}; verdict {}\n",
                        p.c.name, t.runs, t.runs_passed, t.runs_failed, t.runs_errored, t.faults_caught,
                        t.faults, rig::to_string(result.verdict));
-    for (const auto& run : result.runs)
-      if (!run.error.empty())
+    bool rig_error = false;
+    if (t.runs_errored > 0) // a run a rig error stopped reads "error": only then is the log read again
+      rig::run_log_runs(log.path())([&](const rig::RunResult& run) {
+        if (run.error.empty()) return;
+        rig_error = true;
         err << fmt::format("run {} ({}): rig fault: {}\n", run.index, run.name, run.error);
+      });
     if (result.interrupted) {
       err << interruption_text(result, dir.string()) << '\n';
       ran.status = kRigFault;
-    } else if (std::any_of(result.runs.begin(), result.runs.end(),
-                           [](const rig::RunResult& r) { return !r.error.empty(); })) {
+    } else if (rig_error) {
       ran.status = kRigFault;
     } else {
       ran.status = result.verdict == rig::Outcome::Pass ? kPassed : kCheckFailed;
@@ -434,14 +443,17 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
     rows.push_back(std::move(row));
   }
   for (std::size_t i = 0; i < n; ++i)
-    if (rows[i].result) junit.push_back({&*rows[i].result, chosen[i].file, ran[i].clock});
+    if (rows[i].result)
+      junit.push_back({&*rows[i].result, chosen[i].file, ran[i].clock, rig::run_log_runs(ran[i].log)});
   const std::string title = "hilrig suite: " + [&] {
     std::string names;
     for (const std::string& f : o.files) names += (names.empty() ? "" : " ") + f;
     return names;
   }();
   try {
-    rig::write_file_atomically(o.out / "junit.xml", rig::to_junit_suite_xml(title, junit));
+    rig::write_file_atomically(o.out / "junit.xml", [&](std::ostream& file) {
+      rig::write_junit_suite_xml(title, junit, rig::sink_to(file));
+    });
     rig::write_file_atomically(o.out / "report.html", rig::to_suite_index_html(title, rows, status));
   } catch (const std::exception& e) {
     err << "hilrig run: rig fault: " << e.what() << '\n';
@@ -461,9 +473,9 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
 std::string interruption_text(const rig::CampaignResult& result, const std::string& out_dir) {
   // The signal stopped a run in the middle, or landed between two runs (the run before it
   // finished whole and the next never started).
-  const bool mid_run = !result.runs.empty() && result.runs.back().interrupted;
+  const bool mid_run = result.last_run_interrupted;
   return fmt::format("hilrig run: interrupted by {}: {} of {} run(s) done, {}; results written to {}",
-                     result.interrupted.value_or("a signal"), result.runs.size(), result.planned_runs,
+                     result.interrupted.value_or("a signal"), result.totals.runs, result.planned_runs,
                      mid_run
                          ? "the last stopped early with every rig-driven line at its inactive level"
                          : "the signal landed between runs (every run done is whole; none started after it)",
@@ -536,6 +548,13 @@ void add_run_command(CLI::App& app) {
          "virtual (the in-process bus) or hardware (the rig --rig describes); default: the campaign's "
          "[dut] backend")
       ->check(CLI::IsMember({std::string("virtual"), std::string("hardware")}));
+  cmd->add_option("--station", options->station,
+                  "the test station's name, written into results.json, junit.xml and report.html")
+      ->check(CLI::Validator(
+          [](const std::string& v) {
+            return campaign::is_label(v) ? std::string() : campaign::label_range();
+          },
+          "NAME"));
   cmd->add_option("--rig", options->rig, "the rig config of a hardware run (docs/rig-config.md)");
   cmd->add_flag("--exact-scan", options->exact_scan,
                 "virtual DUTs scan every period instead of skipping the scans that change nothing: the "

@@ -48,6 +48,7 @@ struct RunOptions {
   bool handle_signals = true; // SIGINT/SIGTERM stop the run, outputs inactive, results written, exit 3
   // --backend: "virtual" or "hardware"; "" follows the campaign's [dut] backend (or --rig).
   std::string backend;
+  std::string station;                 // --station: the test station's name, carried by the outputs ("" none)
   std::string rig;                     // --rig: the rig config (docs/rig-config.md) of a hardware run
   hardware::RigPortsFactory rig_ports; // set by a caller: the rig's ports instead of its drivers
 };

@@ -1,7 +1,6 @@
 #include "rig/results/campaign_result.hpp"
 
 #include <algorithm>
-#include <map>
 
 namespace hilrig::rig {
 namespace {
@@ -45,70 +44,74 @@ Outcome run_outcome(const RunResult& run) {
   return o;
 }
 
-void finalize(CampaignResult& r) {
-  std::stable_sort(r.runs.begin(), r.runs.end(),
-                   [](const RunResult& a, const RunResult& b) { return a.index < b.index; });
-  std::map<std::string, FaultRow> rows;
-  Totals t;
-  for (auto& run : r.runs) {
-    ++t.runs;
-    run.outcome = run_outcome(run);
-    for (auto& c : run.checks) c.judgement = judgement_in(run, c);
-    switch (run.outcome) {
-    case Outcome::Pass:
-      ++t.runs_passed;
+void judge(RunResult& run) {
+  run.outcome = run_outcome(run);
+  for (auto& c : run.checks) c.judgement = judgement_in(run, c);
+}
+
+void RunTally::add(RunResult& run) {
+  Totals& t = totals_;
+  ++t.runs;
+  judge(run);
+  switch (run.outcome) {
+  case Outcome::Pass:
+    ++t.runs_passed;
+    break;
+  case Outcome::Fail:
+    ++t.runs_failed;
+    break;
+  case Outcome::Error:
+    ++t.runs_errored;
+    break;
+  }
+  for (const auto& c : run.checks) {
+    ++t.checks;
+    t.measurements += c.measurements.size();
+    switch (c.judgement) {
+    case Judgement::Pass:
+      ++t.checks_passed;
       break;
-    case Outcome::Fail:
-      ++t.runs_failed;
+    case Judgement::Fail:
+      ++t.checks_failed;
       break;
-    case Outcome::Error:
-      ++t.runs_errored;
+    case Judgement::Caught:
+      ++t.checks_caught;
       break;
-    }
-    for (const auto& c : run.checks) {
-      ++t.checks;
-      t.measurements += c.measurements.size();
-      switch (c.judgement) {
-      case Judgement::Pass:
-        ++t.checks_passed;
-        break;
-      case Judgement::Fail:
-        ++t.checks_failed;
-        break;
-      case Judgement::Caught:
-        ++t.checks_caught;
-        break;
-      case Judgement::NotJudged:
-        ++t.checks_not_judged;
-        break;
-      case Judgement::Error:
-        ++t.checks_errored;
-        break;
-      }
-    }
-    if (!run.fault.empty()) {
-      FaultRow& row = rows[run.fault];
-      row.fault = run.fault;
-      for (const auto& m : run.must_catch) {
-        if (std::find(row.must_catch.begin(), row.must_catch.end(), m) == row.must_catch.end()) {
-          row.must_catch.push_back(m);
-        }
-      }
-      row.runs.push_back(run.index);
-      if (caught(run)) ++row.caught_runs;
+    case Judgement::NotJudged:
+      ++t.checks_not_judged;
+      break;
+    case Judgement::Error:
+      ++t.checks_errored;
+      break;
     }
   }
+  if (!run.fault.empty()) {
+    FaultRow& row = faults_[run.fault];
+    row.fault = run.fault;
+    for (const auto& m : run.must_catch) {
+      if (std::find(row.must_catch.begin(), row.must_catch.end(), m) == row.must_catch.end()) {
+        row.must_catch.push_back(m);
+      }
+    }
+    row.runs.push_back(run.index);
+    if (caught(run)) ++row.caught_runs;
+  }
+  any_interrupted_ = any_interrupted_ || run.interrupted;
+  last_interrupted_ = run.interrupted;
+}
+
+void RunTally::apply(CampaignResult& r) {
+  Totals t = totals_;
   r.faults.clear();
-  for (auto& [name, row] : rows) {
+  for (const auto& [name, row] : faults_) {
     ++t.faults;
     if (row.caught()) ++t.faults_caught;
-    r.faults.push_back(std::move(row));
+    r.faults.push_back(row);
   }
   r.totals = t;
+  r.last_run_interrupted = last_interrupted_;
   // A run stopped by a stop request did not run to its end: the result is not complete.
-  r.complete =
-      r.runs.size() == r.planned_runs && !r.interrupted &&
-      std::none_of(r.runs.begin(), r.runs.end(), [](const RunResult& run) { return run.interrupted; });
+  r.complete = t.runs == r.planned_runs && !r.interrupted && !any_interrupted_;
   if (t.runs_errored > 0 || !r.complete) {
     r.verdict = Outcome::Error;
   } else if (t.runs_failed > 0 || t.faults_caught < t.faults) {
@@ -116,6 +119,14 @@ void finalize(CampaignResult& r) {
   } else {
     r.verdict = Outcome::Pass;
   }
+}
+
+void finalize(CampaignResult& r) {
+  std::stable_sort(r.runs.begin(), r.runs.end(),
+                   [](const RunResult& a, const RunResult& b) { return a.index < b.index; });
+  RunTally tally;
+  for (auto& run : r.runs) tally.add(run);
+  tally.apply(r);
 }
 
 } // namespace hilrig::rig

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -69,15 +70,23 @@ struct CampaignResult {
   std::string tool_version;    // the hilrig that ran it (kToolVersion): merge refuses a mismatch
   std::uint64_t seed = 0;
   Shard shard;
-  std::size_t planned_runs = 0; // runs this result should hold when complete
-  std::vector<RunResult> runs;  // in run-index order
+  // Traceability: the campaign file as given, the board's serial ([dut] serial) and the test
+  // station (--station), "" when not given; how host actions reached the board and where it ran.
+  std::string campaign_file;
+  std::string dut_serial;
+  std::string station;
+  std::string host_link = "in-process"; // or "modbus-rtu-pty" (hilrig run --host-link)
+  std::string backend = "virtual";      // or "hardware" (hilrig run --backend)
+  std::size_t planned_runs = 0;         // runs this result should hold when complete
+  std::vector<RunResult> runs;          // in run-index order
   // The campaign was stopped early by this signal ("SIGTERM"); nullopt when it was not.
   std::optional<std::string> interrupted;
   // Derived by finalize():
   std::vector<FaultRow> faults; // sorted by fault name
   Totals totals;
   Outcome verdict = Outcome::Error;
-  bool complete = false; // runs.size() == planned_runs
+  bool complete = false;             // runs.size() == planned_runs
+  bool last_run_interrupted = false; // the last run was cut short by a stop request (not written)
   // Wall-clock facts (start time, host). Never compared or merged; written under "wall_clock".
   std::optional<std::string> started_at;
   std::optional<std::string> host;
@@ -88,5 +97,23 @@ struct CampaignResult {
 // when the result is complete, every run passes and every fault is caught; Error when any
 // run erred (or the result is incomplete); Fail otherwise.
 void finalize(CampaignResult& result);
+
+// Derives a run's outcome and each of its checks' judgement (what finalize() does per run).
+void judge(RunResult& run);
+
+// finalize() one run at a time, for runs that are not all held (a run log folded record by
+// record): add() each run in index order (it derives the run's outcome and judgements), then
+// apply() to a result whose `runs` are not held, or are exactly the runs added.
+class RunTally {
+public:
+  void add(RunResult& run);
+  void apply(CampaignResult& result);
+
+private:
+  std::map<std::string, FaultRow> faults_;
+  Totals totals_;
+  bool any_interrupted_ = false;
+  bool last_interrupted_ = false;
+};
 
 } // namespace hilrig::rig

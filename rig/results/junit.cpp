@@ -160,54 +160,109 @@ std::string property(const std::string& name, const std::string& value) {
   return fmt::format("      <property name=\"{}\" value=\"{}\"/>\n", xml_escape(name), xml_escape(value));
 }
 
-std::string testsuites_xml(const std::string& name, const Counts& all, const std::string& suites) {
-  return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                     "<testsuites name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" time=\"{}\">\n"
-                     "{}</testsuites>\n",
-                     xml_escape(name), all.tests, all.failed, all.errored, seconds_text(all.seconds), suites);
+// The campaign's traceability facts, one property each (the serial and station when given).
+std::string traceability_properties(const CampaignResult& r) {
+  std::string s;
+  s += property("tool_version", r.tool_version);
+  s += property("campaign_sha256", r.campaign_sha256);
+  s += property("campaign_seed", std::to_string(r.seed));
+  if (!r.dut_serial.empty()) s += property("dut_serial", r.dut_serial);
+  if (!r.station.empty()) s += property("station", r.station);
+  s += property("backend", r.backend);
+  s += property("host_link", r.host_link);
+  return s;
 }
+
+std::string testsuites_open(const std::string& name, const Counts& all) {
+  return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                     "<testsuites name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" time=\"{}\">\n",
+                     xml_escape(name), all.tests, all.failed, all.errored, seconds_text(all.seconds));
+}
+
+// The counts of a run's testcases, as testcases_xml adds them, without its text.
+Counts counts_of(const RunResult& run, const JunitClock& clock) {
+  Counts c;
+  for (const auto& k : cases_of(run)) {
+    ++c.tests;
+    c.failed += k.verdict == Verdict::Failed ? 1 : 0;
+    c.errored += k.verdict == Verdict::Errored ? 1 : 0;
+    c.skipped += k.verdict == Verdict::Skipped ? 1 : 0;
+  }
+  const auto wall = clock.run_seconds.find(run.index);
+  c.seconds = wall == clock.run_seconds.end() ? 0.0 : wall->second;
+  return c;
+}
+
+// The runs' counts together: the attributes that open the element before its testcases.
+Counts counts_of(const RunSource& runs, const JunitClock& clock) {
+  Counts all;
+  runs([&](const RunResult& run) { all.add(counts_of(run, clock)); });
+  return all;
+}
+
+RunSource source_of(const JunitCampaign& c) { return c.runs ? c.runs : runs_of(*c.result); }
 
 } // namespace
 
-std::string to_junit_xml(const CampaignResult& r, const JunitClock& clock) {
-  std::string suites;
-  Counts all;
-  for (const auto& run : r.runs) {
+void write_junit_xml(const CampaignResult& r, const RunSource& runs, const JunitClock& clock,
+                     const TextSink& out) {
+  // Two passes over the runs: the totals the root element opens with, then the text.
+  out(testsuites_open(r.campaign, counts_of(runs, clock)));
+  runs([&](const RunResult& run) {
     Counts counts;
     const std::string body = testcases_xml(r, run, clock, counts);
-    suites += testsuite_open(dotless(r.campaign) + "." + dotless(run.name), counts, clock,
-                             std::to_string(run.index), dotless(r.campaign));
-    suites += "    <properties>\n";
-    suites += property("seed", std::to_string(run.seed));
-    suites += property("outcome", to_string(run.outcome));
-    if (!run.fault.empty()) suites += property("fault", run.fault);
-    suites += "    </properties>\n";
-    suites += body;
-    suites += "    <system-out/>\n    <system-err/>\n  </testsuite>\n";
-    all.add(counts);
+    std::string suite = testsuite_open(dotless(r.campaign) + "." + dotless(run.name), counts, clock,
+                                       std::to_string(run.index), dotless(r.campaign));
+    suite += "    <properties>\n";
+    suite += property("seed", std::to_string(run.seed));
+    suite += property("outcome", to_string(run.outcome));
+    if (!run.fault.empty()) suite += property("fault", run.fault);
+    if (!r.campaign_file.empty()) suite += property("campaign_file", r.campaign_file);
+    suite += traceability_properties(r);
+    suite += "    </properties>\n";
+    suite += body;
+    suite += "    <system-out/>\n    <system-err/>\n  </testsuite>\n";
+    out(suite);
+  });
+  out("</testsuites>\n");
+}
+
+std::string to_junit_xml(const CampaignResult& r, const JunitClock& clock) {
+  std::string text;
+  write_junit_xml(r, runs_of(r), clock, [&](std::string_view piece) { text += piece; });
+  return text;
+}
+
+void write_junit_suite_xml(const std::string& name, const std::vector<JunitCampaign>& campaigns,
+                           const TextSink& out) {
+  Counts all;
+  for (const auto& c : campaigns) all.add(counts_of(source_of(c), c.clock));
+  out(testsuites_open(name, all));
+  for (std::size_t i = 0; i < campaigns.size(); ++i) {
+    const CampaignResult& r = *campaigns[i].result;
+    const RunSource runs = source_of(campaigns[i]);
+    out(testsuite_open(r.campaign, counts_of(runs, campaigns[i].clock), campaigns[i].clock, std::to_string(i),
+                       dotless(r.campaign)));
+    std::string props = "    <properties>\n";
+    props += property("campaign_file", campaigns[i].file);
+    props += property("seed", std::to_string(r.seed));
+    props += property("verdict", to_string(r.verdict));
+    props += traceability_properties(r);
+    props += "    </properties>\n";
+    out(props);
+    runs([&](const RunResult& run) {
+      Counts counts;
+      out(testcases_xml(r, run, campaigns[i].clock, counts));
+    });
+    out("    <system-out/>\n    <system-err/>\n  </testsuite>\n");
   }
-  return testsuites_xml(r.campaign, all, suites);
+  out("</testsuites>\n");
 }
 
 std::string to_junit_suite_xml(const std::string& name, const std::vector<JunitCampaign>& campaigns) {
-  std::string suites;
-  Counts all;
-  for (std::size_t i = 0; i < campaigns.size(); ++i) {
-    const CampaignResult& r = *campaigns[i].result;
-    Counts counts;
-    std::string body;
-    for (const auto& run : r.runs) body += testcases_xml(r, run, campaigns[i].clock, counts);
-    suites += testsuite_open(r.campaign, counts, campaigns[i].clock, std::to_string(i), dotless(r.campaign));
-    suites += "    <properties>\n";
-    suites += property("campaign_file", campaigns[i].file);
-    suites += property("seed", std::to_string(r.seed));
-    suites += property("verdict", to_string(r.verdict));
-    suites += "    </properties>\n";
-    suites += body;
-    suites += "    <system-out/>\n    <system-err/>\n  </testsuite>\n";
-    all.add(counts);
-  }
-  return testsuites_xml(name, all, suites);
+  std::string text;
+  write_junit_suite_xml(name, campaigns, [&](std::string_view piece) { text += piece; });
+  return text;
 }
 
 } // namespace hilrig::rig

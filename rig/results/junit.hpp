@@ -2,7 +2,9 @@
 // junit.xml for CI servers: <testsuites> with one <testsuite> per run and one <testcase> per
 // check per run, valid against Jenkins' JUnit schema (xunit-plugin junit-10.xsd): testsuite
 // name, tests, failures, errors (required), skipped, time, timestamp, hostname, id, package;
-// testcase name, classname, time; failure/error/skipped with message and type.
+// testcase name, classname, time; failure/error/skipped with message and type. Each testsuite's
+// <properties> carry the campaign's traceability: tool_version, campaign_file, campaign_sha256,
+// campaign_seed, dut_serial and station (when given), backend, host_link.
 
 #include <cstdint>
 #include <map>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "rig/results/campaign_result.hpp"
+#include "rig/results/run_source.hpp"
 
 namespace hilrig::rig {
 
@@ -31,6 +34,9 @@ struct JunitClock {
 // A testcase's time is an equal share of its run's wall seconds (the run's checks are judged
 // from one simulation), so testcase, testsuite and testsuites times add up.
 [[nodiscard]] std::string to_junit_xml(const CampaignResult& result, const JunitClock& clock = {});
+// The same text for `header` (finalized) with the runs `runs` gives, one at a time.
+void write_junit_xml(const CampaignResult& header, const RunSource& runs, const JunitClock& clock,
+                     const TextSink& out);
 
 // A suite of campaigns (`hilrig run DIR`): one <testsuite> per campaign holding every
 // testcase of its runs (classname "<campaign>.<run>"), its file, seed and verdict as properties.
@@ -38,8 +44,11 @@ struct JunitCampaign {
   const CampaignResult* result = nullptr;
   std::string file; // the campaign file as given
   JunitClock clock;
+  RunSource runs; // the campaign's runs when `result` does not hold them (its run log)
 };
 [[nodiscard]] std::string to_junit_suite_xml(const std::string& name,
                                              const std::vector<JunitCampaign>& campaigns);
+void write_junit_suite_xml(const std::string& name, const std::vector<JunitCampaign>& campaigns,
+                           const TextSink& out);
 
 } // namespace hilrig::rig

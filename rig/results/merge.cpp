@@ -49,6 +49,11 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards) {
   out.campaign_sha256 = first.campaign_sha256;
   out.tool_version = first.tool_version;
   out.seed = first.seed;
+  out.campaign_file = first.campaign_file;
+  out.dut_serial = first.dut_serial;
+  out.station = first.station;
+  out.host_link = first.host_link;
+  out.backend = first.backend;
   out.shard = Shard{0, 1};
   out.started_at = first.started_at;
   out.host = first.host;

@@ -183,44 +183,112 @@ std::string traceability(const CampaignResult& r) {
   const auto row = [](const char* name, const std::string& value) {
     return fmt::format("<tr><th>{}</th><td>{}</td></tr>", name, xml_escape(value));
   };
+  const auto given = [](const std::string& v) { return v.empty() ? std::string("not given") : v; };
   std::string s = "<table class=\"trace\">";
-  // No wall-clock facts (start time, host): the report is the same bytes for the same campaign,
-  // seed and shard; they are in results.json's wall_clock and junit.xml.
+  // The start time is the one wall-clock fact (the row's class says so): the rest is the same
+  // bytes for the same campaign, seed, shard and command line. The host is in results.json's
+  // wall_clock and junit.xml.
+  if (r.started_at)
+    s += fmt::format("<tr class=\"wall-clock\"><th>started</th><td>{}</td></tr>", xml_escape(*r.started_at));
   s += row("tool version", "hilrig " + r.tool_version);
+  s += row("campaign file", r.campaign_file);
   s += row("campaign SHA-256", r.campaign_sha256);
   s += row("device", r.device);
+  s += row("DUT serial", given(r.dut_serial));
+  s += row("station", given(r.station));
   s += row("seed", std::to_string(r.seed));
   s += row("shard", fmt::format("{} of {}", r.shard.index + 1, r.shard.count));
+  s += row("backend", r.backend);
+  s += row("host link", r.host_link);
   return s + "</table>\n";
 }
 
+// Which runs get a full section: a report of 10,000 runs is read for its failures, so the first
+// kDetailedNotPassing runs that did not pass and the first kDetailedPassing that did are shown
+// in full (the latter as examples of a good run); every other run is one row of a table. Each
+// pass over the runs makes the same choice: the choice depends on the runs before only.
+constexpr std::size_t kDetailedNotPassing = 100;
+constexpr std::size_t kDetailedPassing = 20;
+// Entries per summary list; the rest are counted ("and N more").
+constexpr std::size_t kListed = 100;
+
+class DetailChoice {
+public:
+  bool detailed(const RunResult& run) {
+    std::size_t& shown = run.outcome == Outcome::Pass ? passing_ : not_passing_;
+    const std::size_t cap = run.outcome == Outcome::Pass ? kDetailedPassing : kDetailedNotPassing;
+    if (shown == cap) return false;
+    ++shown;
+    return true;
+  }
+
+private:
+  std::size_t passing_ = 0, not_passing_ = 0;
+};
+
+// A summary list holding its first kListed entries and counting the rest.
+struct Listed {
+  std::string items;
+  std::size_t count = 0;
+  void add(const std::string& item) {
+    if (count++ < kListed) items += item;
+  }
+  [[nodiscard]] std::string text(const char* more) const {
+    return count > kListed ? items + fmt::format("<li>and {} more {}</li>\n", count - kListed, more) : items;
+  }
+};
+
 // Failures first: every check that failed or erred (and every run a rig error stopped), linked;
 // then the checks that caught their fault.
-std::string summary(const CampaignResult& r) {
-  std::string bad, caught_list;
-  for (const auto& run : r.runs) {
+std::string summary(const CampaignResult& r, const RunSource& runs) {
+  Listed bad, caught_list;
+  DetailChoice choice;
+  runs([&](const RunResult& run) {
+    // A run without a full section has its row in the table: the link goes there.
+    const bool detailed = choice.detailed(run);
     if (!run.error.empty())
-      bad += fmt::format("<li><a href=\"#r{}\">run {}: {}</a> {}: {}</li>\n", run.index, run.index,
-                         xml_escape(run.name), badge(Judgement::Error), xml_escape(run.error));
+      bad.add(fmt::format("<li><a href=\"#r{}\">run {}: {}</a> {}: {}</li>\n", run.index, run.index,
+                          xml_escape(run.name), badge(Judgement::Error), xml_escape(run.error)));
     for (std::size_t i = 0; i < run.checks.size(); ++i) {
       const CheckResult& c = run.checks[i];
+      if (c.judgement != Judgement::Fail && c.judgement != Judgement::Error &&
+          c.judgement != Judgement::Caught)
+        continue;
       const std::string item =
-          fmt::format("<li><a href=\"#{}\">run {}: {} / {}</a> ({}) {}</li>\n", anchor(run, i), run.index,
+          fmt::format("<li><a href=\"#{}\">run {}: {} / {}</a> ({}) {}</li>\n",
+                      detailed ? anchor(run, i) : fmt::format("r{}", run.index), run.index,
                       xml_escape(run.name), xml_escape(c.check), xml_escape(c.kind), badge(c.judgement));
-      if (c.judgement == Judgement::Fail || c.judgement == Judgement::Error) bad += item;
-      if (c.judgement == Judgement::Caught) caught_list += item;
+      (c.judgement == Judgement::Caught ? caught_list : bad).add(item);
     }
-  }
+  });
+  std::string not_caught;
   for (const auto& f : r.faults)
     if (!f.caught())
-      bad += fmt::format("<li>fault <b>{}</b> <span class=\"fail\">not caught</span></li>\n",
-                         xml_escape(f.fault));
+      not_caught += fmt::format("<li>fault <b>{}</b> <span class=\"fail\">not caught</span></li>\n",
+                                xml_escape(f.fault));
   std::string s = "<h2 id=\"summary\">Summary</h2>\n";
-  s += bad.empty() ? "<p>No check failed or erred.</p>\n"
-                   : "<p>Failed and errored checks:</p>\n<ul class=\"summary failures\">\n" + bad + "</ul>\n";
-  if (!caught_list.empty())
-    s += "<p>Faults caught by:</p>\n<ul class=\"summary caught\">\n" + caught_list + "</ul>\n";
+  const std::string bad_text =
+      bad.text("failed or errored checks: see the runs below and results.json") + not_caught;
+  s += bad_text.empty()
+           ? "<p>No check failed or erred.</p>\n"
+           : "<p>Failed and errored checks:</p>\n<ul class=\"summary failures\">\n" + bad_text + "</ul>\n";
+  if (caught_list.count > 0)
+    s += "<p>Faults caught by:</p>\n<ul class=\"summary caught\">\n" +
+         caught_list.text("checks that caught their fault: see results.json") + "</ul>\n";
   return s;
+}
+
+// One table row for a run without a full section: what a reader scans at 10,000 runs.
+std::string run_row(const RunResult& run) {
+  std::size_t by[5] = {0, 0, 0, 0, 0}; // pass, fail, caught, not judged, error
+  for (const auto& c : run.checks) ++by[static_cast<std::size_t>(c.judgement)];
+  return fmt::format(
+      "<tr id=\"r{0}\"><td class=\"num\">{0}</td><td>{1}</td><td class=\"num\">{2}</td>"
+      "<td>{3}</td><td>{4}</td><td class=\"num\">{5} / {6} / {7} / {8} / {9}</td><td>{10}</td></tr>\n",
+      run.index, xml_escape(run.name), run.seed, run.fault.empty() ? "&#8212;" : xml_escape(run.fault),
+      badge(run.outcome), by[0], by[1], by[2], by[3], by[4],
+      run.trace.empty() ? std::string("&#8212;")
+                        : fmt::format("<a href=\"{0}\">{0}</a>", xml_escape(run.trace)));
 }
 
 std::string run_section(const RunResult& run) {
@@ -256,7 +324,7 @@ std::string run_section(const RunResult& run) {
 
 } // namespace
 
-std::string to_report_html(const CampaignResult& r) {
+void write_report_html(const CampaignResult& r, const RunSource& runs, const TextSink& out) {
   const Totals& t = r.totals;
   std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   s += fmt::format("<title>hilrig: {}</title>\n<style>{}</style>\n</head>\n<body>\n", xml_escape(r.campaign),
@@ -268,7 +336,7 @@ std::string to_report_html(const CampaignResult& r) {
         "<p class=\"error\">Interrupted by {}: the runs done are below, the last one stopped early "
         "with every rig-driven line at its inactive level.</p>\n",
         xml_escape(*r.interrupted));
-  s += summary(r);
+  s += summary(r, runs);
   s += traceability(r);
   s += fmt::format(
       "<table><tr><th>runs</th><td>{} of {} planned{}</td></tr>"
@@ -293,9 +361,37 @@ std::string to_report_html(const CampaignResult& r) {
     s += "</table>\n";
   }
   s += "<h2>Runs</h2>\n";
-  for (const auto& run : r.runs) s += run_section(run);
-  s += "</body>\n</html>\n";
-  return s;
+  out(s);
+  std::size_t rows = 0;
+  {
+    DetailChoice choice;
+    runs([&](const RunResult& run) {
+      if (choice.detailed(run))
+        out(run_section(run));
+      else
+        ++rows;
+    });
+  }
+  if (rows > 0) {
+    out(fmt::format("<h3 id=\"more-runs\">{} more runs</h3>\n<p>Shown in full above: the first {} runs that "
+                    "did not pass and the first {} that passed. Every run's measurements are in results.json "
+                    "and junit.xml.</p>\n<table class=\"runs\"><tr><th>run</th><th>name</th><th>seed</th>"
+                    "<th>fault</th><th>outcome</th><th>checks passed / failed / caught / not judged / "
+                    "errored</th><th>trace</th></tr>\n",
+                    rows, kDetailedNotPassing, kDetailedPassing));
+    DetailChoice choice;
+    runs([&](const RunResult& run) {
+      if (!choice.detailed(run)) out(run_row(run));
+    });
+    out("</table>\n");
+  }
+  out("</body>\n</html>\n");
+}
+
+std::string to_report_html(const CampaignResult& r) {
+  std::string text;
+  write_report_html(r, runs_of(r), [&](std::string_view piece) { text += piece; });
+  return text;
 }
 
 } // namespace hilrig::rig

@@ -1,9 +1,6 @@
 #include "rig/results/results_json.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fcntl.h>
 #include <fmt/format.h>
 #include <fstream>
 #include <limits>
@@ -12,8 +9,8 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "rig/results/atomic_file.hpp"
 #include "rig/results/run_log.hpp"
-#include <unistd.h>
 
 namespace hilrig::rig {
 namespace {
@@ -283,6 +280,11 @@ json document(const CampaignResult& r, bool with_runs) {
          {"tool_version", r.tool_version},
          {"seed", r.seed},
          {"shard", json{{"index", r.shard.index}, {"count", r.shard.count}}},
+         {"campaign_file", r.campaign_file},
+         {"dut_serial", opt_str(r.dut_serial)},
+         {"station", opt_str(r.station)},
+         {"host_link", r.host_link},
+         {"backend", r.backend},
          {"planned_runs", r.planned_runs},
          {"complete", r.complete},
          {"runs", runs},
@@ -329,6 +331,12 @@ CampaignResult campaign_from_json(const json& j) {
   const json& shard = field(j, "shard", w);
   r.shard = Shard{get<std::uint32_t>(shard, "index", "shard"), get<std::uint32_t>(shard, "count", "shard")};
   r.planned_runs = get<std::size_t>(j, "planned_runs", w);
+  // Traceability: read when present (results written before it was recorded have none).
+  if (j.contains("campaign_file")) r.campaign_file = get<std::string>(j, "campaign_file", w);
+  if (j.contains("dut_serial")) r.dut_serial = str_or_empty(j, "dut_serial", w);
+  if (j.contains("station")) r.station = str_or_empty(j, "station", w);
+  if (j.contains("host_link")) r.host_link = get<std::string>(j, "host_link", w);
+  if (j.contains("backend")) r.backend = get<std::string>(j, "backend", w);
   for (const auto& run : field(j, "runs", w)) r.runs.push_back(run_from_json(run));
   if (j.contains("interrupted")) r.interrupted = get<std::string>(j, "interrupted", w);
   if (j.contains("wall_clock")) {
@@ -342,27 +350,42 @@ CampaignResult campaign_from_json(const json& j) {
 
 const char* tool_version() { return HILRIG_VERSION; }
 
-std::string to_json_text(const CampaignResult& r) {
+void write_json_text(const CampaignResult& header, const RunSource& runs, const TextSink& out) {
   // The same bytes as to_json(r).dump(2), but each run's DOM is built and dumped alone and
   // spliced in (the runs are nearly all of the file): writing a long campaign's results.json
   // holds one run's DOM, not the whole document's.
-  std::string text = document(r, false).dump(2);
+  const std::string text = document(header, false).dump(2);
   const std::string empty = "\n  \"runs\": []";
   const std::size_t at = text.find(empty);
   if (at == std::string::npos) throw std::logic_error("results: no runs array to fill");
-  std::string runs = "\n  \"runs\": [";
-  for (std::size_t i = 0; i < r.runs.size(); ++i) {
-    runs += i == 0 ? "\n    " : ",\n    ";
-    const std::string run = run_to_json(r.runs[i]).dump(2);
-    for (char ch : run) runs += ch == '\n' ? std::string_view("\n    ") : std::string_view(&ch, 1);
-  }
-  runs += r.runs.empty() ? "]" : "\n  ]";
-  text.replace(at, empty.size(), runs);
-  return text + "\n";
+  out(std::string_view(text).substr(0, at));
+  out("\n  \"runs\": [");
+  bool first = true;
+  runs([&](const RunResult& run) {
+    std::string piece = first ? "\n    " : ",\n    ";
+    first = false;
+    for (char ch : run_to_json(run).dump(2))
+      piece += ch == '\n' ? std::string_view("\n    ") : std::string_view(&ch, 1);
+    out(piece);
+  });
+  out(first ? "]" : "\n  ]");
+  out(std::string_view(text).substr(at + empty.size()));
+  out("\n");
+}
+
+std::string to_json_text(const CampaignResult& r) {
+  std::string text;
+  write_json_text(r, runs_of(r), [&](std::string_view piece) { text += piece; });
+  return text;
 }
 
 void write_results_file(const std::filesystem::path& path, const CampaignResult& result) {
-  write_file_atomically(path, to_json_text(result));
+  write_results_file(path, result, runs_of(result));
+}
+
+void write_results_file(const std::filesystem::path& path, const CampaignResult& header,
+                        const RunSource& runs) {
+  write_file_atomically(path, [&](std::ostream& out) { write_json_text(header, runs, sink_to(out)); });
 }
 
 CampaignResult read_results_file(const std::filesystem::path& path) {

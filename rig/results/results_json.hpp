@@ -10,6 +10,7 @@
 
 #include "rig/results/atomic_file.hpp" // write_file_atomically, which write_results_file uses
 #include "rig/results/campaign_result.hpp"
+#include "rig/results/run_source.hpp"
 
 namespace hilrig::rig {
 
@@ -29,11 +30,16 @@ inline constexpr int kResultsVersion = 2; // 2: outcome words, campaign_sha256, 
 [[nodiscard]] RunResult run_from_json(const nlohmann::json& j);
 
 [[nodiscard]] std::string to_json_text(const CampaignResult& result); // 2-space indent, trailing newline
+// The same text for `header` (finalized, its runs not used) with the runs `runs` gives, one at a
+// time: to_json_text(r) is write_json_text(r, runs_of(r), ...).
+void write_json_text(const CampaignResult& header, const RunSource& runs, const TextSink& out);
 
 // Writes to "<path>.tmp", fsyncs, then renames over path: a crash leaves either the previous
 // complete file or the new one, never half a file. Call it again as runs finish to keep a
 // readable partial-progress file (complete = false until the last run).
 void write_results_file(const std::filesystem::path& path, const CampaignResult& result);
+void write_results_file(const std::filesystem::path& path, const CampaignResult& header,
+                        const RunSource& runs);
 // Throws std::runtime_error when the file cannot be read or is not a results file. A run log
 // (*.jsonl, rig/results/run_log.hpp) is folded: its header and whole records, finalized.
 [[nodiscard]] CampaignResult read_results_file(const std::filesystem::path& path);

@@ -1,6 +1,8 @@
 #include "rig/results/run_log.hpp"
 
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -28,10 +30,13 @@ void RunLog::append(const RunResult& run) {
   file_.append(json{{"run", run_to_json(judged)}}.dump() + "\n");
 }
 
-CampaignResult read_run_log(const std::filesystem::path& path) {
+namespace {
+
+// Calls on_header with the header, then on_run with each whole record's run, one at a time.
+void read_records(const std::filesystem::path& path, const std::function<void(CampaignResult)>& on_header,
+                  const std::function<void(RunResult)>& on_run) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(fmt::format("cannot read {}", path.string()));
-  CampaignResult result;
   std::string line;
   std::size_t number = 0;
   bool header = false;
@@ -43,18 +48,56 @@ CampaignResult read_run_log(const std::filesystem::path& path) {
       if (!header) {
         if (!j.is_object() || !j.contains("run_log") || j.at("run_log") != kRunLogVersion)
           throw std::runtime_error("not a hilrig run log (version 1)");
-        result = campaign_from_json(j.at("results"));
+        on_header(campaign_from_json(j.at("results")));
         header = true;
       } else {
-        result.runs.push_back(run_from_json(j.at("run")));
+        on_run(run_from_json(j.at("run")));
       }
     } catch (const std::exception& e) {
       throw std::runtime_error(fmt::format("{}:{}: {}", path.string(), number, e.what()));
     }
   }
   if (!header) throw std::runtime_error(fmt::format("{}: empty run log", path.string()));
+}
+
+} // namespace
+
+CampaignResult read_run_log(const std::filesystem::path& path) {
+  CampaignResult result;
+  read_records(
+      path, [&](CampaignResult header) { result = std::move(header); },
+      [&](RunResult run) { result.runs.push_back(std::move(run)); });
   finalize(result);
   return result;
+}
+
+CampaignResult read_run_log_summary(const std::filesystem::path& path,
+                                    const std::optional<std::string>& interrupted) {
+  CampaignResult result;
+  RunTally tally;
+  std::optional<std::uint64_t> last;
+  read_records(
+      path, [&](CampaignResult header) { result = std::move(header); },
+      [&](RunResult run) {
+        if (last && run.index <= *last)
+          throw std::runtime_error(fmt::format("run {} after run {}: not in run order", run.index, *last));
+        last = run.index;
+        tally.add(run);
+      });
+  result.interrupted = interrupted;
+  tally.apply(result);
+  return result;
+}
+
+RunSource run_log_runs(const std::filesystem::path& path) {
+  return [path](const RunVisitor& visit) {
+    read_records(
+        path, [](const CampaignResult&) {},
+        [&](RunResult run) {
+          judge(run);
+          visit(run);
+        });
+  };
 }
 
 } // namespace hilrig::rig

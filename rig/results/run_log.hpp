@@ -14,9 +14,12 @@
 // CampaignResult the runs make, so results.json is byte-identical to an in-memory campaign's.
 
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "rig/results/append_file.hpp"
 #include "rig/results/campaign_result.hpp"
+#include "rig/results/run_source.hpp"
 
 namespace hilrig::rig {
 
@@ -37,5 +40,15 @@ private:
 // The campaign the log holds: its header with every whole record, finalized. Throws
 // std::runtime_error naming the file and line of a record that is not a run.
 [[nodiscard]] CampaignResult read_run_log(const std::filesystem::path& path);
+
+// The same without its runs: the header finalized over every whole record read one at a time
+// (faults, totals, verdict, complete), holding one run at a time; `interrupted` is the stop
+// the campaign ended with (it is not in the log). Throws as read_run_log does, and when a
+// record's run index is not above the one before (this writer writes runs in run order).
+[[nodiscard]] CampaignResult
+read_run_log_summary(const std::filesystem::path& path,
+                     const std::optional<std::string>& interrupted = std::nullopt);
+// The log's runs, read back one record at a time on each pass (the file must stay as it is).
+[[nodiscard]] RunSource run_log_runs(const std::filesystem::path& path);
 
 } // namespace hilrig::rig

@@ -65,6 +65,25 @@ TEST(CommandLine, UnknownOptionNamesTheClosestInsteadOfAMissingOne) {
   EXPECT_EQ(hilrig("compare a.json b.json --default-rel -1").err.find("no such option"), std::string::npos);
 }
 
+// --station NAME (issue 18, traceability): 1..64 printable ASCII characters; 65 (one past the
+// cap) or a control character is refused before anything runs, 64 runs.
+TEST(CommandLine, StationIsALabelOfAtMost64PrintableCharacters) {
+  const fs::path out = test::scratch_dir("campaign", "station_label");
+  const Result long_name =
+      hilrig("run " + kPass + " --out " + out.string() + " --station " + std::string(65, 'S'));
+  EXPECT_EQ(long_name.status, 2);
+  EXPECT_NE(long_name.err.find("--station"), std::string::npos) << long_name.err;
+  EXPECT_NE(long_name.err.find("1 .. 64 printable ASCII characters"), std::string::npos) << long_name.err;
+  EXPECT_FALSE(fs::exists(out / "results.json"));
+  const Result tab = hilrig("run " + kPass + " --out " + out.string() + " --station \"$(printf 'a\\tb')\"");
+  EXPECT_EQ(tab.status, 2) << tab.err;
+  const Result at_cap =
+      hilrig("run " + kPass + " --out " + out.string() + " --station " + std::string(64, 'S'));
+  EXPECT_EQ(at_cap.status, 0) << at_cap.err;
+  EXPECT_NE(test::read_file(out / "results.json").find("\"station\": \"" + std::string(64, 'S') + "\""),
+            std::string::npos);
+}
+
 TEST(CommandLine, NegativeSeedIsRefused) {
   const fs::path out = test::scratch_dir("campaign", "negative_seed");
   const Result r = hilrig("run " + kPass + " --out " + out.string() + " --seed -1");

@@ -84,12 +84,16 @@ TEST(HostLink, ModbusRtuOverAPtyGivesTheSameResultsAsInProcess) {
   o.host_link = "modbus-rtu-pty";
   ASSERT_EQ(run(o, modbus, &err), 0) << err;
 
-  // Byte for byte but for the wall-clock object (start time, host), the one part not fixed.
+  // Byte for byte but for the wall-clock object (start time, host), the one part not fixed,
+  // and the link each names (traceability).
   const auto without_wall_clock = [](const fs::path& file) {
     nlohmann::json j = nlohmann::json::parse(slurp(file));
     j.erase("wall_clock");
+    j.erase("host_link");
     return j.dump();
   };
+  EXPECT_EQ(nlohmann::json::parse(slurp(in_process / "results.json"))["host_link"], "in-process");
+  EXPECT_EQ(nlohmann::json::parse(slurp(modbus / "results.json"))["host_link"], "modbus-rtu-pty");
   EXPECT_EQ(without_wall_clock(in_process / "results.json"), without_wall_clock(modbus / "results.json"));
   EXPECT_EQ(slurp(in_process / "trace.vcd"), slurp(modbus / "trace.vcd"));
   // And they are the right results: the counts the campaign derives from the manual, read

@@ -74,6 +74,26 @@ TEST(CampaignParser, EdgeToleranceIsTheCampaignsOwnWhenSet) {
   EXPECT_EQ(error.rfind("t.toml:4:18: campaign.edge_tolerance: ", 0), 0U) << error;
 }
 
+// [dut] serial (issue 18, traceability): a string of 1..64 printable ASCII characters that the
+// outputs carry; anything else is bad input at the value (line 6, column 10: `serial = `).
+TEST(CampaignParser, DutSerialIsALabelOfAtMost64PrintableCharacters) {
+  const auto with = [](const std::string& value) {
+    return replace_line(kBase, 5, "model = \"reference_pls\"\nserial = " + value);
+  };
+  EXPECT_EQ(parse_campaign(kBase, "t.toml").points[0].dut.serial, ""); // not given
+  EXPECT_EQ(parse_campaign(with("\"SN 0042/A\""), "t.toml").points[0].dut.serial, "SN 0042/A");
+  const std::string range =
+      "t.toml:6:10: dut.serial: the board's serial number: 1 .. 64 printable ASCII characters";
+  for (std::size_t n : {1U, 2U, 63U, 64U})
+    EXPECT_EQ(parse_campaign(with("\"" + std::string(n, 'x') + "\""), "t.toml").points[0].dut.serial.size(),
+              n);
+  for (std::size_t n : {0U, 65U, 66U})
+    EXPECT_TRUE(rejected_at(with("\"" + std::string(n, 'x') + "\""), range)) << n;
+  EXPECT_TRUE(rejected_at(with("\"a\\tb\""), range));     // a control character
+  EXPECT_TRUE(rejected_at(with("\"\u00b5-42\""), range)); // not ASCII
+  EXPECT_TRUE(rejected_at(with("42"), "t.toml:6:10: dut.serial: expected a string"));
+}
+
 TEST(CampaignParser, TomlSyntaxErrorGivesItsPosition) {
   // Line 7 "on = = 10": toml++ reports the second '=' at column 6.
   EXPECT_TRUE(rejected_at(replace_line(kBase, 7, "on = = 10"), "t.toml:7:"));

@@ -36,6 +36,12 @@ namespace fs = std::filesystem;
 fs::path scratch(const std::string& name) { return hilrig::test::scratch_dir("campaign", name); }
 using hilrig::test::write_file;
 
+std::size_t count_of(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
 int run(const std::string& file, const fs::path& out, std::string* err_text = nullptr,
         const std::string& shard = "0/1") {
   std::ostringstream err;
@@ -201,6 +207,7 @@ TEST(RunCommand, SignalBetweenRunsIsReportedAsSuch) {
   // A run the signal cut short is still reported as stopped early.
   rig::CampaignResult cut = r;
   cut.runs[0].interrupted = true;
+  rig::finalize(cut);
   EXPECT_NE(interruption_text(cut, "out").find("the last stopped early"), std::string::npos);
 }
 
@@ -256,6 +263,83 @@ TEST(RunCommand, ResultsJsonIsTheFoldedRunLog) {
   EXPECT_EQ(written.dump(), nlohmann::json::parse(rig::to_json_text(campaign::Executive(c).run_all(
                                                       c.runs, c.seed, rig::Shard{0, 1})))
                                 .dump());
+}
+
+// Traceability (issue 18): the start time, tool version, campaign file and SHA-256, seed, host
+// link, backend, DUT serial ([dut] serial) and station (--station) are in results.json, in
+// every testsuite's <properties> of junit.xml and in report.html's header table; results.json
+// reads back the serial and station as written (round trip). Without them: null, no property,
+// "not given".
+TEST(RunCommand, TraceabilityInResultsJunitAndReport) {
+  const fs::path dir = scratch("traceability");
+  std::string text = hilrig::test::read_file(campaign::test::shipped("reference_pls_pass.toml"));
+  text.replace(text.find("[dut]\n"), 6, "[dut]\nserial = \"SN-0042 <A&B>\"\n");
+  const fs::path file = write_file(dir, "serial.toml", text);
+  const campaign::Campaign c = campaign::load_campaign(file.string());
+  ASSERT_EQ(c.runs.size(), 4U);
+  RunOptions o;
+  o.file = file.string();
+  o.out = dir / "out";
+  o.seed = 99;
+  o.station = "bench 7 \"north\"";
+  std::ostringstream err;
+  ASSERT_EQ(run_campaign(o, err), 0) << err.str();
+
+  const nlohmann::json j = nlohmann::json::parse(hilrig::test::read_file(o.out / "results.json"));
+  EXPECT_EQ(j["campaign_file"], file.string());
+  EXPECT_EQ(j["campaign_sha256"], c.sha256);
+  EXPECT_TRUE(std::regex_match(j["campaign_sha256"].get<std::string>(), std::regex("[0-9a-f]{64}")));
+  EXPECT_EQ(j["tool_version"], rig::tool_version());
+  EXPECT_EQ(j["seed"], 99);
+  EXPECT_EQ(j["dut_serial"], "SN-0042 <A&B>");
+  EXPECT_EQ(j["station"], "bench 7 \"north\"");
+  EXPECT_EQ(j["host_link"], "in-process");
+  EXPECT_EQ(j["backend"], "virtual");
+  const std::string started = j["wall_clock"]["started_at"].get<std::string>();
+  EXPECT_TRUE(std::regex_match(started, std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)"))) << started;
+  const rig::CampaignResult back = rig::read_results_file(o.out / "results.json");
+  EXPECT_EQ(back.station, o.station);
+  EXPECT_EQ(back.dut_serial, "SN-0042 <A&B>");
+  EXPECT_EQ(back.campaign_file, file.string());
+
+  const std::string junit = hilrig::test::read_file(o.out / "junit.xml");
+  const auto property = [](const std::string& name, const std::string& value) {
+    return "<property name=\"" + name + "\" value=\"" + value + "\"/>";
+  };
+  for (const std::string& p :
+       {property("dut_serial", "SN-0042 &lt;A&amp;B&gt;"), property("station", "bench 7 &quot;north&quot;"),
+        property("campaign_file", file.string()), property("campaign_sha256", c.sha256),
+        property("campaign_seed", "99"), property("tool_version", rig::tool_version()),
+        property("backend", "virtual"), property("host_link", "in-process")})
+    EXPECT_EQ(count_of(junit, p), 4U) << p; // one per run's testsuite
+  EXPECT_EQ(count_of(junit, "timestamp=\"" + started + "\""), 4U);
+
+  const std::string report = hilrig::test::read_file(o.out / "report.html");
+  for (const std::string& row :
+       {"<tr class=\"wall-clock\"><th>started</th><td>" + started + "</td></tr>",
+        "<tr><th>tool version</th><td>hilrig " + std::string(rig::tool_version()) + "</td></tr>",
+        "<tr><th>campaign file</th><td>" + file.string() + "</td></tr>",
+        "<tr><th>campaign SHA-256</th><td>" + c.sha256 + "</td></tr>",
+        std::string("<tr><th>DUT serial</th><td>SN-0042 &lt;A&amp;B&gt;</td></tr>"),
+        std::string("<tr><th>station</th><td>bench 7 &quot;north&quot;</td></tr>"),
+        std::string("<tr><th>seed</th><td>99</td></tr>"),
+        std::string("<tr><th>backend</th><td>virtual</td></tr>"),
+        std::string("<tr><th>host link</th><td>in-process</td></tr>")})
+    EXPECT_NE(report.find(row), std::string::npos) << row;
+
+  // Neither given: null in results.json, no property, "not given" in the report.
+  o.file = campaign::test::shipped("reference_pls_pass.toml");
+  o.station.clear();
+  ASSERT_EQ(run_campaign(o, err), 0) << err.str();
+  const nlohmann::json none = nlohmann::json::parse(hilrig::test::read_file(o.out / "results.json"));
+  EXPECT_TRUE(none["dut_serial"].is_null());
+  EXPECT_TRUE(none["station"].is_null());
+  const std::string junit_none = hilrig::test::read_file(o.out / "junit.xml");
+  EXPECT_EQ(junit_none.find("name=\"station\""), std::string::npos);
+  EXPECT_EQ(junit_none.find("name=\"dut_serial\""), std::string::npos);
+  const std::string report_none = hilrig::test::read_file(o.out / "report.html");
+  EXPECT_NE(report_none.find("<tr><th>station</th><td>not given</td></tr>"), std::string::npos);
+  EXPECT_NE(report_none.find("<tr><th>DUT serial</th><td>not given</td></tr>"), std::string::npos);
 }
 
 // --out: an earlier campaign's evidence is removed before the run, so none of it is mistaken
@@ -352,12 +436,6 @@ SuiteRun run_suite(const std::vector<std::string>& files, const fs::path& out_di
   r.out = out.str();
   r.err = err.str();
   return r;
-}
-
-std::size_t count_of(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
 }
 
 TEST(RunSuite, DirectoryRunsEveryCampaignSortedIntoItsOwnDirectory) {
@@ -460,6 +538,12 @@ std::string without_wall_clock_json(const std::string& results) {
   return std::regex_replace(results, wall, "\"wall_clock\":{}");
 }
 
+// report.html's start time (its row is class "wall-clock"): the one part that is not the same.
+std::string without_wall_clock_html(const std::string& report) {
+  static const std::regex wall(R"re(<tr class="wall-clock"><th>started</th><td>[^<]*</td></tr>)re");
+  return std::regex_replace(report, wall, "<tr class=\"wall-clock\"></tr>");
+}
+
 TEST(RunSuite, JobsRunInParallelWithTheSameOutputsAsOneJob) {
   const fs::path dir = scratch("suite_jobs");
   std::vector<std::string> files = {campaign::test::shipped("reference_pls_pass.toml"),
@@ -483,6 +567,8 @@ TEST(RunSuite, JobsRunInParallelWithTheSameOutputsAsOneJob) {
       EXPECT_EQ(without_wall_clock(text), without_wall_clock(b[path])) << path;
     } else if (path.ends_with("results.json")) {
       EXPECT_EQ(without_wall_clock_json(text), without_wall_clock_json(b[path])) << path;
+    } else if (path.ends_with("report.html")) {
+      EXPECT_EQ(without_wall_clock_html(text), without_wall_clock_html(b[path])) << path;
     } else {
       EXPECT_EQ(text, b[path]) << path; // byte-identical
     }

@@ -2,6 +2,7 @@
 // in their unit and no float noise, figures drawn from what the results recorded.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <regex>
 
@@ -62,6 +63,43 @@ std::vector<double> xs(const std::string& svg) {
   for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it)
     out.push_back(std::stod((*it)[1]));
   return out;
+}
+
+// A long campaign's report (issue 19, "Runs: scale linearly"): the first 100 runs that did not
+// pass and the first 20 that passed in full, every other run one row of a table, each summary
+// list its first 100 entries and a count of the rest, and every link lands on an anchor.
+// sample_campaign(400): runs i % 3 == 2 inject a fault their throughput check catches (133,
+// pass); the nominal runs' throughput max is 10 + i us against 20 us, so the nominal runs
+// 0, 1, 3, 4, 6, 7, 9, 10 pass (8) and the other 259 fail: 141 pass, 259 do not.
+TEST(Report, LongCampaignShowsFailuresInFullAndTheRestAsRows) {
+  const CampaignResult c = test::sample_campaign(400);
+  ASSERT_EQ(c.totals.runs_passed, 141U);
+  ASSERT_EQ(c.totals.runs_failed, 259U);
+  const std::string html = to_report_html(c);
+  EXPECT_EQ(count_of(html, "<details class=\"run\""), 120U);
+  EXPECT_EQ(count_of(html, "<details class=\"run\" id=\"r") - count_of(html, " open>"),
+            20U); // collapsed: passed
+  EXPECT_EQ(count_of(html, "<tr id=\"r"), 280U);
+  EXPECT_NE(html.find("<h3 id=\"more-runs\">280 more runs</h3>"), std::string::npos);
+  // The failing run 10 + 100th: runs 11, 12, 13, 15, ... fail; the 100th of them is shown, the 101st is a
+  // row.
+  std::vector<std::uint64_t> failing;
+  for (std::uint64_t i = 0; i < 400; ++i)
+    if (i % 3 != 2 && i > 10) failing.push_back(i);
+  EXPECT_NE(html.find(fmt::format("<details class=\"run\" id=\"r{}\" open>", failing[99])),
+            std::string::npos);
+  EXPECT_NE(html.find(fmt::format("<tr id=\"r{}\">", failing[100])), std::string::npos);
+  EXPECT_NE(html.find("<li>and 159 more failed or errored checks"), std::string::npos);
+  EXPECT_NE(html.find("<li>and 33 more checks that caught their fault"), std::string::npos);
+  // The 20 passing runs in full are 0..11, 14, 17, ..., 35: run 38 is a row, and the summary's
+  // "caught" entry for it links the row.
+  EXPECT_NE(html.find("<details class=\"run\" id=\"r35\">"), std::string::npos);
+  EXPECT_NE(html.find("<tr id=\"r38\">"), std::string::npos);
+  EXPECT_NE(html.find("<a href=\"#r38\">run 38:"), std::string::npos);
+  for (auto p = html.find("href=\"#"); p != std::string::npos; p = html.find("href=\"#", p + 1)) {
+    const std::string target = html.substr(p + 7, html.find('"', p + 7) - p - 7);
+    EXPECT_NE(html.find("id=\"" + target + "\""), std::string::npos) << target;
+  }
 }
 
 TEST(Report, SelfContainedWithAFigureForEveryCheck) {

@@ -19,6 +19,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "rig/results/fold_run_log.hpp"
+#include "rig/results/junit.hpp"
+#include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
 #include "rig/results/run_log.hpp"
 #include "sample_campaign.hpp"
@@ -67,6 +70,57 @@ TEST(RunLog, FoldIsByteIdenticalToTheWholeFileWriter) {
     EXPECT_EQ(slurp(dir / "folded.json"), slurp(dir / "whole.json")) << n;
     // read_results_file folds a *.jsonl too (what `hilrig merge OUT.json DIR/runs.jsonl` reads).
     EXPECT_EQ(to_json_text(read_results_file(dir / kRunLogName)), slurp(dir / "whole.json")) << n;
+  }
+}
+
+// The fold `hilrig run` ends with (fold_run_log: the log read a record at a time for each
+// file) writes the same results.json, junit.xml and report.html, byte for byte, as the
+// in-memory writers given every run at once: for no run, a few, an interrupted result, and a
+// campaign long enough (400 runs) that the report shows most runs as table rows.
+TEST(RunLog, FoldedOutputsAreTheInMemoryWritersBytes) {
+  const fs::path dir = scratch("fold_outputs");
+  for (std::size_t n : {0U, 1U, 3U, 7U, 400U}) {
+    CampaignResult whole = test::sample_campaign(n);
+    if (n == 7) whole.runs.push_back(test::fault_run(7, "late_output", false)); // a fault missed
+    whole.planned_runs = whole.runs.size() + (n == 3 ? 1 : 0);
+    if (n == 3) whole.interrupted = "SIGTERM";
+    whole.started_at = "2026-01-02T03:04:05Z";
+    whole.host = "bench-3";
+    finalize(whole);
+    JunitClock clock{"2026-01-02T03:04:05Z", "bench-3", {}};
+    for (const RunResult& run : whole.runs)
+      clock.run_seconds[run.index] = 0.25 * static_cast<double>(run.index);
+    log_campaign(dir / kRunLogName, whole);
+    const CampaignResult folded = fold_run_log(dir / kRunLogName, dir, whole, clock);
+    EXPECT_TRUE(folded.runs.empty()) << n; // the fold hands back no run
+    EXPECT_EQ(folded.totals, whole.totals) << n;
+    EXPECT_EQ(folded.verdict, whole.verdict) << n;
+    EXPECT_EQ(folded.complete, whole.complete) << n;
+    EXPECT_EQ(slurp(dir / "results.json"), to_json_text(whole)) << n;
+    EXPECT_EQ(slurp(dir / "junit.xml"), to_junit_xml(whole, clock)) << n;
+    EXPECT_EQ(slurp(dir / "report.html"), to_report_html(whole)) << n;
+    for (const auto& e : fs::directory_iterator(dir)) EXPECT_NE(e.path().extension(), ".tmp") << n;
+  }
+}
+
+// A log whose runs are not in run order is refused with its file and line (the fold writes
+// each file in one pass, in the order of the records).
+TEST(RunLog, FoldRefusesRunsOutOfOrder) {
+  const fs::path dir = scratch("fold_order");
+  CampaignResult whole = test::sample_campaign(3);
+  {
+    RunLog log(dir / kRunLogName, whole);
+    log.append(whole.runs[0]);
+    log.append(whole.runs[2]);
+    log.append(whole.runs[1]);
+  }
+  try {
+    (void)read_run_log_summary(dir / kRunLogName);
+    ADD_FAILURE() << "a log out of run order was folded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(kRunLogName + std::string(":4: run 1 after run 2")),
+              std::string::npos)
+        << e.what();
   }
 }
 
