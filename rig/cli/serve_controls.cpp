@@ -18,6 +18,12 @@ Span span_of(std::uint16_t address, std::size_t n) {
 
 } // namespace
 
+bool ControlledRegisters::offers(std::uint16_t address) const {
+  if (address == kSupplyRegister || address == kPowerCycleRegister) return static_cast<bool>(controls_.power);
+  if (address == kClearPairRegister) return static_cast<bool>(controls_.clear_last_pair);
+  return controls_.program_switch && controls_.set_program_switch;
+}
+
 ControlledRegisters::ControlledRegisters(RegisterMap& board, BoardControls controls, Scheduler& scheduler)
     : board_(board), controls_(std::move(controls)), scheduler_(scheduler) {}
 
@@ -40,18 +46,13 @@ RegisterStatus ControlledRegisters::read_holding_registers(std::uint16_t address
   }
   for (std::size_t i = 0; i < out.size(); ++i) {
     const auto a = static_cast<std::uint16_t>(address + i);
-    if (a == kSupplyRegister) {
-      if (!controls_.power) return RegisterStatus::IllegalDataAddress;
+    if (!offers(a)) return RegisterStatus::IllegalDataAddress;
+    if (a == kSupplyRegister)
       out[i] = powered_ ? 1 : 0;
-    } else if (a == kPowerCycleRegister || a == kClearPairRegister) {
-      const bool known = a == kPowerCycleRegister ? static_cast<bool>(controls_.power)
-                                                  : static_cast<bool>(controls_.clear_last_pair);
-      if (!known) return RegisterStatus::IllegalDataAddress;
-      out[i] = 0; // a command, not a state
-    } else {
-      if (!controls_.program_switch) return RegisterStatus::IllegalDataAddress;
+    else if (a == kProgramSwitchRegister)
       out[i] = controls_.program_switch() ? 1 : 0;
-    }
+    else
+      out[i] = 0; // a command, not a state
   }
   return RegisterStatus::Ok;
 }
@@ -70,10 +71,7 @@ RegisterStatus ControlledRegisters::write_holding_registers(std::uint16_t addres
   for (std::size_t i = 0; i < values.size(); ++i) {
     const auto a = static_cast<std::uint16_t>(address + i);
     const std::uint16_t v = values[i];
-    const bool known = a == kProgramSwitchRegister ? static_cast<bool>(controls_.set_program_switch)
-                       : a == kClearPairRegister   ? static_cast<bool>(controls_.clear_last_pair)
-                                                   : static_cast<bool>(controls_.power);
-    if (!known) return RegisterStatus::IllegalDataAddress;
+    if (!offers(a)) return RegisterStatus::IllegalDataAddress;
     const bool valid = a == kPowerCycleRegister  ? v >= 1
                        : a == kClearPairRegister ? v >= 1 && v <= controls_.outputs
                                                  : v <= 1;

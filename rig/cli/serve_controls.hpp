@@ -46,6 +46,8 @@ public:
   [[nodiscard]] bool powered() const { return powered_; }
 
 private:
+  // Whether the served model has the control at this address (else exception 02).
+  [[nodiscard]] bool offers(std::uint16_t address) const;
   RegisterStatus write_control(std::uint16_t address, std::uint16_t value);
   void set_power(bool on);
 

@@ -283,6 +283,11 @@ TEST(ServeCli, AServedSmd23eLockedByAFlashSaveComesBackAfterAPowerCycle) {
   const std::uint16_t sw1 = input_until(s, 0, [](std::uint16_t w) { return w != 0; });
   EXPECT_EQ(sw1 & 0xA000, 0) << std::hex << sw1; // Command Mode, Configuration Error 0
   EXPECT_NE(sw1 & 0x4000, 0) << std::hex << sw1; // Controller OK
+  // The SMD23E has no Program switch and no keyboard: those controls are not its addresses.
+  EXPECT_EQ(s.holding_registers(kProgramSwitch, 1).error, EMBXILADD);
+  EXPECT_EQ(s.write(kProgramSwitch, {1}), EMBXILADD);
+  EXPECT_EQ(s.write(kClearPair, {1}), EMBXILADD);
+  EXPECT_EQ(s.holding_registers(kSupply, 1).words, std::vector<std::uint16_t>{1});
 }
 
 TEST(ServeCli, BadMotionOrParamIsRefusedBeforeServing) {
