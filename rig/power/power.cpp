@@ -5,6 +5,8 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -149,15 +151,31 @@ std::string kind_of_check(const campaign::Campaign& c, const std::string& name) 
 // A latency check meets the board's worst case only for a stimulus just after a scan: the row
 // says how much of the scan its stimulus met (docs/campaigns.md, "Phase coverage"), or that it
 // does not know. A response the model puts at a fixed delay (WorstCase::Knob) has no phase.
-void describe_phase_coverage(PowerRow& row, const Finding& f, const Knob& knob) {
+void describe_phase_coverage(PowerRow& row, const Finding& f, const Knob& knob,
+                             const std::optional<checks::PhaseScan>& phase) {
   if (f.coverage) {
     row.phase_coverage = "phase coverage " + f.coverage->detail;
-    row.phase_coverage_complete = f.coverage->detail.find("incomplete") == std::string::npos;
+    row.phase_coverage_complete = phase && f.coverage->value >= static_cast<double>(phase->bins);
   } else if (row.kind == "throughput" && knob.worst_case != WorstCase::Knob) {
     row.phase_coverage = "phase coverage not measured (the check has no scan_us): its stimulus may "
                          "meet one phase of the board's scan only, and the board's worst case lie beyond "
                          "what it read";
   }
+}
+
+// The scan a check's phase coverage is binned against (its scan_us, phase_bins), if it has one.
+std::optional<checks::PhaseScan> phase_scan_of(const campaign::Campaign& c, const std::string& name) {
+  for (const campaign::Scenario& s : c.points)
+    if (const campaign::CheckSpec* k = s.check(name))
+      return std::visit(
+          [](const auto& p) -> std::optional<checks::PhaseScan> {
+            if constexpr (requires { p.phase; })
+              return p.phase;
+            else
+              return std::nullopt;
+          },
+          k->params);
+  return std::nullopt;
 }
 
 const checks::PulseWidthSpec* pulse_spec(const campaign::Campaign& c, const std::string& name) {
@@ -303,7 +321,7 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
   }
   row.threshold = scale.shown(*b.threshold);
   const Finding& at = findings.at(*b.threshold);
-  describe_phase_coverage(row, at, knob);
+  describe_phase_coverage(row, at, knob, phase_scan_of(c, name));
   if (at.worst) {
     row.measurement = at.worst->name;
     row.unit = at.worst->unit;
