@@ -23,7 +23,7 @@ int run_merge(const MergeArgs& a) {
   try {
     std::vector<rig::CampaignResult> shards;
     for (const auto& path : a.shards) shards.push_back(rig::read_results_file(path));
-    const rig::CampaignResult merged = rig::merge_shards(std::move(shards));
+    const rig::CampaignResult merged = rig::merge_shards(std::move(shards), a.shards);
     rig::write_results_file(a.out, merged);
     std::fputs(fmt::format("merged {} shards: {} runs, verdict {}; wrote {}\n", a.shards.size(),
                            merged.runs.size(), rig::to_string(merged.verdict), a.out)

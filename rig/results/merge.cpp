@@ -10,26 +10,66 @@
 
 namespace hilrig::rig {
 
-CampaignResult merge_shards(std::vector<CampaignResult> shards) {
+namespace {
+
+// "shard 1 (b/results.json)": how a message names a shard, with its file when known.
+std::string shard_name(const CampaignResult& s, const std::string& file) {
+  return file.empty() ? fmt::format("shard {}", s.shard.index)
+                      : fmt::format("shard {} ({})", s.shard.index, file);
+}
+
+// The board and station a shard ran on, as a message quotes them ("" reads "none").
+std::string quoted(const std::string& v) { return v.empty() ? "none" : fmt::format("'{}'", v); }
+
+} // namespace
+
+CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vector<std::string>& files) {
   if (shards.empty()) throw std::invalid_argument("merge: no shards given");
-  std::sort(shards.begin(), shards.end(),
-            [](const CampaignResult& a, const CampaignResult& b) { return a.shard.index < b.shard.index; });
+  if (!files.empty() && files.size() != shards.size())
+    throw std::invalid_argument(
+        fmt::format("merge: {} shard files named for {} shards", files.size(), shards.size()));
+  std::vector<std::string> names(shards.size());
+  for (std::size_t i = 0; i < shards.size(); ++i)
+    names[i] = shard_name(shards[i], files.empty() ? "" : files[i]);
+  std::vector<std::size_t> order(shards.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return shards[a].shard.index < shards[b].shard.index;
+  });
+  std::vector<CampaignResult> sorted;
+  std::vector<std::string> sorted_names;
+  for (std::size_t i : order) {
+    sorted.push_back(std::move(shards[i]));
+    sorted_names.push_back(names[i]);
+  }
+  shards = std::move(sorted);
   const CampaignResult& first = shards.front();
+  const std::string& first_name = sorted_names.front();
   const auto count = first.shard.count;
   std::set<std::uint32_t> seen;
-  for (const auto& s : shards) {
+  for (std::size_t i = 0; i < shards.size(); ++i) {
+    const CampaignResult& s = shards[i];
+    const std::string& name = sorted_names[i];
     if (s.campaign != first.campaign || s.device != first.device || s.seed != first.seed) {
       throw std::invalid_argument(
-          fmt::format("merge: shard {} is from campaign '{}' ({}, seed {}), not '{}' ({}, seed {})",
-                      s.shard.index, s.campaign, s.device, s.seed, first.campaign, first.device, first.seed));
+          fmt::format("merge: {} is from campaign '{}' ({}, seed {}), not '{}' ({}, seed {})", name,
+                      s.campaign, s.device, s.seed, first.campaign, first.device, first.seed));
     }
     if (s.campaign_sha256 != first.campaign_sha256 || s.tool_version != first.tool_version) {
+      throw std::invalid_argument(fmt::format(
+          "merge: {} ran campaign file sha256 {} with hilrig {}, {} ran sha256 {} "
+          "with hilrig {}: "
+          "shards of different campaign revisions or tool versions do not merge",
+          name, s.campaign_sha256, s.tool_version, first_name, first.campaign_sha256, first.tool_version));
+    }
+    // Shards of one result are one board at one station: runs of two boards (or two benches)
+    // merged would read as one board's complete campaign.
+    if (s.dut_serial != first.dut_serial || s.station != first.station) {
       throw std::invalid_argument(
-          fmt::format("merge: shard {} ran campaign file sha256 {} with hilrig {}, shard {} ran sha256 {} "
-                      "with hilrig {}: "
-                      "shards of different campaign revisions or tool versions do not merge",
-                      s.shard.index, s.campaign_sha256, s.tool_version, first.shard.index,
-                      first.campaign_sha256, first.tool_version));
+          fmt::format("merge: {} ran on DUT serial {} at station {}, {} on DUT serial {} at station {}: "
+                      "shards of different boards ([dut] serial) or stations (--station) do not merge",
+                      name, quoted(s.dut_serial), quoted(s.station), first_name, quoted(first.dut_serial),
+                      quoted(first.station)));
     }
     if (s.shard.count != count) {
       throw std::invalid_argument(

@@ -56,5 +56,55 @@ TEST(Merge, RefusesMissingDuplicateOrForeignShards) {
   EXPECT_THROW((void)merge_shards({}), std::invalid_argument);
 }
 
+std::string merge_error(std::vector<CampaignResult> shards, const std::vector<std::string>& files) {
+  try {
+    (void)merge_shards(std::move(shards), files);
+    return "merged";
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+}
+
+// Issue 18 follow-up: shards of one campaign run on two boards (`[dut] serial`) or at two
+// stations (`--station`) are not one board's complete result. The message names both values
+// and both shard files.
+TEST(Merge, RefusesShardsOfAnotherBoardOrStationNamingBothValuesAndFiles) {
+  CampaignResult whole = test::sample_campaign(6);
+  whole.dut_serial = "SN-0042";
+  whole.station = "bench-a";
+  const std::vector<std::string> files{"shard0/results.json", "shard1/results.json"};
+  const auto shards = shard(whole, 2);
+  EXPECT_EQ(merge_error(shards, files), "merged");
+  const CampaignResult merged = merge_shards(shards, files);
+  EXPECT_EQ(merged.dut_serial, "SN-0042");
+  EXPECT_EQ(merged.station, "bench-a");
+
+  auto other_board = shards;
+  other_board[1].dut_serial = "SN-0043";
+  std::string why = merge_error(other_board, files);
+  for (const char* part :
+       {"'SN-0042'", "'SN-0043'", "shard0/results.json", "shard1/results.json", "[dut] serial"})
+    EXPECT_NE(why.find(part), std::string::npos) << part << " in: " << why;
+
+  auto other_station = shards;
+  other_station[0].station = "bench-b";
+  why = merge_error(other_station, files);
+  for (const char* part :
+       {"'bench-a'", "'bench-b'", "shard0/results.json", "shard1/results.json", "--station"})
+    EXPECT_NE(why.find(part), std::string::npos) << part << " in: " << why;
+
+  // A shard run without --station against one with it: "none" names the missing value.
+  auto unnamed = shards;
+  unnamed[1].station.clear();
+  why = merge_error(unnamed, files);
+  EXPECT_NE(why.find("station none"), std::string::npos) << why;
+
+  // Given in another order, each file still names its own shard.
+  auto reversed = other_board;
+  std::reverse(reversed.begin(), reversed.end());
+  why = merge_error(reversed, {files[1], files[0]});
+  EXPECT_NE(why.find("shard 1 (shard1/results.json) ran on DUT serial 'SN-0043'"), std::string::npos) << why;
+}
+
 } // namespace
 } // namespace hilrig::rig
