@@ -60,24 +60,33 @@ if [ "${1:-}" = "--vm" ]; then
 fi
 
 want=()
+# npm: installs report-web/'s locked uPlot (npm ci below), embedded into hilrig's report.html.
+# Debian's package when no npm is on the PATH (a node distribution's own npm serves as well).
+command -v npm >/dev/null || want+=(npm)
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
     want+=("$p")
   fi
 done
 
-if [ ${#want[@]} -eq 0 ]; then
-  exit 0
+if [ ${#want[@]} -gt 0 ]; then
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "install-deps: missing packages: ${want[*]}" >&2
+    echo "install-deps: run as root (or: sudo $0)" >&2
+    exit 1
+  fi
+  echo "install-deps: installing ${want[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  # An old package list can miss packages: refresh once, then install.
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${want[@]}"
 fi
 
-if [ "$(id -u)" -ne 0 ]; then
-  echo "install-deps: missing packages: ${want[*]}" >&2
-  echo "install-deps: run as root (or: sudo $0)" >&2
-  exit 1
+# The report's front end (report-web/): uPlot at the version and integrity hash its
+# package-lock.json pins, installed again whenever the lock is newer than what npm installed
+# (npm writes node_modules/.package-lock.json last). The build embeds it (rig/results/).
+web="$(cd "$(dirname "$0")/../report-web" && pwd)"
+if [ ! -f "$web/node_modules/.package-lock.json" ] || [ "$web/package-lock.json" -nt "$web/node_modules/.package-lock.json" ]; then
+  echo "install-deps: npm ci in report-web/"
+  (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
 fi
-
-echo "install-deps: installing ${want[*]}"
-export DEBIAN_FRONTEND=noninteractive
-# An old package list can miss packages: refresh once, then install.
-apt-get update -qq
-apt-get install -y -qq --no-install-recommends "${want[@]}"

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <fmt/format.h>
 
+#include "rig/results/figure_data.hpp"
+#include "rig/results/figure_html.hpp"
 #include "rig/results/number_format.hpp"
-#include "rig/results/svg.hpp"
+#include "rig/results/timing_figures.hpp"
 #include "rig/results/xml_escape.hpp"
 
 namespace hilrig::rig {
@@ -51,9 +53,8 @@ std::string anchor(const RunResult& run, std::size_t check) {
   return fmt::format("r{}-c{}", run.index, check);
 }
 
-std::string figure(const std::string& svg, const std::string& caption) {
-  if (svg.empty()) return {};
-  return fmt::format("<figure class=\"evidence\">{}<figcaption>{}</figcaption></figure>\n", svg, caption);
+std::string figure(const nlohmann::json& data, const std::string& caption) {
+  return figure_html(data, caption);
 }
 
 // The measurements with those not passing first (stable: in recorded order otherwise).
@@ -70,19 +71,20 @@ std::string brake_figures(const CheckResult& c, const RunResult& run) {
   std::string s;
   for (const auto& m : c.measurements) {
     if (!m.window || m.unit != "ms") continue;
-    std::vector<Marker> marks{{m.window->begin, "applied", "#9a6700"}};
+    std::vector<Marker> marks{{m.window->begin, "applied", "#9a6700", "event"}};
     Nanos right = m.window->end;
     if (m.upper) {
       const Nanos limit = m.window->begin + Nanos{static_cast<std::int64_t>(*m.upper * 1e6)};
-      marks.push_back({limit, "limit", "#cf222e"});
+      marks.push_back({limit, "limit", "#cf222e", "limit"});
       right = std::max(right, limit);
     }
-    if (m.at) marks.push_back({*m.at, "standstill", outcome_colour(shown(c, m))});
+    if (m.at) marks.push_back({*m.at, "standstill", outcome_colour(shown(c, m)), "event"});
     const Nanos span = std::max(right - m.window->begin, Nanos{1'000'000});
-    s += figure(motion_svg(run.motion, marks, m.window->begin - span / 4, right + span / 4),
-                fmt::format("{}: speed and position around the stop; applied, standstill and the limit "
-                            "(applied + {})",
-                            xml_escape(m.name), m.upper ? format_value(*m.upper, m.unit) : "no limit"));
+    s += figure(
+        motion_figure(run.motion, marks, m.window->begin - span / 4, right + span / 4, m.window->begin),
+        fmt::format("{}: speed and position around the stop; applied, standstill and the limit "
+                    "(applied + {})",
+                    xml_escape(m.name), m.upper ? format_value(*m.upper, m.unit) : "no limit"));
   }
   return s;
 }
@@ -98,7 +100,7 @@ std::string throughput_figures(const CheckResult& c) {
           limits.push_back({m.name.substr(c.check.size() + (m.name.starts_with(c.check + ".") ? 1 : 0)), *l});
     }
     s += figure(
-        histogram_svg(series.values, series.unit, limits),
+        histogram_figure(series.values, series.unit, limits),
         fmt::format("{} of {}: histogram, dashed: the limits", xml_escape(series.name), xml_escape(c.check)));
   }
   return s;
@@ -114,7 +116,7 @@ std::string debounce_figures(const CheckResult& c) {
     }
   }
   return figure(
-      probes_svg(c.probes, lo, hi),
+      probes_figure(c.probes, lo, hi),
       "every probe pulse by width, numbered in the order played: accepted above, rejected below; shaded: "
       "the filter time ± its tolerance");
 }
@@ -130,28 +132,26 @@ std::string check_figures(const CheckResult& c, const RunResult& run) {
   if (!on_motion) {
     for (const Measurement* m : timing_figures(c)) {
       const WindowTrace* trace = trace_for(c, *m);
-      s += figure(timing_diagram_svg(*m, shown(c, *m), trace),
+      s += figure(timing_figure(*m, shown(c, *m), trace),
                   fmt::format("{}: {}the expected window (shaded, limits dashed) and the captured edge",
                               xml_escape(m->name),
                               trace ? "the stimulus, the shaft's count and the output as captured; " : ""));
     }
   }
   const std::span<const ShownMeasurement> gauge(rows.data(), std::min(rows.size(), kLimitRows));
-  s +=
-      figure(limits_svg(gauge), rows.size() > kLimitRows
-                                    ? fmt::format("the first {} of {} measurements (those not passing first) "
-                                                  "against their limits; the rest are in the table",
-                                                  kLimitRows, rows.size())
-                                    : std::string("each measurement against its limits (shaded: passes)"));
+  s += figure(limits_figure(gauge),
+              rows.size() > kLimitRows
+                  ? fmt::format("the first {} of {} measurements (those not passing first) "
+                                "against their limits; the rest are in the table",
+                                kLimitRows, rows.size())
+                  : std::string("each measurement against its limits (shaded: passes)"));
   if (s.empty()) {
     const std::string why = c.measurements.empty()
                                 ? "the check measured nothing: it judged nothing (an error)"
                                 : "no measurement of this check has a limit or a window";
-    s = figure(
-        fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"600\" height=\"24\" role=\"img\">"
-                    "<title>{0}</title><text x=\"4\" y=\"16\" font-size=\"11\" fill=\"{1}\">{0}</text></svg>",
-                    why, outcome_colour(c.judgement)),
-        why);
+    // Nothing to draw: the reason, where the figure would be.
+    s = fmt::format("<figure class=\"evidence note\"><p style=\"color:{}\">{}</p></figure>\n",
+                    outcome_colour(c.judgement), why);
   }
   return s;
 }
@@ -307,7 +307,7 @@ std::string run_section(const RunResult& run) {
            : fmt::format("<p>trace: <a href=\"{0}\">{0}</a> (GTKWave, PulseView)</p>\n",
                          xml_escape(run.trace));
   if (!run.motion.empty()) {
-    s += figure(motion_svg(run.motion, {}),
+    s += figure(motion_figure(run.motion, {}),
                 "the shaft's speed and position over the run, with the events that acted on it (grey)");
   }
   for (std::size_t i = 0; i < run.checks.size(); ++i) s += check_section(run, run.checks[i], i);
@@ -327,8 +327,8 @@ std::string run_section(const RunResult& run) {
 void write_report_html(const CampaignResult& r, const RunSource& runs, const TextSink& out) {
   const Totals& t = r.totals;
   std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
-  s += fmt::format("<title>hilrig: {}</title>\n<style>{}</style>\n</head>\n<body>\n", xml_escape(r.campaign),
-                   kStyle);
+  s += fmt::format("<title>hilrig: {}</title>\n<style>{}</style>\n{}</head>\n<body>\n",
+                   xml_escape(r.campaign), kStyle, figure_styles());
   s += fmt::format("<h1>{}</h1>\n<p class=\"verdict\">Verdict: {}</p>\n", xml_escape(r.campaign),
                    badge(r.verdict));
   if (r.interrupted)
@@ -385,6 +385,7 @@ void write_report_html(const CampaignResult& r, const RunSource& runs, const Tex
     });
     out("</table>\n");
   }
+  out(figure_scripts());
   out("</body>\n</html>\n");
 }
 

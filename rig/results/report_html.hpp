@@ -1,7 +1,8 @@
 #pragma once
-// report.html: one self-contained page (inline CSS and SVG, no external resources) a person
-// reads after a campaign: verdict summary, fault detection matrix, every measurement against
-// its limits, timing diagrams for edge/advance checks and latency histograms for throughput.
+// report.html: one self-contained page (no external resources: uPlot and the figures' script
+// are embedded, figure_html.hpp) a person reads after a campaign: failures first, traceability,
+// fault detection matrix, every measurement against its limits, timing diagrams around the
+// judged windows, latency histograms, debounce probes and the brake's stop.
 
 #include <string>
 

@@ -7,7 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "rig/results/svg.hpp"
+#include "rig/results/figure_data.hpp"
+#include "rig/results/figure_html.hpp"
 #include "rig/results/xml_escape.hpp"
 
 namespace hilrig::rig {
@@ -58,8 +59,8 @@ std::string to_trend_html(std::span<const Night> nights) {
       fmt::format("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>trend: {0}</title>"
                   "<style>body{{font-family:sans-serif;margin:1.5em}}table{{border-collapse:collapse}}"
                   "td,th{{border:1px solid #d0d7de;padding:2px 6px;text-align:left}}section{{margin:1em 0}}"
-                  "</style></head><body>\n<h1>trend: {0} on {1}</h1>\n<p>{2} night(s), oldest first: ",
-                  xml_escape(first.campaign), xml_escape(first.device), nights.size());
+                  "</style>{3}</head><body>\n<h1>trend: {0} on {1}</h1>\n<p>{2} night(s), oldest first: ",
+                  xml_escape(first.campaign), xml_escape(first.device), nights.size(), figure_styles());
   for (std::size_t i = 0; i < nights.size(); ++i)
     html += fmt::format("{}{} ({})", i == 0 ? "" : ", ", xml_escape(nights[i].label),
                         to_string(nights[i].result->verdict));
@@ -76,9 +77,12 @@ std::string to_trend_html(std::span<const Night> nights) {
         xml_escape(s.run), limit(s.lower), limit(s.upper), xml_escape(s.unit));
     for (const TrendPoint& p : s.points)
       html += p.value ? fmt::format(" {} ({})", *p.value, to_string(p.outcome)) : std::string(" -");
-    html += "</p>\n" + trend_svg(s.points, s.unit, s.lower, s.upper) + "</section>\n";
+    html += "</p>\n" +
+            figure_html(trend_figure(s.points, s.unit, s.lower, s.upper),
+                        "each night's value (coloured by its outcome) and the last night's limits (dashed)") +
+            "</section>\n";
   }
-  html += "</body></html>\n";
+  html += figure_scripts() + "</body></html>\n";
   return html;
 }
 

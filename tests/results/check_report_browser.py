@@ -1,11 +1,15 @@
 #!/usr/bin/env python3
 """report.html as a person opens it (issue 18, "Done when"): every shipped campaign is run
 as one suite and each campaign's report is loaded in one headless Chromium (driven over its
-DevTools pipe, so one browser start serves every page). In the DOM Chromium built, with every
-run expanded, each check section that was judged (data-judgement is not "not judged") must
-hold a figure whose SVG the browser laid out with a size; the sections must be as many as
-results.json's checks; a failing campaign's summary must link each failed check. A
-screenshot of each report is written beside it (report.png).
+DevTools pipe, so one browser start serves every page). After the page's scripts ran (the
+embedded uPlot and figures.js), with every run expanded, each check section that was judged
+(data-judgement is not "not judged") must hold a figure drawn by uPlot: a canvas laid out with
+a size (a check with no limit and no window in results.json: a note saying so). Each timing
+diagram has a lane per captured trace lane, its expected window and limit drawn on the canvas
+(figures.js records what landed inside the plot). The page must throw no JavaScript error;
+the sections must be as many as results.json's checks; a failing campaign's summary must link
+each failed check. The trend page of two nights is checked the same way. A screenshot of each
+report is written beside it (report.png).
 
 Usage: check_report_browser.py HILRIG SOURCE_DIR SCRATCH_DIR CHROMIUM
 """
@@ -17,29 +21,47 @@ import shutil
 import subprocess
 import sys
 
-# Per check section: its word, and how many figures hold an SVG laid out with a size. Then
-# the summary's links to failed checks, each pointing at a section that exists.
+# Installed before the page's own scripts: every uncaught error and rejected promise recorded.
+CATCH_ERRORS = """window.__errors = [];
+window.addEventListener('error', e => window.__errors.push(String(e.message || e.error)));
+window.addEventListener('unhandledrejection', e => window.__errors.push(String(e.reason)));"""
+
+# Per check section: its word, how many figures hold a uPlot canvas laid out with a size (or
+# are a note), and its timing diagrams. Then the summary's links to failed checks, each
+# pointing at a section that exists, and the page's errors.
 INSPECT = """JSON.stringify((() => {
   document.querySelectorAll('details').forEach(d => { d.open = true; });
   const laidOut = e => e.getBoundingClientRect().width > 0 && e.getBoundingClientRect().height > 0;
-  // A timing diagram: its lanes by role, and whether its expected window and limit are drawn
-  // inside the figure's box.
-  const timing = svg => {
-    const box = svg.getBoundingClientRect();
-    const inside = e => { const r = e.getBoundingClientRect();
-      return r.left >= box.left - 1 && r.right <= box.right + 1 && r.top >= box.top - 1 && r.bottom <= box.bottom + 1; };
-    const lanes = role => [...svg.querySelectorAll('g.lane.' + role)].filter(laidOut).map(g => g.dataset.lane);
+  const drawn = f => [...f.querySelectorAll('.uplot canvas')].some(laidOut);
+  // A timing diagram: its lanes by role (each a uPlot canvas), and how many expected windows
+  // and limit lines the top lane drew inside its plot.
+  const timing = f => {
+    const lanes = role => [...f.querySelectorAll('div.chart.lane.' + role)]
+      .filter(d => [...d.querySelectorAll('canvas')].some(laidOut)).map(d => d.dataset.lane);
+    const top = f.querySelector('div.chart.lane');
     return {stimulus: lanes('stimulus'), count: lanes('count'), output: lanes('output'), rate: lanes('rate'),
-            expected: [...svg.querySelectorAll('rect.expected')].filter(inside).length,
-            limits: [...svg.querySelectorAll('line.limit')].filter(inside).length};
+            expected: Number(top.dataset.expected), limits: Number(top.dataset.limits)};
+  };
+  const figures = s => [...s.querySelectorAll('figure.evidence')];
+  // Any other figure: its kind, whether uPlot drew it, the limits its data has and those drawn
+  // inside its plots (every limit always on the canvas).
+  const others = f => {
+    const data = JSON.parse(f.querySelector('script.figure-data').textContent);
+    const limits = data.charts.flatMap(c => (c.vlines || []).concat(c.hlines || [])).filter(l => l.cls === 'limit');
+    const onCanvas = [...f.querySelectorAll('div.chart')].reduce((n, d) => n + Number(d.dataset.limits), 0);
+    return [f.dataset.kind, drawn(f) ? 1 : 0, limits.length, onCanvas];
   };
   const sections = [...document.querySelectorAll('section.check')].map(s => [
     s.dataset.judgement,
-    [...s.querySelectorAll('figure.evidence > svg')].filter(laidOut).length,
-    [...s.querySelectorAll('figure.evidence > svg')].filter(g => g.querySelector('g.lane')).map(timing)]);
+    figures(s).filter(f => drawn(f)).length,
+    figures(s).filter(f => f.classList.contains('note')).length,
+    figures(s).filter(f => f.dataset.kind === 'timing').map(timing),
+    figures(s).filter(f => f.dataset.kind !== 'timing' && !f.classList.contains('note')).map(others)]);
   const links = [...document.querySelectorAll('ul.failures a')].map(a => a.getAttribute('href'));
   const dangling = links.filter(h => !document.getElementById(h.slice(1)));
-  return {sections, links, dangling};
+  const trend = [...document.querySelectorAll('figure.evidence[data-kind=trend]')].map(others);
+  return {sections, links, dangling, trend, errors: window.__errors,
+          undrawn: [...document.querySelectorAll('figure.evidence[data-kind]')].filter(f => !f.dataset.drawn).length};
 })())"""
 
 
@@ -76,6 +98,18 @@ def timing_problems(name, check, timings, encoder):
     return out
 
 
+def figure_problems(name, check, others):
+    """Every figure other than a timing diagram drawn by uPlot, each limit in its data drawn
+    inside its plot (a histogram's limit line is on the canvas however far it is)."""
+    out = []
+    for kind, drawn, limits, on_canvas in others:
+        if not drawn:
+            out.append(f"{name}: {check}: its {kind} figure has no uPlot canvas")
+        if on_canvas != limits:
+            out.append(f"{name}: {check}: {kind} figure draws {on_canvas} of its {limits} limits on the canvas")
+    return out
+
+
 def child_fds(read_end, write_end):
     """In the child: the pipe ends as fds 3 and 4, inheritable (os.pipe's are close-on-exec)."""
     r, w = os.dup(read_end), os.dup(write_end)  # above 4: neither dup2 below clobbers the other
@@ -102,6 +136,7 @@ class Browser:
         target = self.call("Target.createTarget", {"url": "about:blank"})["targetId"]
         self.session = self.call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
         self.call("Page.enable", session=True)
+        self.call("Page.addScriptToEvaluateOnNewDocument", {"source": CATCH_ERRORS}, session=True)
         self.call("Emulation.setDeviceMetricsOverride",
                   {"width": 900, "height": 1400, "deviceScaleFactor": 1, "mobile": False}, session=True)
 
@@ -152,6 +187,23 @@ class Browser:
             self.proc.kill()
 
 
+def trend_problems(hilrig, browser, scratch, reports):
+    """hilrig trend over two nights of one campaign (the same results twice): a figure per
+    measurement, each drawn with its limits on the canvas, and no JavaScript error."""
+    night = next(r for r in reports if r.parent.name == "ans1_throughput").parent / "results.json"
+    page = scratch / "trend.html"
+    subprocess.run([hilrig, "trend", str(night), str(night), "--out", str(page)], capture_output=True)
+    if not page.exists():
+        return ["hilrig trend wrote no page"]
+    found = browser.inspect(page, scratch / "trend.png")
+    measurements = sum(len(c["measurements"]) for run in json.loads(night.read_text())["runs"] for c in run["checks"])
+    out = figure_problems("trend", "trend", found["trend"])
+    out += [f"trend: JavaScript error: {e}" for e in found["errors"]]
+    if len(found["trend"]) != measurements:
+        out.append(f"trend: {len(found['trend'])} figures for {measurements} measurements")
+    return out
+
+
 def main():
     hilrig, src, scratch, chromium = sys.argv[1:5]
     scratch = pathlib.Path(scratch)
@@ -189,15 +241,21 @@ def main():
             encoder = toml is not None and 'rig = "enc.A"' in toml.read_text()
             if len(found["sections"]) != len(checks):
                 problems.append(f"{name}: {len(found['sections'])} check sections, {len(checks)} in results.json")
-            for (word, figures, timings), c in zip(found["sections"], checks):
+            for (word, figures, notes, timings, others), c in zip(found["sections"], checks):
                 problems += timing_problems(name, c, timings, encoder)
+                problems += figure_problems(name, c["check"], others)
                 drawn_traces += len(c.get("traces", []))
                 if word != c["outcome"]:
                     problems.append(f"{name}: {c['check']} reads {word}, results.json {c['outcome']}")
                 if word != "not judged":
                     judged_total += 1
-                    if figures == 0:
-                        problems.append(f"{name}: {c['check']} ({word}) has no figure laid out")
+                    # Only a check with nothing to draw (no limit, no window) may show a note instead.
+                    drawable = any("lower" in m or "upper" in m or "window" in m for m in c["measurements"])
+                    if figures == 0 and (drawable or notes == 0):
+                        problems.append(f"{name}: {c['check']} ({word}) has no figure drawn by uPlot")
+            problems += [f"{name}: JavaScript error: {e}" for e in found["errors"]]
+            if found["undrawn"]:
+                problems.append(f"{name}: {found['undrawn']} figures not drawn")
             bad = sum(1 for c in checks if c["outcome"] in ("fail", "error"))
             if len(found["links"]) < bad or found["dangling"]:
                 problems.append(f"{name}: {bad} failed checks, summary links {found['links']}, "
@@ -207,6 +265,7 @@ def main():
             png = report.parent / "report.png"
             if png.read_bytes()[:8] != b"\x89PNG\r\n\x1a\n":
                 problems.append(f"{name}: no screenshot")
+        problems += trend_problems(hilrig, browser, scratch, reports)
     finally:
         browser.close()
     if drawn_traces == 0:

@@ -4,14 +4,15 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <regex>
 
 #include <fmt/format.h>
 
+#include "rig/results/figure_data.hpp"
 #include "rig/results/number_format.hpp"
+#include "rig/results/report_assets.hpp"
 #include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
-#include "rig/results/svg.hpp"
+#include "rig/results/timing_figures.hpp"
 #include "sample_campaign.hpp"
 
 namespace hilrig::rig {
@@ -54,15 +55,6 @@ Measurement measured(const std::string& name, double value, std::optional<double
   m.upper = hi;
   m.outcome = o;
   return m;
-}
-
-// Every x coordinate the markup draws at.
-std::vector<double> xs(const std::string& svg) {
-  std::vector<double> out;
-  const std::regex re("\\b(?:x|x1|x2|cx)=\"(-?[0-9.]+)\"");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it)
-    out.push_back(std::stod((*it)[1]));
-  return out;
 }
 
 // A long campaign's report (issue 19, "Runs: scale linearly"): the first 100 runs that did not
@@ -110,11 +102,15 @@ TEST(Report, SelfContainedWithAFigureForEveryCheck) {
   const auto secs = sections(html);
   ASSERT_EQ(secs.size(), 6U); // 3 runs x (throughput, advance)
   for (const auto& s : secs)
-    EXPECT_NE(s.body.find("<figure class=\"evidence\"><svg"), std::string::npos) << s.body;
-  EXPECT_EQ(count_of(html, "histogram of "), 3U);
+    EXPECT_NE(s.body.find("<script type=\"application/json\" class=\"figure-data\">"), std::string::npos)
+        << s.body;
+  EXPECT_EQ(count_of(html, "data-kind=\"histogram\""), 3U);
   EXPECT_NE(html.find("Fault detection"), std::string::npos);
+  // uPlot and the script that draws the figures are in the page, once each.
+  EXPECT_EQ(count_of(html, std::string(report_assets::uplot_js())), 1U);
+  EXPECT_EQ(count_of(html, std::string(report_assets::figures_js())), 1U);
   // Nothing fetched from elsewhere; links stay inside the page.
-  for (const char* external : {"src=", "<link", "<script", "@import", "url(", "href=\"h", "href=\"f"})
+  for (const char* external : {"src=", "<link", "@import", "href=\"h", "href=\"f", "fetch("})
     EXPECT_EQ(html.find(external), std::string::npos) << external;
 }
 
@@ -170,36 +166,56 @@ TEST(NumberFormat, NoFloatNoiseAndTimesInTheirUnit) {
   EXPECT_EQ(format_value(3.0, ""), "3");
 }
 
-TEST(Svg, TimingDiagramWithAndWithoutTheEdge) {
+// The figure's marks of one class, in every chart (figure_data.hpp).
+std::vector<nlohmann::json> marks(const nlohmann::json& fig, const char* list, const std::string& cls) {
+  std::vector<nlohmann::json> out;
+  for (const auto& chart : fig["charts"])
+    for (const auto& mark : chart.value(list, nlohmann::json::array()))
+      if (mark.value("cls", "") == cls) out.push_back(mark);
+  return out;
+}
+
+TEST(Figure, TimingDiagramWithAndWithoutTheEdge) {
   Measurement m = measured("a.edge0", 94.0, 93.0, 95.0, Outcome::Pass);
   m.window = TraceWindow{Nanos{1'000'000}, Nanos{1'002'000}};
   m.at = Nanos{1'001'000};
   ASSERT_TRUE(has_timing(m));
-  const std::string with = timing_diagram_svg(m, Judgement::Pass);
-  EXPECT_NE(with.find("edge 1.001 ms"), std::string::npos) << with;
+  const nlohmann::json with = timing_figure(m, Judgement::Pass);
+  ASSERT_EQ(with["charts"].size(), 1U); // no trace: one output lane stepping at the edge
+  const auto& lane = with["charts"][0];
+  // Time from the window's start: the edge 1 us after it.
+  EXPECT_EQ(marks(with, "vlines", "edge").at(0)["at"], 1000.0);
+  EXPECT_EQ(lane["data"][0][1], 1000.0);
+  EXPECT_EQ(lane["data"][1][1], 1);
   // A position tolerance crossed in time: the window itself is the expected one, both limits.
-  EXPECT_NE(with.find("expected 93 counts .. 95 counts"), std::string::npos) << with;
-  EXPECT_EQ(count_of(with, "class=\"limit\""), 2U) << with;
-  // A missing edge: the window is drawn and says so, in the word's colour.
+  const auto expected = marks(with, "bands", "expected");
+  ASSERT_EQ(expected.size(), 1U);
+  EXPECT_EQ(expected[0]["from"], 0.0);
+  EXPECT_EQ(expected[0]["to"], 2000.0);
+  EXPECT_EQ(expected[0]["label"], "expected 93 counts .. 95 counts");
+  EXPECT_EQ(marks(with, "vlines", "limit").size(), 2U);
+  // A missing edge: the window is drawn and says so, the output in the word's colour.
   m.at.reset();
   m.outcome = Outcome::Fail;
   ASSERT_TRUE(has_timing(m));
-  const std::string missing = timing_diagram_svg(m, Judgement::Fail);
-  EXPECT_NE(missing.find("no edge captured"), std::string::npos);
-  EXPECT_NE(missing.find("stroke=\"#cf222e\" stroke-width=\"1.5\""), std::string::npos);
+  const nlohmann::json missing = timing_figure(m, Judgement::Fail);
+  EXPECT_NE(missing["notes"].get<std::string>().find("no edge captured"), std::string::npos);
+  EXPECT_EQ(missing["charts"][0]["series"][0]["colour"], "#cf222e");
+  EXPECT_TRUE(marks(missing, "vlines", "edge").empty());
   // A passing window-only measurement (a handshake's write to Acknowledge) is no edge diagram.
   m.outcome = Outcome::Pass;
   EXPECT_FALSE(has_timing(m));
-  // An open window (waited to the end of the trace) stays on the canvas.
+  // An open window (waited to the end of the trace): shaded to the figure's right edge.
   m.outcome = Outcome::Fail;
   m.window->end = Nanos::max();
-  for (const double x : xs(timing_diagram_svg(m, Judgement::Fail))) EXPECT_LE(x, 600.0);
+  const nlohmann::json open = timing_figure(m, Judgement::Fail);
+  EXPECT_EQ(marks(open, "bands", "expected").at(0)["to"], open["charts"][0]["x"]["max"]);
 }
 
 // A latency (throughput.max, limit 20 us from the crossing) that came 1 us late: the diagram
 // draws the lanes the run captured, in their order, the expected window [crossing, crossing
-// + 20 us] shaded with the limit dashed at crossing + 20 us, and the count at the edge.
-TEST(Svg, TimingDiagramDrawsTheCapturedLanesAndMarksTheLimit) {
+// + 20 us] shaded with the limit at crossing + 20 us, and the count at the edge.
+TEST(Figure, TimingDiagramDrawsTheCapturedLanesAndMarksTheLimit) {
   Measurement m = measured("on.max", 21.0, std::nullopt, 20.0, Outcome::Fail);
   m.unit = "us";
   m.window = TraceWindow{Nanos{1'000'000}, Nanos{1'021'000}};
@@ -216,34 +232,41 @@ TEST(Svg, TimingDiagramDrawsTheCapturedLanesAndMarksTheLimit) {
   w.lanes.push_back({"enc.A", LaneRole::Stimulus, {{span.begin, 0}, {Nanos{999'999}, 1}}, 0});
   w.lanes.push_back({"shaft.count", LaneRole::Count, {{span.begin, 99}, {Nanos{999'999}, 100}}, 0});
   w.lanes.push_back({"ls1", LaneRole::Output, {{span.begin, 0}, {Nanos{1'021'000}, 1}}, 0});
-  const std::string svg = timing_diagram_svg(m, Judgement::Fail, &w);
-  const auto a = svg.find("data-lane=\"enc.A\""), c = svg.find("data-lane=\"shaft.count\""),
-             o = svg.find("data-lane=\"ls1\"");
-  ASSERT_NE(a, std::string::npos) << svg;
-  ASSERT_NE(c, std::string::npos);
-  ASSERT_NE(o, std::string::npos);
-  EXPECT_LT(a, c);
-  EXPECT_LT(c, o);
-  EXPECT_NE(svg.find("class=\"lane stimulus\""), std::string::npos);
-  EXPECT_NE(svg.find("limit: start + 20 µs"), std::string::npos) << svg;
-  EXPECT_NE(svg.find("count 100 at the edge"), std::string::npos) << svg;
-  // x of crossing + 20 us on the 70..580 px plot of [995.8, 1025.2] us: 70 + 24.2/29.4 * 510.
-  const double limit_x = 70.0 + 24.2 / 29.4 * 510.0;
-  EXPECT_NE(svg.find(fmt::format("class=\"limit\" x1=\"{:.1f}\"", limit_x)), std::string::npos) << svg;
-  EXPECT_EQ(count_of(svg, "class=\"limit\""), 1U); // no lower limit: the start is no limit
-  EXPECT_NE(svg.find(fmt::format("class=\"expected\" x=\"{:.1f}\"", 70.0 + 4.2 / 29.4 * 510.0)),
-            std::string::npos);
-  for (const double x : xs(svg)) EXPECT_LE(x, 600.0);
+  const nlohmann::json fig = timing_figure(m, Judgement::Fail, &w);
+  ASSERT_EQ(fig["charts"].size(), 3U);
+  const char* names[] = {"enc.A", "shaft.count", "ls1"};
+  const char* roles[] = {"stimulus", "count", "output"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto& lane = fig["charts"][i];
+    EXPECT_EQ(lane["lane"], names[i]);
+    EXPECT_EQ(lane["role"], roles[i]);
+    EXPECT_EQ(lane["series"][0]["draw"], "step");
+    // One time axis, relative to the window's start: -4.2 us .. 25.2 us.
+    EXPECT_EQ(lane["x"]["min"], -4200.0);
+    EXPECT_EQ(lane["x"]["max"], 25200.0);
+    EXPECT_EQ(lane["x"]["time"], true);
+  }
+  // The count lane: 99 at the span's start, 100 from 1 ns before the window, held to the end.
+  EXPECT_EQ(fig["charts"][1]["data"], nlohmann::json::parse("[[-4200.0, -1.0, 25200.0], [99, 100, 100]]"));
+  EXPECT_NE(fig["notes"].get<std::string>().find("shaft.count: 100 at the edge"), std::string::npos);
+  const auto limits = marks(fig, "vlines", "limit");
+  ASSERT_EQ(limits.size(), 3U); // the upper limit only (the start is no limit), on every lane
+  EXPECT_EQ(limits[0]["at"], 20000.0);
+  const auto expected = marks(fig, "bands", "expected");
+  EXPECT_EQ(expected.at(0)["from"], 0.0);
+  EXPECT_EQ(expected.at(0)["to"], 20000.0);
+  EXPECT_EQ(expected.at(0)["label"], "limit: start + 20 µs");
+  EXPECT_EQ(fig["charts"][2]["x"]["label"], "time from the window start");
   // A time without a limit (the median) has no expected window: nothing shaded.
   m.upper.reset();
   EXPECT_FALSE(expected_window(m).has_value());
-  const std::string median = timing_diagram_svg(m, Judgement::Pass, &w);
-  EXPECT_EQ(median.find("class=\"expected\""), std::string::npos);
-  EXPECT_NE(median.find("no limit: reported only"), std::string::npos);
+  const nlohmann::json median = timing_figure(m, Judgement::Pass, &w);
+  EXPECT_TRUE(marks(median, "bands", "expected").empty());
+  EXPECT_NE(median["notes"].get<std::string>().find("no limit: reported only"), std::string::npos);
 }
 
 // Diagrams go to the windows that did not pass, then to those with a limit, one per window.
-TEST(Svg, TimingFiguresFailuresFirstThenLimitedOnePerWindow) {
+TEST(Figure, TimingFiguresFailuresFirstThenLimitedOnePerWindow) {
   CheckResult c;
   const auto latency = [](const char* name, std::optional<double> upper, Outcome o, std::int64_t end) {
     Measurement m = measured(name, 1.0, std::nullopt, upper, o);
@@ -262,43 +285,63 @@ TEST(Svg, TimingFiguresFailuresFirstThenLimitedOnePerWindow) {
   EXPECT_EQ(drawn[2]->name, "min");
 }
 
-TEST(Svg, HistogramKeepsEveryLimitOnTheCanvasAndHasEnoughBins) {
-  // Values 1..4 us, limits far beyond (100 us) and below (-50 us): both on the 600 px canvas.
+TEST(Figure, HistogramKeepsEveryLimitOnTheCanvasAndHasEnoughBins) {
+  // Values 1..4 us, limits far beyond (100 us) and below (-50 us): both inside the x range.
   const std::vector<double> v{1.0, 2.0, 3.0, 4.0};
   const std::vector<LimitLine> limits{{"max", 100.0}, {"min", -50.0}};
-  const std::string svg = histogram_svg(v, "us", limits);
-  for (const double x : xs(svg)) {
-    EXPECT_GE(x, 0.0);
-    EXPECT_LE(x, 600.0);
-  }
-  EXPECT_NE(svg.find("max limit 100 µs"), std::string::npos);
-  // At least 10 bins whatever the sample count: 4 values in bins of (4 - 1) / 10 = 0.3 us.
-  EXPECT_NE(svg.find("4 samples in 10 bins of 0.3 µs"), std::string::npos) << svg;
-  EXPECT_EQ(count_of(svg, "<rect "), 4U);
-  EXPECT_NE(svg.find(">count<"), std::string::npos); // the y axis
+  const nlohmann::json fig = histogram_figure(v, "us", limits);
+  const auto& chart = fig["charts"][0];
+  const double lo = chart["x"]["min"], hi = chart["x"]["max"];
+  EXPECT_LT(lo, -50.0);
+  EXPECT_GT(hi, 100.0);
+  const auto lines = marks(fig, "vlines", "limit");
+  ASSERT_EQ(lines.size(), 2U);
+  EXPECT_EQ(lines[0]["label"], "max limit 100 µs");
+  // At least 10 bins whatever the sample count: 4 values in bins of (4 - 1) / 10 = 0.3 us, so
+  // 1, 2 and 3 (floor(3.33), floor(6.67)) and 4 (the last bin) one each.
+  EXPECT_EQ(fig["notes"], "4 samples in 10 bins of 0.3 µs");
+  EXPECT_EQ(chart["data"][1], nlohmann::json::parse("[1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0]"));
+  EXPECT_EQ(chart["y"]["label"], "count");
+  EXPECT_TRUE(histogram_figure({}, "us", limits).is_null());
 }
 
-TEST(Svg, LimitsRowPerLimitedMeasurement) {
+TEST(Figure, LimitsChartPerLimitedMeasurement) {
   const Measurement a = measured("a", 96.0, 93.0, 95.0, Outcome::Fail);
   const Measurement b = measured("b", 2.0, 1.0, std::nullopt, Outcome::Pass);
   const Measurement c = measured("c", 7.0, std::nullopt, std::nullopt, Outcome::Pass);
   const std::vector<ShownMeasurement> rows{
       {&a, Judgement::Fail}, {&b, Judgement::Pass}, {&c, Judgement::Pass}};
-  const std::string svg = limits_svg(rows);
-  EXPECT_EQ(count_of(svg, "<circle "), 2U); // c has no limit: no row
-  EXPECT_NE(svg.find("fill=\"#cf222e\">96 counts</text>"), std::string::npos) << svg;
-  for (const double x : xs(svg)) EXPECT_LE(x, 600.0);
+  const nlohmann::json fig = limits_figure(rows);
+  ASSERT_EQ(fig["charts"].size(), 2U); // c has no limit: no chart
+  const auto& first = fig["charts"][0];
+  EXPECT_EQ(first["series"][0]["colour"], "#cf222e");
+  EXPECT_EQ(first["x"]["label"], "a: 96 counts");
+  EXPECT_EQ(first["data"][0][0], 96.0);
+  // 93 .. 96 padded by a quarter of the span: every limit and the value on the axis.
+  EXPECT_EQ(first["x"]["min"], 92.25);
+  EXPECT_EQ(first["x"]["max"], 96.75);
+  EXPECT_EQ(marks(fig, "vlines", "limit").size(), 3U);
+  const std::vector<ShownMeasurement> none{{&c, Judgement::Pass}};
+  EXPECT_TRUE(limits_figure(none).is_null());
 }
 
-TEST(Svg, ProbesOnePointEachAgainstTheBand) {
+TEST(Figure, ProbesOnePointEachAgainstTheBand) {
   const std::vector<Probe> probes{{Nanos{20'000}, false}, {Nanos{40'000}, true}, {Nanos{30'000}, true}};
-  const std::string svg = probes_svg(probes, 26'500.0, 28'500.0);
-  EXPECT_EQ(count_of(svg, "<circle "), 3U);
-  EXPECT_NE(svg.find("probe 1: 20 µs rejected"), std::string::npos);
-  EXPECT_NE(svg.find("filter band"), std::string::npos);
+  const nlohmann::json fig = probes_figure(probes, 26'500.0, 28'500.0);
+  const auto& chart = fig["charts"][0];
+  // By width, numbered in the order they ran.
+  EXPECT_EQ(chart["data"][0], nlohmann::json::parse("[20000, 30000, 40000]"));
+  EXPECT_EQ(chart["data"][1], nlohmann::json::parse("[null, 1, 1]"));
+  EXPECT_EQ(chart["data"][2], nlohmann::json::parse("[0, null, null]"));
+  EXPECT_EQ(chart["series"][0]["numbers"], nlohmann::json::parse(R"(["1", "3", "2"])"));
+  const auto band = marks(fig, "bands", "expected");
+  ASSERT_EQ(band.size(), 1U);
+  EXPECT_EQ(band[0]["label"], "filter band");
+  EXPECT_EQ(band[0]["from"], 26'500.0);
+  EXPECT_EQ(band[0]["to"], 28'500.0);
 }
 
-TEST(Svg, MotionPlotsSpeedAndPositionWithEventsAndMarkers) {
+TEST(Figure, MotionPlotsSpeedAndPositionWithEventsAndMarkers) {
   MotionRecord m;
   // Constant deceleration from 1000 counts/s to rest over 100 ms: 50 counts.
   for (int i = 0; i <= 10; ++i) {
@@ -307,12 +350,38 @@ TEST(Svg, MotionPlotsSpeedAndPositionWithEventsAndMarkers) {
         {Nanos{static_cast<std::int64_t>(t * 1e9)}, 1000.0 * t - 5000.0 * t * t, 1000.0 - 10000.0 * t});
   }
   m.events.push_back({Nanos{0}, "valve off: brake applied, clutch released"});
-  const std::vector<Marker> marks{{Nanos{100'000'000}, "standstill", "#1a7f37"}};
-  const std::string svg = motion_svg(m, marks);
-  EXPECT_EQ(count_of(svg, "<polyline "), 2U);
-  EXPECT_NE(svg.find("valve off: brake applied, clutch released 0 ns"), std::string::npos);
-  EXPECT_NE(svg.find("standstill 100 ms"), std::string::npos);
-  EXPECT_TRUE(motion_svg(MotionRecord{}, marks).empty());
+  const std::vector<Marker> marks_at{{Nanos{100'000'000}, "standstill", "#1a7f37", "event"},
+                                     {Nanos{90'000'000}, "limit", "#cf222e", "limit"}};
+  const nlohmann::json fig = motion_figure(m, marks_at);
+  const auto& chart = fig["charts"][0];
+  EXPECT_EQ(chart["series"].size(), 2U);
+  EXPECT_EQ(chart["series"][1]["scale"], "y2"); // position on its own axis
+  EXPECT_EQ(chart["data"][1][10], 0.0);         // at rest at 100 ms
+  EXPECT_EQ(chart["data"][2][10], 50.0);        // 50 counts travelled
+  const auto events = marks(fig, "vlines", "event");
+  ASSERT_EQ(events.size(), 2U);
+  EXPECT_EQ(events[0]["label"], "valve off: brake applied, clutch released 0 ns");
+  EXPECT_EQ(events[1]["label"], "standstill 100 ms");
+  EXPECT_EQ(marks(fig, "vlines", "limit").at(0)["at"], 90'000'000.0);
+  // Time from `origin`: the brake's applied instant at 0.
+  const nlohmann::json from_applied =
+      motion_figure(m, marks_at, Nanos{0}, Nanos{100'000'000}, Nanos{10'000'000});
+  EXPECT_EQ(from_applied["charts"][0]["x"]["min"], -10'000'000.0);
+  EXPECT_TRUE(motion_figure(MotionRecord{}, marks_at).is_null());
+}
+
+TEST(Figure, TrendKeepsTheLimitsOnTheCanvas) {
+  const std::vector<TrendPoint> nights{
+      {"mon", 10.0, Outcome::Pass}, {"tue", std::nullopt, Outcome::Error}, {"wed", 30.0, Outcome::Fail}};
+  const nlohmann::json fig = trend_figure(nights, "us", 0.0, 100.0);
+  const auto& chart = fig["charts"][0];
+  EXPECT_LE(chart["y"]["min"].get<double>(), 0.0);
+  EXPECT_GE(chart["y"]["max"].get<double>(), 100.0);
+  EXPECT_EQ(marks(fig, "hlines", "limit").size(), 2U);
+  EXPECT_EQ(chart["data"][1], nlohmann::json::parse("[10.0, null, 30.0]"));
+  EXPECT_EQ(chart["data"][2], nlohmann::json::parse("[10.0, null, null]")); // pass
+  EXPECT_EQ(chart["data"][3], nlohmann::json::parse("[null, null, 30.0]")); // fail
+  EXPECT_EQ(chart["x"]["names"], nlohmann::json::parse(R"(["mon", "tue", "wed"])"));
 }
 
 } // namespace
