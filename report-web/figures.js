@@ -84,6 +84,20 @@
       if (b.cls === 'expected' && x0 >= bbox.left && x1 <= right) seen.expected++;
       if (chart.labels && b.label) text(ctx, b.label, (x0 + x1) / 2, bbox.top + px(10), '#1a7f37', bbox);
     }
+    // Bands of values (an expected rate), across the plot; their words at their left.
+    for (const b of chart.hbands || []) {
+      const y0 = Math.max(u.valToPos(b.to, 'y', true), bbox.top);
+      const y1 = Math.min(u.valToPos(b.from, 'y', true), bbox.top + bbox.height);
+      if (y1 < y0) continue;
+      ctx.fillStyle = b.colour;
+      ctx.fillRect(bbox.left, y0, bbox.width, Math.max(y1 - y0, px(1)));
+      if (b.cls === 'expected' && y0 > bbox.top - px(1) && y1 < bbox.top + bbox.height + px(1)) seen.rate++;
+      if (b.label) {
+        ctx.font = px(10) + 'px sans-serif';
+        ctx.fillStyle = '#bf3989';
+        ctx.fillText(b.label, bbox.left + px(4), Math.max(y0 - px(3), bbox.top + px(10)));
+      }
+    }
     ctx.restore();
   }
 
@@ -156,7 +170,7 @@
       box.appendChild(title);
     }
     into.appendChild(box);
-    const seen = {expected: 0, limits: 0};
+    const seen = {expected: 0, limits: 0, rate: 0};
     const scales = {x: {time: false, range: () => [chart.x.min, chart.x.max]}, y: {range: range(chart.y)}};
     const axes = [xAxis(chart, bottom), yAxis(chart, chart.y, 'y', 3)];
     if (chart.y2) {
@@ -172,11 +186,12 @@
       scales, axes,
       series: [{}].concat(chart.series.map(series)),
       hooks: {
-        drawClear: [u => { seen.expected = 0; seen.limits = 0; drawBands(u, chart, seen); }],
+        drawClear: [u => { seen.expected = 0; seen.limits = 0; seen.rate = 0; drawBands(u, chart, seen); }],
         draw: [u => {
           drawMarks(u, chart, seen);
           box.dataset.expected = seen.expected;
           box.dataset.limits = seen.limits;
+          box.dataset.rateExpected = seen.rate;
         }],
       },
     };

@@ -85,7 +85,7 @@ cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
                   const std::vector<std::pair<std::string, rig::LaneRole>>& lanes) {
   std::vector<rig::WindowTrace> out;
   for (const rig::Measurement* m : rig::timing_figures(check)) {
-    rig::WindowTrace w{*m->window, rig::figure_span(*m), {}};
+    rig::WindowTrace w{*m->window, rig::figure_span(rig::as_drawn(check, *m)), {}};
     for (const auto& [name, role] : lanes) w.lanes.push_back(rig::TraceLane{name, role, {}, 0});
     out.push_back(std::move(w));
   }

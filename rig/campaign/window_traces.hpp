@@ -23,8 +23,8 @@ inline constexpr const char* kRateSuffix = " rate";
 [[nodiscard]] std::vector<std::pair<std::string, rig::LaneRole>> lanes_of(const checks::CheckParams& params,
                                                                           const TraceRecorder& trace);
 
-// One WindowTrace per timing_figures(check) measurement, over its figure_span(), in one
-// pass over the trace's samples.
+// One WindowTrace per timing_figures(check) measurement, over the figure_span() of the
+// measurement as drawn (as_drawn()), in one pass over the trace's samples.
 [[nodiscard]] std::vector<rig::WindowTrace>
 cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
                   const std::vector<std::pair<std::string, rig::LaneRole>>& lanes);

@@ -99,7 +99,8 @@ const char* outcome_colour(Judgement j) {
   return "#9a6700";
 }
 
-json timing_figure(const Measurement& m, Judgement shown, const WindowTrace* trace) {
+json timing_figure(const Measurement& m, Judgement shown, const WindowTrace* trace,
+                   std::optional<RateBand> rate) {
   if (!m.window) return nullptr;
   const TraceWindow span = trace ? trace->span : figure_span(m);
   const Nanos origin = m.window->begin;
@@ -137,6 +138,22 @@ json timing_figure(const Measurement& m, Judgement shown, const WindowTrace* tra
     chart["bands"] = bands;
     chart["vlines"] = vlines;
     chart["labels"] = charts.empty(); // the marks' words once, on the top lane
+    if (lane.role == LaneRole::Rate && rate) {
+      // The expected peak as a band of rates over the whole lane; the axis holds it.
+      const double peak = static_cast<double>(
+          std::max_element(lane.changes.begin(), lane.changes.end(), [](const auto& a, const auto& b) {
+            return a.value < b.value;
+          })->value);
+      const double lo = rate->lower.value_or(0.0), hi = rate->upper.value_or(std::max(peak, lo));
+      chart["hbands"] = {
+          {{"from", lo},
+           {"to", hi},
+           {"colour", "rgba(191,57,137,0.15)"},
+           {"label", "expected peak " + format_number(lo) + " .. " + format_number(hi) + " steps/s"},
+           {"cls", "expected"}}};
+      chart["y"]["min"] = 0.0;
+      chart["y"]["max"] = std::max(peak, hi) * 1.1;
+    }
     if (lane.role == LaneRole::Count && m.at)
       notes += fmt::format("{}: {} at the edge; ", lane.name, value_at(lane, *m.at));
     if (lane.thinned > 0) notes += fmt::format("{}: {} changes thinned to fit; ", lane.name, lane.thinned);

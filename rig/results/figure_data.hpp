@@ -13,6 +13,7 @@
 
 #include "rig/results/measurement.hpp"
 #include "rig/results/motion_record.hpp"
+#include "rig/results/timing_figures.hpp"
 
 namespace hilrig::rig {
 
@@ -25,8 +26,10 @@ namespace hilrig::rig {
 // per lane the run captured over its span (stimulus and output as logic levels, the shaft's
 // count and a step rate as values), all stepped; without, one output lane stepping at `at`.
 // Null without a window.
+// A rate lane shows `rate`, the step rate band expected at the move's peak, shaded.
 [[nodiscard]] nlohmann::json timing_figure(const Measurement& m, Judgement shown,
-                                           const WindowTrace* trace = nullptr);
+                                           const WindowTrace* trace = nullptr,
+                                           std::optional<RateBand> rate = std::nullopt);
 
 // One chart per measurement with a limit: its value (a point in the colour of its word) on
 // an axis in its unit holding every limit, the passing band shaded. Null when none has one.

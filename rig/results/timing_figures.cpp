@@ -71,6 +71,24 @@ std::vector<const Measurement*> timing_figures(const CheckResult& c) {
   return drawn;
 }
 
+Measurement as_drawn(const CheckResult& c, const Measurement& m) {
+  Measurement drawn = m;
+  if (c.kind != "pulse_width" || !is_time_from_start(m)) return drawn;
+  for (const auto& other : c.measurements) {
+    if (other.unit != m.unit) continue;
+    if (other.lower) drawn.lower = other.lower;
+    if (other.upper) drawn.upper = other.upper;
+  }
+  return drawn;
+}
+
+std::optional<RateBand> expected_rate(const CheckResult& c) {
+  if (c.kind != "shaft_move") return std::nullopt;
+  for (const auto& m : c.measurements)
+    if (m.name.ends_with(".peak_speed") && (m.lower || m.upper)) return RateBand{m.lower, m.upper};
+  return std::nullopt;
+}
+
 const WindowTrace* trace_for(const CheckResult& c, const Measurement& m) {
   if (!m.window) return nullptr;
   for (const auto& t : c.traces)

@@ -26,6 +26,18 @@ inline constexpr std::size_t kTimingFigures = 6;
 // crossed in time, or the time a missing edge was waited for).
 [[nodiscard]] std::optional<TraceWindow> expected_window(const Measurement& m);
 
+// The measurement as its diagram shows it: its own limits, except a pulse_width check's pulse,
+// which shows the one band [min, max] every pulse must lie in (the check judges its shortest
+// pulse against min and its longest against max: each alone shows half the band).
+[[nodiscard]] Measurement as_drawn(const CheckResult& c, const Measurement& m);
+
+// The peak step rate band [lower, upper] (steps/s) a shaft_move check expects, from its
+// peak_speed measurement's limits; none without one.
+struct RateBand {
+  std::optional<double> lower, upper;
+};
+[[nodiscard]] std::optional<RateBand> expected_rate(const CheckResult& c);
+
 // The run time a diagram shows: the window, the expected window and the edge, with a fifth
 // of their span (at least 1 us) either side; an open expected window shows at least 1 ms.
 [[nodiscard]] TraceWindow figure_span(const Measurement& m);

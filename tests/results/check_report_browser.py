@@ -40,7 +40,8 @@ INSPECT = """JSON.stringify((() => {
       .filter(d => [...d.querySelectorAll('canvas')].some(laidOut)).map(d => d.dataset.lane);
     const top = f.querySelector('div.chart.lane');
     return {stimulus: lanes('stimulus'), count: lanes('count'), output: lanes('output'), rate: lanes('rate'),
-            expected: Number(top.dataset.expected), limits: Number(top.dataset.limits)};
+            expected: Number(top.dataset.expected), limits: Number(top.dataset.limits),
+            rate_expected: [...f.querySelectorAll('div.chart.lane.rate')].map(d => Number(d.dataset.rateExpected))};
   };
   const figures = s => [...s.querySelectorAll('figure.evidence')];
   // Any other figure: its kind, whether uPlot drew it, the limits its data has and those drawn
@@ -74,9 +75,15 @@ def timing_problems(name, check, timings, encoder):
     stimulus (enc.A/enc.B, when the campaign wires the encoder: a resolver board's stators are
     not drawn) and shaft.count for a check on the shaft, the check's output line,
     and its expected window and limit drawn inside the figure (a limitless time: none); a
-    shaft_move also its step rate against time."""
+    shaft_move also its step rate against time with the expected peak rate shaded (when the
+    check limits it), a pulse_width each pulse against the whole [min, max] band."""
     traces = check.get("traces", [])
     out = []
+    given = lambda m, key: m.get(key) is not None  # noqa: E731 - results.json writes null
+    peak_limited = any(m["name"].endswith(".peak_speed") and (given(m, "lower") or given(m, "upper"))
+                       for m in check["measurements"])
+    band = (any(given(m, "lower") for m in check["measurements"] if m.get("unit") == "us")
+            and any(given(m, "upper") for m in check["measurements"] if m.get("unit") == "us"))
     if len(timings) != len(traces):
         return [f"{name}: {check['check']}: {len(timings)} timing diagrams for {len(traces)} cut windows"]
     for t, cut in zip(timings, traces):
@@ -91,6 +98,11 @@ def timing_problems(name, check, timings, encoder):
             out.append(f"{name}: {check['check']}: stimulus lanes {t['stimulus']}, not the encoder's A/B")
         if check["kind"] == "shaft_move" and len(t["rate"]) != 1:
             out.append(f"{name}: {check['check']}: no step rate against time in its timing diagram")
+        if check["kind"] == "shaft_move" and peak_limited and t["rate_expected"] != [1]:
+            out.append(f"{name}: {check['check']}: its expected peak step rate is not drawn on the rate lane")
+        if check["kind"] == "pulse_width" and band and (t["expected"], t["limits"]) != (1, 2):
+            out.append(f"{name}: {check['check']}: the [min, max] band is not drawn whole: expected window "
+                       f"{t['expected']}, limit lines {t['limits']}")
         if not t["output"]:
             out.append(f"{name}: {check['check']}: no output lane in its timing diagram")
         if t["expected"] > 1 or (t["expected"] == 1) != (t["limits"] > 0):
@@ -250,7 +262,7 @@ def main():
                 if word != "not judged":
                     judged_total += 1
                     # Only a check with nothing to draw (no limit, no window) may show a note instead.
-                    drawable = any("lower" in m or "upper" in m or "window" in m for m in c["measurements"])
+                    drawable = any(m.get(k) is not None for m in c["measurements"] for k in ("lower", "upper", "window"))
                     if figures == 0 and (drawable or notes == 0):
                         problems.append(f"{name}: {c['check']} ({word}) has no figure drawn by uPlot")
             problems += [f"{name}: JavaScript error: {e}" for e in found["errors"]]

@@ -285,6 +285,67 @@ TEST(Figure, TimingFiguresFailuresFirstThenLimitedOnePerWindow) {
   EXPECT_EQ(drawn[2]->name, "min");
 }
 
+// A pulse_width check judges its shortest pulse against min_us and its longest against
+// max_us; each pulse's diagram shows the whole band. ssi7361_frame_timing.toml's clock-low
+// half period inside a frame: min T/2 = 4 us at 125 kHz, max TINT - 24.5 T = 304 us (the
+// ssi7361 manual, L1090-L1091 and L1123, as the campaign cites it).
+TEST(Figure, PulseWidthPulseShowsTheWholeMinMaxBand) {
+  CheckResult c;
+  c.kind = "pulse_width";
+  const auto pulse = [](const char* name, std::optional<double> lo, std::optional<double> hi) {
+    Measurement m = measured(name, 4.0, lo, hi, Outcome::Pass);
+    m.unit = "us";
+    m.window = TraceWindow{Nanos{100'000}, Nanos{104'000}};
+    m.at = Nanos{104'000};
+    return m;
+  };
+  c.measurements = {measured("clk.count", 25.0, 1.0, std::nullopt, Outcome::Pass),
+                    pulse("clk.shortest", 4.0, std::nullopt), pulse("clk.longest", std::nullopt, 304.0)};
+  for (const Measurement& m : {c.measurements[1], c.measurements[2]}) {
+    const Measurement drawn = as_drawn(c, m);
+    EXPECT_EQ(drawn.lower, 4.0);
+    EXPECT_EQ(drawn.upper, 304.0);
+    const auto want = expected_window(drawn);
+    ASSERT_TRUE(want.has_value());
+    EXPECT_EQ(want->begin, Nanos{104'000});
+    EXPECT_EQ(want->end, Nanos{404'000});
+    // The diagram's span holds the band's far end, so both limits are on it.
+    EXPECT_GT(figure_span(drawn).end, want->end);
+    EXPECT_EQ(marks(timing_figure(drawn, Judgement::Pass), "vlines", "limit").size(), 2U);
+  }
+  // Another kind's measurement keeps its own limits.
+  c.kind = "throughput";
+  EXPECT_FALSE(as_drawn(c, c.measurements[1]).upper.has_value());
+}
+
+// smd23e_homing.toml's creep at the starting speed v_s = 1000 steps/s, peak within 1 %: the
+// rate lane shades 990 .. 1010 steps/s and its axis holds the band.
+TEST(Figure, ShaftMoveRateLaneShowsTheExpectedPeak) {
+  CheckResult c;
+  c.kind = "shaft_move";
+  Measurement peak = measured("creep.peak_speed", 1000.0, 990.0, 1010.0, Outcome::Pass);
+  peak.unit = "steps/s";
+  peak.window = TraceWindow{Nanos{0}, Nanos{1'000'000}};
+  peak.at = Nanos{1'000'000};
+  c.measurements = {measured("creep.steps", 160.0, 158.0, 162.0, Outcome::Pass), peak};
+  const auto band = expected_rate(c);
+  ASSERT_TRUE(band.has_value());
+  EXPECT_EQ(band->lower, 990.0);
+  EXPECT_EQ(band->upper, 1010.0);
+  WindowTrace w{*peak.window, figure_span(peak), {}};
+  w.lanes.push_back({"step rate", LaneRole::Rate, {{w.span.begin, 0}, {Nanos{1'000'000}, 1000}}, 0});
+  const nlohmann::json fig = timing_figure(peak, Judgement::Pass, &w, band);
+  const auto& lane = fig["charts"][0];
+  ASSERT_EQ(lane["hbands"].size(), 1U);
+  EXPECT_EQ(lane["hbands"][0]["from"], 990.0);
+  EXPECT_EQ(lane["hbands"][0]["to"], 1010.0);
+  EXPECT_GE(lane["y"]["max"].get<double>(), 1010.0);
+  EXPECT_EQ(lane["y"]["min"], 0.0);
+  // A check without a peak limit, or of another kind, shades none.
+  c.measurements.pop_back();
+  EXPECT_FALSE(expected_rate(c).has_value());
+}
+
 TEST(Figure, HistogramKeepsEveryLimitOnTheCanvasAndHasEnoughBins) {
   // Values 1..4 us, limits far beyond (100 us) and below (-50 us): both inside the x range.
   const std::vector<double> v{1.0, 2.0, 3.0, 4.0};
