@@ -9,8 +9,11 @@
   const AXIS = 70; // every chart's y axis the same width: stacked lanes share one time axis
   const px = n => n * uPlot.pxRatio;
 
-  // A readable number: at most 6 significant digits, no float noise.
-  const num = v => String(Number(v.toPrecision(6)));
+  // Tick labels in `per` units, with the decimals the tick step needs (100.0005 next to 100.001).
+  const ticks = per => (u, splits, axis, space, incr) => {
+    const decimals = Math.min(Math.max(0, -Math.floor(Math.log10(incr / per) + 1e-9)), 9);
+    return splits.map(v => String(Number((v / per).toFixed(decimals))));
+  };
   // The unit a time span in ns reads in.
   const timeUnit = span => span < 2e3 ? ['ns', 1] : span < 2e6 ? ['\u00b5s', 1e3] : span < 2e9 ? ['ms', 1e6] : ['s', 1e9];
 
@@ -20,14 +23,14 @@
     if (x.time) {
       const [unit, per] = timeUnit(Math.max(Math.abs(x.min), Math.abs(x.max), x.max - x.min));
       axis.label = x.label ? x.label + ' (' + unit + ')' : unit;
-      axis.values = (u, splits) => splits.map(v => num(v / per));
+      axis.values = ticks(per);
     } else if (x.names) {
       axis.label = x.label;
       axis.incrs = [1, 2, 5, 10, 20, 50, 100, 200, 500];
       axis.values = (u, splits) => splits.map(v => (Number.isInteger(v) && x.names[v] !== undefined ? x.names[v] : ''));
     } else {
       axis.label = x.label;
-      axis.values = (u, splits) => splits.map(num);
+      axis.values = ticks(1);
     }
     axis.labelSize = 18;
     return axis;
@@ -35,7 +38,7 @@
 
   function yAxis(chart, y, scale, side) {
     const label = y.label; // a lane's name is its title above it
-    const axis = {scale, side, size: AXIS, label, labelSize: 16, show: !y.hidden, values: (u, s) => s.map(num)};
+    const axis = {scale, side, size: AXIS, label, labelSize: 16, show: !y.hidden, values: ticks(1)};
     if (y.logic) {
       axis.splits = () => [0, 1];
       axis.values = (u, s) => s.map(String);
