@@ -200,4 +200,17 @@ Nanos can_frame_duration(const CanFrameBits& bits, const CanBitTiming& timing) {
   return Nanos{part(bits.nominal, timing.nominal_bitrate) + part(bits.data, timing.data_bitrate)};
 }
 
+Nanos can_end_of_frame(const CanFrameBits& bits, const CanBitTiming& timing) {
+  return can_frame_duration(bits, timing) - can_frame_duration(CanFrameBits{3, 0, 0}, timing);
+}
+
+std::vector<Nanos> can_end_of_frame_range(const CanFrame& frame, const CanBitTiming& timing) {
+  if (frame.fd) throw std::invalid_argument("CAN: end-of-frame range of a classic frame only");
+  const CanFrameBits worst = can_frame_bits_worst(frame);
+  std::vector<Nanos> out;
+  for (std::uint32_t stuff = 0; stuff <= worst.stuff; ++stuff)
+    out.push_back(can_end_of_frame(CanFrameBits{worst.nominal - worst.stuff + stuff, 0, stuff}, timing));
+  return out;
+}
+
 } // namespace hilrig::virt

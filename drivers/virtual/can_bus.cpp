@@ -84,14 +84,15 @@ struct CanBus::Impl {
     }
     sender = winner;
     current = winner->queue_.front();
-    const Nanos duration = can_frame_duration(can_frame_bits(current), timing);
+    const CanFrameBits bits = can_frame_bits(current);
     if (error && error(current)) {
+      const Nanos duration = can_frame_duration(bits, timing);
       // Sent up to the ACK delimiter (all but EOF and intermission), then the error frame.
       const Nanos until_error = duration - nominal_bits(7 + 3);
       scheduler.after(until_error + nominal_bits(6 + 8 + 3), [this] { error_frame_done(); });
       return;
     }
-    scheduler.after(duration - nominal_bits(3), [this] { end_of_frame(); });
+    scheduler.after(can_end_of_frame(bits, timing), [this] { end_of_frame(); });
   }
 
   void error_frame_done() {

@@ -28,6 +28,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/can_frame.hpp"
 #include "core/scheduler.hpp"
@@ -70,6 +71,12 @@ struct CanFrameBits {
 // Worst case: the maximum stuff bits any frame of this format and length could need.
 [[nodiscard]] CanFrameBits can_frame_bits_worst(const CanFrame& frame);
 [[nodiscard]] Nanos can_frame_duration(const CanFrameBits& bits, const CanBitTiming& timing);
+// From SOF to the end of EOF (the duration less the 3-bit intermission): when receivers take
+// the frame, so a frame sent on an idle bus reaches them this long after its send.
+[[nodiscard]] Nanos can_end_of_frame(const CanFrameBits& bits, const CanBitTiming& timing);
+// Every end of frame a classic frame of this one's format and length can have, shortest first:
+// its bits with no stuff bits up to can_frame_bits_worst's. Throws std::invalid_argument for FD.
+[[nodiscard]] std::vector<Nanos> can_end_of_frame_range(const CanFrame& frame, const CanBitTiming& timing);
 
 // CRC of a bit sequence (one bit per element, 0/1, first sent first), as ISO 11898-1
 // specifies for the CRC field: CRC-15 (classic), CRC-17 and CRC-21 (FD, register starting

@@ -1,5 +1,7 @@
 #include "models/resolver_emulator/angle_streamer.hpp"
 
+#include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <utility>
 
@@ -7,13 +9,16 @@
 
 namespace hilrig::models::resolver_emulator {
 
-CanFrame angle_frame(const signals::MotionProfile& profile, const AngleStreamParams& params, Nanos t,
-                     std::uint64_t n, AngleFlags flags) {
-  const Nanos at = t + params.lead;
+namespace {
+constexpr double kAngleCode = 1.0 / 16'777'216.0; // the angle field's LSB, turns (2^-24)
+} // namespace
+
+CanFrame angle_frame(const ShaftSample& shaft, const AngleStreamParams& params, std::uint64_t n,
+                     AngleFlags flags) {
   signals::ResolverAngleFrame f;
   f.channel = params.channel;
-  f.angle_turns = profile.position(at) / params.units_per_turn;
-  f.speed_turns_per_s = profile.velocity(at) / params.units_per_turn;
+  f.angle_turns = shaft.position / params.units_per_turn;
+  f.speed_turns_per_s = shaft.velocity / params.units_per_turn;
   f.sequence = static_cast<std::uint8_t>(n & 0xFu);
   f.valid = flags.valid;
   f.sin_open = flags.sin_open;
@@ -21,9 +26,24 @@ CanFrame angle_frame(const signals::MotionProfile& profile, const AngleStreamPar
   return signals::encode(f);
 }
 
+CanFrame angle_frame(const signals::MotionProfile& profile, const AngleStreamParams& params, Nanos t,
+                     std::uint64_t n, AngleFlags flags) {
+  const Nanos at = t + params.lead;
+  return angle_frame(ShaftSample{profile.position(at), profile.velocity(at)}, params, n, flags);
+}
+
 AngleStreamer::AngleStreamer(Scheduler& scheduler, CanPort& port, signals::MotionProfile profile,
                              AngleStreamParams params)
-    : scheduler_(scheduler), port_(port), profile_(std::move(profile)), params_(params) {
+    : AngleStreamer(
+          scheduler, port,
+          [p = std::make_shared<const signals::MotionProfile>(std::move(profile))](Nanos t) {
+            return ShaftSample{p->position(t), p->velocity(t)};
+          },
+          params) {}
+
+AngleStreamer::AngleStreamer(Scheduler& scheduler, CanPort& port, ShaftSource shaft, AngleStreamParams params)
+    : scheduler_(scheduler), port_(port), shaft_(std::move(shaft)), params_(params) {
+  if (!shaft_) throw std::invalid_argument("angle streamer: no shaft");
   if (params_.period <= Nanos::zero()) throw std::invalid_argument("angle streamer: period must be > 0");
   if (!(params_.units_per_turn > 0.0))
     throw std::invalid_argument("angle streamer: units_per_turn must be > 0");
@@ -42,8 +62,49 @@ void AngleStreamer::stop() {
   next_ = EventId{};
 }
 
+void AngleStreamer::lead_by_transport(TransportDelay delay, std::vector<Nanos> possible) {
+  if (delay && possible.empty()) throw std::invalid_argument("angle streamer: no possible transport delay");
+  transport_ = std::move(delay);
+  possible_ = std::move(possible);
+  if (!possible_.empty()) last_delay_ = possible_.front();
+}
+
+// A frame built for delay d whose own delay is d. Tried: each possible delay, and for each the
+// angle's code at or above the shaft (a board reading a shaft that stands exactly on one of its
+// counts reads that count) and up to 15 codes above it (1/2^24 turn each: 15 are 9e-7 turn,
+// 1/270 of a 12-bit count): the stuff bits change with the code. Consecutive
+// frames mostly take the same time on the bus, so the last frame's delay is tried first, and a
+// frame's own delay next. No match at all: the nearest miss.
+CanFrame AngleStreamer::frame_at(Nanos t) {
+  if (!transport_) return angle_frame(shaft_(t + params_.lead), params_, sent_, flags_);
+  constexpr int kNudges = 16; // codes tried from the one at or above the shaft
+  CanFrame nearest;
+  Nanos miss = Nanos::max();
+  const auto build = [&](Nanos delay, int nudge) {
+    ShaftSample shaft = shaft_(t + params_.lead + delay);
+    shaft.position = (std::ceil(shaft.position / params_.units_per_turn / kAngleCode) + nudge) * kAngleCode *
+                     params_.units_per_turn;
+    const CanFrame frame = angle_frame(shaft, params_, sent_, flags_);
+    const Nanos own = transport_(frame);
+    const Nanos off = own > delay ? own - delay : delay - own;
+    if (off < miss) {
+      nearest = frame;
+      miss = off;
+      last_delay_ = delay;
+    }
+    return own;
+  };
+  for (int nudge = 0; nudge < kNudges && miss != Nanos{0}; ++nudge) {
+    Nanos delay = last_delay_;
+    for (int step = 0; step < 3 && miss != Nanos{0}; ++step) delay = build(delay, nudge);
+  }
+  for (int nudge = 0; nudge < kNudges && miss != Nanos{0}; ++nudge)
+    for (std::size_t i = 0; i < possible_.size() && miss != Nanos{0}; ++i) (void)build(possible_[i], nudge);
+  return nearest;
+}
+
 void AngleStreamer::send_at(Nanos t) {
-  const CanFrame frame = angle_frame(profile_, params_, t, sent_, flags_);
+  const CanFrame frame = frame_at(t);
   ++sent_;
   const Nanos next = t + params_.period;
   next_ = scheduler_.at(next, [this, next] { send_at(next); });

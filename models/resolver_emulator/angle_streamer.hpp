@@ -9,6 +9,8 @@
 // the profile by that time.
 
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 #include "core/can_frame.hpp"
 #include "core/scheduler.hpp"
@@ -31,6 +33,17 @@ struct AngleFlags {
   bool cos_open = false;
 };
 
+// The shaft at an instant, in the stream's units (position, and speed per second).
+struct ShaftSample {
+  double position = 0.0;
+  double velocity = 0.0;
+};
+// The shaft a stream reads: a motion profile, or a plant's motion as it happens.
+using ShaftSource = std::function<ShaftSample(Nanos)>;
+
+// The n-th frame of a stream, carrying `shaft`.
+[[nodiscard]] CanFrame angle_frame(const ShaftSample& shaft, const AngleStreamParams& params, std::uint64_t n,
+                                   AngleFlags flags = {});
 // The frame the stream sends at t as its n-th frame: the profile at t + lead. Allocates
 // nothing, so a real-time thread may build its frames with it.
 [[nodiscard]] CanFrame angle_frame(const signals::MotionProfile& profile, const AngleStreamParams& params,
@@ -42,6 +55,7 @@ public:
   // The scheduler and the port must outlive the streamer.
   AngleStreamer(Scheduler& scheduler, CanPort& port, signals::MotionProfile profile,
                 AngleStreamParams params = {});
+  AngleStreamer(Scheduler& scheduler, CanPort& port, ShaftSource shaft, AngleStreamParams params = {});
   AngleStreamer(const AngleStreamer&) = delete;
   AngleStreamer& operator=(const AngleStreamer&) = delete;
   ~AngleStreamer();
@@ -50,6 +64,16 @@ public:
   void start(Nanos first);
   void stop();
   [[nodiscard]] bool running() const { return next_.valid(); }
+
+  // The time from a frame's send to the instant the node holds its angle (its end of frame),
+  // when the sender knows it (a virtual bus), and every value it can take: each frame then
+  // carries the shaft at that instant, params.lead aside, so the node's angle does not lag the
+  // shaft by the transport. The delay hangs on the frame's stuff bits, so on the angle it
+  // carries: each frame is the one built for a delay in `possible` that is its own delay, its
+  // angle the code at or above the shaft or up to 15 codes (1/2^24 turn each) above, whichever
+  // first gives a frame that long (the nearest miss when none does).
+  using TransportDelay = std::function<Nanos(const CanFrame&)>;
+  void lead_by_transport(TransportDelay delay, std::vector<Nanos> possible);
 
   // Flags carried by the frames sent from now on.
   void set_valid(bool valid) { flags_.valid = valid; }
@@ -65,9 +89,15 @@ private:
   void send_at(Nanos t);
 
   Scheduler& scheduler_;
+  [[nodiscard]] CanFrame frame_at(Nanos t);
+
   CanPort& port_;
-  signals::MotionProfile profile_;
+  ShaftSource shaft_;
   AngleStreamParams params_;
+  TransportDelay transport_;
+  std::vector<Nanos> possible_;
+  Nanos last_delay_{0}; // the last frame's transport delay
+
   EventId next_{};
   std::uint64_t sent_ = 0;
   AngleFlags flags_;

@@ -75,6 +75,11 @@ public:
   // True from a timeout until the next good frame.
   [[nodiscard]] bool timed_out() const;
   [[nodiscard]] std::optional<ResolverAnchor> last_frame() const;
+  // Takes `frame` as received now, off the bus: the frame a rig's stream delivered before a
+  // run began (a rig streams the shaft between runs; without it the stators would carry
+  // nothing until the run's first frame is received, a frame time into the run).
+  void hold(const CanFrame& frame) { receive(frame, scheduler_.now()); }
+
   // Called when the frame timeout expires, with its time.
   void on_timeout(TimeoutHandler handler);
 

@@ -82,14 +82,25 @@ void PlantMotion::plan_from(std::unique_ptr<plants::Plant> plant, double start) 
   live_ = std::move(plant);
 }
 
-double PlantMotion::position(Nanos t) const {
-  if (history_.empty() || t >= plan_.start_time()) return plan_.position(t);
-  // The history's segments are contiguous and in time order: the last one starting at or
-  // before t holds it.
+// The segment of the history holding t (the last one starting at or before it; the history's
+// segments are contiguous and in time order), or null when the plan holds it.
+const signals::Segment* PlantMotion::history_at(Nanos t) const {
+  if (history_.empty() || t >= plan_.start_time()) return nullptr;
   const auto after = std::upper_bound(history_.begin(), history_.end(), t,
                                       [](Nanos v, const signals::Segment& s) { return v < s.start; });
-  if (after == history_.begin()) return history_.front().position;
-  return std::prev(after)->position_at(t);
+  return after == history_.begin() ? &history_.front() : &*std::prev(after);
+}
+
+double PlantMotion::position(Nanos t) const {
+  const signals::Segment* s = history_at(t);
+  if (s == nullptr) return plan_.position(t);
+  return t < s->start ? s->position : s->position_at(t);
+}
+
+double PlantMotion::velocity(Nanos t) const {
+  const signals::Segment* s = history_at(t);
+  if (s == nullptr) return plan_.velocity(t);
+  return t < s->start ? 0.0 : s->velocity_at(t);
 }
 
 signals::MotionProfile PlantMotion::trajectory() const {

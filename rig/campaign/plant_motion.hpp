@@ -47,6 +47,8 @@ public:
   // The shaft's position at t in counts: the history before the last input, the plan from
   // it on (what a resolver's stators carry; the board samples at or before now).
   [[nodiscard]] double position(Nanos t) const;
+  // Its speed at t in counts/s, from the same history and plan.
+  [[nodiscard]] double velocity(Nanos t) const;
   // The whole trajectory (committed history, then the plan), in counts.
   [[nodiscard]] signals::MotionProfile trajectory() const;
   // Its knots as the brake check reads the shaft: position changes up to the last one,
@@ -56,6 +58,7 @@ public:
   [[nodiscard]] std::vector<Nanos> standstills() const;
 
 private:
+  [[nodiscard]] const signals::Segment* history_at(Nanos t) const;
   // Integrates `plant` to `until`, appending a segment per knot.
   void integrate(plants::Plant& plant, Nanos until, std::vector<signals::Segment>& out) const;
   [[nodiscard]] signals::Segment segment(const plants::Knot& a, const plants::Knot& b) const;

@@ -11,6 +11,7 @@
 #include "rig/campaign/host_sequence.hpp"
 #include "rig/campaign/motion.hpp"
 #include "rig/campaign/plant_drive.hpp"
+#include "rig/campaign/resolver_link.hpp"
 #include "rig/campaign/resolver_stators.hpp"
 #include "rig/campaign/rig_drive.hpp"
 #include "rig/campaign/run_trace.hpp"
@@ -171,26 +172,32 @@ private:
     }
   }
 
+  // The stators through the rig's resolver front end (resolver_link.hpp): the shaft streamed
+  // over CAN to the emulator node, whose angle they carry.
   void drive_resolver() {
     const ResolverSpec& r = s_.resolver;
     if (r.sin_line.empty()) return;
-    const double per_turn = s_.encoder.counts_per_turn();
-    ShaftPosition shaft;
+    using models::resolver_emulator::ShaftSample;
+    models::resolver_emulator::ShaftSource shaft;
     if (plant_) {
-      // The plant's angle as it moved: the history before its last input, the plan after
-      // (the board samples its stators at or before now, so what it reads has happened).
-      shaft = [motion = &plant_->motion()](Nanos t) { return motion->position(t); };
+      // The plant's motion as it happens: the history before its last input, the plan after (a
+      // frame sent now carries the plan's angle a frame time ahead, as a real rig's would).
+      shaft = [motion = &plant_->motion()](Nanos t) {
+        return ShaftSample{motion->position(t), motion->velocity(t)};
+      };
     } else {
-      const auto profile = std::make_shared<const signals::MotionProfile>(motion_.profile);
-      shaft = [profile](Nanos t) { return profile->position(t); };
+      shaft = [profile = std::make_shared<const signals::MotionProfile>(motion_.profile)](Nanos t) {
+        return ShaftSample{profile->position(t), profile->velocity(t)};
+      };
     }
-    const Waveform sin =
-        stator_waveform(shaft, per_turn, r, Stator::Sine, stator_fault_windows(s_, Stator::Sine));
-    const Waveform cos =
-        stator_waveform(shaft, per_turn, r, Stator::Cosine, stator_fault_windows(s_, Stator::Cosine));
+    const ShaftSample at_start = shaft(Nanos{0});
+    resolver_ = std::make_unique<ResolverLink>(sched_, bus_, std::move(shaft), s_.encoder.counts_per_turn());
+    const Waveform sin = resolver_->stator(r, Stator::Sine, stator_fault_windows(s_, Stator::Sine));
+    const Waveform cos = resolver_->stator(r, Stator::Cosine, stator_fault_windows(s_, Stator::Cosine));
     bus_.analog(r.sin_line).set_waveform(sin);
     bus_.analog(r.cos_line).set_waveform(cos);
     trace_stators(sched_, *trace_, r, sin, cos, s_.end);
+    resolver_->start(at_start);
   }
 
   // The [ssi] transducer answers the board's clock with the shaft's position: the plant's
@@ -242,6 +249,7 @@ private:
   RigDrive drive_;
   std::unique_ptr<PlantDrive> plant_; // when a plant turns the shaft
   std::unique_ptr<duts::Dut> dut_;
+  std::unique_ptr<ResolverLink> resolver_; // the resolver front end, when the board reads one
   std::unique_ptr<signals::SsiSlave> ssi_; // the [ssi] transducer, on its lines
   std::unique_ptr<signals::SsiSlaveNode> ssi_node_;
   std::vector<LineOutput*> owned_; // the lines the rig drives

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -219,10 +220,11 @@ struct Ran {
 Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, campaign::StopRequest* stop,
             RunProgress& progress, std::ostream& out, std::ostream& err) {
   Ran ran;
-  // The campaign's wall-clock start, to the second: junit.xml's timestamp, results.json's
-  // wall_clock.started_at, and can.log's epoch (so the log's times can be read back from it).
-  const auto wall_start = std::chrono::floor<std::chrono::seconds>(std::chrono::system_clock::now());
-  ran.clock.started_at = iso8601_utc(wall_start);
+  // The campaign's wall-clock start, to the second (or the --epoch / SOURCE_DATE_EPOCH given):
+  // junit.xml's timestamp, results.json's wall_clock.started_at, and can.log's epoch (so the
+  // log's times can be read back from it).
+  const auto started_at = wall_start(o.epoch);
+  ran.clock.started_at = iso8601_utc(started_at);
   ran.clock.hostname = host_name();
   std::optional<OutputDirectory> out_dir;
   try {
@@ -248,7 +250,7 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     // (each run's virtual time starts at 0), so the log's times only go forward and candump's
     // readers (log2asc, canplayer) take it as one capture that began when the campaign did.
     Nanos can_log_offset{
-        std::chrono::duration_cast<std::chrono::nanoseconds>(wall_start.time_since_epoch()).count()};
+        std::chrono::duration_cast<std::chrono::nanoseconds>(started_at.time_since_epoch()).count()};
     std::chrono::steady_clock::time_point run_start;
     const auto started = [&](std::size_t, std::size_t, const campaign::RunSpec& run) {
       progress.started(p.c.name, run);
@@ -555,6 +557,11 @@ void add_run_command(CLI::App& app) {
             return campaign::is_label(v) ? std::string() : campaign::label_range();
           },
           "NAME"));
+  cmd->add_option("--epoch", options->epoch,
+                  "the wall-clock start to write (results.json, junit.xml, can.log's first time), in seconds "
+                  "since 1970, instead of now: reproducible outputs (default: SOURCE_DATE_EPOCH when set)")
+      ->check(CLI::Validator(
+          [](const std::string& v) { return parse_epoch(v) ? std::string() : epoch_range(); }, "SECONDS"));
   cmd->add_option("--rig", options->rig, "the rig config of a hardware run (docs/rig-config.md)");
   cmd->add_flag("--exact-scan", options->exact_scan,
                 "virtual DUTs scan every period instead of skipping the scans that change nothing: the "
@@ -564,6 +571,17 @@ void add_run_command(CLI::App& app) {
       "a line per finished run on stderr (outcome, wall time, ETA), also when it is not a terminal");
   cmd->callback([options] {
     options->progress = isatty(fileno(stderr)) != 0;
+    if (!options->epoch) {
+      // The reproducible-builds convention (reproducible-builds.org/specs/source-date-epoch):
+      // a malformed value is an error, not ignored.
+      if (const char* env = std::getenv("SOURCE_DATE_EPOCH"); env != nullptr) {
+        options->epoch = parse_epoch(env);
+        if (!options->epoch) {
+          std::cerr << "hilrig run: SOURCE_DATE_EPOCH=\"" << env << "\": " << epoch_range() << '\n';
+          exit_with(kBadInput);
+        }
+      }
+    }
     const int status = run_campaigns(*options, std::cout, std::cerr);
     if (status != kPassed) exit_with(status);
   });

@@ -48,6 +48,10 @@ struct RunOptions {
   bool handle_signals = true; // SIGINT/SIGTERM stop the run, outputs inactive, results written, exit 3
   // --backend: "virtual" or "hardware"; "" follows the campaign's [dut] backend (or --rig).
   std::string backend;
+  // --epoch or SOURCE_DATE_EPOCH: the wall-clock start written (results.json's started_at,
+  // junit.xml's timestamp, can.log's epoch), seconds since 1970, instead of now: reproducible
+  // outputs. Empty: now.
+  std::optional<std::int64_t> epoch;
   std::string station;                 // --station: the test station's name, carried by the outputs ("" none)
   std::string rig;                     // --rig: the rig config (docs/rig-config.md) of a hardware run
   hardware::RigPortsFactory rig_ports; // set by a caller: the rig's ports instead of its drivers

@@ -341,3 +341,57 @@ TEST(ResolverEmulator, StandingShaftAtAnyAngleAndUnit) {
 
 } // namespace
 } // namespace hilrig::models::resolver_emulator
+
+namespace hilrig::models::resolver_emulator {
+namespace {
+
+// With the bus's transport known to the streamer (as the virtual rig knows it: rig/campaign/
+// resolver_link.cpp), each frame carries the shaft at the frame's own end of frame, so the
+// node's angle is the shaft's with no lag: the frame's angle code at or above the shaft, at
+// most 15 codes above (1/2^24 turn each: signals/resolver_frames.hpp), plus the speed field's
+// rounding (half of 1/4096 turn/s) times the time since the frame (< 1 ms + one frame time).
+// A frame whose stuff bits made it one bit time (2 us) longer or shorter than it was built for
+// would be off by speed * 2 us: 1e-4 turn at 50 turn/s, far beyond that bound. Swept over
+// speeds, both directions, exact and inexact in the speed field.
+TEST(ResolverEmulator, WithTheTransportKnownTheNodeHoldsTheShaftAngleWithoutLag) {
+  constexpr double kCode = 1.0 / 16'777'216.0;
+  for (const double speed : {0.0, 2.0, 1000.0 / 60.0, 50.0, 2997.90146897172 / 60.0, -7.3}) {
+    SCOPED_TRACE(speed);
+    const signals::MotionProfile profile = constant(0.37, speed, 400_ms);
+    Rig rig(profile);
+    const virt::CanBitTiming timing = rig.can.timing();
+    rig.streamer.lead_by_transport(
+        [timing](const CanFrame& f) { return virt::can_end_of_frame(virt::can_frame_bits(f), timing); },
+        virt::can_end_of_frame_range(signals::encode(signals::ResolverAngleFrame{}), timing));
+    rig.streamer.start(Nanos{0});
+    const double speed_rounding = 0.5 / 4096.0 * (1_ms + 300_us).seconds();
+    double lowest = 1.0;
+    double highest = -1.0;
+    for (Nanos t = 2_ms; t < 300_ms; t += 7_us) {
+      rig.scheduler.run_until(t); // the node keeps the last 16 frames: read as the run goes
+      const std::optional<double> a = rig.node.angle_turns(t);
+      ASSERT_TRUE(a.has_value());
+      const double d = turn_error(*a, profile.position(t));
+      lowest = std::fmin(lowest, d);
+      highest = std::fmax(highest, d);
+    }
+    EXPECT_GE(lowest, -speed_rounding);
+    EXPECT_LT(highest, 16 * kCode + speed_rounding);
+    EXPECT_EQ(rig.node.counters().sequence_gaps, 0U);
+  }
+}
+
+// The range of a ResolverAngle frame's end of frame at 500 kbit/s: 108 bits with no stuff bit
+// (the file's top) up to the worst case's stuff bits, one bit time (2 us) apart.
+TEST(ResolverEmulator, EndOfFrameRangeOfAnAngleFrame) {
+  const CanFrame frame = signals::encode(signals::ResolverAngleFrame{});
+  const std::vector<Nanos> range = virt::can_end_of_frame_range(frame, virt::CanBitTiming{});
+  ASSERT_GE(range.size(), 2U);
+  EXPECT_EQ(range.front(), kBit * 108);
+  for (std::size_t i = 1; i < range.size(); ++i) EXPECT_EQ(range[i] - range[i - 1], kBit);
+  EXPECT_EQ(range.back(), kBit * static_cast<std::int64_t>(108 + virt::can_frame_bits_worst(frame).stuff));
+  EXPECT_GE(range.back(), latency(frame));
+}
+
+} // namespace
+} // namespace hilrig::models::resolver_emulator
