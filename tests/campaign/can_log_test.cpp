@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -24,6 +25,7 @@
 #include "core/candump.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/motion.hpp"
+#include "rig/campaign/plant_motion.hpp"
 #include "rig/cli/run_command.hpp"
 #include "rig/cli/wall_clock.hpp"
 #include "signals/resolver_frames.hpp"
@@ -165,6 +167,35 @@ TEST(CanLog, EpochAcceptsWholeSecondsFromZeroToTheYear2099) {
   for (const char* bad : {"4102444800", "4102444801", "253402300799", "-1", "", " 1", "1 ", "1.5", "1e9",
                           "+1", "0x10", "99999999999999999999999"})
     EXPECT_FALSE(parse_epoch(bad).has_value()) << bad;
+}
+
+// A plant's frames carry its speed (PlantMotion::velocity) with its angle: the slope of its
+// position, in the history before an input and in the plan after it. A press coasting at
+// 10 turn/s whose brake is applied at 125 ms (the valve off; resolver_test.cpp's closed form).
+TEST(CanLog, APlantsSpeedIsTheSlopeOfItsPosition) {
+  campaign::PlantSpec spec;
+  spec.kind = campaign::PlantKind::Press;
+  spec.press.flywheel_inertia = 20.0;
+  spec.press.crank_inertia = 2.0;
+  spec.press.ram_mass = 0.0;
+  spec.press.brake_torque = 2000.0;
+  spec.press.valve_delay = 0.020;
+  spec.press.brake_rise = 0.030;
+  spec.press_start.speed = 20.0 * std::numbers::pi;
+  spec.press_start.motor = false;
+  const double per_turn = 4096.0;
+  campaign::PlantMotion motion(spec, per_turn, Nanos{400'000'000});
+  motion.input(Nanos{125'000'000}, plants::PlantInput::Valve, false);
+  EXPECT_NEAR(motion.velocity(Nanos{50'000'000}), 10.0 * per_turn, 1e-6); // history: 10 turn/s
+  int compared = 0;
+  for (std::int64_t ns = 1'000'000; ns < 180'000'000; ns += 1'000'000) {
+    while (motion.plan_end() < Nanos{ns + 1'000}) motion.extend();
+    const double slope = (motion.position(Nanos{ns + 1'000}) - motion.position(Nanos{ns - 1'000})) / 2e-6;
+    EXPECT_NEAR(motion.velocity(Nanos{ns}), slope, 1e-3 * per_turn) << ns;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 179);
+  EXPECT_LT(motion.velocity(Nanos{179'000'000}), 9.0 * per_turn); // braking by then
 }
 
 } // namespace
