@@ -48,11 +48,20 @@ for s in sections:
             continue
         number, outcome = re.match(r"([-0-9.e+]+) \((\w+)\)", v).groups()
         assert abs(float(number) - w[0]) <= 1e-9 * max(1.0, abs(w[0])) and outcome == w[1], (name, v, w)
-    fills = re.findall(r'<circle [^>]*fill="(#[0-9a-f]{6})"', s)
-    assert fills == [colour[w[1]] for w in want if w is not None], (name, fills)
+    # The figure's data (drawn by uPlot): each night's point sits in its outcome's series, in
+    # that outcome's colour, and nowhere else.
+    chart = json.loads(re.search(r'<script type="application/json" class="figure-data">(.*?)</script>', s).group(1))["charts"][0]
+    by_label = {series["label"]: (series["colour"], chart["data"][k + 1]) for k, series in enumerate(chart["series"])}
+    for night, w in enumerate(want):
+        for outcome in colour:
+            shown = by_label[outcome][1][night]
+            if w is not None and w[1] == outcome:
+                assert by_label[outcome][0] == colour[outcome] and abs(shown - w[0]) <= 1e-9 * max(1.0, abs(w[0])), (name, night, outcome, shown)
+            else:
+                assert shown is None, (name, night, outcome, shown)
     upper = want[-1][2]
     if upper is not None:
-        assert f"upper limit {upper:g}" in s or f"upper limit {upper}" in s, (name, upper)
+        assert any(h["at"] == upper and h["label"].startswith(f"upper limit {upper:g}") for h in chart["hlines"]), (name, upper, chart["hlines"])
     if want[-1][1] == "fail":
         late_failures += 1
 assert late_failures > 0, "the late night shows no failure"
