@@ -1,7 +1,10 @@
 #include "rig/campaign/executive.hpp"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <exception>
+#include <thread>
 #include <utility>
 
 #include <fmt/format.h>
@@ -76,6 +79,51 @@ rig::CheckResult rig_check(const std::vector<rig::Measurement>& timing) {
 
 } // namespace
 
+std::vector<checks::PhaseBisection> Executive::bisect_phases(const RunInputs& in, const CheckSpec& c,
+                                                             const checks::DebounceParams& d) const {
+  const std::vector<Nanos> starts = d.probe_starts(c.probe_at);
+  // The limits first: they decide the verdict exactly, and bracket a board within them.
+  const std::array<Nanos, 2> limits{d.spec.shortest_rejected(), d.spec.longest_accepted()};
+  const checks::BisectionPlan& plan = d.plan;
+  // Each probe is a fresh run of the same scenario with one more pulse on the input.
+  const auto bisect = [&](Nanos start) {
+    const checks::PulseProbe probe = [&](Nanos width) {
+      RunInputs p = in;
+      p.probe = Stimulus{StimulusKind::Pulse, start,  plan.input, plan.level, width, Nanos{0}, 0, 1,
+                         Nanos::max(),        c.where};
+      const VirtualRun pv = backend_(p);
+      if (!pv.rig_fault.empty()) throw RigFault(pv.rig_fault);
+      for (const Edge& e : pv.trace->edges_of(plan.output))
+        if (e.time >= start) return true;
+      return false;
+    };
+    return checks::PhaseBisection{
+        start, checks::bisect_boundary(probe, plan.narrow, plan.wide, plan.resolution, limits)};
+  };
+  std::vector<checks::PhaseBisection> out(starts.size());
+  std::vector<std::exception_ptr> failed(starts.size());
+  // The phases are independent runs: spread over threads, each result in its phase's slot, so
+  // the outcome is the same for any thread count. A host link may hold one board: one thread.
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t i = next++; i < starts.size(); i = next++) {
+      try {
+        out[i] = bisect(starts[i]);
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+    }
+  };
+  const std::size_t threads = host_link_ ? 1 : std::clamp<std::size_t>(probe_threads_, 1, starts.size());
+  std::vector<std::thread> helpers;
+  for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(worker);
+  worker();
+  for (auto& t : helpers) t.join();
+  for (const auto& e : failed)
+    if (e) std::rethrow_exception(e);
+  return out;
+}
+
 Executive::Executive(const Campaign& campaign, RunBackend backend)
     : campaign_(campaign), backend_(backend ? std::move(backend) : RunBackend(run_virtual)) {}
 
@@ -120,23 +168,9 @@ RunOutput Executive::run(const RunSpec& spec) const {
     out.trace = v.trace; // kept when a probe run below is stopped
     checks::Capture capture = capture_of(s, v);
     for (const CheckSpec& c : s.checks) {
-      if (const auto* debounce = std::get_if<checks::DebounceParams>(&c.params)) {
-        // Each probe is a fresh run of the same scenario with one more pulse on the input.
-        const checks::BisectionPlan& plan = debounce->plan;
-        const checks::PulseProbe probe = [&](Nanos width) {
-          RunInputs p = in;
-          p.probe = Stimulus{StimulusKind::Pulse, c.probe_at, plan.input, plan.level, width, Nanos{0}, 0, 1,
-                             Nanos::max(),        c.where};
-          const VirtualRun pv = backend_(p);
-          if (!pv.rig_fault.empty()) throw RigFault(pv.rig_fault);
-          for (const Edge& e : pv.trace->edges_of(plan.output))
-            if (e.time >= c.probe_at) return true;
-          return false;
-        };
-        capture.bisection = checks::bisect_boundary(probe, plan.narrow, plan.wide, plan.resolution);
-      } else {
-        capture.bisection.reset();
-      }
+      capture.bisections.clear();
+      if (const auto* debounce = std::get_if<checks::DebounceParams>(&c.params))
+        capture.bisections = bisect_phases(in, c, *debounce);
       rig::CheckResult judged = checks::run_check(c.name, c.params, capture);
       // The trace around what the report draws; a brake's stop is drawn on the motion instead.
       if (v.trace && !std::holds_alternative<checks::BrakeParams>(c.params))

@@ -17,6 +17,7 @@
 #include "rig/campaign/campaign.hpp"
 #include "rig/campaign/host_link.hpp"
 #include "rig/campaign/stop_request.hpp"
+#include "rig/checks/check_params.hpp"
 #include "rig/results/campaign_result.hpp"
 
 namespace hilrig::campaign {
@@ -50,6 +51,9 @@ public:
   // Every virtual DUT scans every period instead of skipping the scans that change nothing
   // (docs/virtual-time.md): the oracle the skipping is compared against, byte for byte.
   void scan_every_period(bool on) { exact_scan_ = on; }
+  // A debounce check's start phases are bisected on up to `threads` threads (virtual runs are
+  // independent); the results are the same for any count. 1 (the default): in turn.
+  void probe_threads(std::size_t threads) { probe_threads_ = threads; }
 
   // Runs one run. A rig fault inside the run is reported in result.error, not thrown.
   [[nodiscard]] RunOutput run(const RunSpec& run) const;
@@ -72,11 +76,16 @@ public:
                                             rig::Shard shard) const;
 
 private:
+  // A debounce check's bisections, one per start phase, in the order of its probe_starts.
+  [[nodiscard]] std::vector<checks::PhaseBisection> bisect_phases(const RunInputs& in, const CheckSpec& c,
+                                                                  const checks::DebounceParams& d) const;
+
   const Campaign& campaign_;
   RunBackend backend_;
   HostLinkFactory host_link_;
   const StopRequest* stop_ = nullptr;
   bool exact_scan_ = false;
+  std::size_t probe_threads_ = 1;
 };
 
 } // namespace hilrig::campaign

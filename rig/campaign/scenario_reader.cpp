@@ -786,6 +786,13 @@ private:
         if (e.key().empty()) fail(c.where, path, e.what());
         r.fail(e.key(), e.what());
       }
+      if (const auto* d = std::get_if<checks::DebounceParams>(&c.params)) {
+        // Every start phase's probe pulse begins within the run.
+        if (const Nanos last = d->probe_starts(c.probe_at).back(); last >= s.end)
+          r.fail("probe_at",
+                 fmt::format("probe_at + scan_us within the run (the last start phase is at {} ms)",
+                             static_cast<double>(last.count()) / 1e6));
+      }
       r.finish();
       s.checks.push_back(std::move(c));
     }

@@ -62,6 +62,12 @@ struct BisectionPlan {
 struct DebounceParams {
   DebounceSpec spec;
   BisectionPlan plan;
+  // scan_us given: the probes start at probe_phases phases spread over the scan (probe_at +
+  // k·scan/probe_phases), one bisection each, and their starts' phase coverage is reported.
+  std::optional<PhaseScan> phase{};
+  std::size_t probe_phases = 1; // >= 1; default phase_bins when scan_us is given
+  // When each phase's probe pulses start, from the check's probe_at.
+  [[nodiscard]] std::vector<Nanos> probe_starts(Nanos probe_at) const;
 };
 
 struct AdvanceParams {

@@ -149,6 +149,18 @@ CheckParams debounce(std::string_view name, const Table& t) {
     throw ParamError("wide_us", fmt::format("a width > narrow_us ({})", t.num("narrow_us")));
   if (p.plan.resolution <= Nanos{0})
     throw ParamError("resolution_us", "a resolution of at least 1 ns (0.001 us)");
+  // The limit probe a hair short of the narrowest allowed boundary must be a pulse.
+  if (p.spec.shortest_rejected() <= Nanos{0})
+    throw ParamError("tolerance_us",
+                     fmt::format("below filter_us ({}) by more than 0.001 us", t.num("filter_us")));
+  p.phase = phase_scan(t);
+  if (t.has("probe_phases") && !p.phase) throw ParamError("probe_phases", "only with scan_us");
+  if (p.phase) {
+    p.probe_phases = t.count("probe_phases", p.phase->bins);
+    if (Nanos{static_cast<std::int64_t>(p.probe_phases)} > p.phase->scan)
+      throw ParamError("probe_phases",
+                       fmt::format("at most one phase per ns of scan_us ({})", t.num("scan_us")));
+  }
   return p;
 }
 
@@ -306,17 +318,22 @@ std::vector<CheckKind> make_kinds() {
        P("from_us", Num, false, "scan start", time), P("to_us", Num, false, "scan end", time),
        phase_param("crossings"), bins_param()},
       throughput));
-  k.push_back(kind("debounce",
-                   "pulses shorter than the filter rejected, longer accepted; boundary by bisection",
-                   {P("filter_us", Num, true, "the spec's filter time", width),
-                    P("tolerance_us", Num, true, "allowed boundary error, either side (inclusive)", time),
-                    P("narrow_us", Num, true, "narrowest probe (must be rejected)", width),
-                    P("wide_us", Num, true, "widest probe (must be accepted)", width),
-                    P("resolution_us", Num, false, "bisection stops at this bracket (1)", width),
-                    P("input", Str, true, "the line the pulse is driven on"),
-                    P("output", Str, true, "the line whose edge means accepted"),
-                    P("level", Lvl, false, "the pulse's active level (high)")},
-                   debounce));
+  k.push_back(kind(
+      "debounce", "pulses shorter than the filter rejected, longer accepted; boundary by bisection",
+      {P("filter_us", Num, true, "the spec's filter time", width),
+       P("tolerance_us", Num, true, "allowed boundary error, either side (inclusive)", time),
+       P("narrow_us", Num, true, "narrowest probe (must be rejected)", width),
+       P("wide_us", Num, true, "widest probe (must be accepted)", width),
+       P("resolution_us", Num, false, "bisection stops at this bracket (1)", width),
+       P("input", Str, true, "the line the pulse is driven on"),
+       P("output", Str, true, "the line whose edge means accepted"),
+       P("level", Lvl, false, "the pulse's active level (high)"),
+       P("scan_us", Num, false,
+         "the board's scan period: probes start at probe_phases phases of it, coverage reported",
+         between(0.001, 1e6)),
+       bins_param(),
+       P("probe_phases", Int, false, "probe start phases over scan_us (phase_bins)", between(1.0, 1000.0))},
+      debounce));
   k.push_back(kind("advance_counts", "each output edge at speed S fires at setpoint - S*advance, in counts",
                    {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
                     P("setpoint", Num, true, "counts"), P("advance_ms", Num, false, "advance time (0)", time),
@@ -461,8 +478,16 @@ CheckResult run(const ThroughputParams& p, const Capture& c) {
 }
 
 CheckResult run(const DebounceParams& p, const Capture& c) {
-  if (!c.bisection) throw CaptureError{"no bisection: the executive must run the plan's probes first"};
-  return check_debounce(*c.bisection, p.spec);
+  if (c.bisections.empty())
+    throw CaptureError{"no bisection: the executive must run the plan's probes first"};
+  CheckResult r = check_debounce(c.bisections, p.spec);
+  if (p.phase) {
+    std::vector<Nanos> starts;
+    for (const PhaseBisection& b : c.bisections) starts.push_back(b.start);
+    r.measurements.push_back(
+        phase_coverage_measurement(p.spec.name + ".phase_coverage", starts, p.phase->scan, p.phase->bins));
+  }
+  return r;
 }
 
 CheckResult run(const AdvanceParams& p, const Capture& c) {
@@ -661,6 +686,14 @@ CheckParams build_check_params(const CheckKind& kind, std::string_view check, co
     if (s.required && !table.contains(s.name))
       throw ParamError(s.name, fmt::format("missing: {} ({})", expected_text(s.type, s.range), s.help));
   return kind.build(check, table);
+}
+
+std::vector<Nanos> DebounceParams::probe_starts(Nanos probe_at) const {
+  std::vector<Nanos> starts;
+  const Nanos scan = phase ? phase->scan : Nanos{0};
+  const auto n = static_cast<std::int64_t>(probe_phases);
+  for (std::int64_t k = 0; k < n; ++k) starts.push_back(probe_at + Nanos{scan.count() * k / n});
+  return starts;
 }
 
 std::string_view kind_of(const CheckParams& params) {

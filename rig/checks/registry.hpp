@@ -38,8 +38,9 @@ struct Capture {
   std::map<std::string, FrameDecoder, std::less<>> decoders;        // by decoder name
   Nanos begin{0};
   Nanos end{0};
-  // Debounce only: the bisection the executive ran with bisect_boundary() and the check's plan.
-  std::optional<Bisection> bisection{};
+  // Debounce only: the bisections the executive ran with bisect_boundary() and the check's
+  // plan, one per probe start (DebounceParams::probe_starts), in that order.
+  std::vector<PhaseBisection> bisections{};
 };
 
 enum class ParamType { Number, Integer, Boolean, String, Level, NumberList };

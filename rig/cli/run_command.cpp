@@ -243,6 +243,10 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
                                         : campaign::RunBackend{});
     exec.use_host_link(p.link);
     exec.scan_every_period(o.exact_scan);
+    // A real board plays one probe at a time; virtual runs spread a debounce check's phases.
+    if (!p.rig)
+      exec.probe_threads(o.probe_threads > 0 ? o.probe_threads
+                                             : std::max(1U, std::thread::hardware_concurrency()));
     if (stop != nullptr) exec.stop_on(stop);
     std::size_t failure_traces = 0;
     std::optional<rig::AppendFile> can_log; // one block per run: a failed write keeps the runs before
@@ -536,6 +540,10 @@ void add_run_command(CLI::App& app) {
           "SEED>=0"));
   cmd->add_option("--shard", options->shard, "K/N: run only the runs whose index mod N is K (0-based)");
   cmd->add_option("--jobs,-j", options->jobs, "campaigns of a suite run at once (outputs as with 1)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--probe-threads", options->probe_threads,
+                  "threads bisecting a debounce check's start phases at once (default: one per core; "
+                  "outputs as with 1)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--only", options->checks.only, "run only this check (by name; repeatable)");
   cmd->add_option("--tag", options->checks.tags,

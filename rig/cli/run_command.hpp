@@ -39,6 +39,7 @@ struct RunOptions {
   std::optional<std::uint64_t> seed; // overrides [campaign] seed
   std::string shard = "0/1";         // K/N, K in 0..N-1: runs whose index mod N is K
   std::size_t jobs = 1;              // campaigns of a suite run at once
+  std::size_t probe_threads = 0;     // a debounce check's phases bisected at once (0: one per core)
   campaign::CheckSelection checks;   // --only NAME, --tag T: a subset of the checks
   bool progress = false;             // a progress line on err (a terminal: rewritten in place)
   bool progress_lines = false;       // --progress: one line per run, also when err is not a terminal

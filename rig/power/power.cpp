@@ -80,7 +80,12 @@ Finding judge_check(const rig::CampaignResult& result, const std::string& check)
       for (const rig::Measurement& m : c.measurements) {
         if (m.outcome != rig::Outcome::Fail) continue;
         const auto e = excess(m);
-        if (!f.worst || (e && (!f.worst_excess || e->fraction > f.worst_excess->fraction))) {
+        // A value against a spec figure says more than a count over 0 (a debounce's
+        // misjudged probes beside its boundary): it wins, then the larger fraction.
+        const auto rank = [](const std::optional<Excess>& x) { return !x ? 0 : x->limit == 0.0 ? 1 : 2; };
+        const bool better = !f.worst || rank(e) > rank(f.worst_excess) ||
+                            (e && rank(e) == rank(f.worst_excess) && e->fraction > f.worst_excess->fraction);
+        if (better) {
           f.worst = m;
           f.worst_excess = e;
         }

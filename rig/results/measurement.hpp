@@ -47,10 +47,12 @@ struct Series {
   std::vector<double> values;
 };
 
-// One probe of a bisection (a debounce check's pulse): its width and whether the board took it.
+// One probe of a bisection (a debounce check's pulse): its width, whether the board took it,
+// and when it started (set when the check probed several start phases).
 struct Probe {
   Nanos width;
   bool accepted = false;
+  std::optional<Nanos> start{};
 };
 
 // What the trace held around one judged window, cut from the run's recording for the report's

@@ -152,8 +152,11 @@ json check_json(const CheckResult& c) {
          {"series", ss}};
   if (!c.probes.empty()) { // only when there are: other checks keep their bytes
     json ps = json::array();
-    for (const auto& p : c.probes)
-      ps.push_back(json{{"width_ns", p.width.count()}, {"accepted", p.accepted}});
+    for (const auto& p : c.probes) {
+      json probe{{"width_ns", p.width.count()}, {"accepted", p.accepted}};
+      if (p.start) probe["start_ns"] = p.start->count();
+      ps.push_back(std::move(probe));
+    }
     j["probes"] = ps;
   }
   if (!c.traces.empty()) j["traces"] = traces_json(c.traces);
@@ -171,9 +174,11 @@ CheckResult check_from(const json& j) {
                               get<std::vector<double>>(s, "values", "series")});
   }
   if (j.contains("probes"))
-    for (const auto& p : j.at("probes"))
-      c.probes.push_back(
-          Probe{Nanos{get<std::int64_t>(p, "width_ns", "probe")}, get<bool>(p, "accepted", "probe")});
+    for (const auto& p : j.at("probes")) {
+      Probe probe{Nanos{get<std::int64_t>(p, "width_ns", "probe")}, get<bool>(p, "accepted", "probe")};
+      if (p.contains("start_ns")) probe.start = Nanos{get<std::int64_t>(p, "start_ns", "probe")};
+      c.probes.push_back(probe);
+    }
   if (j.contains("traces")) c.traces = traces_from(j.at("traces"));
   return c;
 }

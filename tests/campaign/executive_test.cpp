@@ -224,6 +224,59 @@ TEST(Executive, DebounceCatchesAnUnfilteredInput) {
   EXPECT_EQ(r.totals.faults_caught, 1U);
 }
 
+// The same board probed at ten start phases of its 200 us scan (scan_us = 200, probe_phases
+// = phase_bins = 10, starts 20 us apart). Its boundary at a start is the time to its first scan
+// at least `filter` after the start, plus 1 ns (the pulse's end and a scan at one instant: the
+// end first): filter + 1 ns .. filter + 200 us. Judged against [1000, 1200] us (filter_us 1100
+// ± 100) at every phase, a 1 ms filter passes; the probed starts' times to the next scan are 20
+// us apart, so a filter one bin (20 us) longer shows a boundary over 1200 us at some start and
+// one bin shorter a boundary under 1000 us: both fail, whatever the board's phase (the seed).
+std::string phased_debounce(const std::string& filter, std::uint64_t seed) {
+  std::string t = kDebounce;
+  const auto swap = [&t](const std::string& from, const std::string& to) {
+    t.replace(t.find(from), from.size(), to);
+  };
+  swap("filter = \"1ms\"", "filter = \"" + filter + "\"");
+  swap("filter_us = 1000\ntolerance_us = 250", "filter_us = 1100\ntolerance_us = 100");
+  swap("end = \"6ms\"", fmt::format("end = \"6ms\"\nseed = {}", seed));
+  return t + "scan_us = 200\n";
+}
+
+TEST(Executive, DebounceJudgesEveryStartPhaseOfTheScan) {
+  for (const std::uint64_t seed : {1U, 2U, 77U, 123456U}) {
+    SCOPED_TRACE(seed);
+    const Campaign c = parse_campaign(phased_debounce("1ms", seed), "t.toml");
+    const auto r = run_everything(c);
+    EXPECT_EQ(r.verdict, Outcome::Pass);
+    const auto* boundary = find(r.runs[0], "en_filter.boundary");
+    ASSERT_NE(boundary, nullptr);
+    EXPECT_GE(boundary->value, 1000.0);
+    EXPECT_LE(boundary->value, 1200.0);
+    const auto* coverage = find(r.runs[0], "en_filter.phase_coverage");
+    ASSERT_NE(coverage, nullptr);
+    EXPECT_EQ(coverage->value, 10.0);
+    EXPECT_EQ(coverage->detail, "10/10 bins of the 200 us period covered");
+    for (const char* off : {"1020us", "980us"}) {
+      const auto bad = run_everything(parse_campaign(phased_debounce(off, seed), "t.toml"));
+      EXPECT_EQ(bad.verdict, Outcome::Fail) << off;
+      EXPECT_GE(find(bad.runs[0], "en_filter.misjudged")->value, 1.0) << off; // a limit probe at one start
+    }
+  }
+}
+
+TEST(Executive, DebouncePhasesGiveTheSameBytesOnAnyThreadCount) {
+  const Campaign c = parse_campaign(phased_debounce("1ms", 5), "t.toml");
+  std::string first;
+  for (const std::size_t threads : {1U, 2U, 3U, 16U}) {
+    Executive e(c);
+    e.probe_threads(threads);
+    const std::string json = rig::to_json_text(e.run_all(c.runs, c.seed, rig::Shard{0, 1}));
+    if (first.empty()) first = json;
+    EXPECT_EQ(json, first) << threads;
+  }
+  EXPECT_NE(first.find("\"start_ns\""), std::string::npos); // each probe says when it started
+}
+
 TEST(Executive, StimuliAppearOnTheBusAsWritten) {
   // Bounce: closes at 2 ms, opens/closes every 100 us for 2 bounces, settles at 2.4 ms.
   // Pulse: high at 3 ms for 250 us. Stuck low from 4 ms to 4.5 ms over a level-high at 4.2 ms.

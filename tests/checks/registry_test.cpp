@@ -203,8 +203,8 @@ TEST(Registry, DebouncePlanThenCheck) {
   EXPECT_EQ(p.plan.input, "rig.in1");
   Capture c;
   // A board with a 503 us filter: inside 500 ± 10.
-  c.bisection =
-      bisect_boundary([](Nanos w) { return w >= 503_us; }, p.plan.narrow, p.plan.wide, p.plan.resolution);
+  c.bisections = {{1_ms, bisect_boundary([](Nanos w) { return w >= 503_us; }, p.plan.narrow, p.plan.wide,
+                                         p.plan.resolution)}};
   const auto r = run_check("in1-debounce", p, c);
   EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
   EXPECT_NEAR(find(r, "in1-debounce.boundary").value, 503.0, 1.0);
@@ -216,6 +216,35 @@ TEST(Registry, DebouncePlanThenCheck) {
                                      {"input", "i"},
                                      {"output", "o"}}),
             "wide_us");
+}
+
+TEST(Registry, DebounceStartPhasesAreValidatedWithTheirKey) {
+  const json base{{"filter_us", 27500}, {"tolerance_us", 500}, {"narrow_us", 5000},
+                  {"wide_us", 60000},   {"input", "i"},        {"output", "o"}};
+  const auto with = [&](json extra) {
+    json t = base;
+    t.update(extra);
+    return t;
+  };
+  // scan_us given: probe_phases defaults to phase_bins (10), each start's coverage reported.
+  const auto p = std::get<DebounceParams>(build("debounce", with({{"scan_us", 1000}})));
+  ASSERT_TRUE(p.phase);
+  EXPECT_EQ(p.phase->scan, 1_ms);
+  EXPECT_EQ(p.probe_phases, 10U);
+  EXPECT_EQ(
+      std::get<DebounceParams>(build("debounce", with({{"scan_us", 1000}, {"phase_bins", 4}}))).probe_phases,
+      4U);
+  EXPECT_EQ(std::get<DebounceParams>(build("debounce", json(base))).probe_phases, 1U);
+  EXPECT_EQ(problem("debounce", with({{"probe_phases", 5}})), "probe_phases"); // only with scan_us
+  EXPECT_EQ(problem("debounce", with({{"phase_bins", 5}})), "phase_bins");
+  for (const double bad : {0.0, 1001.0, 2.5, -1.0})
+    EXPECT_EQ(problem("debounce", with({{"scan_us", 1000}, {"probe_phases", bad}})), "probe_phases") << bad;
+  EXPECT_EQ(problem("debounce", with({{"scan_us", 0.5}, {"probe_phases", 501}})), "probe_phases"); // > 1/ns
+  EXPECT_EQ(problem("debounce", with({{"scan_us", 0}})), "scan_us");
+  // The limit probe a hair short of filter - tolerance must be a pulse.
+  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27500}})), "tolerance_us");
+  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27499.999}})), "tolerance_us"); // 0 ns
+  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27499.998}})), "ok");           // 1 ns
 }
 
 TEST(Registry, BrakeFromTheBrakeLineAndTheReportedWord) {
