@@ -42,7 +42,7 @@ TEST(ResultsJson, MotionAndProbesValidateAndRoundTrip) {
   CampaignResult c = test::sample_campaign(2);
   c.runs[0].motion.points = {{Nanos{0}, 0.0, 1000.0}, {Nanos{100'000'000}, 50.0, 0.0}};
   c.runs[0].motion.events = {{Nanos{0}, "valve off: brake applied, clutch released"}};
-  c.runs[1].checks[0].probes = {{Nanos{20'000}, false}, {Nanos{40'000}, true}};
+  c.runs[1].checks[0].probes = {{Nanos{20'000}, false}, {Nanos{40'000}, true, Nanos{100'500'000}}};
   finalize(c);
   const json j = to_json(c);
   const auto errors = test::validate_json_schema(load_schema(), j);
@@ -53,6 +53,10 @@ TEST(ResultsJson, MotionAndProbesValidateAndRoundTrip) {
   EXPECT_EQ(to_json(back), j);
   ASSERT_EQ(back.runs[1].checks[0].probes.size(), 2U);
   EXPECT_TRUE(back.runs[1].checks[0].probes[1].accepted);
+  // A probe's start phase only when the debounce check probed several: others keep their bytes.
+  EXPECT_FALSE(j["runs"][1]["checks"][0]["probes"][0].contains("start_ns"));
+  EXPECT_EQ(j["runs"][1]["checks"][0]["probes"][1]["start_ns"], 100'500'000);
+  EXPECT_EQ(back.runs[1].checks[0].probes[1].start, Nanos{100'500'000});
 }
 
 TEST(ResultsJson, TheSchemaCheckerRejectsABrokenFile) {
