@@ -6,6 +6,9 @@
 
 namespace hilrig {
 
+// The top bit of the sequence number orders Last events after every InOrder one at a time.
+constexpr std::uint64_t kLast = std::uint64_t{1} << 63;
+
 EventId Scheduler::at(Nanos t, Action action, Tie tie) {
   if (t < now()) {
     throw std::logic_error("Scheduler: event scheduled in the past");
@@ -21,8 +24,6 @@ EventId Scheduler::at(Nanos t, Action action, Tie tie) {
   Slot& s = slots_[slot];
   s.action = std::move(action);
   s.live = true;
-  // The top bit of the sequence number orders Last events after every InOrder one at a time.
-  constexpr std::uint64_t kLast = std::uint64_t{1} << 63;
   heap_push(Entry{t.count(), next_seq_++ | (tie == Tie::Last ? kLast : 0), slot, s.generation});
   ++live_;
   return EventId{slot, s.generation};
@@ -128,7 +129,9 @@ bool Scheduler::step() {
   release(e.slot);
   clock_.advance_to(Nanos{e.time});
   ++executed_;
+  ordinary_running_ = (e.seq & kLast) == 0;
   action();
+  ordinary_running_ = false;
   return true;
 }
 

@@ -54,6 +54,10 @@ public:
   bool step();
   // From inside an event: the current run_* returns StopReason::Stopped after it.
   void stop() { stop_requested_ = true; }
+  // True while an ordinary (Tie::InOrder) event runs: the Last events at now() have not run
+  // yet. A model that skips its Last-tied scans tells from it whether the scan at now() would
+  // already have run (docs/virtual-time.md).
+  [[nodiscard]] bool ordinary_event_running() const { return ordinary_running_; }
 
 private:
   struct Entry {
@@ -85,6 +89,7 @@ private:
   std::uint64_t executed_ = 0;
   std::size_t live_ = 0;
   bool stop_requested_ = false;
+  bool ordinary_running_ = false;
 };
 
 } // namespace hilrig

@@ -8,15 +8,17 @@
 namespace hilrig::models::ans1 {
 
 // The encoder decoder is fed from edge handlers the bus keeps; sharing it keeps those
-// handlers safe should the bus outlive the device. Every pin edge wakes a skipping scan.
+// handlers safe should the bus outlive the device. A count edge wakes a skipping scan when
+// the GMP leaves the quiet interval (scan_skipping.cpp).
 struct Ans1::QuadState {
   signals::QuadratureDecoder decoder{signals::CountMode::X4};
   LineInput* a = nullptr;
   LineInput* b = nullptr;
   Ans1* device = nullptr;
   void edge() {
+    const std::int64_t before = decoder.count();
     decoder.update(a != nullptr && is_high(a->level()), b != nullptr && is_high(b->level()));
-    device->wake();
+    device->count_edge(before);
   }
 };
 
@@ -86,6 +88,7 @@ std::size_t Ans1::index(int point) {
 }
 
 void Ans1::attach(const Ans1Pins& pins) {
+  settle_position();
   pins_ = pins;
   quad_->a = pins.quad_a;
   quad_->b = pins.quad_b;
@@ -133,6 +136,7 @@ void Ans1::attach(const Ans1Pins& pins) {
 void Ans1::power_off() {
   if (!powered_) return;
   powered_ = false;
+  quiet_armed_ = false;
   scheduler_.cancel(scan_event_);
   scheduler_.cancel(speed_event_);
   scheduler_.cancel(write_event_);
@@ -187,6 +191,7 @@ void Ans1::power_on() {
 // ---------------------------------------------------------------- programming
 
 void Ans1::configure_position(const PositionSetup& setup) {
+  settle_position();
   const bool period_changes = setup.slave_mode != position_.slave_mode;
   const bool fsc_changes = setup.full_scale_count != position_.full_scale_count;
   const bool source_changes = setup.sensor != position_.sensor || period_changes;
@@ -253,6 +258,7 @@ std::uint16_t Ans1::user_defined_enabled() const { return ans1::user_defined_ena
 const OutputSetup& Ans1::output_setup(int output) const { return channels_[index(output)].setup(); }
 
 void Ans1::preset_machine(std::optional<std::uint16_t> value) {
+  settle_position();
   if (value) {
     position_.preset_value = *value;
   }
@@ -262,7 +268,7 @@ void Ans1::preset_machine(std::optional<std::uint16_t> value) {
 }
 
 void Ans1::preset_output(int output, std::optional<std::uint16_t> value) {
-  channels_[index(output)].preset(gmp_, value);
+  channels_[index(output)].preset(gmp(), value);
   wake();
 }
 
@@ -289,7 +295,7 @@ void Ans1::clear_errors() {
 // ---------------------------------------------------------------- status
 
 std::uint16_t Ans1::ls_position(int output) const {
-  return channels_[index(output)].ls_position(gmp_, position_.full_scale_count);
+  return channels_[index(output)].ls_position(gmp(), position_.full_scale_count);
 }
 
 const AdvanceCounts& Ans1::advances(int output) const { return channels_[index(output)].advances(); }
@@ -410,18 +416,7 @@ void Ans1::scan() {
     last_wrap_ = now;
   }
 
-  ScanState state;
-  state.now = now;
-  state.gmp = gmp_;
-  state.fsc = fsc;
-  state.speed = speed_.value();
-  state.speed_reported = speed_.reported();
-  state.active_inputs = active_inputs_;
-  state.shift_register = &shift_register_;
-  state.shift_register_enabled = sr_setup_.input != 0;
-  state.advance_wrong_sign = variant_ == Variant::AdvanceWrongSign;
-  state.late_wrap_to = variant_ == Variant::SetpointOffByOneAtWrap;
-  state.timer_error = params_.timer_error;
+  const ScanState state = scan_state(now);
 
   OutputStatusMasks masks{0, 0, 0, 0, 0, 0, 0};
   std::uint16_t ls = 0;
@@ -463,6 +458,22 @@ void Ans1::scan() {
   previous_gmp_ = gmp_;
   first_scan_ = false;
   host_.scan(); // acts on a Transmit edge; its programming takes effect from the next scan
+}
+
+ScanState Ans1::scan_state(Nanos now) const {
+  ScanState state;
+  state.now = now;
+  state.gmp = gmp_;
+  state.fsc = position_.full_scale_count;
+  state.speed = speed_.value();
+  state.speed_reported = speed_.reported();
+  state.active_inputs = active_inputs_;
+  state.shift_register = &shift_register_;
+  state.shift_register_enabled = sr_setup_.input != 0;
+  state.advance_wrong_sign = variant_ == Variant::AdvanceWrongSign;
+  state.late_wrap_to = variant_ == Variant::SetpointOffByOneAtWrap;
+  state.timer_error = params_.timer_error;
+  return state;
 }
 
 // ---------------------------------------------------------------- speed

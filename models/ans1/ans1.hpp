@@ -29,6 +29,7 @@
 #include "models/ans1/params.hpp"
 #include "models/ans1/position_resolver.hpp"
 #include "models/ans1/position_setup.hpp"
+#include "models/ans1/quiet_interval.hpp"
 #include "models/ans1/setup.hpp"
 #include "models/ans1/shift_register.hpp"
 #include "models/ans1/speed.hpp"
@@ -96,6 +97,7 @@ public:
   }
   // The oracle of scan skipping (Params::exact_scan): from now on, a scan every period.
   void scan_every_period() {
+    settle_position();
     params_.exact_scan = true;
     wake_now();
   }
@@ -113,7 +115,7 @@ public:
   [[nodiscard]] const ResolverExcitation& excitation() const { return excitation_; }
 
   // ---- Status (what the data attribute blocks report) ----
-  [[nodiscard]] std::uint16_t gmp() const { return gmp_; }                           // DA16 w1
+  [[nodiscard]] std::uint16_t gmp() const; // DA16 w1 (as of the last scan, skipped or not)
   [[nodiscard]] std::int16_t speed_rpm() const { return speed_.reported(); }         // DA16 w2
   [[nodiscard]] double speed() const { return speed_.value(); }                      // unrounded S
   [[nodiscard]] std::uint16_t time_of_rotation() const { return time_of_rotation_; } // DA16 w4, 0.1 ms
@@ -168,6 +170,29 @@ private:
   [[nodiscard]] Nanos grid_at_or_after(Nanos t) const;
   // Schedules the next scan of the grid if it is earlier than the pending one.
   void wake_now();
+  // ---- skipping while the encoder moves (scan_skipping.cpp) ----
+  // An encoder count changed (before: the count before it): wakes the scan when the GMP
+  // leaves the quiet interval, else only remembers the count at the last grid point.
+  void count_edge(std::int64_t before);
+  // Records the position history of an unused brake monitor for its ticks whose scans (at
+  // grid points up to g) were skipped: the count at edge_grid_ there, `after` beyond it.
+  void record_idle_ticks(Nanos g, std::int64_t after);
+  // The latest grid point whose scan has run, or would have run when scanning every period.
+  [[nodiscard]] Nanos last_run_grid(Nanos now) const;
+  // The transducer count at grid point g (g no earlier than the last edge's grid point).
+  [[nodiscard]] std::int64_t count_at(Nanos g) const;
+  // Ends skipping while moving: writes the position members as the scan at grid point `ran`
+  // (the last one that ran when scanning every period) left them. Before anything changes
+  // what they are computed from.
+  void settle_position(Nanos ran);
+  void settle_position() {
+    if (quiet_armed_) settle_position(last_run_grid(scheduler_.now()));
+  }
+  // A scan now, with the same inputs and count as the one that just ran, leaves every output
+  // channel, the shift register and the monitors as they are.
+  [[nodiscard]] bool scan_repeats() const;
+  [[nodiscard]] QuietInterval quiet_interval() const;
+  [[nodiscard]] ScanState scan_state(Nanos now) const;
   void speed_update();
   void sample_resolver(Nanos now);
   void read_inputs();
@@ -222,6 +247,13 @@ private:
   Nanos grid_origin_{};
   Nanos scan_at_ = Nanos::max();
   bool changed_outside_ = true;
+  // Skipping while the encoder moves: while armed, scans are skipped as long as the GMP stays
+  // inside quiet_; edge_grid_ is the grid point before the latest count edge (or the last
+  // scan) and count_at_edge_grid_ the count there.
+  bool quiet_armed_ = false;
+  QuietInterval quiet_{};
+  Nanos edge_grid_{};
+  std::int64_t count_at_edge_grid_ = 0;
 
   // Speed
   SpeedFilter speed_{};

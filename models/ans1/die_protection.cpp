@@ -29,6 +29,16 @@ bool DieProtection::inside(const DieMonitorSetup& m, std::uint16_t gmp) const {
                      [gmp](const DieWindow& w) { return in_window(gmp, w); });
 }
 
+void DieProtection::keep_quiet(QuietInterval& quiet, std::uint16_t gmp) const {
+  for (const DieMonitorSetup& m : setup_.monitors) {
+    if (m.mode == DieCheckMode::Off) continue;
+    for (const DieWindow& w : m.windows) {
+      if (w.used())
+        quiet.keep_arc(gmp, w.leading, wrap(static_cast<std::int64_t>(w.trailing) - w.leading, fsc_), fsc_);
+    }
+  }
+}
+
 Nanos DieProtection::next_change() const {
   Nanos next = Nanos::max();
   for (int input = 1; input <= 16; ++input) {

@@ -15,6 +15,7 @@
 
 #include "core/time.hpp"
 #include "models/ans1/monitor_setup.hpp"
+#include "models/ans1/quiet_interval.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -31,6 +32,8 @@ public:
   // Clear Errors is not a DP reset in the manual; counters only reset by self-reset or by a
   // new setup of that monitor.
 
+  // Scan skipping (quiet_interval.hpp): the windows of the monitors in use.
+  void keep_quiet(QuietInterval& quiet, std::uint16_t gmp) const;
   [[nodiscard]] const DieProtectionSetup& setup() const { return setup_; }
   [[nodiscard]] std::uint8_t fault_count(int input) const { return state_[index(input)].counter; }
   // Masks, bit n-1 = input n (DA18 w3, w4, w5).

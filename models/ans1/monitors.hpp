@@ -42,6 +42,27 @@ public:
   void clear_errors() { brake_.clear_errors(); }
   void preset_counter(CounterId id, std::uint32_t value) { counters_.preset(id, value); }
 
+  // Exact scan skipping while the encoder moves (quiet_interval.hpp): where a scan's die
+  // windows or part-cycle mark make a difference, and the position a skipped scan would have
+  // left (the brake monitor's ticks are deadlines of next_change(), never skipped).
+  void keep_quiet(QuietInterval& quiet, std::uint16_t gmp) const {
+    die_.keep_quiet(quiet, gmp);
+    counters_.keep_quiet(quiet, gmp);
+  }
+  void settle_position(std::uint16_t gmp) {
+    if (started_) gmp_ = gmp;
+    counters_.settle(gmp);
+  }
+  // The next 1 ms tick of an unused brake monitor, which only records the position history
+  // (max once the monitor is set up: its ticks are next_change() deadlines, or before the
+  // first scan). idle_tick() records it with the position a scan at its grid point read.
+  [[nodiscard]] Nanos next_idle_tick() const {
+    return started_ && brake_.setup().input == 0 ? next_tick_ : Nanos::max();
+  }
+  void idle_tick(std::int64_t pos4096) {
+    brake_.tick(next_tick_, false, pos4096, gmp_);
+    next_tick_ += BrakeMonitor::kTick;
+  }
   [[nodiscard]] OutputClaims claims() const;
   // The earliest time at which scan() with unchanged inputs can change what the monitors
   // report: a brake monitor tick while one is set up, a die-protection level qualifying.

@@ -39,15 +39,43 @@ void OutputChannel::preset(std::uint16_t gmp, std::optional<std::uint16_t> value
   setup_.ls_offset = static_cast<std::int32_t>(setup_.ls_preset_value) - gmp;
 }
 
-OutputState OutputChannel::scan(const ScanState& scan, bool retrigger_restarts) {
-  const std::uint16_t p = ls_position(scan.gmp, scan.fsc);
-
+EdgeShift OutputChannel::edge_shift(const ScanState& scan) const {
   // Edges move against the direction of travel, so they fire early whichever way it turns.
   int direction = scan.speed > 0.0 ? 1 : (scan.speed < 0.0 ? -1 : 0);
   if (scan.advance_wrong_sign) {
     direction = -direction;
   }
-  const EdgeShift shift{direction * advances_.lead, direction * advances_.trail};
+  return EdgeShift{direction * advances_.lead, direction * advances_.trail};
+}
+
+void OutputChannel::keep_quiet(QuietInterval& quiet, const ScanState& scan) const {
+  if (timer_.holding()) {
+    quiet.pin(scan.gmp); // off until the position moves one count
+    return;
+  }
+  const EdgeShift shift = edge_shift(scan);
+  for (const SetpointPair& pair : setup_.pairs) {
+    if (!pair.used()) {
+      continue;
+    }
+    if (pair.stitched()) {
+      quiet.pin(scan.gmp); // [not skipped yet] the stitch pattern's edges
+      return;
+    }
+    // p = GMP + LS offset, so the pair's arc of p is an arc of GMP shifted back by the offset.
+    const PairArc arc = pair_arc(pair, scan.fsc, shift, scan.late_wrap_to);
+    quiet.keep_arc(scan.gmp, arc.start - setup_.ls_offset, arc.length, scan.fsc);
+  }
+  if (window_input_ >= 0) { // in_window: low..high inclusive, wrapping through 0
+    quiet.keep_arc(scan.gmp, setup_.window_low,
+                   wrap(static_cast<std::int64_t>(setup_.window_high) - setup_.window_low, scan.fsc) + 1,
+                   scan.fsc);
+  }
+}
+
+OutputState OutputChannel::scan(const ScanState& scan, bool retrigger_restarts) {
+  const std::uint16_t p = ls_position(scan.gmp, scan.fsc);
+  const EdgeShift shift = edge_shift(scan);
 
   OutputState s;
   int inside_pair = -1;

@@ -9,6 +9,8 @@
 #include "models/ans1/advance.hpp"
 #include "models/ans1/enable.hpp"
 #include "models/ans1/output_setup.hpp"
+#include "models/ans1/quiet_interval.hpp"
+#include "models/ans1/setpoint.hpp"
 #include "models/ans1/timed_limit.hpp"
 
 namespace hilrig::models::ans1 {
@@ -59,10 +61,16 @@ public:
 
   OutputState scan(const ScanState& scan, bool retrigger_restarts);
   [[nodiscard]] const OutputState& state() const { return state_; }
+  // Exact scan skipping while the encoder moves: narrows `quiet` to the GMP values around
+  // scan.gmp at which every position condition of scan() (each pair's on-state with its
+  // advanced edges, the window, a Time-Only hold) keeps its value at scan.gmp.
+  void keep_quiet(QuietInterval& quiet, const ScanState& scan) const;
   // The earliest time at which scan() with the same inputs can give another state (its timer).
   [[nodiscard]] Nanos next_change() const { return timer_.expiry(); }
 
 private:
+  [[nodiscard]] EdgeShift edge_shift(const ScanState& scan) const;
+
   OutputSetup setup_{};
   AdvanceCounts advances_{};
   TimedLimit timer_{};

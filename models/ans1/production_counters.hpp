@@ -22,6 +22,7 @@
 #include <cstdint>
 
 #include "models/ans1/monitor_setup.hpp"
+#include "models/ans1/quiet_interval.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -37,6 +38,14 @@ public:
   [[nodiscard]] std::uint32_t value(CounterId c) const { return values_[idx(c)]; }
   [[nodiscard]] bool overflowed(CounterId c) const { return overflow_[idx(c)]; }
   // Outputs programmed as overflow outputs (DA17 w14), and their levels (true = active).
+  // Scan skipping (quiet_interval.hpp): the part-cycle position is a mark a forward move
+  // counts at; settle() makes the last position the one a skipped scan would have left.
+  void keep_quiet(QuietInterval& quiet, std::uint16_t gmp) const {
+    quiet.keep_before_mark(gmp, setup_.increment_position);
+  }
+  void settle(std::uint16_t gmp) {
+    if (primed_) last_gmp_ = gmp;
+  }
   [[nodiscard]] std::uint16_t overflow_output_mask() const;
   [[nodiscard]] std::uint16_t overflow_output_levels() const;
   // DA17 w15..w18: the overflow output of counter c if it is in its overflow state.

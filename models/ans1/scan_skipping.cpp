@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "models/ans1/ans1.hpp"
+#include "models/ans1/position.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -76,6 +77,7 @@ Nanos Ans1::grid_at_or_after(Nanos t) const {
 }
 
 void Ans1::wake() {
+  settle_position();
   changed_outside_ = true;
   if (params_.exact_scan || in_scan_ || !powered_) {
     return; // scanning every period, or the running scan schedules the next
@@ -96,12 +98,16 @@ void Ans1::wake_now() {
 
 void Ans1::run_scan() {
   const Nanos now = scheduler_.now();
+  settle_position(now - scan_period()); // after skipped scans while moving
   scan_at_ = Nanos::max();
   grid_origin_ = now;
   const bool outside = changed_outside_;
   changed_outside_ = false;
+  const auto skips_motion = [this] {
+    return !params_.exact_scan && !position_.slave_mode && position_.sensor == SensorType::Quadrature;
+  };
   std::optional<ScanSnapshot> before;
-  if (!params_.exact_scan && !outside) {
+  if (!params_.exact_scan && !outside && !skips_motion()) {
     before = snapshot();
   }
   in_scan_ = true;
@@ -109,12 +115,122 @@ void Ans1::run_scan() {
   in_scan_ = false;
   // The period may have changed in the scan.
   Nanos next = now + scan_period();
-  if (before && !changed_outside_ && *before == snapshot()) {
+  if (!changed_outside_ && skips_motion()) {
+    if (scan_repeats()) { // asleep until a deadline, or until the GMP leaves quiet_, or wake()
+      quiet_ = quiet_interval();
+      quiet_armed_ = true;
+      edge_grid_ = now;
+      count_at_edge_grid_ = transducer_count();
+      next = grid_at_or_after(next_change());
+    }
+  } else if (before && !changed_outside_ && *before == snapshot()) {
     next = grid_at_or_after(next_change()); // asleep until then, or until wake()
   }
   if (next != Nanos::max()) {
     schedule_scan(next);
   }
+}
+
+// ---------------------------------------------------------------- while the encoder moves
+//
+// A scan that the count alone changes writes the position members (gmp_, previous_gmp_, the
+// monitors' last position and the production counters' last position), evaluates the
+// position conditions of every output, the shift register, die protection and the counters,
+// and watches for crossings (roll-over, shift position, part-cycle position). After a scan that
+// a repeat at the same count would leave as it is (scan_repeats), every scan at a GMP inside
+// quiet_interval() leaves it as it is too: each condition keeps its value there and no watched
+// mark lies inside. So scans are skipped until the GMP leaves the interval (count_edge), a
+// deadline of next_change() arrives or anything else wakes the scan; the position members are
+// then written as the last skipped scan would have left them (settle_position), from the count
+// at that scan's grid point, which count_edge remembers.
+
+bool Ans1::scan_repeats() const {
+  const std::uint16_t fsc = position_.full_scale_count;
+  ShiftRegister sr = shift_register_;
+  const bool sr_input = sr_setup_.input != 0 && (active_inputs_ & (1U << (sr_setup_.input - 1U))) != 0;
+  sr.step(gmp_, gmp_, sr_input, sr_setup_, fsc);
+  if (!(sr == shift_register_)) {
+    return false;
+  }
+  const ScanState state = scan_state(scheduler_.now());
+  for (const OutputChannel& channel : channels_) {
+    OutputChannel again = channel;
+    (void)again.scan(state, params_.time_only_retrigger_restarts);
+    if (!(again == channel)) {
+      return false;
+    }
+  }
+  Monitors again = monitors_;
+  again.scan(scheduler_.now(), MonitorInputs{gmp_, transducer_count(), active_inputs_});
+  return again == monitors_;
+}
+
+QuietInterval Ans1::quiet_interval() const {
+  const std::uint16_t fsc = position_.full_scale_count;
+  QuietInterval quiet = QuietInterval::around(gmp_, fsc);
+  const ScanState state = scan_state(scheduler_.now());
+  for (const OutputChannel& channel : channels_) {
+    channel.keep_quiet(quiet, state);
+  }
+  ShiftRegister::keep_quiet(quiet, gmp_, sr_setup_, fsc);
+  monitors_.keep_quiet(quiet, gmp_);
+  return quiet;
+}
+
+Nanos Ans1::last_run_grid(Nanos now) const {
+  if (now <= grid_origin_) {
+    return grid_origin_; // the last scan that ran
+  }
+  const Nanos period = scan_period();
+  const Nanos g = grid_origin_ + period * ((now - grid_origin_) / period);
+  // A scan is the last event at its instant: during an ordinary event at a grid point the
+  // scan there has not run yet.
+  return g == now && scheduler_.ordinary_event_running() ? g - period : g;
+}
+
+std::int64_t Ans1::count_at(Nanos g) const {
+  return g > edge_grid_ ? transducer_count() : count_at_edge_grid_;
+}
+
+void Ans1::count_edge(std::int64_t before) {
+  if (!quiet_armed_) {
+    wake();
+    return;
+  }
+  const Nanos g = last_run_grid(scheduler_.now());
+  if (g > edge_grid_) { // the first edge after grid point g: the count there is the one before it
+    record_idle_ticks(g, before);
+    edge_grid_ = g;
+    count_at_edge_grid_ = before;
+  }
+  if (!quiet_.contains(global_position(transducer_count(), position_))) {
+    wake();
+  }
+}
+
+void Ans1::record_idle_ticks(Nanos g, std::int64_t after) {
+  for (Nanos tick = monitors_.next_idle_tick(); tick != Nanos::max() && grid_at_or_after(tick) <= g;
+       tick = monitors_.next_idle_tick()) {
+    monitors_.idle_tick(grid_at_or_after(tick) == edge_grid_ ? count_at_edge_grid_ : after);
+  }
+}
+
+std::uint16_t Ans1::gmp() const {
+  if (!quiet_armed_) {
+    return gmp_;
+  }
+  return global_position(count_at(last_run_grid(scheduler_.now())), position_);
+}
+
+void Ans1::settle_position(Nanos ran) {
+  if (!quiet_armed_) {
+    return;
+  }
+  record_idle_ticks(ran, count_at(ran));
+  const std::uint16_t at = global_position(count_at(ran), position_);
+  quiet_armed_ = false;
+  gmp_ = previous_gmp_ = at;
+  monitors_.settle_position(at);
 }
 
 } // namespace hilrig::models::ans1

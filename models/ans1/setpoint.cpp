@@ -40,32 +40,39 @@ bool stitch_on(std::int32_t d, std::int32_t length, std::int32_t on, std::int32_
   return 2 * remainder >= on; // at least half an On: on to the end (L872), else off (L873)
 }
 
+PairArc pair_arc(const SetpointPair& pair, std::uint16_t fsc, EdgeShift shift, bool late_wrap_to) {
+  if (!pair.used()) {
+    return {};
+  }
+  if (pair.from == pair.to) {
+    return {0, fsc}; // on at every position (L1897)
+  }
+  std::int32_t length = pair_length(pair, fsc);
+  if (late_wrap_to && pair.from > pair.to) {
+    ++length;
+  }
+  return {static_cast<std::int64_t>(pair.from) - shift.lead, length + shift.lead - shift.trail};
+}
+
 bool pair_on(std::uint16_t p, const SetpointPair& pair, std::uint16_t fsc, EdgeShift shift,
              bool late_wrap_to) {
   if (!pair.used()) {
     return false;
   }
-  std::int32_t length = pair_length(pair, fsc);
   if (pair.stitched()) {
+    const std::int32_t length = pair_length(pair, fsc);
     const auto d =
         static_cast<std::int32_t>(wrap(static_cast<std::int64_t>(p) - pair.from + shift.lead, fsc));
     return d < length && stitch_on(d, length, pair.on_stitch, pair.off_stitch);
   }
-  if (pair.from == pair.to) {
-    return true; // on at every position (L1897)
-  }
-  if (late_wrap_to && pair.from > pair.to) {
-    ++length;
-  }
-  const std::int32_t advanced_length = length + shift.lead - shift.trail;
-  if (advanced_length <= 0) {
+  const PairArc arc = pair_arc(pair, fsc, shift, late_wrap_to);
+  if (arc.length <= 0) {
     return false;
   }
-  if (advanced_length >= fsc) {
+  if (arc.length >= fsc) {
     return true;
   }
-  const auto d = wrap(static_cast<std::int64_t>(p) - pair.from + shift.lead, fsc);
-  return d < advanced_length;
+  return wrap(static_cast<std::int64_t>(p) - arc.start, fsc) < arc.length;
 }
 
 bool pairs_overlap(const std::array<SetpointPair, kPairsPerOutput>& pairs, std::uint16_t fsc) {

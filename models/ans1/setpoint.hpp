@@ -37,6 +37,16 @@ struct EdgeShift {
 [[nodiscard]] bool pair_on(std::uint16_t p, const SetpointPair& pair, std::uint16_t fsc, EdgeShift shift,
                            bool late_wrap_to = false);
 
+// Where an unstitched pair is on with advanced edges: at p with (p - start) mod FSC < length;
+// length <= 0: nowhere, length >= FSC: everywhere. pair_on's rule, as an arc of positions
+// (exact scan skipping asks where the state can change).
+struct PairArc {
+  std::int64_t start = 0;
+  std::int32_t length = 0;
+};
+[[nodiscard]] PairArc pair_arc(const SetpointPair& pair, std::uint16_t fsc, EdgeShift shift,
+                               bool late_wrap_to = false);
+
 // Pairs on one output that share a position (Setpoint Overlap Error 1100, L1898).
 [[nodiscard]] bool pairs_overlap(const std::array<SetpointPair, kPairsPerOutput>& pairs, std::uint16_t fsc);
 

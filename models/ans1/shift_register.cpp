@@ -31,6 +31,16 @@ void ShiftRegister::step(std::uint16_t previous_gmp, std::uint16_t gmp, bool inp
   }
 }
 
+void ShiftRegister::keep_quiet(QuietInterval& quiet, std::uint16_t gmp, const ShiftRegisterSetup& setup,
+                               std::uint16_t fsc) {
+  if (setup.input == 0) {
+    return;
+  }
+  quiet.keep_arc(gmp, setup.window_from,
+                 wrap(static_cast<std::int64_t>(setup.window_to) - setup.window_from, fsc), fsc);
+  quiet.keep_before_mark(gmp, setup.shift_position);
+}
+
 std::array<std::uint16_t, 16> ShiftRegister::words() const {
   std::array<std::uint16_t, 16> w{};
   for (std::size_t i = 0; i < kShiftRegisterBits; ++i) {

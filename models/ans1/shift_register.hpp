@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "models/ans1/output_setup.hpp"
+#include "models/ans1/quiet_interval.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -20,6 +21,9 @@ class ShiftRegister {
 public:
   void step(std::uint16_t previous_gmp, std::uint16_t gmp, bool input_active, const ShiftRegisterSetup& setup,
             std::uint16_t fsc);
+  // Scan skipping (quiet_interval.hpp): where step() can capture or shift.
+  static void keep_quiet(QuietInterval& quiet, std::uint16_t gmp, const ShiftRegisterSetup& setup,
+                         std::uint16_t fsc);
   // b[n], n = 1..256.
   [[nodiscard]] bool bit(int n) const { return bits_.test(static_cast<std::size_t>(n - 1)); }
   [[nodiscard]] bool capture() const { return capture_; }

@@ -20,6 +20,8 @@ public:
             bool retrigger_restarts = true, Nanos timer_error = Nanos{0});
   // True while the output is held off because its timer expired (DA16 w16 bit reads 0).
   [[nodiscard]] bool expired() const { return expired_; }
+  // A Time-Only re-trigger holds the output off at one position: any count change matters.
+  [[nodiscard]] bool holding() const { return hold_; }
   void reset() { *this = TimedLimit{}; }
   // When a running timer expires (the first step at or after it changes the state); max when
   // none runs. What scan skipping wakes for: the limit the last step judged against, so the

@@ -1,0 +1,248 @@
+// Exact scan skipping while the encoder moves (docs/virtual-time.md, "Motion"): property tests
+// against the scan-every-period oracle. Random programs (setpoint pairs with advances and
+// stitches, LS offsets, timers, speed/simple/pulse/window enabling, the shift register, the
+// brake monitor, die protection, production counters) under random motion (speeds from
+// standstill to one count per 3 us, reversals, pauses, steps on grid points) and random input
+// edges: every output edge at the same time on both engines, and every host-visible value
+// (the 20 status words, GMP, LS positions, time of rotation, shift register, counters) the same
+// when read from an event at any instant, on a grid point or between.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "ans1_bench.hpp"
+
+namespace hilrig::models::ans1 {
+namespace {
+
+using namespace hilrig::literals;
+using testing::Bench;
+
+Params every_period() {
+  Params p;
+  p.exact_scan = true;
+  return p;
+}
+
+// Everything a host or the rig reads, at one instant.
+struct Reading {
+  Nanos at{};
+  HostWords status{};
+  std::uint16_t gmp = 0;
+  std::array<std::uint16_t, kOutputCount> ls{};
+  std::uint16_t time_of_rotation = 0;
+  std::array<std::uint16_t, 16> shift_register{};
+  std::uint32_t part_cycle = 0;
+  std::uint32_t revolutions = 0;
+  std::uint16_t outputs = 0;
+  friend bool operator==(const Reading&, const Reading&) = default;
+};
+
+Reading read(Ans1& d, Nanos at) {
+  Reading r;
+  r.at = at;
+  r.status = d.host().status();
+  r.gmp = d.gmp();
+  for (int n = 1; n <= kOutputCount; ++n) {
+    r.ls[static_cast<std::size_t>(n - 1)] = d.ls_position(n);
+  }
+  r.time_of_rotation = d.time_of_rotation();
+  r.shift_register = d.shift_register().words();
+  r.part_cycle = d.monitors().counters().value(CounterId::PartCycle);
+  r.revolutions = d.monitors().counters().value(CounterId::Revolutions);
+  r.outputs = d.output_states();
+  return r;
+}
+
+void PrintTo(const Reading& r, std::ostream* os) {
+  *os << "at " << r.at.count() << " ns: gmp " << r.gmp << ", outputs " << r.outputs << ", rotation "
+      << r.time_of_rotation << ", part cycle " << r.part_cycle;
+}
+
+// A random program and stimulus, the same for both engines (one generator per bench, same seed).
+class Scenario {
+public:
+  explicit Scenario(std::uint64_t seed) : seed_(seed) {}
+
+  void apply(Bench& b, Nanos end) const {
+    std::mt19937_64 rng(seed_);
+    const auto pick = [&rng](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    Ans1& d = b.device();
+
+    PositionSetup position = d.position_setup();
+    position.sensor = SensorType::Quadrature;
+    const std::array<std::uint16_t, 3> cpcs{4096, 1000, 360};
+    position.counts_per_cycle = cpcs[static_cast<std::size_t>(pick(0, 2))];
+    const std::array<std::uint16_t, 3> fscs{position.counts_per_cycle, 360, 100};
+    position.full_scale_count =
+        std::min(position.counts_per_cycle, fscs[static_cast<std::size_t>(pick(0, 2))]);
+    d.configure_position(position);
+    const int fsc = position.full_scale_count;
+
+    for (int n = 1; n <= kOutputCount; ++n) {
+      OutputSetup o;
+      const int pairs = pick(0, 3) == 0 ? pick(1, 3) : pick(0, 1); // few boundaries: long quiet stretches
+      for (int k = 0; k < pairs; ++k) {
+        SetpointPair& p = o.pairs[static_cast<std::size_t>(k)];
+        p.from = static_cast<std::uint16_t>(pick(0, fsc - 1));
+        p.to = static_cast<std::uint16_t>(pick(0, fsc - 1));
+        if (seed_ % 4 == 0 && pick(0, 5) == 0) { // a stitched pair wakes at every GMP change
+          p.on_stitch = static_cast<std::uint16_t>(pick(1, 5));
+          p.off_stitch = static_cast<std::uint16_t>(pick(1, 5));
+        }
+      }
+      o.ls_offset = pick(0, 1) == 0 ? 0 : pick(-(fsc - 1), fsc - 1);
+      if (pick(0, 1) == 0) {
+        o.advance_mode = AdvanceMode::Fixed;
+        o.lead_ms = static_cast<std::uint16_t>(pick(0, 4));
+        o.trail_ms = static_cast<std::uint16_t>(pick(0, 2));
+      }
+      if (pick(0, 7) == 0) {
+        o.timer_type = pick(0, 1) == 0 ? TimerType::TimeOrPosition : TimerType::TimeOnly;
+        o.timer_ms = static_cast<std::uint16_t>(pick(1, 5));
+      }
+      if (pick(0, 5) == 0) {
+        o.rpm_low = static_cast<std::int16_t>(pick(-50, 200));
+        o.rpm_high = static_cast<std::int16_t>(pick(-50, 2000));
+      }
+      const int anding = pick(0, 8);
+      if (anding <= 2) {
+        o.anding[static_cast<std::size_t>(pick(1, 3))] = static_cast<AndingMode>(anding + 1);
+        o.window_low = static_cast<std::uint16_t>(pick(0, fsc - 1));
+        o.window_high = static_cast<std::uint16_t>(pick(0, fsc - 1));
+      }
+      if (pick(0, 4) == 0) {
+        o.sr_bit = static_cast<std::uint16_t>(pick(1, 4));
+      }
+      d.configure_output(n, o);
+    }
+    if (pick(0, 1) == 0) {
+      ShiftRegisterSetup sr;
+      sr.input = 5;
+      sr.window_from = static_cast<std::uint16_t>(pick(0, fsc - 1));
+      sr.window_to = static_cast<std::uint16_t>(pick(0, fsc - 1));
+      sr.shift_position = static_cast<std::uint16_t>(pick(0, fsc - 1));
+      d.configure_shift_register(sr);
+    }
+    MonitorSetup m;
+    if (pick(0, 1) == 0) {
+      m.brake.input = 6;
+      m.brake.complete_stop_count = static_cast<std::uint8_t>(pick(0, 20));
+      m.brake.start_time_limit_ms = static_cast<std::uint16_t>(pick(0, 30));
+      m.brake.stop_time_limit_ms = static_cast<std::uint16_t>(pick(0, 200));
+      m.brake.stop_overrun_output = 16;
+    }
+    if (pick(0, 2) == 0) {
+      DieMonitorSetup& die = m.die.monitors[6];
+      die.mode = static_cast<DieCheckMode>(pick(1, 5));
+      die.fault_output = 15;
+      die.windows[0] = DieWindow{static_cast<std::uint16_t>(pick(0, fsc - 1)),
+                                 static_cast<std::uint16_t>(pick(0, fsc - 1))};
+    }
+    m.production.increment_position = static_cast<std::uint16_t>(pick(0, fsc - 1));
+    m.production.counters[0] = CounterSetup{14, OverflowMode::Toggle, false, 3};
+    d.configure_monitors(m);
+
+    // Motion: segments of constant step period, reversals and pauses.
+    Nanos t = microseconds(pick(0, 50));
+    int direction = 1;
+    const std::array<Nanos, 7> periods{3_us, 8_us, 10_us, 25_us, 100_us, 1_ms, 7_us};
+    while (t < end) {
+      if (pick(0, 3) == 0) {
+        direction = -direction;
+      }
+      const Nanos period = periods[static_cast<std::size_t>(pick(0, 6))];
+      const int steps = pick(1, static_cast<int>(40_ms / period));
+      if (pick(0, 1) == 0) {
+        t = (t / 10_us) * 10_us; // steps on grid points
+      }
+      b.quadrature_run(t, period, steps, direction);
+      t += period * steps + microseconds(pick(0, 1) == 0 ? 0 : pick(1, 20'000));
+    }
+    // Input edges (inputs 1..7: enabling, shift register, brake, die protection).
+    for (Nanos at = microseconds(pick(0, 2000)); at < end; at += microseconds(pick(1, 8000))) {
+      b.input_at(at, pick(1, 7), pick(0, 1) == 1);
+    }
+  }
+
+private:
+  std::uint64_t seed_;
+};
+
+// Readings from ordinary events: at random instants and exactly on grid points, where the
+// scan at that instant has not run yet.
+void sample(Bench& b, std::vector<Reading>& out, std::uint64_t seed, Nanos end) {
+  std::mt19937_64 rng(seed ^ 0x5eedU);
+  for (Nanos at = 0_us; at < end; at += microseconds(std::uniform_int_distribution<int>(1, 300)(rng))) {
+    const Nanos when = std::uniform_int_distribution<int>(0, 1)(rng) == 0 ? at : (at / 10_us) * 10_us;
+    b.scheduler().at(when, [&b, &out, when] { out.push_back(read(b.device(), when)); });
+  }
+}
+
+TEST(ScanSkippingMotion, RandomProgramsAndMotionGiveTheOraclesEdgesAndWords) {
+  constexpr Nanos kEnd = 400_ms;
+  std::uint64_t skipped_scans = 0;
+  std::uint64_t oracle_scans = 0;
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    SCOPED_TRACE(seed);
+    Bench oracle(every_period());
+    Bench skipping;
+    std::vector<Reading> oracle_readings;
+    std::vector<Reading> skipping_readings;
+    Scenario(seed).apply(oracle, kEnd);
+    Scenario(seed).apply(skipping, kEnd);
+    sample(oracle, oracle_readings, seed, kEnd);
+    sample(skipping, skipping_readings, seed, kEnd);
+    for (Nanos t = 0_ms; t <= kEnd; t += 7_ms) { // and from outside events, between runs
+      oracle.run_until(t);
+      skipping.run_until(t);
+      ASSERT_EQ(read(oracle.device(), t), read(skipping.device(), t));
+    }
+    ASSERT_EQ(oracle_readings.size(), skipping_readings.size());
+    for (std::size_t i = 0; i < oracle_readings.size(); ++i) {
+      ASSERT_EQ(oracle_readings[i], skipping_readings[i]) << i;
+    }
+    for (int n = 1; n <= kOutputCount; ++n) {
+      ASSERT_EQ(oracle.edges(n), skipping.edges(n)) << "output " << n;
+    }
+    oracle_scans += oracle.device().scans();
+    skipped_scans += skipping.device().scans();
+  }
+  EXPECT_LT(skipped_scans, oracle_scans); // the comparison ran on a skipping engine
+}
+
+TEST(ScanSkippingMotion, SteadyMotionScansAtOutputChangesNotEveryPeriod) {
+  // 1,800 RPM on a 1,024-line encoder (4,096 counts/turn: one count per 8.14 us, more than
+  // one per 10 us scan), 16 outputs each on for 200 of every 4,096 counts, no advance: 32
+  // output changes per turn, 30 turns per second.
+  Bench oracle(every_period());
+  Bench skipping;
+  for (Bench* b : {&oracle, &skipping}) {
+    PositionSetup p = b->device().position_setup();
+    p.sensor = SensorType::Quadrature;
+    p.counts_per_cycle = 4096;
+    p.full_scale_count = 4096;
+    b->device().configure_position(p);
+    for (int n = 1; n <= kOutputCount; ++n) {
+      OutputSetup o;
+      o.pairs[0] = SetpointPair{static_cast<std::uint16_t>(256 * (n - 1) + 1),
+                                static_cast<std::uint16_t>(256 * (n - 1) + 201), 0, 0};
+      o.ls_offset = n % 2 == 1 ? 4000 : 0; // odd outputs 96 counts late: LS = GMP + 4000 mod 4096
+      b->device().configure_output(n, o);
+    }
+    b->quadrature_run(1_ms, 8'138_ns, 12'288, 1); // 100 ms: 3 turns
+    b->run_until(102_ms);
+  }
+  for (int n = 1; n <= kOutputCount; ++n) {
+    ASSERT_EQ(oracle.edges(n), skipping.edges(n)) << "output " << n;
+    EXPECT_EQ(oracle.edges(n).size(), 6U) << "output " << n; // on and off once per turn
+  }
+  // ans1 manual (seeds/000_08a2edf5547d4d1e.txt L572-L576, docs/spec/ans1.md L187): a master
+  // scans every 10 us: t = 0, 10 us, ..., 102 ms.
+  EXPECT_EQ(oracle.device().scans(), 10'201U);
+  // About one scan per output change and per roll-over, not one per 10 us.
+  EXPECT_LT(skipping.device().scans(), 16U * 2U * 3U + 3U + 40U);
+}
+
+} // namespace
+} // namespace hilrig::models::ans1
