@@ -267,12 +267,16 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
       const Nanos run_epoch = can_log_offset;
       can_log_offset += p.c.scenario_of(run).end;
       if (!output.trace) return std::string();
+      // --trace: a run the policy does not keep formats and writes nothing (its recording, which
+      // the checks judged from, goes with it).
+      const bool passed = rig::run_outcome(output.result) == rig::Outcome::Pass;
+      const bool first = &run == &p.runs.front();
       std::string kept; // the trace file the run's result links (its failure trace when it has one)
-      if (&run == &p.runs.front()) {
+      if (first && rig::keeps_trace(o.trace, true, passed)) {
         write_trace_files(dir, "trace", *output.trace, output.result, false);
         kept = "trace.vcd";
       }
-      if (rig::run_outcome(output.result) != rig::Outcome::Pass && failure_traces < kMaxFailureTraces) {
+      if (rig::keeps_trace(o.trace, false, passed) && failure_traces < kMaxFailureTraces) {
         ++failure_traces;
         const std::string stem = fmt::format("trace-run{}", run.index);
         if (kept.empty()) {
@@ -305,6 +309,7 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     header.station = o.station;
     header.host_link = o.host_link_factory ? "custom" : o.host_link;
     header.backend = p.rig ? "hardware" : "virtual";
+    header.trace_policy = o.trace;
     rig::RunLog log(dir / rig::kRunLogName, header);
     const rig::CampaignResult done = exec.run_all(p.runs, p.seed, part, started, sink,
                                                   [&](const rig::RunResult& run) { log.append(run); });
@@ -574,10 +579,24 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--exact-scan", options->exact_scan,
                 "virtual DUTs scan every period instead of skipping the scans that change nothing: the "
                 "oracle of scan skipping, with byte-identical outputs (docs/virtual-time.md)");
+  auto trace = std::make_shared<std::string>(rig::to_string(options->trace));
+  cmd->add_option(
+         "--trace", *trace,
+         "which runs keep trace.vcd / trace-run<i>.vcd and their .gtkw files: all (the first run's and "
+         "each run's that did not pass; default), failed (only runs that did not pass: nightly "
+         "sweeps), none")
+      ->check(CLI::Validator(
+          [](const std::string& v) {
+            if (rig::trace_policy_named(v)) return std::string();
+            return fmt::format("{} is not one of all, failed, none{}", v,
+                               did_you_mean(v, rig::trace_policy_names()));
+          },
+          "all|failed|none"));
   cmd->add_flag(
       "--progress", options->progress_lines,
       "a line per finished run on stderr (outcome, wall time, ETA), also when it is not a terminal");
-  cmd->callback([options] {
+  cmd->callback([options, trace] {
+    options->trace = *rig::trace_policy_named(*trace); // checked above
     options->progress = isatty(fileno(stderr)) != 0;
     if (!options->epoch) {
       // The reproducible-builds convention (reproducible-builds.org/specs/source-date-epoch):

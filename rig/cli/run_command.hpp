@@ -1,9 +1,10 @@
 #pragma once
 // `hilrig run FILE.toml --out DIR [--seed S] [--shard K/N]`: runs a campaign (in virtual
 // time by default) and writes DIR/results.json, junit.xml, report.html, trace.vcd (the
-// shard's first run; also trace-run<i>.vcd for up to 20 runs that did not pass) and
-// can.log when CAN was used. Exit: 0 all passed, 1 a check failed, 2 bad input, 3 a rig fault
-// (also a run stopped by SIGINT/SIGTERM: what ran is written, the stopped run marked interrupted).
+// shard's first run; also trace-run<i>.vcd for up to 20 runs that did not pass; --trace failed
+// keeps only the latter, --trace none neither) and can.log when CAN was used. Exit: 0 all passed, 1 a check
+// failed, 2 bad input, 3 a rig fault (also a run stopped by SIGINT/SIGTERM: what ran is written, the stopped
+// run marked interrupted).
 //
 // `hilrig run A.toml B.toml DIR ... --out OUT [--jobs N]`: a suite (a directory stands for
 // every *.toml under it, sorted): each campaign's outputs in OUT/<its name>/, one junit.xml
@@ -53,6 +54,7 @@ struct RunOptions {
   // junit.xml's timestamp, can.log's epoch), seconds since 1970, instead of now: reproducible
   // outputs. Empty: now.
   std::optional<std::int64_t> epoch;
+  rig::TracePolicy trace = rig::TracePolicy::All; // --trace: which runs keep their trace files
   std::string station;                 // --station: the test station's name, carried by the outputs ("" none)
   std::string rig;                     // --rig: the rig config (docs/rig-config.md) of a hardware run
   hardware::RigPortsFactory rig_ports; // set by a caller: the rig's ports instead of its drivers

@@ -12,6 +12,7 @@
 
 #include "rig/results/measurement.hpp"
 #include "rig/results/motion_record.hpp"
+#include "rig/results/trace_policy.hpp"
 
 namespace hilrig::rig {
 
@@ -75,10 +76,11 @@ struct CampaignResult {
   std::string campaign_file;
   std::string dut_serial;
   std::string station;
-  std::string host_link = "in-process"; // or "modbus-rtu-pty" (hilrig run --host-link)
-  std::string backend = "virtual";      // or "hardware" (hilrig run --backend)
-  std::size_t planned_runs = 0;         // runs this result should hold when complete
-  std::vector<RunResult> runs;          // in run-index order
+  std::string host_link = "in-process";        // or "modbus-rtu-pty" (hilrig run --host-link)
+  std::string backend = "virtual";             // or "hardware" (hilrig run --backend)
+  TracePolicy trace_policy = TracePolicy::All; // which runs kept their trace files (hilrig run --trace)
+  std::size_t planned_runs = 0;                // runs this result should hold when complete
+  std::vector<RunResult> runs;                 // in run-index order
   // The campaign was stopped early by this signal ("SIGTERM"); nullopt when it was not.
   std::optional<std::string> interrupted;
   // Derived by finalize():

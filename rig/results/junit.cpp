@@ -170,6 +170,7 @@ std::string traceability_properties(const CampaignResult& r) {
   if (!r.station.empty()) s += property("station", r.station);
   s += property("backend", r.backend);
   s += property("host_link", r.host_link);
+  s += property("trace_policy", to_string(r.trace_policy));
   return s;
 }
 

@@ -71,6 +71,13 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vecto
                       name, quoted(s.dut_serial), quoted(s.station), first_name, quoted(first.dut_serial),
                       quoted(first.station)));
     }
+    if (s.trace_policy != first.trace_policy) {
+      // The merged result says which runs kept traces: one policy for all, or it would mislead.
+      throw std::invalid_argument(fmt::format("merge: {} ran with --trace {}, {} with --trace {}: "
+                                              "shards of different trace policies do not merge",
+                                              name, to_string(s.trace_policy), first_name,
+                                              to_string(first.trace_policy)));
+    }
     if (s.shard.count != count) {
       throw std::invalid_argument(
           fmt::format("merge: shard counts differ ({} and {})", s.shard.count, count));
@@ -94,6 +101,7 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vecto
   out.station = first.station;
   out.host_link = first.host_link;
   out.backend = first.backend;
+  out.trace_policy = first.trace_policy;
   out.shard = Shard{0, 1};
   out.started_at = first.started_at;
   out.host = first.host;

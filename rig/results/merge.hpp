@@ -10,9 +10,9 @@
 namespace hilrig::rig {
 
 // Throws std::invalid_argument when the shards belong to different campaigns, devices, seeds,
-// campaign revisions, tool versions, boards (`[dut] serial`), stations (`--station`) or shard
-// counts, when a shard is missing or given twice, or when two shards hold the same run index.
-// `files` (one per shard, in the order given; may be empty) names each shard in the messages.
+// campaign revisions, tool versions, boards (`[dut] serial`), stations (`--station`), trace
+// policies (`--trace`) or shard counts, when a shard is missing or given twice, or when two shards hold the
+// same run index. `files` (one per shard, in the order given; may be empty) names each shard in the messages.
 // Wall-clock fields come from shard 0.
 [[nodiscard]] CampaignResult merge_shards(std::vector<CampaignResult> shards,
                                           const std::vector<std::string>& files = {});

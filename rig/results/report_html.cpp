@@ -179,6 +179,19 @@ std::string check_section(const RunResult& run, const CheckResult& c, std::size_
   return s + "</table>\n</section>\n";
 }
 
+// Which runs kept a trace file, in the reader's words (hilrig run --trace).
+std::string trace_policy_text(TracePolicy policy) {
+  switch (policy) {
+  case TracePolicy::All:
+    return "all: the first run's and each run's that did not pass (--trace all)";
+  case TracePolicy::Failed:
+    return "failed: each run's that did not pass (--trace failed)";
+  case TracePolicy::None:
+    return "none (--trace none)";
+  }
+  return to_string(policy);
+}
+
 std::string traceability(const CampaignResult& r) {
   const auto row = [](const char* name, const std::string& value) {
     return fmt::format("<tr><th>{}</th><td>{}</td></tr>", name, xml_escape(value));
@@ -200,6 +213,7 @@ std::string traceability(const CampaignResult& r) {
   s += row("shard", fmt::format("{} of {}", r.shard.index + 1, r.shard.count));
   s += row("backend", r.backend);
   s += row("host link", r.host_link);
+  s += row("traces kept", trace_policy_text(r.trace_policy));
   return s + "</table>\n";
 }
 
@@ -291,7 +305,7 @@ std::string run_row(const RunResult& run) {
                         : fmt::format("<a href=\"{0}\">{0}</a>", xml_escape(run.trace)));
 }
 
-std::string run_section(const RunResult& run) {
+std::string run_section(const RunResult& run, TracePolicy policy) {
   // A run that passed is collapsed: the failures are what a reader opens the report for.
   std::string s = fmt::format(
       "<details class=\"run\" id=\"r{}\"{}>\n<summary>run {}: {} {}</summary>\n<p>seed {}{}{}</p>\n",
@@ -301,11 +315,10 @@ std::string run_section(const RunResult& run) {
                         : fmt::format("; fault <b>{}</b> ({})", xml_escape(run.fault),
                                       caught(run) ? "caught" : "not caught"),
       run.error.empty() ? std::string() : fmt::format("; rig error: {}", xml_escape(run.error)));
-  s += run.trace.empty()
-           ? std::string("<p>trace: none kept for this run (the first run's and those that did not "
-                         "pass are)</p>\n")
-           : fmt::format("<p>trace: <a href=\"{0}\">{0}</a> (GTKWave, PulseView)</p>\n",
-                         xml_escape(run.trace));
+  s += run.trace.empty() ? fmt::format("<p>trace: none kept for this run (traces kept: {})</p>\n",
+                                       xml_escape(trace_policy_text(policy)))
+                         : fmt::format("<p>trace: <a href=\"{0}\">{0}</a> (GTKWave, PulseView)</p>\n",
+                                       xml_escape(run.trace));
   if (!run.motion.empty()) {
     s += figure(motion_figure(run.motion, {}),
                 "the shaft's speed and position over the run, with the events that acted on it (grey)");
@@ -367,7 +380,7 @@ void write_report_html(const CampaignResult& r, const RunSource& runs, const Tex
     DetailChoice choice;
     runs([&](const RunResult& run) {
       if (choice.detailed(run))
-        out(run_section(run));
+        out(run_section(run, r.trace_policy));
       else
         ++rows;
     });

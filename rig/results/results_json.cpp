@@ -290,6 +290,7 @@ json document(const CampaignResult& r, bool with_runs) {
          {"station", opt_str(r.station)},
          {"host_link", r.host_link},
          {"backend", r.backend},
+         {"trace_policy", to_string(r.trace_policy)},
          {"planned_runs", r.planned_runs},
          {"complete", r.complete},
          {"runs", runs},
@@ -342,6 +343,13 @@ CampaignResult campaign_from_json(const json& j) {
   if (j.contains("station")) r.station = str_or_empty(j, "station", w);
   if (j.contains("host_link")) r.host_link = get<std::string>(j, "host_link", w);
   if (j.contains("backend")) r.backend = get<std::string>(j, "backend", w);
+  if (j.contains("trace_policy")) { // results written before --trace kept every trace they could
+    const auto name = get<std::string>(j, "trace_policy", w);
+    const std::optional<TracePolicy> policy = trace_policy_named(name);
+    if (!policy)
+      throw std::runtime_error("results: trace_policy \"" + name + "\" is not all, failed or none");
+    r.trace_policy = *policy;
+  }
   for (const auto& run : field(j, "runs", w)) r.runs.push_back(run_from_json(run));
   if (j.contains("interrupted")) r.interrupted = get<std::string>(j, "interrupted", w);
   if (j.contains("wall_clock")) {

@@ -92,6 +92,20 @@ TEST(CommandLine, NegativeSeedIsRefused) {
   EXPECT_FALSE(fs::exists(out / "results.json"));
 }
 
+TEST(CommandLine, UnknownTracePolicyNamesTheClosestAndRunsNothing) {
+  const fs::path out = test::scratch_dir("campaign", "trace_policy_typo");
+  const Result r = hilrig("run " + kPass + " --out " + out.string() + " --trace faild");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--trace: faild is not one of all, failed, none (did you mean \"failed\"?)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(out / "results.json"));
+  const Result far = hilrig("run " + kPass + " --out " + out.string() + " --trace everything");
+  EXPECT_EQ(far.status, 2);
+  EXPECT_NE(far.err.find("--trace: everything is not one of all, failed, none\n"), std::string::npos)
+      << far.err;
+}
+
 // A device fault and a power cycle are the virtual board's: `run --backend hardware` refuses
 // the campaign before it even reads the rig config (exit 2, the entry's file:line:col) and
 // writes nothing.

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -81,6 +82,146 @@ TEST(RunCommand, FailedCheckExitsOne) {
   // The first run's failure trace is its trace.vcd: the same bytes (written once, linked).
   EXPECT_EQ(hilrig::test::read_file(dir / "out" / "trace-run0.vcd"),
             hilrig::test::read_file(dir / "out" / "trace.vcd"));
+}
+
+// --trace: which runs keep their trace files. The campaigns: the inline reference PLS (one
+// nominal run, which passes), and the same with a fault run that nothing catches (run 1 fails:
+// the fault changes nothing its catcher could see).
+std::string failing_second_run() {
+  return campaign::test::kPlsCampaign +
+         "[[fault]]\nname = \"unseen\"\nset = { \"campaign.end\" = \"300ms\" }\ncaught_by = \"on_latency\"\n";
+}
+
+int run_traced(const fs::path& file, const fs::path& out, std::optional<rig::TracePolicy> policy) {
+  std::ostringstream err;
+  RunOptions o;
+  o.file = file.string();
+  o.out = out;
+  if (policy) o.trace = *policy;
+  return run_campaign(o, err);
+}
+
+// The trace files in a directory (VCDs and GTKWave save files), by name, with their bytes.
+std::map<std::string, std::string> trace_files_in(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string ext = e.path().extension().string();
+    if (ext == ".vcd" || ext == ".gtkw")
+      files[e.path().filename().string()] = hilrig::test::read_file(e.path());
+  }
+  return files;
+}
+
+std::set<std::string> names_of(const std::map<std::string, std::string>& files) {
+  std::set<std::string> names;
+  for (const auto& [name, bytes] : files) names.insert(name);
+  return names;
+}
+
+// Every trace results.json and report.html name is a file in `out`, and every kept trace is
+// named by its run: nothing links a trace that was not kept.
+void expect_links_only_kept_traces(const fs::path& out) {
+  const rig::CampaignResult r = rig::read_results_file(out / "results.json");
+  std::set<std::string> linked;
+  for (const rig::RunResult& run : r.runs)
+    if (!run.trace.empty()) linked.insert(run.trace);
+  const std::string report = hilrig::test::read_file(out / "report.html");
+  const std::regex href("href=\"([^\"]+\\.vcd)\"");
+  for (auto it = std::sregex_iterator(report.begin(), report.end(), href); it != std::sregex_iterator(); ++it)
+    EXPECT_TRUE(linked.contains((*it)[1].str())) << (*it)[1].str();
+  for (const std::string& f : linked) EXPECT_TRUE(fs::exists(out / f)) << f;
+  for (const auto& [name, bytes] : trace_files_in(out)) {
+    if (name.ends_with(".vcd")) {
+      EXPECT_TRUE(linked.contains(name) || name == "trace.vcd") << name;
+    }
+  }
+  EXPECT_EQ(hilrig::test::read_file(out / "junit.xml").find(".vcd"), std::string::npos);
+}
+
+TEST(RunTrace, AllIsTheDefaultAndKeepsTheFirstRunAndEachFailedRun) {
+  const fs::path dir = scratch("trace_all");
+  const fs::path file = write_file(dir, "mixed.toml", failing_second_run());
+  ASSERT_EQ(run_traced(file, dir / "default", std::nullopt), 1);
+  ASSERT_EQ(run_traced(file, dir / "all", rig::TracePolicy::All), 1);
+  const auto all = trace_files_in(dir / "all");
+  EXPECT_EQ(names_of(all),
+            (std::set<std::string>{"trace.vcd", "trace-run1.vcd", "trace-run1.on_latency.gtkw"}));
+  EXPECT_EQ(trace_files_in(dir / "default"), all); // the same files, byte for byte
+  const rig::CampaignResult r = rig::read_results_file(dir / "all" / "results.json");
+  EXPECT_EQ(r.trace_policy, rig::TracePolicy::All);
+  ASSERT_EQ(r.runs.size(), 2U);
+  EXPECT_EQ(r.runs[0].outcome, rig::Outcome::Pass);
+  EXPECT_EQ(r.runs[0].trace, "trace.vcd");
+  EXPECT_EQ(r.runs[1].outcome, rig::Outcome::Fail);
+  EXPECT_EQ(r.runs[1].trace, "trace-run1.vcd");
+  expect_links_only_kept_traces(dir / "all");
+  EXPECT_NE(hilrig::test::read_file(dir / "all" / "junit.xml")
+                .find("<property name=\"trace_policy\" value=\"all\"/>"),
+            std::string::npos);
+}
+
+TEST(RunTrace, FailedKeepsOnlyTheFailedRunsTraceWithTheBytesOfAll) {
+  const fs::path dir = scratch("trace_failed");
+  const fs::path file = write_file(dir, "mixed.toml", failing_second_run());
+  ASSERT_EQ(run_traced(file, dir / "all", rig::TracePolicy::All), 1);
+  ASSERT_EQ(run_traced(file, dir / "failed", rig::TracePolicy::Failed), 1);
+  const auto all = trace_files_in(dir / "all");
+  const auto failed = trace_files_in(dir / "failed");
+  EXPECT_EQ(names_of(failed), (std::set<std::string>{"trace-run1.vcd", "trace-run1.on_latency.gtkw"}));
+  for (const auto& [name, bytes] : failed) EXPECT_EQ(bytes, all.at(name)) << name;
+  const rig::CampaignResult r = rig::read_results_file(dir / "failed" / "results.json");
+  EXPECT_EQ(r.trace_policy, rig::TracePolicy::Failed);
+  ASSERT_EQ(r.runs.size(), 2U);
+  EXPECT_EQ(r.runs[0].trace, ""); // it passed: nothing kept, nothing linked
+  EXPECT_EQ(r.runs[1].trace, "trace-run1.vcd");
+  expect_links_only_kept_traces(dir / "failed");
+  EXPECT_NE(hilrig::test::read_file(dir / "failed" / "report.html").find("traces kept</th><td>failed"),
+            std::string::npos);
+}
+
+TEST(RunTrace, FailedFirstRunKeepsTraceVcdAndItsLinkAsAllDoes) {
+  // The late variant as the DUT itself: every run fails, the first one too.
+  const fs::path dir = scratch("trace_failed_first");
+  std::string text = campaign::test::kPlsCampaign;
+  text.replace(text.find("model = \"reference_pls\""), 23, "model = \"reference_pls\"\nvariant = \"late\"");
+  const fs::path file = write_file(dir, "late.toml", text);
+  ASSERT_EQ(run_traced(file, dir / "all", rig::TracePolicy::All), 1);
+  ASSERT_EQ(run_traced(file, dir / "failed", rig::TracePolicy::Failed), 1);
+  const auto failed = trace_files_in(dir / "failed");
+  EXPECT_EQ(names_of(failed),
+            (std::set<std::string>{"trace.vcd", "trace-run0.vcd", "trace-run0.on_latency.gtkw"}));
+  EXPECT_EQ(failed, trace_files_in(dir / "all"));
+  expect_links_only_kept_traces(dir / "failed");
+}
+
+TEST(RunTrace, NoneKeepsNoTraceFile) {
+  const fs::path dir = scratch("trace_none");
+  const fs::path file = write_file(dir, "mixed.toml", failing_second_run());
+  ASSERT_EQ(run_traced(file, dir / "none", rig::TracePolicy::None), 1);
+  ASSERT_EQ(run_traced(file, dir / "all", rig::TracePolicy::All), 1);
+  EXPECT_TRUE(trace_files_in(dir / "none").empty());
+  const rig::CampaignResult none = rig::read_results_file(dir / "none" / "results.json");
+  const rig::CampaignResult all = rig::read_results_file(dir / "all" / "results.json");
+  EXPECT_EQ(none.trace_policy, rig::TracePolicy::None);
+  for (const rig::RunResult& run : none.runs) EXPECT_EQ(run.trace, "") << run.index;
+  expect_links_only_kept_traces(dir / "none");
+  // What was judged does not depend on which traces were kept.
+  EXPECT_EQ(none.verdict, all.verdict);
+  EXPECT_EQ(none.totals, all.totals);
+}
+
+TEST(RunTrace, PassingCampaignKeepsItsTraceOnlyUnderAll) {
+  const fs::path dir = scratch("trace_pass");
+  const fs::path file = write_file(dir, "pass.toml", campaign::test::kPlsCampaign);
+  for (const rig::TracePolicy p : {rig::TracePolicy::All, rig::TracePolicy::Failed, rig::TracePolicy::None}) {
+    const fs::path out = dir / rig::to_string(p);
+    ASSERT_EQ(run_traced(file, out, p), 0) << rig::to_string(p);
+    EXPECT_EQ(names_of(trace_files_in(out)),
+              p == rig::TracePolicy::All ? std::set<std::string>{"trace.vcd"} : std::set<std::string>{})
+        << rig::to_string(p);
+    EXPECT_EQ(rig::read_results_file(out / "results.json").trace_policy, p);
+    expect_links_only_kept_traces(out);
+  }
 }
 
 TEST(RunCommand, BadFileExitsTwoWithFileLineColumnKey) {

@@ -106,5 +106,42 @@ TEST(Merge, RefusesShardsOfAnotherBoardOrStationNamingBothValuesAndFiles) {
   EXPECT_NE(why.find("shard 1 (shard1/results.json) ran on DUT serial 'SN-0043'"), std::string::npos) << why;
 }
 
+TEST(Merge, CarriesTheShardsTracePolicyAndRefusesShardsOfAnother) {
+  CampaignResult whole = test::sample_campaign(6);
+  for (const TracePolicy p : {TracePolicy::All, TracePolicy::Failed, TracePolicy::None}) {
+    whole.trace_policy = p;
+    EXPECT_EQ(merge_shards(shard(whole, 3)).trace_policy, p) << to_string(p);
+  }
+  auto mixed = shard(whole, 3); // --trace none
+  mixed[2].trace_policy = TracePolicy::Failed;
+  try {
+    (void)merge_shards(mixed);
+    ADD_FAILURE() << "merged shards of different trace policies";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "merge: shard 2 ran with --trace failed, shard 0 with --trace none: shards of "
+                           "different trace policies do not merge");
+  }
+}
+
+TEST(TracePolicy, NamesReadBackAndAnUnknownNameIsNone) {
+  for (const std::string& name : trace_policy_names()) {
+    const auto p = trace_policy_named(name);
+    ASSERT_TRUE(p) << name;
+    EXPECT_EQ(to_string(*p), name);
+  }
+  EXPECT_EQ(trace_policy_names(), (std::vector<std::string>{"all", "failed", "none"}));
+  EXPECT_FALSE(trace_policy_named("All"));
+  EXPECT_FALSE(trace_policy_named(""));
+  // Which runs keep their trace: (first run, passed) under each policy.
+  EXPECT_TRUE(keeps_trace(TracePolicy::All, true, true));
+  EXPECT_TRUE(keeps_trace(TracePolicy::All, false, false));
+  EXPECT_FALSE(keeps_trace(TracePolicy::All, false, true));
+  EXPECT_FALSE(keeps_trace(TracePolicy::Failed, true, true));
+  EXPECT_TRUE(keeps_trace(TracePolicy::Failed, true, false));
+  EXPECT_TRUE(keeps_trace(TracePolicy::Failed, false, false));
+  EXPECT_FALSE(keeps_trace(TracePolicy::None, true, false));
+  EXPECT_FALSE(keeps_trace(TracePolicy::None, false, false));
+}
+
 } // namespace
 } // namespace hilrig::rig
