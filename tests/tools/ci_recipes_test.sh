@@ -29,7 +29,7 @@ recipe gnu-parallel >parallel.sh
 [ "$(wc -l <parallel.sh)" -ge 2 ] || fail "no GNU parallel recipe found in docs/ci.md"
 cat parallel.sh
 bash -e parallel.sh
-hilrig run campaigns/ans1/ans1_faults.toml --backend virtual --out whole >/dev/null
+hilrig run campaigns/ans1/ans1_faults.toml --backend virtual --trace failed --out whole >/dev/null
 # The merged shards are the unsharded run: the same JSON but for the shard field.
 same_as_whole() {
   python3 - "$1" whole/results.json <<'PY'
