@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
+#include <string>
 #include <utility>
 
 namespace hilrig::checks {
@@ -20,7 +22,17 @@ struct Common {
   double tolerance;
   double modulus;
   std::size_t min_edges;
+  std::optional<Nanos> from{}; // the edges judged: those in [from, to]
+  std::optional<Nanos> to{};
 };
+
+// " from 100000000 ns to 1300000000 ns": the time span judged, where the check sets one.
+std::string span_words(const Common& c) {
+  std::string out;
+  if (c.from) out += fmt::format(" from {} ns", c.from->count());
+  if (c.to) out += fmt::format(" to {} ns", c.to->count());
+  return out;
+}
 
 // `expected(edge, speed)` gives the expected position and a sentence saying how.
 template <class Expected>
@@ -31,6 +43,7 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
   std::size_t n = 0;
   for (const Edge& e : output) {
     if (e.level != c.level) continue;
+    if ((c.from && e.time < *c.from) || (c.to && e.time > *c.to)) continue;
     const double s = speed ? speed(e.time) : 0.0;
     auto [want, how] = expected(s);
     const double fired = nearest_wrap(position(e.time), want, c.modulus);
@@ -51,15 +64,17 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
     ++n;
   }
   if (n == 0 && c.min_edges == 0) {
-    r.measurements.push_back(error(
-        c.name + ".edges", fmt::format("nothing judged: no {} edge on the output", level_name(c.level))));
+    r.measurements.push_back(
+        error(c.name + ".edges",
+              fmt::format("nothing judged: no {} edge on the output{}", level_name(c.level), span_words(c))));
     return r;
   }
-  r.measurements.insert(
-      r.measurements.begin(),
-      measure(c.name + ".edges", static_cast<double>(n), "", static_cast<double>(c.min_edges), std::nullopt,
-              n == 0 ? fmt::format("missing edge: no {} edge on the output", level_name(c.level))
-                     : fmt::format("{} {} edges", n, level_name(c.level))));
+  r.measurements.insert(r.measurements.begin(),
+                        measure(c.name + ".edges", static_cast<double>(n), "",
+                                static_cast<double>(c.min_edges), std::nullopt,
+                                n == 0 ? fmt::format("missing edge: no {} edge on the output{}",
+                                                     level_name(c.level), span_words(c))
+                                       : fmt::format("{} {} edges", n, level_name(c.level))));
   return r;
 }
 
@@ -78,7 +93,7 @@ CheckResult check_advance(std::span<const Edge> output, const PositionFn& positi
 
 CheckResult check_edge_at_position(std::span<const Edge> output, const PositionFn& position,
                                    const PositionFn& speed, const EdgeAtPositionSpec& spec) {
-  const Common c{spec.name, spec.level, spec.tolerance, spec.modulus, spec.min_edges};
+  const Common c{spec.name, spec.level, spec.tolerance, spec.modulus, spec.min_edges, spec.from, spec.to};
   return judge_edges(output, position, speed, c, "edge_at_position", [&](double) {
     return std::pair{spec.position, fmt::format("{}", spec.position)};
   });

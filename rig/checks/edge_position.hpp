@@ -38,10 +38,12 @@ struct EdgeAtPositionSpec {
   double tolerance = 1.0;
   double modulus = 0.0;
   std::size_t min_edges = 1;
+  std::optional<Nanos> from{}; // judge only the edges at or after this time (default: all)
+  std::optional<Nanos> to{};   // judge only the edges at or before this time (default: all)
 };
 
-// Every edge of spec.level fired within position ± tolerance. `speed` may be empty; it only
-// gives the expected window in time for the report.
+// Every edge of spec.level in [from, to] fired within position ± tolerance. `speed` may be
+// empty; it only gives the expected window in time for the report.
 [[nodiscard]] CheckResult check_edge_at_position(std::span<const Edge> output, const PositionFn& position,
                                                  const PositionFn& speed, const EdgeAtPositionSpec& spec);
 

@@ -188,6 +188,9 @@ CheckParams edge_at(std::string_view name, const Table& t) {
   p.spec.tolerance = t.num("tolerance_counts", 1.0);
   p.spec.modulus = t.num("modulus");
   p.spec.min_edges = t.count("min_edges", 1);
+  p.spec.from = t.opt_us("from_us");
+  p.spec.to = t.opt_us("to_us");
+  ordered(t, "from_us", "to_us");
   return p;
 }
 
@@ -358,13 +361,16 @@ std::vector<CheckKind> make_kinds() {
        P("fault_level", Lvl, false, "the fault output's level on a fault (low)"),
        P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time")},
       brake));
-  k.push_back(kind("edge_at_position", "every edge of an output at a position, within a tolerance",
-                   {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
-                    P("position", Num, true, "counts"),
-                    P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
-                    P("modulus", Num, false, "full-scale count (0: none)", time),
-                    P("min_edges", Int, false, "fewest edges (1)", counts)},
-                   edge_at));
+  k.push_back(
+      kind("edge_at_position", "every edge of an output at a position, within a tolerance",
+           {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
+            P("position", Num, true, "counts"),
+            P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
+            P("modulus", Num, false, "full-scale count (0: none)", time),
+            P("min_edges", Int, false, "fewest edges (1)", counts),
+            P("from_us", Num, false, "judge the edges from this time (inclusive; default: all)", time),
+            P("to_us", Num, false, "judge the edges up to this time (inclusive; default: all)", time)},
+           edge_at));
   k.push_back(kind("pulse_width", "every pulse on a line between a minimum and a maximum width",
                    {P("line", Str, true, "the line"), P("level", Lvl, false, "the pulse level (high)"),
                     P("min_us", Num, false, "shortest allowed (inclusive)", time),

@@ -105,5 +105,37 @@ TEST(EdgeAtPosition, EveryEdgeOfTheLevelWithinTolerance) {
   EXPECT_EQ(check_edge_at_position(over, ramp(1000.0), {}, spec).outcome(), rig::Outcome::Fail);
 }
 
+// from_us / to_us: only the edges in [from, to] (both inclusive, as every limit) are judged; an
+// edge 1 ns outside either end is not. A span with no edge judged nothing: a missing edge.
+TEST(EdgeAtPosition, JudgesOnlyTheEdgesInItsTimeSpan) {
+  EdgeAtPositionSpec spec{.name = "off", .level = Level::Low, .position = 250.0, .tolerance = 1.0};
+  // At 1 count/ms: the low edge at 250 ms fired at 250 counts (inside), the one at 301 ms at 301.
+  const std::vector<Edge> e{{250_ms, Level::Low}, {301_ms, Level::Low}};
+  spec.to = 301_ms - Nanos{1};
+  auto r = check_edge_at_position(e, ramp(1000.0), {}, spec);
+  EXPECT_EQ(find(r, "off.edges").value, 1.0);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  spec.to = 301_ms; // inclusive: the late edge is judged, and fails
+  r = check_edge_at_position(e, ramp(1000.0), {}, spec);
+  EXPECT_EQ(find(r, "off.edges").value, 2.0);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
+  spec.to.reset();
+  spec.from = 250_ms + Nanos{1}; // only the late edge
+  r = check_edge_at_position(e, ramp(1000.0), {}, spec);
+  EXPECT_EQ(find(r, "off.edges").value, 1.0);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
+  spec.from = 250_ms; // inclusive
+  EXPECT_EQ(find(check_edge_at_position(e, ramp(1000.0), {}, spec), "off.edges").value, 2.0);
+  spec.from = 260_ms;
+  spec.to = 300_ms; // no edge in the span
+  r = check_edge_at_position(e, ramp(1000.0), {}, spec);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
+  EXPECT_NE(find(r, "off.edges")
+                .detail.find("missing edge: no low edge on the output from 260000000 ns to "
+                             "300000000 ns"),
+            std::string::npos)
+      << find(r, "off.edges").detail;
+}
+
 } // namespace
 } // namespace hilrig::checks

@@ -177,16 +177,15 @@ TEST(PowerAns1, FaultsLeadFailsOnceTheOutputDelayMovesTheEdgeHalfACount) {
   }
 }
 
-// ans1_die_protection.toml `die2_fault_latency` judges one crossing (the die fault output goes
-// off once, on the first fault, and stays off in action 0: ans1 manual
-// seeds/000_08a2edf5547d4d1e.txt:1072), so it meets one phase of the 10 us scan: the board's
-// worst case at its threshold lies far beyond the 20 us limit (L572), and the row says why
-// instead of passing the gap in silence.
+// ans1_faults.toml `off_latency` judges one crossing (one press stroke; the brake is applied
+// once in a run), so it meets one phase of the 10 us scan: the board's worst case at its
+// threshold lies far beyond the 20 us limit (ans1 manual seeds/000_08a2edf5547d4d1e.txt:572),
+// and the row says why instead of passing the gap in silence.
 TEST(PowerAns1, ASingleCrossingLatencyCheckNamesItsUnmeasuredPhaseCoverage) {
   const campaign::Campaign c =
-      campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_die_protection.toml");
+      campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_faults.toml");
   PowerOptions options;
-  options.checks = {"die2_fault_latency"};
+  options.checks = {"off_latency"};
   const PowerResult r = measure_power(c, options);
   ASSERT_EQ(r.rows.size(), 1u);
   const PowerRow& row = r.rows[0];
@@ -199,6 +198,27 @@ TEST(PowerAns1, ASingleCrossingLatencyCheckNamesItsUnmeasuredPhaseCoverage) {
       << row.phase_coverage;
   EXPECT_NE(to_power_text(r).find("phase coverage not measured"), std::string::npos);
   EXPECT_NE(to_power_json(r).find("\"phase_coverage_complete\": false"), std::string::npos);
+}
+
+// ans1_die_protection.toml `die2_fault_latency`: input 2's Normally False monitor in action 0
+// (continuous count, ans1 manual seeds/000_08a2edf5547d4d1e.txt:2093) turns output 4 off at a
+// fault and keeps it off while the counter is non-zero (L1072); the 8-bit counter rolls over
+// 255 -> 0 (L1066), so the 256th fault after the output went off turns it back on and the
+// 257th off again. The campaign's closing train (40.234 us apart, 256 of them = 1030 scans -
+// 96 ns) makes 104 such off edges, each 96 ns earlier in the 10 us scan than the one before:
+// all hundred 0.1 us bins. Each latency is the wait for the next scan (0..10 us) plus the output
+// delay, so a board with output delay 10 us (worst case exactly the 20 us limit, L572) passes
+// and one with 10.2 us (worst case 20.2 us, 1 % beyond) fails, at every power-up scan phase;
+// 10.101 us (0.505 %) fails too, since one off edge falls within 96 ns after a scan.
+TEST(PowerAns1, ActionZeroDieFaultLatencyFailsOnePercentBeyondTheLimitThroughTheRollover) {
+  const campaign::Campaign c =
+      campaign::load_campaign(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_die_protection.toml");
+  for (const std::uint64_t seed : {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}}) {
+    SCOPED_TRACE(seed);
+    EXPECT_EQ(probe_param(c, "die2_fault_latency", "output_delay", Nanos{10'000}, seed), Probe::Pass);
+    EXPECT_EQ(probe_param(c, "die2_fault_latency", "output_delay", Nanos{10'200}, seed), Probe::Fail);
+  }
+  EXPECT_EQ(probe_param(c, "die2_fault_latency", "output_delay", Nanos{10'101}, c.seed), Probe::Fail);
 }
 
 // ans1_die_protection.toml `die4_fault_latency`: a Normally False die monitor with action 1
