@@ -61,7 +61,7 @@ std::uint16_t bit(int point) { return static_cast<std::uint16_t>(1U << static_ca
 Ans1::Ans1(Scheduler& scheduler, const Params& params, Variant variant)
     : scheduler_(scheduler), params_(effective_params(params, variant)), variant_(variant),
       excitation_(params.excitation_hz, params.excitation_amplitude), quad_(std::make_shared<QuadState>()),
-      monitors_(monitor_faults(variant), params.brake_sample_start_ms) {
+      monitors_(monitor_faults(variant), params.brake_sample_start) {
   quad_->device = this;
   monitors_.configure(MonitorSetup{}, position_.full_scale_count);
   grid_origin_ = scheduler_.now() + params_.scan_phase - scan_period();
@@ -158,7 +158,7 @@ void Ans1::power_on() {
   position_ = PositionSetup{};
   sr_setup_ = ShiftRegisterSetup{};
   channels_ = {};
-  monitors_ = Monitors(monitor_faults(variant_), params_.brake_sample_start_ms);
+  monitors_ = Monitors(monitor_faults(variant_), params_.brake_sample_start);
   monitors_.configure(MonitorSetup{}, position_.full_scale_count);
   quad_->decoder =
       signals::QuadratureDecoder(signals::CountMode::X4, quad_->a != nullptr && is_high(quad_->a->level()),

@@ -71,7 +71,7 @@ void BrakeMonitor::tick(Nanos now, bool released, std::int64_t pos4096, std::uin
     }
     break;
   case Phase::Debouncing:
-    debounce(now, released, gmp);
+    sample(now, released, gmp);
     break;
   case Phase::Stopping: {
     // The input is ignored until the cycle ends (L1041). Sliding 125 ms window, evaluated
@@ -93,23 +93,29 @@ void BrakeMonitor::begin_debounce(Nanos now, std::uint16_t gmp) {
   t0_ = now;
   overrun_tripped_ = false;
   pending_applied_position_ = gmp;
+  next_sample_ = now + sample_start_;
+  samples_taken_ = 0;
   active_samples_ = 0;
   inactive_samples_ = 0;
 }
 
-void BrakeMonitor::debounce(Nanos now, bool released, std::uint16_t gmp) {
-  const std::int64_t elapsed = whole_ms(now - t0_);
+void BrakeMonitor::sample(Nanos now, bool released, std::uint16_t gmp) {
+  while (phase_ == Phase::Debouncing && next_sample_ <= now) debounce(next_sample_, released, gmp);
+}
+
+void BrakeMonitor::debounce(Nanos at, bool released, std::uint16_t gmp) {
   bool noise = false;
-  // The decision falls 16 samples after the first (L1039-L1040): 32 ms with the manual's 16.
-  const std::int64_t decision_ms = sample_start_ms_ + (kDecisionMs - kSampleStartMs);
-  if (elapsed >= sample_start_ms_ && elapsed < decision_ms) {
-    // 16 samples at 16..31 ms after the edge; "8 of 16" counted cumulatively [MODEL A9].
+  // 16 samples 1 ms apart from sample_start_ after the edge (16..31 ms, L1039), the decision
+  // 1 ms after the last (32 ms, L1040); "8 of 16" counted cumulatively [MODEL A9].
+  if (samples_taken_ < kSamples) {
+    ++samples_taken_;
+    next_sample_ = at + kTick;
     if (released) {
       noise = ++active_samples_ >= kNoiseActiveSamples;
     } else {
       ++inactive_samples_;
     }
-  } else if (elapsed >= decision_ms) {
+  } else {
     if (inactive_samples_ >= kQualifyInactiveSamples) {
       phase_ = Phase::Stopping;
       return;
@@ -119,7 +125,7 @@ void BrakeMonitor::debounce(Nanos now, bool released, std::uint16_t gmp) {
   if (!noise) return;
   ++status_.noise_rejections;
   if (!released) {
-    begin_debounce(now, gmp); // still applied: restart at once, re-timing t0 [MODEL A9]
+    begin_debounce(at, gmp); // still applied: restart at once, re-timing t0 [MODEL A9]
   } else {
     phase_ = Phase::Idle; // wait for the next 1->0 edge
   }

@@ -45,22 +45,30 @@ public:
   };
 
   static constexpr Nanos kTick = milliseconds(1);
-  static constexpr std::int64_t kSampleStartMs = 16;         // L1039
-  static constexpr std::int64_t kDecisionMs = 32;            // L1040
+  static constexpr Nanos kSampleStart = milliseconds(16);    // L1039
+  static constexpr int kSamples = 16;                        // L1039-L1040
   static constexpr int kNoiseActiveSamples = 8;              // L1039: 8 "released" samples abort
   static constexpr int kQualifyInactiveSamples = 12;         // L1040: 12 of 16 "applied" needed
   static constexpr std::int64_t kStopWindowMs = 125;         // L1042, L1052
   static constexpr std::uint16_t kStartTimeOverflow = 32768; // L2616 [A8]
 
-  // sample_start_ms: when the 16 debounce samples start after the application edge (L1039's
-  // 16 ms; a detection-power knob, models/ans1/README.md).
-  explicit BrakeMonitor(bool never_faults = false, std::int64_t sample_start_ms = kSampleStartMs)
-      : never_faults_(never_faults), sample_start_ms_(sample_start_ms) {}
+  // sample_start: when the 16 debounce samples start after the application edge (L1039's
+  // 16 ms; a detection-power knob, models/ans1/README.md). Off the 1 ms tick the samples fall
+  // between ticks: take them with sample() at next_sample().
+  explicit BrakeMonitor(bool never_faults = false, Nanos sample_start = kSampleStart)
+      : never_faults_(never_faults), sample_start_(sample_start) {}
 
   // A new setup ends any running cycle; measured times and faults are kept unless the monitor
   // is disabled (input 0), which clears them.
   void configure(const BrakeSetup& setup);
   void tick(Nanos now, bool released, std::int64_t pos4096, std::uint16_t gmp);
+  // The debounce samples (and the decision a ms after the last) due at or before `now`; tick()
+  // takes those due by its own time, so only a sample start off the whole ms needs this.
+  void sample(Nanos now, bool released, std::uint16_t gmp);
+  // When the next debounce sample (or the decision) is due; max when none is running.
+  [[nodiscard]] Nanos next_sample() const {
+    return phase_ == Phase::Debouncing ? next_sample_ : Nanos::max();
+  }
   // Clear Errors (CB bit 4): drops both overrun faults.
   void clear_errors();
 
@@ -75,7 +83,7 @@ private:
   static constexpr std::size_t kHistory = 128; // > 125 ticks of position history
   [[nodiscard]] std::int64_t position_ms_ago(std::int64_t ms) const;
   void begin_debounce(Nanos now, std::uint16_t gmp);
-  void debounce(Nanos now, bool released, std::uint16_t gmp);
+  void debounce(Nanos at, bool released, std::uint16_t gmp);
   void still_starting(std::int64_t elapsed_ms);
   void still_stopping(std::int64_t elapsed_ms);
   void finish_start(std::int64_t elapsed_ms);
@@ -84,13 +92,15 @@ private:
   BrakeSetup setup_{};
   BrakeStatus status_{};
   bool never_faults_;
-  std::int64_t sample_start_ms_;
+  Nanos sample_start_;
   Phase phase_ = Phase::Idle;
   bool primed_ = false;   // the first tick after configure only records the level
   bool released_ = false; // level seen at the previous tick
   Nanos t0_{};            // start of the running cycle (release or application tick)
   std::int64_t start_pos_ = 0;
   std::uint16_t pending_applied_position_ = 0;
+  Nanos next_sample_{};   // the next debounce sample (or, after the 16th, the decision)
+  int samples_taken_ = 0; // debounce samples taken since the edge
   int active_samples_ = 0;
   int inactive_samples_ = 0;
   bool overrun_tripped_ = false; // the running cycle already tripped its overrun before ending

@@ -8,8 +8,8 @@ namespace {
 [[nodiscard]] std::uint16_t bit(int point) { return static_cast<std::uint16_t>(1U << (point - 1)); }
 } // namespace
 
-Monitors::Monitors(MonitorFaults faults, std::int64_t brake_sample_start_ms)
-    : brake_(faults.brake_never_faults, brake_sample_start_ms), die_(faults.die_check_never_counts) {}
+Monitors::Monitors(MonitorFaults faults, Nanos brake_sample_start)
+    : brake_(faults.brake_never_faults, brake_sample_start), die_(faults.die_check_never_counts) {}
 
 void Monitors::configure(const MonitorSetup& setup, std::uint16_t full_scale_count) {
   setup_ = setup;
@@ -39,14 +39,22 @@ void Monitors::scan(Nanos now, const MonitorInputs& in) {
   started_ = true;
   const int brake_input = brake_.setup().input;
   const bool released = brake_input != 0 && (in.inputs & bit(brake_input)) != 0;
-  while (next_tick_ <= now) {
+  // Ticks and debounce samples in time order: a sample start off the whole ms puts the samples
+  // between ticks (a tick takes a sample due at its own time).
+  while (true) {
+    const Nanos sample = brake_.next_sample();
+    if (sample < next_tick_ && sample <= now) {
+      brake_.sample(sample, released, in.gmp);
+      continue;
+    }
+    if (next_tick_ > now) break;
     brake_.tick(next_tick_, released, in.pos4096, in.gmp);
     next_tick_ += BrakeMonitor::kTick;
   }
 }
 
 Nanos Monitors::next_change() const {
-  const Nanos brake = brake_.setup().input != 0 ? next_tick_ : Nanos::max();
+  const Nanos brake = brake_.setup().input != 0 ? std::min(next_tick_, brake_.next_sample()) : Nanos::max();
   return std::min(brake, die_.next_change());
 }
 

@@ -34,8 +34,7 @@ struct MonitorInputs {
 
 class Monitors {
 public:
-  explicit Monitors(MonitorFaults faults = {},
-                    std::int64_t brake_sample_start_ms = BrakeMonitor::kSampleStartMs);
+  explicit Monitors(MonitorFaults faults = {}, Nanos brake_sample_start = BrakeMonitor::kSampleStart);
 
   void configure(const MonitorSetup& setup, std::uint16_t full_scale_count);
   void scan(Nanos now, const MonitorInputs& in);

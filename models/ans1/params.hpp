@@ -27,8 +27,9 @@ struct Params {
 
   // §4.10: the brake input's debounce samples it once a ms for 16 ms, starting 16 ms after the
   // application edge (L1039); 12 applied samples qualify it (L1040). A detection-power knob
-  // (README): a later start lengthens the narrowest application that counts.
-  std::int64_t brake_sample_start_ms = 16;
+  // (README): a later start lengthens the narrowest application that counts; a duration, so
+  // the knob moves to the ns (samples off the whole ms fall between the 1 ms ticks).
+  Nanos brake_sample_start = milliseconds(16);
 
   // §4.2: the speed value is updated every 14.6 ms (L820).
   Nanos speed_update_period = microseconds(14'600);

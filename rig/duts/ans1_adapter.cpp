@@ -98,9 +98,10 @@ const std::array kAns1Fields{
       "[KNOB] an output's turn-off delay minus its turn-on delay (0; one throughput for both edges, "
       "L572): > 0 stretches every ON pulse at the pin, < 0 shortens it",
       between(-100_ms, 100_ms)},
-    F{"brake_sample_start_ms", &a::Params::brake_sample_start_ms,
-      "brake debounce: the first of 16 1-ms samples after the application edge (16 ms, L1039)",
-      between(1.0, 1000.0)},
+    F{"brake_sample_start", &a::Params::brake_sample_start,
+      "brake debounce (a detection-power knob): the first of 16 1-ms samples after the application edge (16 "
+      "ms, L1039)",
+      between(1_ms, 1_s)},
     F{"speed_update", &a::Params::speed_update_period, "speed value update period (14.6 ms, L820)",
       between(1_ms, 1_s)},
     F{"excitation_hz", &a::Params::excitation_hz,

@@ -101,7 +101,7 @@ TEST(DutParams, EveryAns1ReadmeChoiceIsSettableAndListed) {
       {"resolver_min_ratio", [](const P& p) { return ParamValue{p.resolver_min_ratio}; }},
       {"resolver_max_ratio", [](const P& p) { return ParamValue{p.resolver_max_ratio}; }},
       {"time_only_retrigger_restarts", [](const P& p) { return ParamValue{p.time_only_retrigger_restarts}; }},
-      {"brake_sample_start_ms", [](const P& p) { return ParamValue{p.brake_sample_start_ms}; }},
+      {"brake_sample_start", [](const P& p) { return ParamValue{p.brake_sample_start}; }},
       {"timer_error", [](const P& p) { return ParamValue{p.timer_error}; }},
       {"output_off_skew", [](const P& p) { return ParamValue{p.output_off_skew}; }},
   };

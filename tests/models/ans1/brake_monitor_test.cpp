@@ -182,6 +182,44 @@ TEST(BrakeMonitor, ElevenAppliedSamplesAbortAndRestartWhileStillApplied) {
   EXPECT_EQ(rig.brake.status().completed_stops, 1U);
 }
 
+// Drives ticks on the whole ms and the debounce samples between them in time order, as
+// Monitors::scan does, with the input level at each instant.
+void run_with_samples(BrakeMonitor& brake, Nanos& next_tick, Nanos to,
+                      const std::function<bool(Nanos)>& released) {
+  while (true) {
+    const Nanos sample = brake.next_sample();
+    if (sample < next_tick && sample <= to) {
+      brake.sample(sample, released(sample), 0);
+    } else if (next_tick <= to) {
+      brake.tick(next_tick, released(next_tick), 0, 0);
+      next_tick += BrakeMonitor::kTick;
+    } else {
+      return;
+    }
+  }
+}
+
+TEST(BrakeMonitor, SampleStartOffTheWholeMillisecondSamplesBetweenTicks) {
+  // L1039-L1040: sampling starts sample_start after the edge (taken on the 100 ms tick), once a
+  // ms; the 12th sample is at 100 + 16.3 + 11 = 127.3 ms. Applied until just after it: 12
+  // applied samples (116.3 .. 127.3 ms) qualify at the decision, 1 ms after the 16th (132.3 ms).
+  // Released exactly at 127.3 ms: 11 applied, noise at 132.3 ms, and the monitor waits idle.
+  for (const std::int64_t extra_ns : {1, 0}) {
+    SCOPED_TRACE(extra_ns);
+    BrakeMonitor brake(false, microseconds(16'300));
+    brake.configure(setup_with(10, 0, 0));
+    const Nanos end = microseconds(127'300) + Nanos{extra_ns};
+    const auto released = [end](Nanos t) { return t < milliseconds(100) || t >= end; };
+    Nanos next_tick{0};
+    run_with_samples(brake, next_tick, microseconds(132'300) - Nanos{1}, released);
+    EXPECT_EQ(brake.phase(), Phase::Debouncing);
+    EXPECT_EQ(brake.next_sample(), microseconds(132'300));
+    run_with_samples(brake, next_tick, microseconds(132'300), released);
+    EXPECT_EQ(brake.phase(), extra_ns > 0 ? Phase::Stopping : Phase::Idle);
+    EXPECT_EQ(brake.status().noise_rejections, extra_ns > 0 ? 0U : 1U);
+  }
+}
+
 TEST(BrakeMonitor, InputIsIgnoredOnceQualified) {
   // Released again at 200 ms (after qualification): the stop cycle still completes (L1041).
   BrakeRig rig(setup_with(10, 0, 0));
