@@ -164,6 +164,8 @@
   function drawChart(chart, bottom, into) {
     const box = document.createElement('div');
     box.className = 'chart' + (chart.role ? ' lane ' + chart.role : '');
+    // An analog lane (a resolver stator): a line through its samples, not steps.
+    if (chart.role && chart.series[0].draw === 'line') box.classList.add('analog');
     if (chart.lane) box.dataset.lane = chart.lane;
     if (chart.measurement) box.dataset.measurement = chart.measurement;
     if (chart.lane) {

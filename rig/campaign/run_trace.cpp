@@ -64,8 +64,8 @@ void trace_stators(Scheduler& scheduler, TraceRecorder& trace, const ResolverSpe
   double cycles = 0.25 - resolver.phase_deg / 360.0;
   cycles -= std::floor(cycles);
   auto s = std::make_shared<StatorSampler>(StatorSampler{
-      scheduler, trace, std::move(sin), std::move(cos), trace.declare("resolver.sin", SignalKind::Real),
-      trace.declare("resolver.cos", SignalKind::Real), cycles * period_ns, period_ns, end});
+      scheduler, trace, std::move(sin), std::move(cos), trace.declare(kStatorSin, SignalKind::Real),
+      trace.declare(kStatorCos, SignalKind::Real), cycles * period_ns, period_ns, end});
   StatorSampler::next(s);
 }
 

@@ -10,6 +10,7 @@
 // Recording only: nothing here changes what the board sees.
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "core/analog.hpp"
@@ -20,6 +21,10 @@
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::campaign {
+
+// The stators' names in the trace.
+inline constexpr std::string_view kStatorSin = "resolver.sin";
+inline constexpr std::string_view kStatorCos = "resolver.cos";
 
 // The shaft's count as the rig's encoder plays it.
 class ShaftTrace {

@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "rig/campaign/run_trace.hpp"
 #include "rig/campaign/scenario_reader.hpp"
 #include "rig/results/timing_figures.hpp"
 
@@ -71,6 +72,9 @@ std::vector<std::pair<std::string, rig::LaneRole>> lanes_of(const checks::CheckP
   if (on_shaft) {
     add(kEncoderA, rig::LaneRole::Stimulus);
     add(kEncoderB, rig::LaneRole::Stimulus);
+    // A resolver board's stimulus: its stators as the board reads them (run_trace.hpp).
+    add(kStatorSin, rig::LaneRole::Stimulus);
+    add(kStatorCos, rig::LaneRole::Stimulus);
     add("shaft.count", rig::LaneRole::Count);
   }
   for (const std::string& line : checks::lines_of(params)) add(line, rig::LaneRole::Output);
@@ -99,12 +103,18 @@ cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
   struct Before {
     Nanos time{-1};
     std::int64_t value = 0;
+    double real = 0.0;
   };
   std::vector<std::vector<Before>> before(out.size(), std::vector<Before>(lanes.size()));
   for (std::size_t l = 0; l < lanes.size(); ++l) {
     if (lanes[l].second == rig::LaneRole::Rate) continue;
     const SignalInfo& info = signals[static_cast<std::size_t>(trace.find(lanes[l].first))];
-    for (auto& b : before) b[l].value = info.has_initial ? info.initial : 0;
+    for (auto& b : before) {
+      b[l].value = info.has_initial ? info.initial : 0;
+      b[l].real = info.initial_real;
+    }
+    if (info.kind == SignalKind::Real)
+      for (auto& w : out) w.lanes[l].real = true;
   }
   std::vector<std::vector<std::vector<rig::LaneChange>>> inside(
       out.size(), std::vector<std::vector<rig::LaneChange>>(lanes.size()));
@@ -116,9 +126,9 @@ cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
       for (std::size_t w = 0; w < out.size(); ++w) {
         const rig::TraceWindow& span = out[w].span;
         if (s.time < span.begin) {
-          if (s.time >= before[w][lane].time) before[w][lane] = Before{s.time, s.value};
+          if (s.time >= before[w][lane].time) before[w][lane] = Before{s.time, s.value, s.real};
         } else if (s.time <= span.end) {
-          inside[w][lane].push_back(rig::LaneChange{s.time, s.value});
+          inside[w][lane].push_back(rig::LaneChange{s.time, s.value, s.real});
         }
       }
     }
@@ -139,9 +149,10 @@ cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
       auto& in = inside[w][l];
       std::stable_sort(in.begin(), in.end(),
                        [](const rig::LaneChange& a, const rig::LaneChange& b) { return a.time < b.time; });
-      lane.changes.push_back(rig::LaneChange{out[w].span.begin, before[w][l].value});
+      lane.changes.push_back(rig::LaneChange{out[w].span.begin, before[w][l].value, before[w][l].real});
       for (const rig::LaneChange& c : in)
-        if (c.value != lane.changes.back().value) lane.changes.push_back(c);
+        if (lane.real ? c.real != lane.changes.back().real : c.value != lane.changes.back().value)
+          lane.changes.push_back(c);
       thin(lane, out[w].span);
     }
   }

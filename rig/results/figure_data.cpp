@@ -66,8 +66,15 @@ json lane_chart(const TraceLane& lane, const TraceWindow& span, Nanos origin, co
   json xs = json::array(), ys = json::array();
   for (const auto& c : lane.changes) {
     xs.push_back(rel(std::max(c.time, span.begin), origin));
-    ys.push_back(c.value);
+    if (lane.real)
+      ys.push_back(c.real);
+    else
+      ys.push_back(c.value);
   }
+  if (lane.real) // an analog lane: a line through its samples, ending at its last
+    return {{"lane", lane.name}, {"role", to_string(lane.role)},
+            {"height", 70},      {"y", {{"label", "V"}}},
+            {"data", {xs, ys}},  {"series", {{{"label", lane.name}, {"colour", colour}, {"draw", "line"}}}}};
   xs.push_back(rel(span.end, origin));
   ys.push_back(lane.changes.back().value);
   const bool level = lane.role == LaneRole::Count || lane.role == LaneRole::Rate;

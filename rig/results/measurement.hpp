@@ -79,6 +79,7 @@ enum class LaneRole { Stimulus, Count, Output, Rate };
 struct LaneChange {
   Nanos time;
   std::int64_t value = 0; // a line: 0 or 1; the count: counts
+  double real = 0.0;      // a real lane's value (a resolver stator: volts); value is then 0
 };
 
 struct TraceLane {
@@ -88,6 +89,9 @@ struct TraceLane {
   // Changes left out to fit the figure (more than one per pixel column of it; the first and
   // last of each column are kept, so every level the lane held there is still drawn).
   std::size_t thinned = 0;
+  // An analog lane (a trace signal of kind Real, e.g. resolver.sin): its values are the
+  // changes' `real`, drawn as a line through the samples rather than as steps.
+  bool real = false;
 };
 
 struct WindowTrace {

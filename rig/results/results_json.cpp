@@ -101,9 +101,12 @@ json traces_json(const std::vector<WindowTrace>& traces) {
     json lanes = json::array();
     for (const auto& l : t.lanes) {
       json changes = json::array();
-      for (const auto& c : l.changes) changes.push_back(json::array({c.time.count(), c.value}));
-      lanes.push_back(
-          json{{"name", l.name}, {"role", to_string(l.role)}, {"changes", changes}, {"thinned", l.thinned}});
+      for (const auto& c : l.changes)
+        changes.push_back(l.real ? json::array({c.time.count(), c.real})
+                                 : json::array({c.time.count(), c.value}));
+      json lane{{"name", l.name}, {"role", to_string(l.role)}, {"changes", changes}, {"thinned", l.thinned}};
+      if (l.real) lane["real"] = true; // only an analog lane says so: the others stay as they were
+      lanes.push_back(std::move(lane));
     }
     out.push_back(json{{"around", window_json(t.around)}, {"span", window_json(t.span)}, {"lanes", lanes}});
   }
@@ -127,10 +130,17 @@ std::vector<WindowTrace> traces_from(const json& j) {
                      role_from(get<std::string>(l, "role", "lane")),
                      {},
                      get<std::size_t>(l, "thinned", "lane")};
+      if (const auto r = l.find("real"); r != l.end()) {
+        if (!r->is_boolean()) throw std::runtime_error("results: a lane's 'real' is not true or false");
+        lane.real = r->get<bool>();
+      }
       for (const auto& c : field(l, "changes", "lane")) {
-        if (!c.is_array() || c.size() != 2 || !c[0].is_number_integer() || !c[1].is_number_integer())
+        if (!c.is_array() || c.size() != 2 || !c[0].is_number_integer() ||
+            !(lane.real ? c[1].is_number() : c[1].is_number_integer()))
           throw std::runtime_error("results: a lane change is not [time_ns, value]");
-        lane.changes.push_back(LaneChange{Nanos{c[0].get<std::int64_t>()}, c[1].get<std::int64_t>()});
+        lane.changes.push_back(lane.real
+                                   ? LaneChange{Nanos{c[0].get<std::int64_t>()}, 0, c[1].get<double>()}
+                                   : LaneChange{Nanos{c[0].get<std::int64_t>()}, c[1].get<std::int64_t>()});
       }
       w.lanes.push_back(std::move(lane));
     }

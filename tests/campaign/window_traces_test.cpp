@@ -5,7 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
+#include "core/scheduler.hpp"
 #include "core/trace.hpp"
+#include "rig/campaign/resolver_stators.hpp"
+#include "rig/campaign/run_trace.hpp"
 #include "rig/campaign/window_traces.hpp"
 #include "rig/results/timing_figures.hpp"
 
@@ -124,6 +130,57 @@ TEST(WindowTraces, StepRateFromTheStepLineBeforeThinning) {
   for (std::size_t i = 0; i < want.size(); ++i) {
     EXPECT_EQ(rate.changes[i].time.count(), want[i].first) << i;
     EXPECT_EQ(rate.changes[i].value, want[i].second) << i;
+  }
+}
+
+// A resolver board's stimulus in its diagram: the stators as the run recorded them, real
+// lanes. The stator model (rig/campaign/resolver_stators.hpp, after the ANS1 and Series 2700
+// resolver inputs): the rotor is excited with amplitude * sin(2 pi f t + phase) and each
+// stator carries it times the ratio and sin / cos of the shaft angle; the trace samples them
+// at each excitation peak (run_trace.hpp), where the carrier is +1. So at the k-th peak
+// t_k = (1/4 - phase/360 + k) / f the sine lane reads ratio * amplitude * sin(angle(t_k)).
+TEST(Figure, AResolverWindowHasItsStatorsAsRealLanesAtEachExcitationPeak) {
+  ResolverSpec r;
+  r.excitation_hz = 5000.0; // peaks every 200 us, the first at 50 us
+  r.amplitude = 2.0;
+  r.ratio = 0.5;
+  constexpr double kPerTurn = 4096.0;
+  const ShaftPosition shaft = [](Nanos t) { return 1000.0 * t.seconds(); }; // 1000 counts/s
+  Scheduler sched;
+  TraceRecorder trace;
+  trace_stators(sched, trace, r, stator_waveform(shaft, kPerTurn, r, Stator::Sine),
+                stator_waveform(shaft, kPerTurn, r, Stator::Cosine), Nanos{5'000'000});
+  sched.run_until_idle();
+  const checks::CheckParams params = checks::ThroughputParams{};
+  const auto lanes = lanes_of(params, trace);
+  ASSERT_EQ(lanes.size(), 2U); // no encoder, count or output declared in this trace
+  EXPECT_EQ(lanes[0], (std::pair<std::string, rig::LaneRole>{"resolver.sin", rig::LaneRole::Stimulus}));
+  EXPECT_EQ(lanes[1], (std::pair<std::string, rig::LaneRole>{"resolver.cos", rig::LaneRole::Stimulus}));
+  const rig::CheckResult c = one_window(Nanos{2'000'000}, Nanos{3'000'000});
+  const auto span = rig::figure_span(c.measurements[0]);
+  const auto cut = cut_window_traces(c, trace, lanes);
+  ASSERT_EQ(cut.size(), 1U);
+  const auto expected = [&](Nanos t, bool sine) {
+    const double angle = 2.0 * std::numbers::pi * 1000.0 * t.seconds() / kPerTurn;
+    return r.ratio * r.amplitude * (sine ? std::sin(angle) : std::cos(angle));
+  };
+  const auto peak = [](std::int64_t k) { return Nanos{50'000 + k * 200'000}; };
+  for (const bool sine : {true, false}) {
+    const rig::TraceLane& lane = cut[0].lanes[sine ? 0 : 1];
+    EXPECT_TRUE(lane.real);
+    EXPECT_EQ(lane.thinned, 0U);
+    // The first: at the span's start, the last peak before it; then every peak inside.
+    const std::int64_t first = (span.begin.count() - 50'000) / 200'000;
+    const std::int64_t last = (span.end.count() - 50'000) / 200'000;
+    ASSERT_EQ(lane.changes.size(), static_cast<std::size_t>(last - first + 1));
+    EXPECT_EQ(lane.changes[0].time, span.begin);
+    EXPECT_NEAR(lane.changes[0].real, expected(peak(first), sine), 1e-9);
+    for (std::size_t i = 1; i < lane.changes.size(); ++i) {
+      const Nanos at = peak(first + static_cast<std::int64_t>(i));
+      EXPECT_EQ(lane.changes[i].time, at);
+      EXPECT_NEAR(lane.changes[i].real, expected(at, sine), 1e-9) << "peak at " << at.count() << " ns";
+      EXPECT_EQ(lane.changes[i].value, 0);
+    }
   }
 }
 

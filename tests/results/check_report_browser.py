@@ -40,6 +40,7 @@ INSPECT = """JSON.stringify((() => {
       .filter(d => [...d.querySelectorAll('canvas')].some(laidOut)).map(d => d.dataset.lane);
     const top = f.querySelector('div.chart.lane');
     return {stimulus: lanes('stimulus'), count: lanes('count'), output: lanes('output'), rate: lanes('rate'),
+            analog: lanes('analog'),
             expected: Number(top.dataset.expected), limits: Number(top.dataset.limits),
             rate_expected: [...f.querySelectorAll('div.chart.lane.rate')].map(d => Number(d.dataset.rateExpected))};
   };
@@ -70,10 +71,11 @@ INSPECT = """JSON.stringify((() => {
 ON_SHAFT = ("throughput", "edge_at_position", "advance_counts")
 
 
-def timing_problems(name, check, timings, encoder):
+def timing_problems(name, check, timings, encoder, resolver):
     """Each window results.json cut a trace for is one diagram with the run's lanes in it: the
-    stimulus (enc.A/enc.B, when the campaign wires the encoder: a resolver board's stators are
-    not drawn) and shaft.count for a check on the shaft, the check's output line,
+    stimulus (enc.A/enc.B, when the campaign wires the encoder; a resolver board's stators,
+    resolver.sin/resolver.cos, as analog lanes drawn as lines) and shaft.count for a check on
+    the shaft, the check's output line,
     and its expected window and limit drawn inside the figure (a limitless time: none); a
     shaft_move also its step rate against time with the expected peak rate shaded (when the
     check limits it), a pulse_width each pulse against the whole [min, max] band."""
@@ -96,6 +98,11 @@ def timing_problems(name, check, timings, encoder):
             out.append(f"{name}: {check['check']}: no count lane in its timing diagram")
         if check["kind"] in ON_SHAFT and encoder and t["stimulus"] != ["enc.A", "enc.B"]:
             out.append(f"{name}: {check['check']}: stimulus lanes {t['stimulus']}, not the encoder's A/B")
+        if check["kind"] in ON_SHAFT and resolver and t["stimulus"][-2:] != ["resolver.sin", "resolver.cos"]:
+            out.append(f"{name}: {check['check']}: stimulus lanes {t['stimulus']}, not the resolver's stators")
+        analog = [l["name"] for l in cut["lanes"] if l.get("real")]
+        if t["analog"] != analog:
+            out.append(f"{name}: {check['check']}: analog lanes drawn as lines {t['analog']}, captured {analog}")
         if check["kind"] == "shaft_move" and len(t["rate"]) != 1:
             out.append(f"{name}: {check['check']}: no step rate against time in its timing diagram")
         if check["kind"] == "shaft_move" and peak_limited and t["rate_expected"] != [1]:
@@ -243,6 +250,7 @@ def main():
     browser = Browser(chromium, scratch / "chromium-profile")
     judged_total = 0
     drawn_traces = 0
+    analog_drawn = 0  # resolver stator lanes drawn as lines, over every report
     try:
         for report in reports:
             name = report.parent.name
@@ -251,10 +259,12 @@ def main():
             checks = [c for run in results["runs"] for c in run["checks"]]
             toml = sources.get(name, failing if name == "failing" else None)
             encoder = toml is not None and 'rig = "enc.A"' in toml.read_text()
+            resolver = toml is not None and "[resolver]" in toml.read_text()
             if len(found["sections"]) != len(checks):
                 problems.append(f"{name}: {len(found['sections'])} check sections, {len(checks)} in results.json")
             for (word, figures, notes, timings, others), c in zip(found["sections"], checks):
-                problems += timing_problems(name, c, timings, encoder)
+                problems += timing_problems(name, c, timings, encoder, resolver)
+                analog_drawn += sum(len(t["analog"]) for t in timings)
                 problems += figure_problems(name, c["check"], others)
                 drawn_traces += len(c.get("traces", []))
                 if word != c["outcome"]:
@@ -282,11 +292,14 @@ def main():
         browser.close()
     if drawn_traces == 0:
         problems.append("no timing diagram with the run's trace in any report")
+    if analog_drawn == 0:
+        problems.append("no resolver stator drawn as an analog lane in any report")
     for p in problems:
         print("FAIL:", p)
     if not problems:
         print(f"{len(reports)} reports ({shipped} shipped, 1 failing), {judged_total} judged checks, "
-              f"each with a figure; {drawn_traces} timing diagrams with stimulus, count and output")
+              f"each with a figure; {drawn_traces} timing diagrams with stimulus, count and output, "
+              f"{analog_drawn} analog stator lanes")
     return 1 if problems else 0
 
 

@@ -265,6 +265,32 @@ TEST(Figure, TimingDiagramDrawsTheCapturedLanesAndMarksTheLimit) {
   EXPECT_NE(median["notes"].get<std::string>().find("no limit: reported only"), std::string::npos);
 }
 
+// A resolver stator is an analog lane: a line through its samples in volts, on the same time
+// axis as the other lanes, not a step held to the span's end.
+TEST(Figure, ARealLaneIsALineThroughItsSamples) {
+  Measurement m = measured("throughput.edge0", 100.0, 99.5, 100.5, Outcome::Pass);
+  m.unit = "counts";
+  m.window = TraceWindow{Nanos{1'000'000}, Nanos{1'100'000}};
+  m.at = Nanos{1'050'000};
+  const TraceWindow span = figure_span(m);
+  WindowTrace w{*m.window, span, {}};
+  w.lanes.push_back(
+      {"resolver.sin", LaneRole::Stimulus, {{span.begin, 0, -0.25}, {Nanos{1'050'000}, 0, 0.5}}, 0, true});
+  w.lanes.push_back({"shaft.count", LaneRole::Count, {{span.begin, 99}, {Nanos{1'050'000}, 100}}, 0});
+  const nlohmann::json fig = timing_figure(m, Judgement::Pass, &w);
+  ASSERT_EQ(fig["charts"].size(), 2U);
+  const auto& sin = fig["charts"][0];
+  EXPECT_EQ(sin["lane"], "resolver.sin");
+  EXPECT_EQ(sin["role"], "stimulus");
+  EXPECT_EQ(sin["series"][0]["draw"], "line");
+  EXPECT_EQ(sin["y"]["label"], "V");
+  const double x0 = static_cast<double>((span.begin - m.window->begin).count());
+  EXPECT_EQ(sin["data"], nlohmann::json::array({nlohmann::json::array({x0, 50'000.0}), {-0.25, 0.5}}));
+  EXPECT_EQ(sin["x"]["min"], fig["charts"][1]["x"]["min"]); // one time axis for both lanes
+  EXPECT_EQ(sin["x"]["max"], fig["charts"][1]["x"]["max"]);
+  EXPECT_EQ(fig["charts"][1]["series"][0]["draw"], "step");
+}
+
 // Diagrams go to the windows that did not pass, then to those with a limit, one per window.
 TEST(Figure, TimingFiguresFailuresFirstThenLimitedOnePerWindow) {
   CheckResult c;

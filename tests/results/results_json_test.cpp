@@ -79,6 +79,46 @@ TEST(ResultsJson, RoundTripKeepsEverything) {
   EXPECT_EQ(back.runs[0].checks[0].series[0].values, (std::vector<double>{12.0, 15.0, 10.0}));
 }
 
+// A resolver board's stators are analog lanes: their volts survive the round trip exactly,
+// beside an integer lane that stays as it was (no "real" key), and both fit the schema.
+TEST(ResultsJson, ARealLaneRoundTripsWithItsVolts) {
+  CampaignResult c = test::sample_campaign(6);
+  finalize(c);
+  CheckResult& check = c.runs[0].checks[1];
+  ASSERT_TRUE(check.measurements[0].window);
+  const TraceWindow around = *check.measurements[0].window;
+  WindowTrace w{around, around, {}};
+  TraceLane sin{"resolver.sin", LaneRole::Stimulus, {}, 3, true};
+  for (const double v : {-0.1, 0.3826834323650898, 0.7071067811865476, -1.0, 1e-300})
+    sin.changes.push_back(
+        LaneChange{around.begin + Nanos{static_cast<std::int64_t>(sin.changes.size()) * 200'000}, 0, v});
+  w.lanes.push_back(sin);
+  w.lanes.push_back(TraceLane{"shaft.count", LaneRole::Count, {{around.begin, 41}, {around.end, 42}}, 0});
+  check.traces.push_back(w);
+  const json j = to_json(c);
+  const auto errors = test::validate_json_schema(load_schema(), j);
+  EXPECT_TRUE(errors.empty()) << errors.front();
+  const json& lanes = j["runs"][0]["checks"][1]["traces"][0]["lanes"];
+  EXPECT_EQ(lanes[0]["real"], true);
+  EXPECT_FALSE(lanes[1].contains("real"));
+  const CampaignResult back = campaign_from_json(json::parse(to_json_text(c)));
+  EXPECT_EQ(to_json(back), j);
+  const TraceLane& got = back.runs[0].checks[1].traces.at(0).lanes.at(0);
+  EXPECT_TRUE(got.real);
+  EXPECT_EQ(got.thinned, 3U);
+  ASSERT_EQ(got.changes.size(), sin.changes.size());
+  for (std::size_t i = 0; i < got.changes.size(); ++i) {
+    EXPECT_EQ(got.changes[i].time, sin.changes[i].time);
+    EXPECT_EQ(got.changes[i].real, sin.changes[i].real); // shortest round-trip text: exact
+  }
+  EXPECT_FALSE(back.runs[0].checks[1].traces.at(0).lanes.at(1).real);
+  EXPECT_EQ(back.runs[0].checks[1].traces.at(0).lanes.at(1).changes.at(1).value, 42);
+  // A real value in an integer lane is no lane change.
+  json broken = j;
+  broken["runs"][0]["checks"][1]["traces"][0]["lanes"][1]["changes"][0][1] = 0.5;
+  EXPECT_THROW((void)campaign_from_json(broken), std::runtime_error);
+}
+
 TEST(ResultsJson, ANotANumberValueIsWrittenAsNullAndReadBackAsNaN) {
   CampaignResult c = test::sample_campaign(1);
   c.runs[0].checks[0].measurements[1].value = std::numeric_limits<double>::quiet_NaN();
