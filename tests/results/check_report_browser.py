@@ -96,10 +96,10 @@ def timing_problems(name, check, timings, encoder, resolver):
                 out.append(f"{name}: {check['check']}: {role} lanes drawn {t[role]}, captured {lanes}")
         if check["kind"] in ON_SHAFT and t["count"] != ["shaft.count"]:
             out.append(f"{name}: {check['check']}: no count lane in its timing diagram")
-        if check["kind"] in ON_SHAFT and encoder and t["stimulus"] != ["enc.A", "enc.B"]:
-            out.append(f"{name}: {check['check']}: stimulus lanes {t['stimulus']}, not the encoder's A/B")
-        if check["kind"] in ON_SHAFT and resolver and t["stimulus"][-2:] != ["resolver.sin", "resolver.cos"]:
-            out.append(f"{name}: {check['check']}: stimulus lanes {t['stimulus']}, not the resolver's stators")
+        stimulus = (["enc.A", "enc.B"] if encoder else []) + (["resolver.sin", "resolver.cos"] if resolver else [])
+        if check["kind"] in ON_SHAFT and t["stimulus"] != stimulus:
+            out.append(f"{name}: {check['check']}: stimulus lanes {t['stimulus']}, not the encoder's A/B "
+                       f"and the resolver's stators as wired: {stimulus}")
         analog = [l["name"] for l in cut["lanes"] if l.get("real")]
         if t["analog"] != analog:
             out.append(f"{name}: {check['check']}: analog lanes drawn as lines {t['analog']}, captured {analog}")
