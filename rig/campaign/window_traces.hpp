@@ -17,9 +17,10 @@ inline constexpr std::size_t kLaneColumns = 500;
 inline constexpr const char* kRateSuffix = " rate";
 
 // The lanes for a check's diagrams, as trace names: for a check judged against the shaft
-// (throughput, advance_counts, edge_at_position) the encoder's lines or the resolver's
-// stators (stimulus; the stators are real lanes) and shaft.count; then the lines the check reads (output; a pulse or step line). Only names the
-// trace declares; a shaft_move check adds its step line's rate (LaneRole::Rate).
+// (throughput, advance_counts, edge_at_position) the stimulus (the encoder's lines, the
+// resolver's stators as real lanes, whichever the campaign wires) and shaft.count; then the
+// lines the check reads (output; a pulse or step line). Only names the trace declares; a
+// shaft_move check adds its step line's rate (LaneRole::Rate).
 [[nodiscard]] std::vector<std::pair<std::string, rig::LaneRole>> lanes_of(const checks::CheckParams& params,
                                                                           const TraceRecorder& trace);
 
