@@ -119,4 +119,11 @@ inline OutputSetup pair_output(std::uint16_t from, std::uint16_t to) {
   return o;
 }
 
+// The scan-every-period oracle of exact scan skipping (docs/virtual-time.md).
+inline Params every_period() {
+  Params p;
+  p.exact_scan = true;
+  return p;
+}
+
 } // namespace hilrig::models::ans1::testing

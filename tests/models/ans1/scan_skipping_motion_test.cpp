@@ -17,12 +17,7 @@ namespace {
 
 using namespace hilrig::literals;
 using testing::Bench;
-
-Params every_period() {
-  Params p;
-  p.exact_scan = true;
-  return p;
-}
+using testing::every_period;
 
 // Everything a host or the rig reads, at one instant.
 struct Reading {

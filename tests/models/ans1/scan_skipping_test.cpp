@@ -11,12 +11,7 @@ namespace {
 
 using namespace hilrig::literals;
 using testing::Bench;
-
-Params every_period() {
-  Params p;
-  p.exact_scan = true;
-  return p;
-}
+using testing::every_period;
 
 // CB2 bit 3 (QuadEnc): the encoder, whose count moves only on its edges.
 void use_encoder(Bench& b) {
