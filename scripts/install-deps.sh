@@ -18,7 +18,7 @@ packages=(
   libcli11-dev        # the hilrig command line
   libfmt-dev          # formatting of reports and messages
   nlohmann-json3-dev  # results.json, shard merging, baselines
-  libssl-dev          # SHA-256 of the campaign file in results.json (merge refuses mixed revisions)
+  nettle-dev          # SHA-256 of the campaign file in results.json (merge refuses mixed revisions); not libssl: its load costs every run ~1.5 ms
   libmodbus-dev       # Modbus RTU/TCP host link and the virtual SMD23E server
   libgpiod-dev        # GPIO backend (libgpiod 1.6 on Debian 12)
   mbpoll              # an independent Modbus client for integration tests
