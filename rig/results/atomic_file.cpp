@@ -103,7 +103,6 @@ void write_file_atomically(const std::filesystem::path& path,
     out.flush();
   }
   if (buffer.error() != 0) fail("write", buffer.error());
-  if (::fsync(fd) != 0) fail("flush", errno);
   if (::close(fd) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());

@@ -1,8 +1,14 @@
 #pragma once
-// A file replaced atomically: written to "<path>.tmp", fsynced, then renamed over path, so a
-// crash leaves either the previous complete file or the new one, never half a file. On any
+// A file replaced atomically: written to "<path>.tmp", then renamed over path, so a crash of
+// hilrig leaves either the previous complete file or the new one, never half a file. On any
 // failure (ENOSPC, EFBIG, EIO) the temporary is removed and std::runtime_error names the file
 // and the errno text.
+// Not fsynced: the rename alone gives the crash-safety above (the kernel holds the written
+// pages; a process crash cannot tear them), and an fsync per file was a tenth of a short
+// campaign's CPU (docs/PERFORMANCE.md, "Fixed cost of a run"). What a power loss must not
+// lose is the run log (rig/results/run_log.hpp), which syncs every record: results.json,
+// junit.xml and report.html are folded from it (`hilrig merge`), and a trace is a rerun away
+// (same inputs and seed, same bytes).
 
 #include <filesystem>
 #include <functional>

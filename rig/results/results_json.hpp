@@ -34,7 +34,7 @@ inline constexpr int kResultsVersion = 2; // 2: outcome words, campaign_sha256, 
 // time: to_json_text(r) is write_json_text(r, runs_of(r), ...).
 void write_json_text(const CampaignResult& header, const RunSource& runs, const TextSink& out);
 
-// Writes to "<path>.tmp", fsyncs, then renames over path: a crash leaves either the previous
+// Writes to "<path>.tmp", then renames over path: a crash leaves either the previous
 // complete file or the new one, never half a file. Call it again as runs finish to keep a
 // readable partial-progress file (complete = false until the last run).
 void write_results_file(const std::filesystem::path& path, const CampaignResult& result);
