@@ -3,24 +3,9 @@
 #include <stdexcept>
 
 #include "models/ans1/position.hpp"
-#include "signals/quadrature_decoder.hpp"
+#include "models/ans1/quad_state.hpp"
 
 namespace hilrig::models::ans1 {
-
-// The encoder decoder is fed from edge handlers the bus keeps; sharing it keeps those
-// handlers safe should the bus outlive the device. A count edge wakes a skipping scan when
-// the GMP leaves the quiet interval (scan_skipping.cpp).
-struct Ans1::QuadState {
-  signals::QuadratureDecoder decoder{signals::CountMode::X4};
-  LineInput* a = nullptr;
-  LineInput* b = nullptr;
-  Ans1* device = nullptr;
-  void edge() {
-    const std::int64_t before = decoder.count();
-    decoder.update(a != nullptr && is_high(a->level()), b != nullptr && is_high(b->level()));
-    device->count_edge(before);
-  }
-};
 
 namespace {
 
@@ -78,6 +63,7 @@ Ans1::~Ans1() {
   scheduler_.cancel(scan_event_);
   scheduler_.cancel(speed_event_);
   scheduler_.cancel(write_event_);
+  scheduler_.cancel(leave_event_);
 }
 
 std::size_t Ans1::index(int point) {
@@ -92,20 +78,20 @@ void Ans1::attach(const Ans1Pins& pins) {
   pins_ = pins;
   quad_->a = pins.quad_a;
   quad_->b = pins.quad_b;
-  // The decoder starts from the lines' present state: power-up is not a count.
-  quad_->decoder = signals::QuadratureDecoder(signals::CountMode::X4,
-                                              pins.quad_a != nullptr && is_high(pins.quad_a->level()),
-                                              pins.quad_b != nullptr && is_high(pins.quad_b->level()));
+  const bool sampled = pins.quad_waveform != nullptr && pins.quad_a != nullptr && pins.quad_b != nullptr &&
+                       !params_.exact_scan;
+  quad_->waveform = sampled ? pins.quad_waveform : nullptr;
+  quad_->restart(scheduler_.now());
   std::weak_ptr<QuadState> weak = quad_;
   const auto handler = [weak](const Edge&) {
     if (auto q = weak.lock()) {
       q->edge();
     }
   };
-  if (pins.quad_a != nullptr) {
+  if (pins.quad_a != nullptr && !sampled) {
     pins.quad_a->on_edge(handler);
   }
-  if (pins.quad_b != nullptr) {
+  if (pins.quad_b != nullptr && !sampled) {
     pins.quad_b->on_edge(handler);
   }
   // Z is ignored (L455). The inputs are read at the scan; their edges only wake it.
@@ -136,11 +122,12 @@ void Ans1::attach(const Ans1Pins& pins) {
 void Ans1::power_off() {
   if (!powered_) return;
   powered_ = false;
-  quiet_armed_ = false;
+  settle_position(); // what the last scan before the supply went left, as when scanning every period
   scheduler_.cancel(scan_event_);
   scheduler_.cancel(speed_event_);
   scheduler_.cancel(write_event_);
-  scan_event_ = speed_event_ = write_event_ = {};
+  scheduler_.cancel(leave_event_);
+  scan_event_ = speed_event_ = write_event_ = leave_event_ = {};
   scan_at_ = Nanos::max();
   write_count_ = 0;
   queued_levels_ = pin_levels_ = outputs_ = 0;
@@ -160,9 +147,7 @@ void Ans1::power_on() {
   channels_ = {};
   monitors_ = Monitors(monitor_faults(variant_), params_.brake_sample_start);
   monitors_.configure(MonitorSetup{}, position_.full_scale_count);
-  quad_->decoder =
-      signals::QuadratureDecoder(signals::CountMode::X4, quad_->a != nullptr && is_high(quad_->a->level()),
-                                 quad_->b != nullptr && is_high(quad_->b->level()));
+  quad_->restart(scheduler_.now());
   resolver_count_ = 0;
   resolver_angle_ = 0;
   resolver_seen_ = false; // absolute: read afresh at the first scan (L768)
@@ -307,7 +292,7 @@ std::int64_t Ans1::transducer_count() const {
     return slave_count_;
   }
   if (position_.sensor == SensorType::Quadrature) {
-    return quad_->decoder.count();
+    return quad_->count(scheduler_.now());
   }
   return resolver_count_;
 }

@@ -96,7 +96,10 @@ public:
     wake();
   }
   // The oracle of scan skipping (Params::exact_scan): from now on, a scan every period.
+  // Throws std::logic_error once an attached encoder is sampled (Ans1Pins::quad_waveform):
+  // the oracle must be chosen before attach().
   void scan_every_period() {
+    require_edges();
     settle_position();
     params_.exact_scan = true;
     wake_now();
@@ -174,6 +177,10 @@ private:
   // An encoder count changed (before: the count before it): wakes the scan when the GMP
   // leaves the quiet interval, else only remembers the count at the last grid point.
   void count_edge(std::int64_t before);
+  // With a sampled encoder, the same wake as count_edge's, scheduled once at the time the
+  // count leaves the counts whose GMP is in quiet_ (no event per edge).
+  void schedule_count_leave(Nanos now);
+  void require_edges() const;
   // Records the position history of an unused brake monitor for its ticks whose scans (at
   // grid points up to g) were skipped: the count at edge_grid_ there, `after` beyond it.
   void record_idle_ticks(Nanos g, std::int64_t after);
@@ -254,6 +261,7 @@ private:
   QuietInterval quiet_{};
   Nanos edge_grid_{};
   std::int64_t count_at_edge_grid_ = 0;
+  EventId leave_event_{}; // a sampled encoder's count leaving the quiet interval
 
   // Speed
   SpeedFilter speed_{};

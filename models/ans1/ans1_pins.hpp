@@ -9,6 +9,7 @@
 #include "core/analog.hpp"
 #include "core/line.hpp"
 #include "models/ans1/output_setup.hpp"
+#include "signals/quadrature_waveform.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -17,7 +18,11 @@ namespace hilrig::models::ans1 {
 struct Ans1Pins {
   LineInput* quad_a = nullptr; // encoder A (4X with B)
   LineInput* quad_b = nullptr;
-  LineInput* quad_z = nullptr;                     // Z is not decoded (L455); accepted and ignored
+  LineInput* quad_z = nullptr; // Z is not decoded (L455); accepted and ignored
+  // When A and B carry exactly this waveform (no faults, no delay; it outlives the device): the
+  // count is sampled from it instead of decoded from every edge (docs/virtual-time.md, "Lines
+  // carry waveforms"), unless the device scans every period (the oracle keeps the edges).
+  signals::QuadratureWaveform* quad_waveform = nullptr;
   AnalogInput* stator_sin = nullptr;               // stator pair carrying TR * ref * sin(theta)
   AnalogInput* stator_cos = nullptr;               // stator pair carrying TR * ref * cos(theta)
   std::array<LineInput*, kInputCount> inputs{};    // index 0 = input 1; High = current flows

@@ -6,11 +6,14 @@
 // they would have changed nothing, so results, words and traces are the same as scanning every
 // period (Params::exact_scan, the oracle the differential test compares against).
 #include <algorithm>
+#include <limits>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 
 #include "models/ans1/ans1.hpp"
 #include "models/ans1/position.hpp"
+#include "models/ans1/quad_state.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -99,6 +102,8 @@ void Ans1::wake_now() {
 void Ans1::run_scan() {
   const Nanos now = scheduler_.now();
   settle_position(now - scan_period()); // after skipped scans while moving
+  scheduler_.cancel(leave_event_);
+  leave_event_ = {};
   scan_at_ = Nanos::max();
   grid_origin_ = now;
   const bool outside = changed_outside_;
@@ -122,12 +127,16 @@ void Ans1::run_scan() {
       edge_grid_ = now;
       count_at_edge_grid_ = transducer_count();
       next = grid_at_or_after(next_change());
+      schedule_count_leave(now);
     }
   } else if (before && !changed_outside_ && *before == snapshot()) {
     next = grid_at_or_after(next_change()); // asleep until then, or until wake()
   }
   if (next != Nanos::max()) {
     schedule_scan(next);
+  }
+  if (quad_->waveform != nullptr) {
+    quad_->waveform->forget_before(now); // nothing asks about an earlier time again
   }
 }
 
@@ -189,6 +198,9 @@ Nanos Ans1::last_run_grid(Nanos now) const {
 }
 
 std::int64_t Ans1::count_at(Nanos g) const {
+  if (quad_->waveform != nullptr) {
+    return quad_->waveform->count_at(g) - quad_->base; // the scan at g runs after every edge at g
+  }
   return g > edge_grid_ ? transducer_count() : count_at_edge_grid_;
 }
 
@@ -211,7 +223,50 @@ void Ans1::count_edge(std::int64_t before) {
 void Ans1::record_idle_ticks(Nanos g, std::int64_t after) {
   for (Nanos tick = monitors_.next_idle_tick(); tick != Nanos::max() && grid_at_or_after(tick) <= g;
        tick = monitors_.next_idle_tick()) {
-    monitors_.idle_tick(grid_at_or_after(tick) == edge_grid_ ? count_at_edge_grid_ : after);
+    const Nanos at = grid_at_or_after(tick);
+    monitors_.idle_tick(quad_->waveform != nullptr ? count_at(at)
+                        : at == edge_grid_         ? count_at_edge_grid_
+                                                   : after);
+  }
+}
+
+// A sampled encoder (Ans1Pins::quad_waveform) plays no edge to count_edge: the wake count_edge
+// would give at the first edge whose GMP is outside quiet_ is scheduled at that edge's time
+// instead, an ordinary event as the edge is. The counts around the present one whose GMP is
+// inside quiet_ are a run (the GMP of consecutive counts moves by at most one step of the
+// scaling, and a roll-over leaves the interval), so the first edge taking the count outside
+// that run is the first whose GMP leaves.
+void Ans1::schedule_count_leave(Nanos now) {
+  signals::QuadratureWaveform* waveform = quad_->waveform;
+  if (waveform == nullptr) {
+    return;
+  }
+  const std::int64_t count = transducer_count();
+  const std::int64_t cpc = position_.counts_per_cycle;
+  const auto inside = [&](std::int64_t c) { return quiet_.contains(global_position(c, position_)); };
+  std::int64_t hi = count;
+  while (hi - count < cpc && inside(hi + 1)) {
+    ++hi;
+  }
+  std::int64_t lo = count;
+  while (count - lo < cpc && inside(lo - 1)) {
+    --lo;
+  }
+  // A whole cycle inside: the GMP never leaves (one count per cycle).
+  const std::int64_t top = hi - count >= cpc ? std::numeric_limits<std::int64_t>::max() : hi + quad_->base;
+  const std::int64_t bottom = count - lo >= cpc ? std::numeric_limits<std::int64_t>::min() : lo + quad_->base;
+  const Nanos at = waveform->leaves(now, bottom, top);
+  if (at != Nanos::max()) {
+    leave_event_ = scheduler_.at(at, [this] {
+      leave_event_ = {};
+      wake();
+    });
+  }
+}
+
+void Ans1::require_edges() const {
+  if (quad_->waveform != nullptr) {
+    throw std::logic_error("ANS1: scan every period must be chosen before an encoder waveform is attached");
   }
 }
 

@@ -1,5 +1,6 @@
 #include "rig/campaign/virtual_run.hpp"
 
+#include <algorithm>
 #include <map>
 #include <memory>
 
@@ -15,7 +16,9 @@
 #include "rig/campaign/resolver_stators.hpp"
 #include "rig/campaign/rig_drive.hpp"
 #include "rig/campaign/run_trace.hpp"
+#include "rig/campaign/scenario_reader.hpp"
 #include "rig/duts/dut.hpp"
+#include "signals/quadrature_waveform.hpp"
 #include "signals/ssi_slave.hpp"
 #include "signals/ssi_slave_node.hpp"
 
@@ -62,6 +65,7 @@ public:
     drive_ssi();
     dut_ = info->make(sched_, dut_params(*info, s_.dut), in_.variant, in_.seed);
     if (in_.exact_scan) dut_->scan_every_period();
+    sample_encoder();
     std::map<std::string, std::string, std::less<>> pins;
     for (const Wire& w : s_.wiring) pins[w.board] = w.rig;
     dut_->attach(bus_, pins);
@@ -119,6 +123,21 @@ private:
         owned_.push_back(&line.driver());
       }
     }
+  }
+
+  // When the encoder lines carry the motion's edges unchanged (no plant, no stimulus or fault
+  // on them), a DUT that only samples the count may read it from the motion's waveform.
+  // The oracle (--exact-scan) keeps taking every edge.
+  void sample_encoder() {
+    if (plant_ || in_.exact_scan) return;
+    const auto on_encoder = [](const Stimulus& st) { return is_encoder_line(st.line); };
+    if (std::any_of(s_.stimuli.begin(), s_.stimuli.end(), on_encoder) ||
+        std::any_of(in_.faults.begin(), in_.faults.end(), on_encoder) ||
+        (in_.probe && on_encoder(*in_.probe)))
+      return;
+    encoder_ =
+        std::make_unique<signals::QuadratureWaveform>(motion_.profile, rig_encoder(s_.encoder), s_.end);
+    dut_->sample_encoder(std::string(kEncoderA), std::string(kEncoderB), *encoder_);
   }
 
   // Plays the events to the end; returns the time the run ended. A stop request or a
@@ -247,7 +266,8 @@ private:
   virt::VirtualBus bus_;
   BuiltMotion motion_;
   RigDrive drive_;
-  std::unique_ptr<PlantDrive> plant_; // when a plant turns the shaft
+  std::unique_ptr<PlantDrive> plant_;                    // when a plant turns the shaft
+  std::unique_ptr<signals::QuadratureWaveform> encoder_; // sampled by the DUT (sample_encoder)
   std::unique_ptr<duts::Dut> dut_;
   std::unique_ptr<ResolverLink> resolver_; // the resolver front end, when the board reads one
   std::unique_ptr<signals::SsiSlave> ssi_; // the [ssi] transducer, on its lines

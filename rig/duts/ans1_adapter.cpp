@@ -8,6 +8,7 @@
 #include "drivers/virtual/virtual_bus.hpp"
 #include "models/ans1/ans1.hpp"
 #include "rig/duts/param_fields.hpp"
+#include "signals/quadrature_waveform.hpp"
 
 namespace hilrig::duts {
 
@@ -39,7 +40,20 @@ public:
       else if (!wire_point(bus, pin, line, pins))
         throw std::invalid_argument("ans1 has no pin " + pin);
     }
+    const auto wired = [&](std::string_view pin) {
+      const auto it = pin_to_line.find(pin);
+      return it == pin_to_line.end() ? std::string() : it->second;
+    };
+    if (encoder_ != nullptr && !encoder_a_.empty() && wired(a::kPinA) == encoder_a_ &&
+        wired(a::kPinB) == encoder_b_)
+      pins.quad_waveform = encoder_;
     device_.attach(pins);
+  }
+  void sample_encoder(const std::string& a_line, const std::string& b_line,
+                      signals::QuadratureWaveform& waveform) override {
+    encoder_a_ = a_line;
+    encoder_b_ = b_line;
+    encoder_ = &waveform;
   }
 
   void host_write(std::size_t word, std::uint16_t value) override {
@@ -75,6 +89,8 @@ private:
   }
 
   a::Ans1 device_;
+  std::string encoder_a_, encoder_b_; // the lines a sampled encoder's waveform is on
+  signals::QuadratureWaveform* encoder_ = nullptr;
 };
 
 // Every [MODEL] choice of models/ans1/README.md that is a field of Params, by the name a

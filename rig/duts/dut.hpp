@@ -20,6 +20,10 @@
 #include "core/scheduler.hpp"
 #include "core/time.hpp"
 
+namespace hilrig::signals {
+class QuadratureWaveform;
+}
+
 namespace hilrig::virt {
 class VirtualBus;
 }
@@ -161,6 +165,17 @@ public:
   // (docs/virtual-time.md; `hilrig run --exact-scan`). Called before the run starts; a model
   // that never skips has nothing to do.
   virtual void scan_every_period() {}
+  // The rig's encoder lines a_line and b_line (bus line names) carry exactly `waveform`: no
+  // fault or delay changes their edges. A model that only samples the count may ask the
+  // waveform instead of taking every edge (docs/virtual-time.md, "Lines carry waveforms"); the
+  // lines still carry every edge for anything else that reads them. Called before attach()
+  // (and after scan_every_period()); the waveform outlives the DUT.
+  virtual void sample_encoder(const std::string& a_line, const std::string& b_line,
+                              signals::QuadratureWaveform& waveform) {
+    (void)a_line;
+    (void)b_line;
+    (void)waveform;
+  }
 };
 
 // seed: the run's seed, for what a real board leaves to chance (e.g. its scan phase).

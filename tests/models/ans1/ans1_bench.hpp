@@ -13,6 +13,8 @@
 #include "core/scheduler.hpp"
 #include "drivers/virtual/virtual_bus.hpp"
 #include "models/ans1/ans1.hpp"
+#include "signals/quadrature_edges.hpp"
+#include "signals/quadrature_waveform.hpp"
 
 namespace hilrig {
 // Readable times and edges in test failures.
@@ -26,8 +28,11 @@ namespace hilrig::models::ans1::testing {
 
 class Bench {
 public:
-  explicit Bench(const Params& params = {}, Variant variant = Variant::Correct)
-      : bus_(scheduler_), device_(scheduler_, wire_pins(bus_), params, variant) {
+  // With a waveform, the device samples the encoder from it (Ans1Pins::quad_waveform); the
+  // A/B lines carry the same edges only when play() plays them.
+  explicit Bench(const Params& params = {}, Variant variant = Variant::Correct,
+                 signals::QuadratureWaveform* waveform = nullptr)
+      : bus_(scheduler_), device_(scheduler_, pins(bus_, waveform), params, variant) {
     for (int n = 1; n <= kOutputCount; ++n) {
       bus_.line("ans1." + output_pin_name(n)).reader().on_edge([this, n](const Edge& e) {
         edges_[static_cast<std::size_t>(n - 1)].push_back(e);
@@ -59,6 +64,17 @@ public:
   void quadrature_run(Nanos first, Nanos period, std::int64_t count, int direction) {
     for (std::int64_t k = 0; k < count; ++k) {
       scheduler_.at(first + period * k, [this, direction] { step_quadrature(direction); });
+    }
+  }
+  // Every A/B edge of a solved motion on the lines, at its time.
+  void play(const signals::QuadratureTrace& trace) {
+    for (const signals::QuadEdge& e : trace.edges) {
+      if (e.channel != signals::QuadChannel::Z) {
+        const bool on_a = e.channel == signals::QuadChannel::A;
+        scheduler_.at(e.time, [this, on_a, level = e.level] {
+          bus_.line(on_a ? "ans1.A" : "ans1.B").driver().set(level);
+        });
+      }
     }
   }
   void step_quadrature(int direction) {
@@ -97,6 +113,12 @@ public:
   }
 
 private:
+  static Ans1Pins pins(virt::VirtualBus& bus, signals::QuadratureWaveform* waveform) {
+    Ans1Pins p = wire_pins(bus);
+    p.quad_waveform = waveform;
+    return p;
+  }
+
   Scheduler scheduler_;
   virt::VirtualBus bus_;
   Ans1 device_;

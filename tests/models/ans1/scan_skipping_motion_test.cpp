@@ -11,6 +11,7 @@
 #include <random>
 
 #include "ans1_bench.hpp"
+#include "tests/signals/random_motion.hpp"
 
 namespace hilrig::models::ans1 {
 namespace {
@@ -57,7 +58,8 @@ void PrintTo(const Reading& r, std::ostream* os) {
 // A random program and stimulus, the same for both engines (one generator per bench, same seed).
 class Scenario {
 public:
-  explicit Scenario(std::uint64_t seed) : seed_(seed) {}
+  // steps: the motion as steps of constant period (else the caller plays a motion profile).
+  explicit Scenario(std::uint64_t seed, bool steps = true) : seed_(seed), steps_(steps) {}
 
   void apply(Bench& b, Nanos end) const {
     std::mt19937_64 rng(seed_);
@@ -151,7 +153,9 @@ public:
       if (pick(0, 1) == 0) {
         t = (t / 10_us) * 10_us; // steps on grid points
       }
-      b.quadrature_run(t, period, steps, direction);
+      if (steps_) {
+        b.quadrature_run(t, period, steps, direction);
+      }
       t += period * steps + microseconds(pick(0, 1) == 0 ? 0 : pick(1, 20'000));
     }
     // Input edges (inputs 1..7: enabling, shift register, brake, die protection).
@@ -162,6 +166,7 @@ public:
 
 private:
   std::uint64_t seed_;
+  bool steps_;
 };
 
 // Readings from ordinary events: at random instants and exactly on grid points, where the
@@ -204,6 +209,58 @@ TEST(ScanSkippingMotion, RandomProgramsAndMotionGiveTheOraclesEdgesAndWords) {
     skipped_scans += skipping.device().scans();
   }
   EXPECT_LT(skipped_scans, oracle_scans); // the comparison ran on a skipping engine
+}
+
+// A sampled encoder (docs/virtual-time.md, "Lines carry waveforms"): the device takes no edge,
+// it asks the waveform for the count and for the time the count leaves its quiet interval. Under
+// random programs and random motion profiles (trapezoids, ramps through zero, pauses,
+// reversals) and a power cycle, every output edge and every value read is the oracle's, and
+// the skipping engine's that takes every edge.
+TEST(ScanSkippingMotion, SampledEncoderGivesTheOraclesEdgesAndWords) {
+  constexpr Nanos kEnd = 250_ms;
+  for (std::uint64_t seed = 1; seed <= 16; ++seed) {
+    SCOPED_TRACE(seed);
+    const signals::MotionProfile motion = signals::testing::random_motion(seed, kEnd);
+    signals::QuadratureEncoder encoder;
+    encoder.units_per_turn = static_cast<double>(encoder.counts_per_turn()); // a profile in counts
+    encoder.placement = signals::EdgePlacement::WholeCount;
+    const signals::QuadratureTrace edges = signals::solve_quadrature(motion, encoder, kEnd);
+    signals::QuadratureWaveform waveform(motion, encoder, kEnd);
+    Bench oracle(every_period());
+    Bench skipping;
+    Bench sampled({}, Variant::Correct, &waveform);
+    std::array<std::vector<Reading>, 3> readings;
+    const std::array<Bench*, 3> benches{&oracle, &skipping, &sampled};
+    for (std::size_t k = 0; k < benches.size(); ++k) {
+      Bench& b = *benches[k];
+      Scenario(seed, false).apply(b, kEnd);
+      b.play(edges);
+      sample(b, readings[k], seed, kEnd);
+      if (seed % 2 == 0) { // the count starts again at 0 from the lines' state at power-up (A36)
+        b.scheduler().at(150_ms, [&b] { b.device().power_off(); });
+        b.scheduler().at(150_ms + microseconds(static_cast<int>(seed) * 37), [&b] { b.device().power_on(); });
+      }
+    }
+    for (Nanos t = 0_ms; t <= kEnd; t += 7_ms) {
+      for (Bench* b : benches) {
+        b->run_until(t);
+      }
+      ASSERT_EQ(read(oracle.device(), t), read(sampled.device(), t));
+      ASSERT_EQ(read(skipping.device(), t), read(sampled.device(), t));
+      ASSERT_EQ(oracle.device().transducer_count(), sampled.device().transducer_count());
+    }
+    for (std::size_t k = 1; k < benches.size(); ++k) {
+      ASSERT_EQ(readings[0].size(), readings[k].size());
+      for (std::size_t i = 0; i < readings[0].size(); ++i) {
+        ASSERT_EQ(readings[0][i], readings[k][i]) << "bench " << k << ", reading " << i;
+      }
+    }
+    for (int n = 1; n <= kOutputCount; ++n) {
+      ASSERT_EQ(oracle.edges(n), sampled.edges(n)) << "output " << n;
+      ASSERT_EQ(skipping.edges(n), sampled.edges(n)) << "output " << n;
+    }
+    EXPECT_LT(sampled.device().scans(), oracle.device().scans()); // it skipped
+  }
 }
 
 TEST(ScanSkippingMotion, SteadyMotionScansAtOutputChangesNotEveryPeriod) {
