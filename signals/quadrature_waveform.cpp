@@ -12,10 +12,11 @@ QuadratureWaveform::QuadratureWaveform(MotionProfile profile, const QuadratureEn
       count_before_head_(solver_.initial_count()) {}
 
 bool QuadratureWaveform::solve_more() {
-  std::array<QuadEdge, 256> batch;
-  const std::size_t n = solver_.fill(batch);
+  if (solved_all_) return false; // asked often past the last edge (a shaft at rest)
+  const std::size_t n = solver_.fill(batch_);
   for (std::size_t i = 0; i < n; ++i)
-    if (batch[i].channel != QuadChannel::Z) edges_.push_back(batch[i]);
+    if (batch_[i].channel != QuadChannel::Z) edges_.push_back(batch_[i]);
+  solved_all_ = n == 0;
   return n != 0;
 }
 

@@ -8,6 +8,7 @@
 // Times asked move forward with the run: edges before forget_before()'s horizon are dropped,
 // so the memory held is the edges between the horizon and the latest time asked about.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -46,6 +47,8 @@ private:
   QuadratureEdgeSolver solver_;
   std::vector<QuadEdge> edges_; // A/B edges from head_ on, in time order
   std::size_t head_ = 0;
+  bool solved_all_ = false;
+  std::array<QuadEdge, 256> batch_{};
   std::int64_t count_before_head_ = 0;
 };
 

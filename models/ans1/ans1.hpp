@@ -180,6 +180,7 @@ private:
   // With a sampled encoder, the same wake as count_edge's, scheduled once at the time the
   // count leaves the counts whose GMP is in quiet_ (no event per edge).
   void schedule_count_leave(Nanos now);
+  void schedule_leave_at(Nanos at);
   void require_edges() const;
   // Records the position history of an unused brake monitor for its ticks whose scans (at
   // grid points up to g) were skipped: the count at edge_grid_ there, `after` beyond it.
@@ -262,6 +263,15 @@ private:
   Nanos edge_grid_{};
   std::int64_t count_at_edge_grid_ = 0;
   EventId leave_event_{}; // a sampled encoder's count leaving the quiet interval
+  // The last leave time found, and what it was found for (schedule_count_leave).
+  struct LeaveMemo {
+    std::uint16_t quiet_lo = 0;
+    std::uint16_t quiet_hi = 0;
+    PositionSetup position{};
+    std::int64_t base = 0;
+    Nanos at = Nanos::min();
+  };
+  LeaveMemo leave_memo_{};
 
   // Speed
   SpeedFilter speed_{};

@@ -241,6 +241,14 @@ void Ans1::schedule_count_leave(Nanos now) {
   if (waveform == nullptr) {
     return;
   }
+  // A scan re-armed with the same interval and scaling before the count left it (a train of
+  // input edges while the shaft turns) leaves at the same edge: nothing to walk again.
+  LeaveMemo& memo = leave_memo_;
+  if (memo.at > now && memo.quiet_lo == quiet_.lo && memo.quiet_hi == quiet_.hi &&
+      memo.position == position_ && memo.base == quad_->base) {
+    schedule_leave_at(memo.at);
+    return;
+  }
   const std::int64_t count = transducer_count();
   const std::int64_t cpc = position_.counts_per_cycle;
   const auto inside = [&](std::int64_t c) { return quiet_.contains(global_position(c, position_)); };
@@ -256,6 +264,11 @@ void Ans1::schedule_count_leave(Nanos now) {
   const std::int64_t top = hi - count >= cpc ? std::numeric_limits<std::int64_t>::max() : hi + quad_->base;
   const std::int64_t bottom = count - lo >= cpc ? std::numeric_limits<std::int64_t>::min() : lo + quad_->base;
   const Nanos at = waveform->leaves(now, bottom, top);
+  memo = LeaveMemo{quiet_.lo, quiet_.hi, position_, quad_->base, at};
+  schedule_leave_at(at);
+}
+
+void Ans1::schedule_leave_at(Nanos at) {
   if (at != Nanos::max()) {
     leave_event_ = scheduler_.at(at, [this] {
       leave_event_ = {};
