@@ -96,16 +96,34 @@ def plant_row(work, root, rel):
     return sim, cpu, runs, status
 
 
-def simulated_seconds(campaign_text, results_path):
-    """campaign.end times the runs the campaign made (results.json)."""
+def campaign_end_seconds(campaign_text):
+    """[campaign] end in seconds: the virtual time every run of the campaign plays to."""
     m = re.search(r'^\s*end\s*=\s*"([0-9.]+)(ns|us|ms|s)"', campaign_text, re.M)
-    unit = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[m.group(2)]
-    runs = 1
+    return float(m.group(1)) * {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[m.group(2)]
+
+
+def virtual_runs(results):
+    """(runs, probe runs) a results.json object records. A probe run is a whole extra run of
+    the scenario: a debounce check's bisection plays one per probe (rig/campaign/executive.cpp,
+    bisect_phases), each to the campaign's end, and lists every probe in the check's "probes"."""
+    runs = results.get("runs", [])
+    probes = sum(len(c.get("probes") or []) for r in runs for c in r.get("checks", []))
+    return len(runs), probes
+
+
+def simulated_seconds(campaign_text, results_path, with_probes=True):
+    """(simulated s, runs): the virtual time every run the campaign made simulated, the rule
+    the speed figures use: campaign.end times (runs + probe runs) -- each run, a debounce
+    check's probe runs too, plays the scenario from 0 to campaign.end. with_probes=False gives
+    the older figure, campaign.end times the runs in results.json only. A run a rig fault
+    stopped early is still counted to the end (none of the shipped campaigns has one)."""
+    runs, probes = 1, 0
     try:
-        runs = len(json.loads(pathlib.Path(results_path).read_text())["runs"])
+        runs, probes = virtual_runs(json.loads(pathlib.Path(results_path).read_text()))
     except (OSError, ValueError, KeyError):
         pass
-    return float(m.group(1)) * unit * runs, runs
+    counted = runs + probes if with_probes else runs
+    return campaign_end_seconds(campaign_text) * counted, runs
 
 
 def fmt_rate(x):
