@@ -292,7 +292,7 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
         std::ostringstream frames;
         write_candump(*output.trace, frames, options);
         try {
-          if (!can_log) can_log.emplace(dir / "can.log");
+          if (!can_log) can_log.emplace(dir / "can.log", rig::AppendFile::Sync::None);
           can_log->append(frames.str());
         } catch (const std::runtime_error& e) {
           throw campaign::RigFault(e.what()); // "cannot write OUT/can.log: No space left on device"

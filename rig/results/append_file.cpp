@@ -11,7 +11,7 @@
 
 namespace hilrig::rig {
 
-AppendFile::AppendFile(const std::filesystem::path& path) : path_(path) {
+AppendFile::AppendFile(const std::filesystem::path& path, Sync sync) : path_(path), sync_(sync) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
   if (fd_ < 0)
     throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
@@ -32,7 +32,7 @@ void AppendFile::append(std::string_view block) {
     err = errno;
   else if (static_cast<std::size_t>(n) != block.size())
     err = EFBIG;
-  else if (::fdatasync(fd_) != 0)
+  else if (sync_ == Sync::EachBlock && ::fdatasync(fd_) != 0)
     err = errno;
   if (err != 0) {
     if (::ftruncate(fd_, size_) != 0) { /* a reader of the file ignores a torn last line */

@@ -1,9 +1,10 @@
 #pragma once
 // An output file that grows by whole blocks (a run's record, a run's CAN frames): each block is
-// one write() on an O_APPEND descriptor followed by fdatasync(). A write that fails (ENOSPC,
-// EFBIG, EIO) truncates the file back to its last whole block and throws std::runtime_error
-// naming the file and the errno text: what was written before is kept, nothing half-written
-// stays behind.
+// one write() on an O_APPEND descriptor, so a crash of hilrig leaves whole blocks only; with
+// Sync::EachBlock it is followed by fdatasync(), so a power loss loses at most the block in
+// flight. A write that fails (ENOSPC, EFBIG, EIO) truncates the file back to its last whole
+// block and throws std::runtime_error naming the file and the errno text: what was written
+// before is kept, nothing half-written stays behind.
 
 #include <filesystem>
 #include <string_view>
@@ -14,8 +15,12 @@ namespace hilrig::rig {
 
 class AppendFile {
 public:
+  // EachBlock: the record a power loss must not lose (the run log). None: a file the run log's
+  // results do not depend on (can.log: a rerun gives the same bytes), where an fdatasync per
+  // run was a tenth of a short campaign's CPU (docs/PERFORMANCE.md, "Fixed cost of a run").
+  enum class Sync { EachBlock, None };
   // Creates (truncates) path. Throws std::runtime_error with the errno text.
-  explicit AppendFile(const std::filesystem::path& path);
+  explicit AppendFile(const std::filesystem::path& path, Sync sync = Sync::EachBlock);
   ~AppendFile();
   AppendFile(const AppendFile&) = delete;
   AppendFile& operator=(const AppendFile&) = delete;
@@ -25,6 +30,7 @@ public:
 
 private:
   std::filesystem::path path_;
+  Sync sync_;
   int fd_ = -1;
   off_t size_ = 0; // bytes of whole blocks written
 };

@@ -334,35 +334,39 @@ namespace {
 
 // The block writer behind runs.jsonl and can.log: over a file size limit the block that does
 // not fit is cut off again, every block before it is kept, and the message names the file and
-// the errno text; on a full disk (/dev/full) the message says so.
+// the errno text; on a full disk (/dev/full) the message says so. The same with and without
+// the fdatasync per block (the run log syncs, can.log does not).
 TEST(AppendFile, SizeLimitKeepsTheBlocksBeforeAndSaysWhy) {
-  const fs::path dir = scratch("append_efbig");
-  const fs::path path = dir / "can.log";
-  const std::string run1 = "(946684800.000000) can0 120#0000000000000000\n";
-  const std::string run2 = "(946684800.001000) can0 120#0100000000000001\n";
-  const int status = with_file_size_limit(run1.size() + run2.size() - 1, [&] {
-    try {
-      AppendFile f(path);
-      f.append(run1);
-      f.append(run2);
-      return 1;
-    } catch (const std::runtime_error& e) {
-      const std::string what = e.what();
-      return says(e, EFBIG) && what.find("can.log") != std::string::npos ? 0 : 2;
-    }
-  });
-  EXPECT_EQ(status, 0);
-  EXPECT_EQ(slurp(path), run1);
-  // Exactly room for both: both kept.
-  EXPECT_EQ(with_file_size_limit(run1.size() + run2.size(),
-                                 [&] {
-                                   AppendFile f(path);
-                                   f.append(run1);
-                                   f.append(run2);
-                                   return 0;
-                                 }),
-            0);
-  EXPECT_EQ(slurp(path), run1 + run2);
+  for (const AppendFile::Sync sync : {AppendFile::Sync::EachBlock, AppendFile::Sync::None}) {
+    SCOPED_TRACE(sync == AppendFile::Sync::None ? "Sync::None" : "Sync::EachBlock");
+    const fs::path dir = scratch(sync == AppendFile::Sync::None ? "append_efbig_unsynced" : "append_efbig");
+    const fs::path path = dir / "can.log";
+    const std::string run1 = "(946684800.000000) can0 120#0000000000000000\n";
+    const std::string run2 = "(946684800.001000) can0 120#0100000000000001\n";
+    const int status = with_file_size_limit(run1.size() + run2.size() - 1, [&] {
+      try {
+        AppendFile f(path, sync);
+        f.append(run1);
+        f.append(run2);
+        return 1;
+      } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        return says(e, EFBIG) && what.find("can.log") != std::string::npos ? 0 : 2;
+      }
+    });
+    EXPECT_EQ(status, 0);
+    EXPECT_EQ(slurp(path), run1);
+    // Exactly room for both: both kept.
+    EXPECT_EQ(with_file_size_limit(run1.size() + run2.size(),
+                                   [&] {
+                                     AppendFile f(path, sync);
+                                     f.append(run1);
+                                     f.append(run2);
+                                     return 0;
+                                   }),
+              0);
+    EXPECT_EQ(slurp(path), run1 + run2);
+  }
 }
 
 TEST(AppendFile, FullDiskSaysWhy) {
