@@ -302,9 +302,9 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     };
     const rig::Shard part{static_cast<std::uint32_t>(p.shard.first),
                           static_cast<std::uint32_t>(p.shard.second)};
-    // Each run is appended to the run log as it finishes (and not kept), so a campaign costs the
-    // same per run however long it is, and a crash or SIGKILL leaves every finished run; the
-    // log is folded into results.json below.
+    // Each run is appended to the run log as it finishes, so a crash or SIGKILL leaves every
+    // finished run; the log's writer keeps the runs for the fold below while they fit its
+    // budget (rig/results/run_log.hpp), so a campaign's memory stays bounded however long it is.
     rig::CampaignResult header = exec.planned(p.runs, p.seed, part);
     header.station = o.station;
     header.host_link = o.host_link_factory ? "custom" : o.host_link;
@@ -313,12 +313,13 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     rig::RunLog log(dir / rig::kRunLogName, header);
     const rig::CampaignResult done = exec.run_all(p.runs, p.seed, part, started, sink,
                                                   [&](const rig::RunResult& run) { log.append(run); });
-    // The fold reads the log a record at a time: its memory does not grow with the runs either.
+    // The fold takes the runs the log holds, or reads it back a record at a time: its memory
+    // does not grow with the runs either.
     rig::CampaignResult facts;
     facts.interrupted = done.interrupted;
     facts.started_at = ran.clock.started_at;
     facts.host = ran.clock.hostname;
-    rig::CampaignResult result = rig::fold_run_log(log.path(), dir, facts, ran.clock);
+    rig::CampaignResult result = rig::fold_run_log(log, dir, facts, ran.clock);
     ran.log = log.path();
 
     const auto& t = result.totals;
@@ -326,8 +327,8 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
                        p.c.name, t.runs, t.runs_passed, t.runs_failed, t.runs_errored, t.faults_caught,
                        t.faults, rig::to_string(result.verdict));
     bool rig_error = false;
-    if (t.runs_errored > 0) // a run a rig error stopped reads "error": only then is the log read again
-      rig::run_log_runs(log.path())([&](const rig::RunResult& run) {
+    if (t.runs_errored > 0) // a run a rig error stopped reads "error": only then are the runs visited again
+      log.runs()([&](const rig::RunResult& run) {
         if (run.error.empty()) return;
         rig_error = true;
         err << fmt::format("run {} ({}): rig fault: {}\n", run.index, run.name, run.error);

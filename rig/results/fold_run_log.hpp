@@ -6,6 +6,7 @@
 
 #include "rig/results/campaign_result.hpp"
 #include "rig/results/junit.hpp"
+#include "rig/results/run_log.hpp"
 
 namespace hilrig::rig {
 
@@ -15,6 +16,10 @@ namespace hilrig::rig {
 // gives what the log does not hold: the stop the campaign ended with and the wall clock
 // (interrupted, started_at, host); its runs are not used. Returns the campaign without its runs.
 [[nodiscard]] CampaignResult fold_run_log(const std::filesystem::path& log, const std::filesystem::path& dir,
+                                          const CampaignResult& facts, const JunitClock& clock);
+// The same files from the writer of the log: its summary and its runs (RunLog::summary,
+// RunLog::runs), held in memory while they fit its budget, else read back from the file.
+[[nodiscard]] CampaignResult fold_run_log(const RunLog& log, const std::filesystem::path& dir,
                                           const CampaignResult& facts, const JunitClock& clock);
 
 } // namespace hilrig::rig

@@ -4,7 +4,9 @@
 // wall-clock time outside the "wall_clock" object (which compare and merge ignore).
 
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -33,6 +35,12 @@ inline constexpr int kResultsVersion = 2; // 2: outcome words, campaign_sha256, 
 // The same text for `header` (finalized, its runs not used) with the runs `runs` gives, one at a
 // time: to_json_text(r) is write_json_text(r, runs_of(r), ...).
 void write_json_text(const CampaignResult& header, const RunSource& runs, const TextSink& out);
+// Each run's object as write_json_text writes it, run_to_json(run).dump(2), in index order:
+// a writer that has already built a run's JSON (the run log's) dumps it once, not again here.
+using RunDumpVisitor = std::function<void(std::string_view)>;
+using RunDumpSource = std::function<void(const RunDumpVisitor&)>;
+[[nodiscard]] RunDumpSource dumps_of(const RunSource& runs);
+void write_json_dumps(const CampaignResult& header, const RunDumpSource& runs, const TextSink& out);
 
 // Writes to "<path>.tmp", then renames over path: a crash leaves either the previous
 // complete file or the new one, never half a file. Call it again as runs finish to keep a
@@ -40,6 +48,8 @@ void write_json_text(const CampaignResult& header, const RunSource& runs, const 
 void write_results_file(const std::filesystem::path& path, const CampaignResult& result);
 void write_results_file(const std::filesystem::path& path, const CampaignResult& header,
                         const RunSource& runs);
+void write_results_dumps(const std::filesystem::path& path, const CampaignResult& header,
+                         const RunDumpSource& runs);
 // Throws std::runtime_error when the file cannot be read or is not a results file. A run log
 // (*.jsonl, rig/results/run_log.hpp) is folded: its header and whole records, finalized.
 [[nodiscard]] CampaignResult read_results_file(const std::filesystem::path& path);

@@ -15,19 +15,36 @@ namespace hilrig::rig {
 
 using nlohmann::json;
 
-RunLog::RunLog(const std::filesystem::path& path, const CampaignResult& campaign) : file_(path) {
+RunLog::RunLog(const std::filesystem::path& path, const CampaignResult& campaign, std::size_t held_bytes)
+    : file_(path), budget_(held_bytes) {
   CampaignResult header = campaign;
   header.runs.clear();
   finalize(header);
-  file_.append(json{{"run_log", kRunLogVersion}, {"results", to_json(header)}}.dump() + "\n");
+  const json record = to_json(header);
+  file_.append(json{{"run_log", kRunLogVersion}, {"results", record}}.dump() + "\n");
+  header_ = campaign_from_json(record); // what the reader's header is: only the facts written
 }
 
 void RunLog::append(const RunResult& run) {
   // The record carries the words finalize() would derive, so a log read on its own agrees.
   RunResult judged = run;
-  judged.outcome = run_outcome(judged);
-  for (auto& c : judged.checks) c.judgement = judgement_in(judged, c);
-  file_.append(json{{"run", run_to_json(judged)}}.dump() + "\n");
+  judge(judged);
+  json record{{"run", run_to_json(judged)}};
+  file_.append(record.dump() + "\n");
+  if (last_index_ && judged.index <= *last_index_) out_of_order_ = true;
+  last_index_ = judged.index;
+  tally_.add(judged);
+  if (dropped_) return;
+  std::string dump = record.at("run").dump(2);
+  held_bytes_ += 2 * dump.size(); // the text and about as much again for the typed run
+  if (held_bytes_ > budget_) {
+    dropped_ = true;
+    std::vector<RunResult>().swap(held_);
+    std::vector<std::string>().swap(held_dumps_);
+    return;
+  }
+  held_.push_back(std::move(judged));
+  held_dumps_.push_back(std::move(dump));
 }
 
 namespace {
@@ -87,6 +104,29 @@ CampaignResult read_run_log_summary(const std::filesystem::path& path,
   result.interrupted = interrupted;
   tally.apply(result);
   return result;
+}
+
+CampaignResult RunLog::summary(const std::optional<std::string>& interrupted) const {
+  if (out_of_order_) return read_run_log_summary(path(), interrupted); // throws with file:line
+  CampaignResult result = header_;
+  result.interrupted = interrupted;
+  RunTally tally = tally_;
+  tally.apply(result);
+  return result;
+}
+
+RunSource RunLog::runs() const {
+  if (dropped_) return run_log_runs(path());
+  return [this](const RunVisitor& visit) {
+    for (const RunResult& run : held_) visit(run);
+  };
+}
+
+RunDumpSource RunLog::run_dumps() const {
+  if (dropped_) return dumps_of(runs());
+  return [this](const RunDumpVisitor& visit) {
+    for (const std::string& dump : held_dumps_) visit(dump);
+  };
 }
 
 RunSource run_log_runs(const std::filesystem::path& path) {

@@ -114,5 +114,32 @@ TEST(FoldMemory, PeakDoesNotGrowWithTheRuns) {
   EXPECT_GT(held_large, held_small + 360 * 8'000) << held_small << " B vs " << held_large << " B";
 }
 
+// The log's writer keeps the runs for the fold only within its budget: appending 120 runs
+// with a 1 MiB budget peaks near the budget (the runs dropped when it was passed), where the
+// default budget holds them all and grows by the 100 more runs' share.
+TEST(FoldMemory, WriterHoldsRunsWithinItsBudget) {
+  CampaignResult c = test::sample_campaign(120);
+  for (RunResult& run : c.runs) run.checks[0].series[0].values.assign(1000, 12.5);
+  finalize(c);
+  const fs::path dir = hilrig::test::scratch_dir("results", "writer_budget");
+  constexpr std::size_t kBudget = 1024 * 1024;
+  CampaignResult header = c; // as `hilrig run` gives it: the facts, no run
+  header.runs.clear();
+  const auto append = [&](std::size_t n, std::size_t budget) {
+    return peak_of([&] {
+      RunLog log(dir / kRunLogName, header, budget);
+      for (std::size_t i = 0; i < n; ++i) log.append(c.runs[i]);
+      EXPECT_EQ(log.holds_runs(), budget != kBudget) << n;
+    });
+  };
+  const std::size_t bounded = append(120, kBudget);
+  std::printf("writer peak, 120 runs: budget 1 MiB %zu B\n", bounded);
+  EXPECT_LE(bounded, 2 * kBudget);
+  const std::size_t small = append(20, kRunLogHeldBytes);
+  const std::size_t large = append(120, kRunLogHeldBytes);
+  std::printf("writer peak, default budget: 20 runs %zu B, 120 runs %zu B\n", small, large);
+  EXPECT_GT(large, small + 100 * 8'000);
+}
+
 } // namespace
 } // namespace hilrig::rig

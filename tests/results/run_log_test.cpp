@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -100,6 +101,106 @@ TEST(RunLog, FoldedOutputsAreTheInMemoryWritersBytes) {
     EXPECT_EQ(slurp(dir / "junit.xml"), to_junit_xml(whole, clock)) << n;
     EXPECT_EQ(slurp(dir / "report.html"), to_report_html(whole)) << n;
     for (const auto& e : fs::directory_iterator(dir)) EXPECT_NE(e.path().extension(), ".tmp") << n;
+  }
+}
+
+// A run with every kind of field the log's writer holds and its reader parses back: window
+// traces (a logic lane, a count lane, an analog lane), probes, a motion record, a value that
+// is not a number (every fourth run) and doubles no short decimal writes (1/3, 0.1 + 0.2, -0).
+RunResult rich_run(std::uint64_t index) {
+  RunResult r = test::nominal_run(index, 10.0 + 1.0 / 3.0);
+  CheckResult& c = r.checks[1];
+  WindowTrace w{*c.measurements[0].window, TraceWindow{Nanos{150'000'000}, Nanos{160'000'000}}, {}};
+  w.lanes.push_back(
+      TraceLane{"enc.A", LaneRole::Stimulus, {{Nanos{150'000'000}, 0}, {Nanos{151'000'001}, 1}}, 0});
+  w.lanes.push_back(
+      TraceLane{"shaft.count", LaneRole::Count, {{Nanos{150'000'000}, -3}, {Nanos{152'000'000}, 94}}, 7});
+  TraceLane stator{
+      "resolver.sin",
+      LaneRole::Stimulus,
+      {{Nanos{150'000'000}, 0, -0.0}, {Nanos{150'100'000}, 0, 0.1 + 0.2}, {Nanos{150'200'000}, 0, -1e-300}},
+      0};
+  stator.real = true;
+  w.lanes.push_back(stator);
+  c.traces.push_back(w);
+  c.probes.push_back(Probe{Nanos{2'500'000}, true, Nanos{100'000}});
+  c.probes.push_back(Probe{Nanos{1'250'000}, false, std::nullopt});
+  if (index % 4 == 1) {
+    Measurement broken = c.measurements[0];
+    broken.name = "ls1-advance.edge1";
+    broken.value = std::numeric_limits<double>::quiet_NaN();
+    broken.outcome = Outcome::Error;
+    c.measurements.push_back(broken);
+  }
+  r.motion.points = {{Nanos{0}, 0.0, 0.0}, {Nanos{1'000'000}, 1.0 / 3.0, 333.3333333333333}};
+  r.motion.events = {{Nanos{500'000}, "valve off: brake applied"}};
+  r.observations.push_back(Observation{"dut.word", 2.0 / 3.0, "", Nanos{-1}});
+  return r;
+}
+
+// The fold `hilrig run` makes from the log's writer (fold_run_log(RunLog&): the runs it held
+// in memory, or, past its budget, the file read back) writes the same results.json,
+// junit.xml and report.html, byte for byte, as the fold of the file alone: budgets that hold
+// every run, none (dropped at the first) and some (dropped part way), over campaigns of no
+// run, a few, rich runs, an interrupted one and 60 runs.
+TEST(RunLog, WritersFoldIsTheFilesFold) {
+  const fs::path dir = scratch("writer_fold");
+  for (std::size_t n : {0U, 1U, 3U, 7U, 60U}) {
+    CampaignResult whole = test::sample_campaign(n);
+    if (n == 7) {
+      whole.runs.push_back(test::fault_run(7, "late_output", false));
+      for (std::uint64_t i = 8; i < 14; ++i) whole.runs.push_back(rich_run(i));
+    }
+    whole.planned_runs = whole.runs.size() + (n == 3 ? 1 : 0);
+    finalize(whole);
+    CampaignResult facts;
+    if (n == 3) facts.interrupted = "SIGTERM";
+    facts.started_at = "2026-01-02T03:04:05Z";
+    facts.host = "bench-3";
+    JunitClock clock{"2026-01-02T03:04:05Z", "bench-3", {}};
+    for (const RunResult& run : whole.runs)
+      clock.run_seconds[run.index] = 0.25 * static_cast<double>(run.index);
+    for (const std::size_t budget : {kRunLogHeldBytes, std::size_t{0}, std::size_t{20'000}}) {
+      const std::string what = fmt::format("{} runs, budget {}", n, budget);
+      const fs::path held = dir / "held";
+      const fs::path read = dir / "read";
+      fs::create_directories(held);
+      fs::create_directories(read);
+      RunLog log(held / kRunLogName, whole, budget);
+      for (const RunResult& run : whole.runs) log.append(run);
+      if (budget == kRunLogHeldBytes || whole.runs.empty()) {
+        EXPECT_TRUE(log.holds_runs()) << what;
+      } else if (budget == 0 || n == 60) {
+        EXPECT_FALSE(log.holds_runs()) << what; // read back from the file
+      }
+
+      const CampaignResult from_writer = fold_run_log(log, held, facts, clock);
+      const CampaignResult from_file = fold_run_log(held / kRunLogName, read, facts, clock);
+      EXPECT_EQ(from_writer.totals, from_file.totals) << what;
+      EXPECT_EQ(from_writer.verdict, from_file.verdict) << what;
+      EXPECT_EQ(from_writer.complete, from_file.complete) << what;
+      EXPECT_EQ(to_json_text(from_writer), to_json_text(from_file)) << what; // the summaries
+      for (const char* file : {"results.json", "junit.xml", "report.html"})
+        EXPECT_EQ(slurp(held / file), slurp(read / file)) << what << ": " << file;
+    }
+  }
+}
+
+// The writer's summary of runs appended out of run order is the reader's refusal.
+TEST(RunLog, WritersSummaryRefusesRunsOutOfOrder) {
+  const fs::path dir = scratch("writer_order");
+  CampaignResult whole = test::sample_campaign(3);
+  RunLog log(dir / kRunLogName, whole);
+  log.append(whole.runs[0]);
+  log.append(whole.runs[2]);
+  log.append(whole.runs[1]);
+  try {
+    (void)log.summary();
+    ADD_FAILURE() << "runs out of run order were summed up";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(kRunLogName + std::string(":4: run 1 after run 2")),
+              std::string::npos)
+        << e.what();
   }
 }
 
