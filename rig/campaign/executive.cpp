@@ -167,16 +167,33 @@ RunOutput Executive::run(const RunSpec& spec) const {
     }
     out.trace = v.trace; // kept when a probe run below is stopped
     checks::Capture capture = capture_of(s, v);
-    for (const CheckSpec& c : s.checks) {
-      capture.bisections.clear();
-      if (const auto* debounce = std::get_if<checks::DebounceParams>(&c.params))
-        capture.bisections = bisect_phases(in, c, *debounce);
-      rig::CheckResult judged = checks::run_check(c.name, c.params, capture);
-      // The trace around what the report draws; a brake's stop is drawn on the motion instead.
-      if (v.trace && !std::holds_alternative<checks::BrakeParams>(c.params))
-        judged.traces = cut_window_traces(judged, *v.trace, lanes_of(c.params, *v.trace));
-      r.checks.push_back(std::move(judged));
+    // The trace around what the report draws, cut for every check judged in one pass over the
+    // recording; a brake's stop is drawn on the motion instead.
+    std::vector<std::pair<std::size_t, Lanes>> drawn; // check index, its lanes
+    const auto cut = [&] {
+      std::vector<WindowCut> cuts;
+      for (const auto& [k, lanes] : drawn) cuts.push_back(WindowCut{&r.checks[k], lanes});
+      auto traces = cut_window_traces(cuts, *v.trace);
+      for (std::size_t i = 0; i < drawn.size(); ++i) r.checks[drawn[i].first].traces = std::move(traces[i]);
+    };
+    try {
+      for (const CheckSpec& c : s.checks) {
+        capture.bisections.clear();
+        if (const auto* debounce = std::get_if<checks::DebounceParams>(&c.params))
+          capture.bisections = bisect_phases(in, c, *debounce);
+        r.checks.push_back(checks::run_check(c.name, c.params, capture));
+        if (v.trace && !std::holds_alternative<checks::BrakeParams>(c.params))
+          drawn.emplace_back(r.checks.size() - 1, lanes_of(c.params, *v.trace));
+      }
+    } catch (...) {
+      // The checks judged before the one that threw keep their traces, as when cut one by one.
+      try {
+        cut();
+      } catch (...) { // NOLINT(bugprone-empty-catch): the first error is the run's
+      }
+      throw;
     }
+    cut();
     if (!v.handshakes.empty()) r.checks.push_back(host_check(v.handshakes));
     if (!v.rig_timing.empty()) r.checks.push_back(rig_check(v.rig_timing));
     r.observations = v.observations;

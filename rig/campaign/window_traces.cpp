@@ -84,78 +84,115 @@ std::vector<std::pair<std::string, rig::LaneRole>> lanes_of(const checks::CheckP
   return out;
 }
 
-std::vector<rig::WindowTrace>
-cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
-                  const std::vector<std::pair<std::string, rig::LaneRole>>& lanes) {
-  std::vector<rig::WindowTrace> out;
-  for (const rig::Measurement* m : rig::timing_figures(check)) {
-    rig::WindowTrace w{*m->window, rig::figure_span(rig::as_drawn(check, *m)), {}};
-    for (const auto& [name, role] : lanes) w.lanes.push_back(rig::TraceLane{name, role, {}, 0});
-    out.push_back(std::move(w));
-  }
-  if (out.empty() || lanes.empty()) return out;
-  // The lane each trace signal feeds (-1: none), and each lane's value before its span.
-  const auto& signals = trace.signals();
-  std::vector<int> lane_of(signals.size(), -1);
-  for (std::size_t l = 0; l < lanes.size(); ++l)
-    if (lanes[l].second != rig::LaneRole::Rate)
-      lane_of[static_cast<std::size_t>(trace.find(lanes[l].first))] = static_cast<int>(l);
-  struct Before {
-    Nanos time{-1};
-    std::int64_t value = 0;
-    double real = 0.0;
-  };
-  std::vector<std::vector<Before>> before(out.size(), std::vector<Before>(lanes.size()));
+namespace {
+
+// A lane's last change before its window's span.
+struct Before {
+  Nanos time{-1};
+  std::int64_t value = 0;
+  double real = 0.0;
+};
+
+// One window being cut: its lanes' values before the span and their changes inside it.
+struct Cutting {
+  rig::WindowTrace* window;
+  const Lanes* lanes;
+  std::vector<Before> before;
+  std::vector<std::vector<rig::LaneChange>> inside;
+};
+
+// The window's lanes from what the pass collected: each lane its value at span.begin and its
+// changes, thinned; a rate lane from its step line's changes.
+void finish(Cutting& c) {
+  const Lanes& lanes = *c.lanes;
+  rig::WindowTrace& w = *c.window;
   for (std::size_t l = 0; l < lanes.size(); ++l) {
-    if (lanes[l].second == rig::LaneRole::Rate) continue;
-    const SignalInfo& info = signals[static_cast<std::size_t>(trace.find(lanes[l].first))];
-    for (auto& b : before) {
-      b[l].value = info.has_initial ? info.initial : 0;
-      b[l].real = info.initial_real;
+    rig::TraceLane& lane = w.lanes[l];
+    if (lane.role == rig::LaneRole::Rate) {
+      // From the step line's own lane, before it is thinned.
+      for (std::size_t s = 0; s < lanes.size(); ++s)
+        if (lanes[s].first + kRateSuffix == lane.name && lanes[s].second != rig::LaneRole::Rate)
+          lane.changes = step_rate(
+              c.inside[s], c.before[s].time >= Nanos{0} ? std::optional(c.before[s].time) : std::nullopt,
+              w.span);
+      thin(lane, w.span);
+      continue;
     }
-    if (info.kind == SignalKind::Real)
-      for (auto& w : out) w.lanes[l].real = true;
+    auto& in = c.inside[l];
+    std::stable_sort(in.begin(), in.end(),
+                     [](const rig::LaneChange& a, const rig::LaneChange& b) { return a.time < b.time; });
+    lane.changes.push_back(rig::LaneChange{w.span.begin, c.before[l].value, c.before[l].real});
+    for (const rig::LaneChange& ch : in)
+      if (lane.real ? ch.real != lane.changes.back().real : ch.value != lane.changes.back().value)
+        lane.changes.push_back(ch);
+    thin(lane, w.span);
   }
-  std::vector<std::vector<std::vector<rig::LaneChange>>> inside(
-      out.size(), std::vector<std::vector<rig::LaneChange>>(lanes.size()));
+}
+
+} // namespace
+
+std::vector<rig::WindowTrace> cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
+                                                const Lanes& lanes) {
+  return std::move(cut_window_traces(std::vector<WindowCut>{{&check, lanes}}, trace).front());
+}
+
+std::vector<std::vector<rig::WindowTrace>> cut_window_traces(const std::vector<WindowCut>& cuts,
+                                                             const TraceRecorder& trace) {
+  std::vector<std::vector<rig::WindowTrace>> out(cuts.size());
+  for (std::size_t k = 0; k < cuts.size(); ++k) {
+    for (const rig::Measurement* m : rig::timing_figures(*cuts[k].check)) {
+      rig::WindowTrace w{*m->window, rig::figure_span(rig::as_drawn(*cuts[k].check, *m)), {}};
+      for (const auto& [name, role] : cuts[k].lanes) w.lanes.push_back(rig::TraceLane{name, role, {}, 0});
+      out[k].push_back(std::move(w));
+    }
+  }
+  // Each trace signal's (window, lane) pairs: the lane of its check that it feeds (the last
+  // lane of that name), in each of the check's windows.
+  const auto& signals = trace.signals();
+  struct Target {
+    std::size_t cutting;
+    std::size_t lane;
+  };
+  std::vector<std::vector<Target>> targets(signals.size());
+  std::vector<Cutting> cutting;
+  for (std::size_t k = 0; k < cuts.size(); ++k) {
+    const Lanes& lanes = cuts[k].lanes;
+    if (out[k].empty() || lanes.empty()) continue;
+    std::vector<int> lane_of(signals.size(), -1);
+    for (std::size_t l = 0; l < lanes.size(); ++l)
+      if (lanes[l].second != rig::LaneRole::Rate)
+        lane_of[static_cast<std::size_t>(trace.find(lanes[l].first))] = static_cast<int>(l);
+    std::vector<Before> before(lanes.size());
+    for (std::size_t l = 0; l < lanes.size(); ++l) {
+      if (lanes[l].second == rig::LaneRole::Rate) continue;
+      const SignalInfo& info = signals[static_cast<std::size_t>(trace.find(lanes[l].first))];
+      before[l].value = info.has_initial ? info.initial : 0;
+      before[l].real = info.initial_real;
+      if (info.kind == SignalKind::Real)
+        for (auto& w : out[k]) w.lanes[l].real = true;
+    }
+    for (auto& w : out[k]) {
+      for (std::size_t sig = 0; sig < signals.size(); ++sig)
+        if (lane_of[sig] >= 0)
+          targets[sig].push_back(Target{cutting.size(), static_cast<std::size_t>(lane_of[sig])});
+      cutting.push_back(Cutting{&w, &lanes, before, std::vector<std::vector<rig::LaneChange>>(lanes.size())});
+    }
+  }
+  if (cutting.empty()) return out;
   trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
     for (const TraceSample& s : chunk) {
-      const int l = lane_of[s.signal];
-      if (l < 0) continue;
-      const auto lane = static_cast<std::size_t>(l);
-      for (std::size_t w = 0; w < out.size(); ++w) {
-        const rig::TraceWindow& span = out[w].span;
+      for (const Target& t : targets[s.signal]) {
+        Cutting& c = cutting[t.cutting];
+        const rig::TraceWindow& span = c.window->span;
         if (s.time < span.begin) {
-          if (s.time >= before[w][lane].time) before[w][lane] = Before{s.time, s.value, s.real};
+          if (s.time >= c.before[t.lane].time) c.before[t.lane] = Before{s.time, s.value, s.real};
         } else if (s.time <= span.end) {
-          inside[w][lane].push_back(rig::LaneChange{s.time, s.value, s.real});
+          c.inside[t.lane].push_back(rig::LaneChange{s.time, s.value, s.real});
         }
       }
     }
   });
-  for (std::size_t w = 0; w < out.size(); ++w) {
-    for (std::size_t l = 0; l < lanes.size(); ++l) {
-      rig::TraceLane& lane = out[w].lanes[l];
-      if (lane.role == rig::LaneRole::Rate) {
-        // From the step line's own lane, before it is thinned.
-        for (std::size_t s = 0; s < lanes.size(); ++s)
-          if (lanes[s].first + kRateSuffix == lane.name && lanes[s].second != rig::LaneRole::Rate)
-            lane.changes = step_rate(
-                inside[w][s], before[w][s].time >= Nanos{0} ? std::optional(before[w][s].time) : std::nullopt,
-                out[w].span);
-        thin(lane, out[w].span);
-        continue;
-      }
-      auto& in = inside[w][l];
-      std::stable_sort(in.begin(), in.end(),
-                       [](const rig::LaneChange& a, const rig::LaneChange& b) { return a.time < b.time; });
-      lane.changes.push_back(rig::LaneChange{out[w].span.begin, before[w][l].value, before[w][l].real});
-      for (const rig::LaneChange& c : in)
-        if (lane.real ? c.real != lane.changes.back().real : c.value != lane.changes.back().value)
-          lane.changes.push_back(c);
-      thin(lane, out[w].span);
-    }
-  }
+  for (Cutting& c : cutting) finish(c);
   return out;
 }
 

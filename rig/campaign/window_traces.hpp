@@ -24,10 +24,21 @@ inline constexpr const char* kRateSuffix = " rate";
 [[nodiscard]] std::vector<std::pair<std::string, rig::LaneRole>> lanes_of(const checks::CheckParams& params,
                                                                           const TraceRecorder& trace);
 
+using Lanes = std::vector<std::pair<std::string, rig::LaneRole>>;
+
 // One WindowTrace per timing_figures(check) measurement, over the figure_span() of the
 // measurement as drawn (as_drawn()), in one pass over the trace's samples.
-[[nodiscard]] std::vector<rig::WindowTrace>
-cut_window_traces(const rig::CheckResult& check, const TraceRecorder& trace,
-                  const std::vector<std::pair<std::string, rig::LaneRole>>& lanes);
+[[nodiscard]] std::vector<rig::WindowTrace> cut_window_traces(const rig::CheckResult& check,
+                                                              const TraceRecorder& trace, const Lanes& lanes);
+
+// The windows of several checks of one run, each with its own lanes.
+struct WindowCut {
+  const rig::CheckResult* check;
+  Lanes lanes;
+};
+// What cut_window_traces gives for each (the same, cut for cut), all in one pass over the
+// trace's samples: a spilled recording is read back once per run, not once per check.
+[[nodiscard]] std::vector<std::vector<rig::WindowTrace>> cut_window_traces(const std::vector<WindowCut>& cuts,
+                                                                           const TraceRecorder& trace);
 
 } // namespace hilrig::campaign

@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "core/scheduler.hpp"
 #include "core/trace.hpp"
@@ -131,6 +133,75 @@ TEST(WindowTraces, StepRateFromTheStepLineBeforeThinning) {
     EXPECT_EQ(rate.changes[i].time.count(), want[i].first) << i;
     EXPECT_EQ(rate.changes[i].value, want[i].second) << i;
   }
+}
+
+void expect_same(const std::vector<rig::WindowTrace>& a, const std::vector<rig::WindowTrace>& b,
+                 const std::string& what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t w = 0; w < a.size(); ++w) {
+    EXPECT_EQ(a[w].span.begin, b[w].span.begin) << what;
+    EXPECT_EQ(a[w].span.end, b[w].span.end) << what;
+    EXPECT_EQ(a[w].around.begin, b[w].around.begin) << what;
+    ASSERT_EQ(a[w].lanes.size(), b[w].lanes.size()) << what;
+    for (std::size_t l = 0; l < a[w].lanes.size(); ++l) {
+      const rig::TraceLane& x = a[w].lanes[l];
+      const rig::TraceLane& y = b[w].lanes[l];
+      EXPECT_EQ(x.name, y.name) << what;
+      EXPECT_EQ(x.real, y.real) << what;
+      EXPECT_EQ(x.thinned, y.thinned) << what;
+      ASSERT_EQ(x.changes.size(), y.changes.size()) << what << " " << x.name;
+      for (std::size_t i = 0; i < x.changes.size(); ++i) {
+        EXPECT_EQ(x.changes[i].time, y.changes[i].time) << what << " " << x.name << " " << i;
+        EXPECT_EQ(x.changes[i].value, y.changes[i].value) << what << " " << x.name << " " << i;
+        EXPECT_EQ(x.changes[i].real, y.changes[i].real) << what << " " << x.name << " " << i;
+      }
+    }
+  }
+}
+
+// A run's checks are cut in one pass over the recording (the executive's): each check's
+// windows come out as when it is cut alone, whatever the other checks' windows and lanes --
+// overlapping windows, a check with two windows, one with none, one with no lanes, a rate
+// lane, a real lane, a dense lane that is thinned, samples recorded out of time order.
+TEST(WindowTraces, ChecksCutTogetherAreEachCutAlone) {
+  TraceRecorder trace;
+  const auto a = trace.declare("enc.A");
+  trace.set_initial(a, 0);
+  const auto count = trace.declare("shaft.count", SignalKind::Integer, 64);
+  const auto out = trace.declare("ls1");
+  const auto step = trace.declare("shaft.step");
+  const auto sine = trace.declare("resolver.sin", SignalKind::Real, 64);
+  Level level = Level::Low;
+  for (std::int64_t t = 1'000; t < 4'000'000; t += 1'000) { // 4,000 counts: the lanes are thinned
+    level = level == Level::Low ? Level::High : Level::Low;
+    trace.edge(a, Edge{Nanos{t}, level});
+    trace.value(count, Nanos{t}, t / 1'000);
+    if (t % 7'000 == 0) trace.edge(step, Edge{Nanos{t}, level});
+    if (t % 50'000 == 0) trace.real(sine, Nanos{t}, std::sin(static_cast<double>(t) * 1e-6));
+    if (t % 300'000 == 0) trace.edge(out, Edge{Nanos{t}, level});
+  }
+  trace.edge(out, Edge{Nanos{150'000}, Level::High}); // out of time order
+  rig::CheckResult two = one_window(Nanos{200'000}, Nanos{1'200'000});
+  two.measurements.push_back(one_window(Nanos{1'000'000}, Nanos{3'000'000}).measurements[0]);
+  const rig::CheckResult none; // no window
+  const Lanes shaft{{"enc.A", rig::LaneRole::Stimulus},
+                    {"resolver.sin", rig::LaneRole::Stimulus},
+                    {"shaft.count", rig::LaneRole::Count},
+                    {"ls1", rig::LaneRole::Output}};
+  const Lanes steps{{"shaft.step", rig::LaneRole::Output},
+                    {std::string("shaft.step") + kRateSuffix, rig::LaneRole::Rate}};
+  const rig::CheckResult late = one_window(Nanos{2'500'000}, Nanos{2'600'000});
+  const std::vector<WindowCut> cuts{
+      {&two, shaft}, {&none, shaft}, {&late, steps}, {&two, {}}, {&late, shaft}};
+  const auto together = cut_window_traces(cuts, trace);
+  ASSERT_EQ(together.size(), cuts.size());
+  EXPECT_EQ(together[0].size(), 2U);
+  EXPECT_TRUE(together[1].empty());
+  EXPECT_GT(together[0][1].lanes[0].thinned, 0U); // the dense lane was thinned
+  EXPECT_TRUE(together[0][0].lanes[1].real);
+  for (std::size_t k = 0; k < cuts.size(); ++k)
+    expect_same(together[k], cut_window_traces(*cuts[k].check, trace, cuts[k].lanes),
+                "cut " + std::to_string(k));
 }
 
 // A resolver board's stimulus in its diagram: the stators as the run recorded them, real
