@@ -10,6 +10,7 @@
 // b<binary> (two's complement within the width), Reals "real" vars written as r<shortest
 // round-trip decimal>. Identifier codes are base-94 over the printable ASCII '!'..'~'.
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <charconv>
 #include <ostream>
@@ -100,6 +101,15 @@ void write_scope(std::ostream& out, const Scope& scope, const std::vector<Signal
   }
 }
 
+// The eight binary digits of each byte value, most significant first: an integer's digits are
+// copied a byte at a time (a shaft count has ~20 of them, at every encoder edge).
+constexpr std::array<std::array<char, 8>, 256> kByteDigits = [] {
+  std::array<std::array<char, 8>, 256> table{};
+  for (std::size_t v = 0; v < 256; ++v)
+    for (std::size_t i = 0; i < 8; ++i) table[v][i] = static_cast<char>('0' + ((v >> (7 - i)) & 1U));
+  return table;
+}();
+
 // Appends one value change ("1!", "b110 #", "r1.25 $") and its newline to `out`, formatted
 // into a local line first: one append per change (a long run writes millions).
 void append_value(std::string& out, const SignalInfo& s, std::string_view id, std::int64_t v, double r) {
@@ -114,8 +124,15 @@ void append_value(std::string& out, const SignalInfo& s, std::string_view id, st
     if (s.width < 64) bits &= (std::uint64_t{1} << s.width) - 1U;
     const int digits = bits == 0 ? 1 : 64 - std::countl_zero(bits);
     line[n++] = 'b';
-    for (int i = digits - 1; i >= 0; --i)
-      line[n++] = static_cast<char>('0' + ((bits >> static_cast<unsigned>(i)) & 1U));
+    // The digits above the last whole byte one at a time, then whole bytes from the table.
+    int left = digits;
+    for (; left % 8 != 0; --left)
+      line[n++] = static_cast<char>('0' + ((bits >> static_cast<unsigned>(left - 1)) & 1U));
+    for (; left > 0; left -= 8) {
+      const auto& byte = kByteDigits[(bits >> static_cast<unsigned>(left - 8)) & 0xFFU];
+      std::copy(byte.begin(), byte.end(), line + n);
+      n += 8;
+    }
     line[n++] = ' ';
     break;
   }
