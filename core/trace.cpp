@@ -1,10 +1,15 @@
 #include "core/trace.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <bit>
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 #include "core/candump.hpp"
+#include "core/trace_spill.hpp"
 
 namespace hilrig {
 namespace {
@@ -96,43 +101,83 @@ void TraceRecorder::real(std::uint32_t signal, Nanos t, double v) {
 }
 
 void TraceRecorder::record(const TraceSample& s) {
+  in_time_order_ = in_time_order_ && s.time >= last_time_;
+  last_time_ = s.time;
   samples_.push_back(s);
   if (spill_limit_ != 0 && samples_.size() >= spill_limit_) spill();
 }
 
 void TraceRecorder::spill_beyond(std::size_t limit) {
   spill_limit_ = limit;
-  if (limit != 0) samples_.reserve(limit);
   if (limit != 0 && samples_.size() >= limit) spill();
 }
+
+namespace {
+
+[[noreturn]] void spill_failed(const char* what) {
+  throw std::runtime_error(std::string("TraceRecorder: cannot ") + what +
+                           " the spill file: " + std::strerror(errno));
+}
+
+} // namespace
 
 void TraceRecorder::spill() {
   if (!spill_file_) {
     spill_file_.reset(std::tmpfile());
     if (!spill_file_) throw std::runtime_error("TraceRecorder: cannot create a temporary file to spill to");
   }
-  // Reads leave the position anywhere; appends go at the end.
-  if (std::fseek(spill_file_.get(), 0, SEEK_END) != 0 ||
-      std::fwrite(samples_.data(), sizeof(TraceSample), samples_.size(), spill_file_.get()) !=
-          samples_.size())
-    throw std::runtime_error("TraceRecorder: cannot write the spill file");
+  if (spill_buffer_size_ < samples_.size() * trace_spill::kMaxSampleBytes) {
+    spill_buffer_size_ = samples_.size() * trace_spill::kMaxSampleBytes;
+    spill_buffer_ = std::make_unique_for_overwrite<std::uint8_t[]>(spill_buffer_size_);
+  }
+  const std::span<std::uint8_t> buffer(spill_buffer_.get(), spill_buffer_size_);
+  const std::span<const std::uint8_t> block = buffer.first(trace_spill::encode(samples_, signals_, buffer));
+  // Written whole at the file's end, unbuffered: each block is read back with pread().
+  const int fd = fileno(spill_file_.get());
+  for (std::size_t done = 0; done < block.size();) {
+    const ssize_t n =
+        ::pwrite(fd, block.data() + done, block.size() - done, static_cast<off_t>(spill_bytes_ + done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) spill_failed("write");
+    done += static_cast<std::size_t>(n);
+  }
+  spill_blocks_.push_back(SpillBlock{spilled_, spill_bytes_});
+  spill_bytes_ += block.size();
   spilled_ += samples_.size();
   samples_.clear(); // keeps its capacity: the memory held stays at the limit
 }
 
 void TraceRecorder::visit_samples(std::size_t from, const SampleChunk& chunk) const {
   if (from < spilled_) {
-    std::FILE* f = spill_file_.get();
-    if (std::fflush(f) != 0 || std::fseek(f, static_cast<long>(from * sizeof(TraceSample)), SEEK_SET) != 0)
-      throw std::runtime_error("TraceRecorder: cannot read the spill file");
-    std::vector<TraceSample> buffer(std::min<std::size_t>(spilled_ - from, 8192));
-    while (from < spilled_) {
-      const std::size_t n = std::min(buffer.size(), spilled_ - from);
-      if (std::fread(buffer.data(), sizeof(TraceSample), n, f) != n)
-        throw std::runtime_error("TraceRecorder: cannot read the spill file");
-      chunk(std::span<const TraceSample>(buffer.data(), n));
-      from += n;
+    // The block holding `from`, then each block after it, decoded a chunk at a time.
+    auto block = std::upper_bound(spill_blocks_.begin(), spill_blocks_.end(), from,
+                                  [](std::size_t i, const SpillBlock& b) { return i < b.first; }) -
+                 1;
+    const int fd = fileno(spill_file_.get());
+    std::vector<std::uint8_t> bytes;
+    std::vector<TraceSample> decoded(8192);
+    for (; block != spill_blocks_.end(); ++block) {
+      const auto next = block + 1;
+      const std::uint64_t end = next == spill_blocks_.end() ? spill_bytes_ : next->offset;
+      bytes.resize(static_cast<std::size_t>(end - block->offset));
+      for (std::size_t done = 0; done < bytes.size();) {
+        const ssize_t n =
+            ::pread(fd, bytes.data() + done, bytes.size() - done, static_cast<off_t>(block->offset + done));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) spill_failed("read");
+        done += static_cast<std::size_t>(n);
+      }
+      trace_spill::BlockDecoder decoder(bytes, signals_);
+      std::size_t index = block->first;
+      while (const std::size_t n = decoder.next(decoded)) {
+        if (index + n > from) {
+          const std::size_t skip = from > index ? from - index : 0;
+          chunk(std::span<const TraceSample>(decoded.data() + skip, n - skip));
+        }
+        index += n;
+      }
     }
+    from = spilled_;
   }
   const std::size_t held = from - spilled_;
   if (held < samples_.size()) chunk(std::span<const TraceSample>(samples_).subspan(held));

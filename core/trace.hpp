@@ -77,10 +77,12 @@ public:
   void serial(std::string_view link, SerialDirection dir, Nanos t, std::uint8_t byte);
 
   // Long runs: once `limit` samples are held in memory, they are moved to an anonymous
-  // temporary file (std::tmpfile, gone when the recorder is), so a run's memory does not grow
-  // with its length. Every reader below sees spilled samples as if they were still held.
-  // Throws std::runtime_error when the file cannot be created or written. (The recorder owns
-  // the file: it moves, it is not copied.)
+  // temporary file (std::tmpfile, gone when the recorder is), a few bytes a sample
+  // (core/trace_spill.hpp), so a run's memory does not grow with its length. Every reader below
+  // sees spilled samples as if they were still held, decoded a chunk at a time. The memory held
+  // grows with the samples, up to the limit (a short run never reserves it). Throws
+  // std::runtime_error when the file cannot be created, written or read back. (The recorder
+  // owns the file: it moves, it is not copied.)
   void spill_beyond(std::size_t limit);
 
   [[nodiscard]] const std::vector<SignalInfo>& signals() const { return signals_; }
@@ -88,6 +90,9 @@ public:
   [[nodiscard]] const std::vector<TraceSample>& samples() const { return samples_; }
   // Every sample recorded, spilled or held.
   [[nodiscard]] std::size_t sample_count() const { return spilled_ + samples_.size(); }
+  // Whether every sample was recorded at or after the time of the one before it (as a
+  // scheduler records them); kept as they come, so no reader needs a pass to find out.
+  [[nodiscard]] bool in_time_order() const { return in_time_order_; }
   // Calls `chunk` with the samples from index `from` on, in record order, a span at a time.
   using SampleChunk = std::function<void(std::span<const TraceSample>)>;
   void visit_samples(std::size_t from, const SampleChunk& chunk) const;
@@ -121,12 +126,25 @@ private:
   struct CloseFile {
     void operator()(std::FILE* f) const { std::fclose(f); }
   };
+  // One spill() call's samples in the file: where its bytes start, and its first sample's index.
+  struct SpillBlock {
+    std::size_t first = 0;
+    std::uint64_t offset = 0;
+  };
 
   std::map<std::string, std::uint32_t, std::less<>> index_;
   std::vector<SignalInfo> signals_;
   std::vector<TraceSample> samples_;
+  bool in_time_order_ = true;
+  Nanos last_time_ = Nanos::min();
   std::size_t spill_limit_ = 0; // 0: never spill
   std::size_t spilled_ = 0;     // samples in spill_file_, the oldest first
+  std::vector<SpillBlock> spill_blocks_;
+  std::uint64_t spill_bytes_ = 0; // the file's length
+  // A block's bytes on their way to the file: room for the worst case, only what is written
+  // touched (not a zero-filled vector).
+  std::unique_ptr<std::uint8_t[]> spill_buffer_;
+  std::size_t spill_buffer_size_ = 0;
   std::unique_ptr<std::FILE, CloseFile> spill_file_;
   std::vector<TraceCanFrame> can_;
   std::vector<TraceSerialByte> serial_;

@@ -250,14 +250,7 @@ void write_vcd(const TraceRecorder& trace, std::ostream& out, std::string_view d
   write_header(out, signals, date_comment);
   // A scheduler records in time order: then the samples are written as they come, in one pass
   // (a spilled trace is never held whole). Otherwise they are sorted by time, stably.
-  bool sorted = true;
-  Nanos last = Nanos::min();
-  trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
-    for (const TraceSample& s : chunk) {
-      sorted = sorted && s.time >= last;
-      last = s.time;
-    }
-  });
+  const bool sorted = trace.in_time_order();
   VcdBody body(out, signals, signals.size());
   std::int64_t time = 0;
   std::size_t next_extra = 0;
