@@ -103,6 +103,11 @@ void TraceRecorder::real(std::uint32_t signal, Nanos t, double v) {
 void TraceRecorder::record(const TraceSample& s) {
   in_time_order_ = in_time_order_ && s.time >= last_time_;
   last_time_ = s.time;
+  // Grows by doubling while the run is short (one that never spills never holds the limit's
+  // memory); from an eighth of the limit straight to the limit, so a long run's peak holds
+  // the limit and an eighth of it, not the limit and the half it grew from.
+  if (samples_.size() == samples_.capacity() && spill_limit_ != 0 && samples_.size() >= spill_limit_ / 8)
+    samples_.reserve(spill_limit_);
   samples_.push_back(s);
   if (spill_limit_ != 0 && samples_.size() >= spill_limit_) spill();
 }
