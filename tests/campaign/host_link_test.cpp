@@ -79,22 +79,22 @@ TEST(HostLink, ModbusRtuOverAPtyGivesTheSameResultsAsInProcess) {
   const fs::path in_process = scratch("in_process");
   const fs::path modbus = scratch("modbus");
   cli::RunOptions o;
+  o.epoch = 1'767'225'600; // 2026-01-01T00:00:00Z: both runs' wall_clock.started_at
   std::string err;
   ASSERT_EQ(run(o, in_process, &err), 0) << err;
   o.host_link = "modbus-rtu-pty";
   ASSERT_EQ(run(o, modbus, &err), 0) << err;
 
-  // Byte for byte but for the wall-clock object (start time, host), the one part not fixed,
-  // and the link each names (traceability).
-  const auto without_wall_clock = [](const fs::path& file) {
+  // Byte for byte (the start time pinned by --epoch, the host this machine in both) but for
+  // the link each names (traceability).
+  const auto without_host_link = [](const fs::path& file) {
     nlohmann::json j = nlohmann::json::parse(slurp(file));
-    j.erase("wall_clock");
     j.erase("host_link");
     return j.dump();
   };
   EXPECT_EQ(nlohmann::json::parse(slurp(in_process / "results.json"))["host_link"], "in-process");
   EXPECT_EQ(nlohmann::json::parse(slurp(modbus / "results.json"))["host_link"], "modbus-rtu-pty");
-  EXPECT_EQ(without_wall_clock(in_process / "results.json"), without_wall_clock(modbus / "results.json"));
+  EXPECT_EQ(without_host_link(in_process / "results.json"), without_host_link(modbus / "results.json"));
   EXPECT_EQ(slurp(in_process / "trace.vcd"), slurp(modbus / "trace.vcd"));
   // And they are the right results: the counts the campaign derives from the manual, read
   // over the link (part cycles floor(10 * 3 / 2) = 15, ten revolutions).

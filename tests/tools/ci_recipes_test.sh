@@ -13,6 +13,10 @@ export PATH="$scratch/bin:$PATH"
 cd "$scratch"
 ln -s "$src/campaigns" campaigns
 fail() { echo "FAIL: $*"; exit 1; }
+# One wall-clock start for every run of part 1 (the recipes' shards and the unsharded run), as
+# a reproducible build pins it: their results.json are then compared whole, started_at and
+# host included (hilrig merge keeps the first shard's).
+export SOURCE_DATE_EPOCH=1767225600 # 2026-01-01T00:00:00Z
 
 # 1. GNU parallel: the block between the ci-recipe markers, word for word.
 # recipe NAME: the fenced block after <!-- ci-recipe: NAME, up to its <!-- /ci-recipe -->.
@@ -35,9 +39,10 @@ same_as_whole() {
   python3 - "$1" whole/results.json <<'PY'
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:])
+if a["wall_clock"]["started_at"] != "2026-01-01T00:00:00Z":
+    sys.exit("started_at is not SOURCE_DATE_EPOCH's: " + a["wall_clock"]["started_at"])
 for d in (a, b):
     d.pop("shard", None)
-    d.pop("wall_clock", None)
     # Each shard keeps its own first run's trace (in its own --out); the unsharded run one.
     for r in d["runs"]:
         r.pop("trace", None)
@@ -94,6 +99,7 @@ same_as_whole volume/merged.json || fail "Kubernetes: merged shards differ from 
 echo "ok: Kubernetes Indexed Job recipe: $(ls -d volume/shard-* | wc -l) indices merged equal the unsharded run"
 
 # 2. The nightly (scripts/ci-nightly.sh) over two campaigns: no baseline, then a baseline.
+unset SOURCE_DATE_EPOCH # a nightly's evidence carries the real start
 mkdir -p tree/reference
 cp "$src/campaigns/reference/"*.toml tree/reference/
 export HILRIG=hilrig CAMPAIGNS=tree
