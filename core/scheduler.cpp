@@ -9,6 +9,18 @@ namespace hilrig {
 // The top bit of the sequence number orders Last events after every InOrder one at a time.
 constexpr std::uint64_t kLast = std::uint64_t{1} << 63;
 
+Scheduler::~Scheduler() {
+  // A run stopped early (a rig fault thrown out of an event) leaves events pending, and one may
+  // hold the last reference to a model (a resolver emulator kept by a stator sampler's next
+  // sample): its destructor cancels its events on this scheduler. Each action leaves its slot
+  // before it is destroyed, so a cancel from it finds every member alive. By index: a
+  // destructor may only cancel, which does not grow slots_.
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    Action pending_action;
+    std::swap(pending_action, slots_[i].action);
+  }
+}
+
 EventId Scheduler::at(Nanos t, Action action, Tie tie) {
   if (t < now()) {
     throw std::logic_error("Scheduler: event scheduled in the past");

@@ -28,6 +28,9 @@ public:
   enum class Tie : std::uint8_t { InOrder, Last };
 
   explicit Scheduler(Nanos start = Nanos{0}) : clock_(start) {}
+  // Destroys the pending actions first, while the scheduler is whole: an action may own the
+  // last reference to a model whose destructor cancels its own events here.
+  ~Scheduler();
   Scheduler(const Scheduler&) = delete;
   Scheduler& operator=(const Scheduler&) = delete;
 

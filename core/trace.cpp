@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <bit>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
+#include <string>
 
 #include "core/candump.hpp"
 #include "core/trace_spill.hpp"
@@ -19,6 +22,34 @@ const SignalInfo& checked(const std::vector<SignalInfo>& signals, std::uint32_t 
     throw std::out_of_range("TraceRecorder: undeclared signal index");
   }
   return signals[signal];
+}
+
+// An anonymous file in TMPDIR (else /tmp), gone once closed. Not std::tmpfile: glibc's
+// ignores TMPDIR, and where /tmp is read-only (the RT VM lane's guest shares the host's root
+// read-only and points TMPDIR at its writable output) a long run could not spill.
+std::FILE* anonymous_temporary_file() {
+  std::error_code ec;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
+  if (ec) {
+    throw std::runtime_error(
+        "TraceRecorder: cannot create a temporary file to spill to: no temporary directory "
+        "(TMPDIR: " +
+        ec.message() + ")");
+  }
+  std::string name = (dir / "hilrig-trace-XXXXXX").string();
+  const int fd = ::mkstemp(name.data());
+  if (fd < 0) {
+    throw std::runtime_error("TraceRecorder: cannot create a temporary file to spill to in " + dir.string() +
+                             ": " + std::strerror(errno));
+  }
+  ::unlink(name.c_str());
+  std::FILE* f = ::fdopen(fd, "w+b");
+  if (f == nullptr) {
+    ::close(fd);
+    throw std::runtime_error("TraceRecorder: cannot open the spill file: " +
+                             std::string(std::strerror(errno)));
+  }
+  return f;
 }
 
 void require_kind(const SignalInfo& info, bool ok, const char* what) {
@@ -127,10 +158,7 @@ namespace {
 } // namespace
 
 void TraceRecorder::spill() {
-  if (!spill_file_) {
-    spill_file_.reset(std::tmpfile());
-    if (!spill_file_) throw std::runtime_error("TraceRecorder: cannot create a temporary file to spill to");
-  }
+  if (!spill_file_) spill_file_.reset(anonymous_temporary_file());
   if (spill_buffer_size_ < samples_.size() * trace_spill::kMaxSampleBytes) {
     spill_buffer_size_ = samples_.size() * trace_spill::kMaxSampleBytes;
     spill_buffer_ = std::make_unique_for_overwrite<std::uint8_t[]>(spill_buffer_size_);

@@ -77,7 +77,7 @@ public:
   void serial(std::string_view link, SerialDirection dir, Nanos t, std::uint8_t byte);
 
   // Long runs: once `limit` samples are held in memory, they are moved to an anonymous
-  // temporary file (std::tmpfile, gone when the recorder is), a few bytes a sample
+  // temporary file (in TMPDIR, else /tmp; gone when the recorder is), a few bytes a sample
   // (core/trace_spill.hpp), so a run's memory does not grow with its length. Every reader below
   // sees spilled samples as if they were still held, decoded a chunk at a time. The memory held
   // grows with the samples, up to the limit (a short run never reserves it). Throws

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -115,4 +116,33 @@ TEST(Scheduler, TellsWhetherTheLastEventsAtNowHaveRunYet) {
   s.run_until(5_us);
   EXPECT_EQ(seen, (std::vector<bool>{true, false}));
   EXPECT_FALSE(s.ordinary_event_running());
+}
+
+// A run stopped by a rig fault leaves events pending; one may own the last reference to a
+// model whose destructor cancels its own event (a resolver emulator kept by a stator sampler's
+// next sample). Destroying the scheduler then runs that destructor, which must find the
+// scheduler whole: the cancel succeeds (under ASan, no use after free).
+TEST(Scheduler, DestroyedWithAPendingActionWhoseOwnedModelCancelsItsEvent) {
+  struct Model {
+    Scheduler* s = nullptr;
+    EventId own;
+    bool* cancelled = nullptr;
+    ~Model() { *cancelled = s->cancel(own); }
+  };
+  bool cancelled = false;
+  {
+    Scheduler s;
+    auto model = std::make_shared<Model>();
+    model->s = &s;
+    model->cancelled = &cancelled;
+    model->own = s.at(Nanos{20}, [] {});
+    s.at(Nanos{10}, [model] {}); // the only owner once `model` goes
+    model.reset();
+    // Freed slots: the cancel at destruction appends to that list (under ASan, to freed memory
+    // if the list went first).
+    std::vector<EventId> gone;
+    for (int i = 0; i < 3; ++i) gone.push_back(s.at(Nanos{30 + i}, [] {}));
+    for (const EventId id : gone) EXPECT_TRUE(s.cancel(id));
+  }
+  EXPECT_TRUE(cancelled);
 }

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -163,6 +166,51 @@ TEST(TraceRecorder, DifferentInputGivesDifferentHash) {
   p.serial("l", SerialDirection::AtoB, 1_us, 1);
   q.serial("l", SerialDirection::BtoA, 1_us, 1);
   EXPECT_NE(p.content_hash(), q.content_hash());
+}
+
+// TMPDIR set to `dir` while it lives, then as it was.
+class TmpdirAs {
+public:
+  explicit TmpdirAs(const std::string& dir) {
+    if (const char* old = std::getenv("TMPDIR")) old_ = old;
+    setenv("TMPDIR", dir.c_str(), 1);
+  }
+  ~TmpdirAs() {
+    if (old_) {
+      setenv("TMPDIR", old_->c_str(), 1);
+    } else {
+      unsetenv("TMPDIR");
+    }
+  }
+  TmpdirAs(const TmpdirAs&) = delete;
+  TmpdirAs& operator=(const TmpdirAs&) = delete;
+
+private:
+  std::optional<std::string> old_;
+};
+
+// The spill file goes where TMPDIR says (std::tmpfile would take /tmp whatever it says: the RT
+// VM lane's guest has a read-only /tmp and a long campaign there stopped with a rig fault),
+// and leaves no name behind.
+TEST(TraceSpill, GoesToTmpdirAndLeavesNoFile) {
+  const std::filesystem::path dir =
+      std::filesystem::path(HILRIG_BINARY_DIR) / "tests" / "core" / "spill_tmpdir";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  {
+    const TmpdirAs tmpdir(dir.string());
+    const TraceRecorder spilled = random_trace(1, 7);
+    EXPECT_EQ(spilled.canonical_text(), random_trace(1).canonical_text());
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  // A TMPDIR that is not a directory: a clear error, not a file elsewhere.
+  const TmpdirAs missing((dir / "missing").string());
+  try {
+    (void)random_trace(1, 7);
+    ADD_FAILURE() << "spilled without a temporary directory";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("TMPDIR"), std::string::npos) << e.what();
+  }
 }
 
 // A long run's trace moves to a temporary file as it grows: everything read from it (the
