@@ -44,14 +44,15 @@ test-asan: build-asan
 # The RT VM lane: Debian's PREEMPT_RT kernel under QEMU with gpio-sim, SocketCAN and UARTs.
 # Payloads: the kernel-backend tests (libgpiod 1.6 build), the same gpiod tests built against
 # libgpiod 2.x (build-gpiod2/, bookworm-backports unpacked privately by install-deps --vm),
-# and the end-to-end ANS1 campaigns through gpio-sim, CAN and Modbus RTU.
+# the end-to-end ANS1 campaigns through gpio-sim, CAN and Modbus RTU, and a campaign's can.log
+# replayed by canplayer onto vcan0.
 GPIOD2_ROOT := $(CURDIR)/build-gpiod2/libgpiod2-root
 test-vm: build
 	@bash scripts/install-deps.sh --vm
 	@cmake --preset default -B build-gpiod2 -DHILRIG_GPIOD_API=2 -DHILRIG_GPIOD_ROOT=$(GPIOD2_ROOT) >/dev/null
 	@cmake --build build-gpiod2 -j $(JOBS) --target test_kernel_gpiod
 	@bash rt-config/vm/run-lane.sh build-vm rt-config/vm/payload-kernel-tests.sh \
-	  rt-config/vm/payload-gpiod2.sh rt-config/vm/payload-e2e.sh
+	  rt-config/vm/payload-gpiod2.sh rt-config/vm/payload-e2e.sh rt-config/vm/payload-can-log.sh
 
 # The libFuzzer targets (fuzz/): clang++ in their own build directory, only the libraries they link.
 FUZZERS := fuzz_campaign fuzz_rig_config fuzz_modbus_tcp fuzz_modbus_rtu fuzz_candump

@@ -39,9 +39,9 @@ fi
 # ttyS0 is the console; ttyS1 <-> ttyS2: two guest UARTs joined by UDP on loopback, for the serial host link.
 p1=$((20000 + RANDOM % 20000)); p2=$((p1 + 1))
 set +e
-# The guard: about 3 min on an idle 2-core host; a loaded one (seen: load 9, 347 s with the
-# kernel tests as 24 ctest processes) needs more.
-timeout --foreground 480 qemu-system-x86_64 -accel tcg -m 1024 -smp 2 -nographic -no-reboot \
+# The guard: about 4 min on an idle 2-core host; a loaded one (seen: load 9, 347 s with the
+# kernel tests as 24 ctest processes, before the can.log payload's minute) needs more.
+timeout --foreground 600 qemu-system-x86_64 -accel tcg -m 1024 -smp 2 -nographic -no-reboot \
   -kernel "$work/kernel-$kver/boot/vmlinuz-$kver" -initrd "$work/initrd-$kver.cpio.gz" -append "$append" \
   -virtfs local,path=/,mount_tag=hostroot,security_model=none,readonly=on,multidevs=remap \
   -virtfs local,path="$out",mount_tag=laneout,security_model=none \
