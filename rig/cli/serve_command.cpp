@@ -279,6 +279,21 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
   serve_in_real_time(*server, scheduler, far.get(), stop);
 }
 
+// --fault's help: every served device's variants, from the registry the error message names
+// them from (a help text listing only some devices sent the others' users to trial and error).
+std::string fault_help() {
+  std::string text = "Fault variant (none: as the manual specifies), by device:";
+  for (const ServedDevice& d : served_devices()) {
+    text += ' ';
+    text += d.name;
+    text += ": ";
+    text += d.faults;
+    text += ';';
+  }
+  text.back() = '.';
+  return text;
+}
+
 void add_serve_command(CLI::App& app) {
   auto args = std::make_shared<ServeArgs>();
   CLI::App* cmd =
@@ -312,9 +327,7 @@ void add_serve_command(CLI::App& app) {
   cmd->add_option("--unit", args->unit, "RTU unit id 1..247 (default 1)")->check(CLI::Range(1U, 247U));
   cmd->add_flag("--rs485", args->options.rs485,
                 "Put the serial port in RS-485 mode (reported when unsupported)");
-  cmd->add_option("--fault", args->options.fault,
-                  "Fault variant (smd23e: none, wrong-acceleration, lost-steps, ignored-limit, late-stop; "
-                  "ans1: none or a variant name)");
+  cmd->add_option("--fault", args->options.fault, fault_help());
   cmd->add_option(
          "--param", args->options.params,
          "KEY=VALUE: a [MODEL] choice of the device by its campaign name (`hilrig list`); repeatable")

@@ -146,6 +146,34 @@ TEST(CommandLine, ServeFaultListsTheChoices) {
       << r.err;
 }
 
+// `hilrig serve --help` names every device's fault variants, the same list a wrong one is
+// answered with.
+TEST(CommandLine, ServeHelpListsEveryDevicesFaults) {
+  const Result help = hilrig("serve --help");
+  EXPECT_EQ(help.status, 0);
+  std::string text = help.out;
+  // CLI11 wraps the description: compare with the line breaks and their indentation gone.
+  std::string flat;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\n') {
+      flat += text[i];
+      continue;
+    }
+    while (i + 1 < text.size() && text[i + 1] == ' ') ++i;
+    flat += ' ';
+  }
+  for (const char* device : {"ans1", "smd23e", "pls2700", "amci4501", "ssi7361"}) {
+    SCOPED_TRACE(device);
+    const Result r = hilrig(std::string("serve ") + device + " --pty --fault no-such-fault");
+    EXPECT_EQ(r.status, 2);
+    const std::size_t from = r.err.find("(one of: ");
+    const std::size_t to = r.err.find(')', from);
+    ASSERT_NE(to, std::string::npos) << r.err;
+    const std::string choices = r.err.substr(from + 9, to - from - 9);
+    EXPECT_NE(flat.find(std::string(device) + ": " + choices), std::string::npos) << choices << "\n" << flat;
+  }
+}
+
 TEST(CommandLine, SummaryAndReportPathOnStdoutTheRestOnStderr) {
   const fs::path out = test::scratch_dir("campaign", "stdout_summary");
   const Result r = hilrig("run " + kPass + " --out " + out.string() + " --progress");
