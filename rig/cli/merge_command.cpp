@@ -1,6 +1,7 @@
 #include "rig/cli/merge_command.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 #include <stdexcept>
@@ -8,7 +9,10 @@
 #include <vector>
 
 #include "rig/cli/exit_status.hpp"
+#include "rig/results/atomic_file.hpp"
+#include "rig/results/junit.hpp"
 #include "rig/results/merge.hpp"
+#include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
 
 namespace hilrig::cli {
@@ -19,14 +23,49 @@ struct MergeArgs {
   std::vector<std::string> shards;
 };
 
+namespace fs = std::filesystem;
+
+// junit.xml and report.html beside the merged results: "results.json" -> "junit.xml" and
+// "report.html" (the layout of `hilrig run --out`), any other "NAME.json" -> "NAME.junit.xml"
+// and "NAME.report.html" (so a merge written into a shard's directory keeps the shard's own).
+fs::path beside(const fs::path& out, const char* file) {
+  if (out.filename() == "results.json") return out.parent_path() / file;
+  return out.parent_path() / (out.stem().string() + "." + file);
+}
+
+// A run's trace is named relative to its shard's results.json; the merged files link it from
+// where they are.
+void relink_traces(rig::CampaignResult& shard, const fs::path& shard_file, const fs::path& out) {
+  const fs::path from = fs::absolute(out).parent_path();
+  for (rig::RunResult& run : shard.runs) {
+    if (run.trace.empty()) continue;
+    const fs::path trace = fs::absolute(shard_file).parent_path() / run.trace;
+    const fs::path relative = trace.lexically_relative(from);
+    run.trace = (relative.empty() ? trace : relative).generic_string();
+  }
+}
+
 int run_merge(const MergeArgs& a) {
   try {
     std::vector<rig::CampaignResult> shards;
-    for (const auto& path : a.shards) shards.push_back(rig::read_results_file(path));
+    for (const auto& path : a.shards) {
+      shards.push_back(rig::read_results_file(path));
+      relink_traces(shards.back(), path, a.out);
+    }
     const rig::CampaignResult merged = rig::merge_shards(std::move(shards), a.shards);
     rig::write_results_file(a.out, merged);
-    std::fputs(fmt::format("merged {} shards: {} runs, verdict {}; wrote {}\n", a.shards.size(),
-                           merged.runs.size(), rig::to_string(merged.verdict), a.out)
+    // The wall-clock facts the shards kept: the first shard's start and host. Each run's wall
+    // time is not in results.json: the testcases' time is 0.
+    rig::JunitClock clock;
+    if (merged.started_at) clock.started_at = *merged.started_at;
+    if (merged.host) clock.hostname = *merged.host;
+    const fs::path junit = beside(a.out, "junit.xml");
+    const fs::path report = beside(a.out, "report.html");
+    rig::write_file_atomically(junit, rig::to_junit_xml(merged, clock));
+    rig::write_file_atomically(report, rig::to_report_html(merged));
+    std::fputs(fmt::format("merged {} shards: {} runs, verdict {}; wrote {}, {}, {}\n", a.shards.size(),
+                           merged.runs.size(), rig::to_string(merged.verdict), a.out, junit.string(),
+                           report.string())
                    .c_str(),
                stdout);
   } catch (const std::exception& e) {
@@ -40,8 +79,12 @@ int run_merge(const MergeArgs& a) {
 
 void add_merge_command(CLI::App& app) {
   auto args = std::make_shared<MergeArgs>();
-  auto* cmd = app.add_subcommand("merge", "merge the results.json of every shard into one");
-  cmd->add_option("out", args->out, "the merged results.json to write")->required();
+  auto* cmd = app.add_subcommand(
+      "merge", "merge the results.json of every shard into one, with its junit.xml and report.html");
+  cmd->add_option("out", args->out,
+                  "the merged results.json to write; junit.xml and report.html go beside it (NAME.json: "
+                  "NAME.junit.xml, NAME.report.html)")
+      ->required();
   cmd->add_option("shards", args->shards, "one results.json per shard")->required();
   cmd->callback([args] {
     const int code = run_merge(*args);

@@ -50,6 +50,29 @@ sys.exit(0 if a == b else 1)
 PY
 }
 same_as_whole out/merged.json || fail "GNU parallel: merged shards differ from the unsharded run"
+# hilrig merge writes junit.xml and report.html beside the merged results (merged.junit.xml,
+# merged.report.html): the unsharded run's junit.xml but for the wall time each run took (not
+# in results.json).
+python3 - out/merged.junit.xml whole/junit.xml <<'PY' || fail "GNU parallel: merged junit.xml"
+import re, sys
+merged, whole = sys.argv[1:]
+durations = lambda path: re.sub(r'\btime="[^"]*"', 'time=""', open(path).read())
+sys.exit(0 if durations(merged) == durations(whole) else "merged.junit.xml is not the unsharded run's junit.xml")
+PY
+# With every trace kept (--trace all), the merged report, written elsewhere than the shards,
+# links each run's trace where its shard wrote it.
+for k in 0 1; do hilrig run campaigns/reference/reference_pls_pass.toml --shard $k/2 --out all/shard-$k >/dev/null; done
+hilrig merge merged-all.json all/shard-0/results.json all/shard-1/results.json >/dev/null
+python3 - merged-all.json merged-all.report.html <<'PY' || fail "merge: the merged report's trace links"
+import json, os, re, sys
+results, report = sys.argv[1:]
+kept = sorted(r["trace"] for r in json.load(open(results))["runs"] if r.get("trace"))
+links = sorted(set(re.findall(r'href="([^"#]+\.vcd)"', open(report).read())))
+if not kept or links != kept:
+    sys.exit(f"report links {links}, results.json names {kept}")
+missing = [l for l in links if not os.path.isfile(l)]
+sys.exit(f"links to no file: {missing}" if missing else 0)
+PY
 echo "ok: GNU parallel recipe: 4 shards merged equal the unsharded run"
 
 # 1b. Slurm array: the batch script once per index of its --array range, as sbatch would run
