@@ -61,6 +61,7 @@
 
   function series(s) {
     const out = {label: s.label, stroke: s.colour, width: 1.5, scale: s.scale || 'y', points: {show: false}};
+    if (s.dashed) out.dash = [px(6), px(4)];
     if (s.draw === 'step') out.paths = uPlot.paths.stepped({align: 1});
     if (s.draw === 'bars') {
       out.paths = uPlot.paths.stepped({align: 1});
@@ -150,6 +151,16 @@
       ctx.stroke();
       if (chart.labels && l.label) text(ctx, l.label, bbox.left + bbox.width, y - px(3), l.colour, bbox);
     }
+    // An expected series (a move's profile over its step rate): its points inside the plot.
+    chart.series.forEach((s, i) => {
+      if (s.cls !== 'expected') return;
+      u.data[0].forEach((xv, j) => {
+        const yv = u.data[i + 1][j];
+        if (yv == null) return;
+        const x = u.valToPos(xv, 'x', true), y = u.valToPos(yv, s.scale || 'y', true);
+        if (inside(x, bbox.left, bbox.left + bbox.width) && inside(y, bbox.top, bbox.top + bbox.height)) seen.profile++;
+      });
+    });
     chart.series.forEach((s, i) => {
       if (!s.numbers) return;
       u.data[0].forEach((xv, j) => {
@@ -175,7 +186,7 @@
       box.appendChild(title);
     }
     into.appendChild(box);
-    const seen = {expected: 0, limits: 0, rate: 0};
+    const seen = {expected: 0, limits: 0, rate: 0, profile: 0};
     const scales = {x: {time: false, range: () => [chart.x.min, chart.x.max]}, y: {range: range(chart.y)}};
     const axes = [xAxis(chart, bottom), yAxis(chart, chart.y, 'y', 3)];
     if (chart.y2) {
@@ -191,12 +202,13 @@
       scales, axes,
       series: [{}].concat(chart.series.map(series)),
       hooks: {
-        drawClear: [u => { seen.expected = 0; seen.limits = 0; seen.rate = 0; drawBands(u, chart, seen); }],
+        drawClear: [u => { seen.expected = 0; seen.limits = 0; seen.rate = 0; seen.profile = 0; drawBands(u, chart, seen); }],
         draw: [u => {
           drawMarks(u, chart, seen);
           box.dataset.expected = seen.expected;
           box.dataset.limits = seen.limits;
           box.dataset.rateExpected = seen.rate;
+          box.dataset.profile = seen.profile;
         }],
       },
     };

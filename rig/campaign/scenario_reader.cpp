@@ -16,6 +16,7 @@
 #include "rig/campaign/stimulus_kinds.hpp"
 #include "rig/campaign/toml_reader.hpp"
 #include "rig/checks/registry.hpp"
+#include "rig/duts/device_programs.hpp"
 
 namespace hilrig::campaign {
 
@@ -736,6 +737,32 @@ private:
            key.ends_with("_line");
   }
 
+  // A shaft_move check's profile_of: the [[host]] write of that name, and the move it starts
+  // under the writes before it (duts::planned_move), typed here once.
+  std::optional<checks::MoveProfile> profile_of(const Scenario& s, TableReader& r) const {
+    const std::optional<std::string> name = r.opt_string("profile_of");
+    if (!name) return std::nullopt;
+    std::vector<std::vector<std::uint16_t>> earlier;
+    for (const HostAction& h : s.host) {
+      if (h.kind != HostAction::Kind::Write) continue;
+      if (h.name != *name) {
+        earlier.push_back(h.words);
+        continue;
+      }
+      if (info_ == nullptr)
+        r.fail("profile_of",
+               "a [[host]] move of a virtual board's model: an external board plans no profile");
+      try {
+        const duts::PlannedMove m = duts::planned_move(info_->name, earlier, h.words);
+        return checks::MoveProfile{h.at, m.starting_speed, m.speed, m.accel, m.decel, m.steps};
+      } catch (const duts::NoPlannedMove& e) {
+        r.fail("profile_of", fmt::format("the [[host]] write \"{}\" as {}", *name, e.what()));
+      }
+    }
+    r.fail("profile_of",
+           fmt::format("the name of a [[host]] write that starts a move (\"{}\" names none)", *name));
+  }
+
   void read_checks(Scenario& s) {
     std::size_t i = 0;
     for (const toml::table* t : root_.tables("check")) {
@@ -786,6 +813,7 @@ private:
         if (e.key().empty()) fail(c.where, path, e.what());
         r.fail(e.key(), e.what());
       }
+      if (auto* move = std::get_if<checks::ShaftMoveParams>(&c.params)) move->spec.profile = profile_of(s, r);
       if (const auto* d = std::get_if<checks::DebounceParams>(&c.params)) {
         // Every start phase's probe pulse begins within the run.
         if (const Nanos last = d->probe_starts(c.probe_at).back(); last >= s.end)

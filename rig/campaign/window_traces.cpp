@@ -54,7 +54,27 @@ std::vector<rig::LaneChange> step_rate(const std::vector<rig::LaneChange>& insid
   return out;
 }
 
+// An analog lane (a resolver stator) from its samples: a sampled signal has no value between
+// its samples (the stators are sampled at the excitation's peaks, one a period), so the lane
+// starts at its first sample inside the span, not at a value held from the last peak before
+// it (up to a period early). A span with no sample inside shows that last one at its own time
+// (its declared initial value at the span's start when there is none). Every sample is kept,
+// repeats too: the line through them is only truthful through each. Volts to
+// kRealLaneResolution.
+void real_samples(rig::TraceLane& lane, const std::vector<rig::LaneChange>& inside, Nanos before_time,
+                  double before_value, const rig::TraceWindow& span) {
+  if (inside.empty())
+    lane.changes.push_back({before_time >= Nanos{0} ? before_time : span.begin, 0, before_value});
+  lane.changes.insert(lane.changes.end(), inside.begin(), inside.end());
+  for (rig::LaneChange& c : lane.changes) c.real = real_lane_value(c.real);
+  thin(lane, span);
+}
+
 } // namespace
+
+double real_lane_value(double volts) {
+  return std::round(volts * kRealLaneStepsPerVolt) / kRealLaneStepsPerVolt;
+}
 
 std::vector<std::pair<std::string, rig::LaneRole>> lanes_of(const checks::CheckParams& params,
                                                             const TraceRecorder& trace) {
@@ -121,10 +141,13 @@ void finish(Cutting& c) {
     auto& in = c.inside[l];
     std::stable_sort(in.begin(), in.end(),
                      [](const rig::LaneChange& a, const rig::LaneChange& b) { return a.time < b.time; });
+    if (lane.real) {
+      real_samples(lane, in, c.before[l].time, c.before[l].real, w.span);
+      continue;
+    }
     lane.changes.push_back(rig::LaneChange{w.span.begin, c.before[l].value, c.before[l].real});
     for (const rig::LaneChange& ch : in)
-      if (lane.real ? ch.real != lane.changes.back().real : ch.value != lane.changes.back().value)
-        lane.changes.push_back(ch);
+      if (ch.value != lane.changes.back().value) lane.changes.push_back(ch);
     thin(lane, w.span);
   }
 }

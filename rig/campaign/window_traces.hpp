@@ -16,6 +16,18 @@ inline constexpr std::size_t kLaneColumns = 500;
 // A rate lane's name: its step line's and this.
 inline constexpr const char* kRateSuffix = " rate";
 
+// An analog lane's resolution, volts. The stators come from the resolver emulator
+// (models/resolver_emulator), which has no DAC of its own in the model: its angle is 1/2^24
+// turn (signals/resolver_frames.hpp), a stator step of at most amplitude * ratio * 2 pi / 2^24
+// = 0.37 uV per volt, and the boards resolve 4096 counts a turn (ans1 seeds/000 L768: 1.5 mV
+// per volt of stator). 1 uV keeps the first and is a thousand times finer than the second;
+// more digits are float noise (results.json grew 2.2x with them).
+inline constexpr double kRealLaneResolution = 1e-6;
+inline constexpr double kRealLaneStepsPerVolt = 1e6; // 1 / kRealLaneResolution, exactly
+// `volts` to the nearest kRealLaneResolution: the double nearest that decimal (a whole number
+// of steps divided by the steps a volt, so it prints in at most six decimals).
+[[nodiscard]] double real_lane_value(double volts);
+
 // The lanes for a check's diagrams, as trace names: for a check judged against the shaft
 // (throughput, advance_counts, edge_at_position) the stimulus (the encoder's lines, the
 // resolver's stators as real lanes, whichever the campaign wires) and shaft.count; then the

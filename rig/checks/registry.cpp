@@ -406,7 +406,10 @@ std::vector<CheckKind> make_kinds() {
        P("duration_max_ms", Num, false, "upper limit on that", time),
        P("peak_min", Num, false, "steps/s: 1 / shortest step interval, lower limit", time),
        P("peak_max", Num, false, "steps/s: upper limit", time),
-       P("reversals", Int, false, "exact count of direction changes", at_least(0))},
+       P("reversals", Int, false, "exact count of direction changes", at_least(0)),
+       P("profile_of", Str, false,
+         "the [[host]] write (its name) of the move whose profile the step rate is drawn against: a "
+         "relative move, jerk 0, after a configuration; evidence, not judged")},
       shaft));
   k.push_back(kind("word_bits", "an observed word's bits under a mask equal a value",
                    {P("observation", Str, true, "the observation's name"),

@@ -79,6 +79,7 @@ CheckResult check_shaft_move(std::span<const Edge> step, std::span<const Edge> d
                                      *spec.reversals, *spec.reversals, "direction changes between steps",
                                      window));
   }
+  if (spec.profile) r.expected_rate = expected_step_rate(*spec.profile);
   return r;
 }
 

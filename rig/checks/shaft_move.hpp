@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 
+#include "rig/checks/move_profile.hpp"
 #include "rig/checks/support.hpp"
 
 namespace hilrig::checks {
@@ -26,10 +27,14 @@ struct ShaftMoveSpec {
   std::optional<double> peak_min{}; // steps/s
   std::optional<double> peak_max{};
   std::optional<double> reversals{}; // exact count of direction changes
+  // The move the steps are expected to follow (profile_of): its step rate goes into the
+  // result as evidence (CheckResult::expected_rate). It judges nothing: the manual gives no
+  // tolerance on the rate along a profile, only the profile (docs/spec/smd23e.md §3.2).
+  std::optional<MoveProfile> profile{};
 };
 
 // Each expectation given in the spec becomes one measurement <name>.steps, .duration,
-// .peak_speed, .reversals.
+// .peak_speed, .reversals; with a profile, its expected step rate rides along.
 [[nodiscard]] CheckResult check_shaft_move(std::span<const Edge> step, std::span<const Edge> dir,
                                            const ShaftMoveSpec& spec);
 

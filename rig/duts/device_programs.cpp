@@ -23,4 +23,10 @@ const ProgramBlockInfo* find_program(std::string_view device, std::string_view b
   return it == blocks.end() ? nullptr : &*it;
 }
 
+PlannedMove planned_move(std::string_view device, std::span<const std::vector<std::uint16_t>> earlier,
+                         std::span<const std::uint16_t> words) {
+  if (device == "smd23e") return smd23e_planned_move(earlier, words);
+  throw NoPlannedMove("a move of a board that plans its profile (smd23e)");
+}
+
 } // namespace hilrig::duts

@@ -5,7 +5,12 @@
 // (upper = v / 1000, lower = v % 1000, both with the value's sign, L2247-L2253).
 
 #include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "rig/duts/device_programs.hpp"
 
@@ -121,7 +126,54 @@ const std::vector<std::string> kInputFunctions = {
     "general", "cw_limit", "ccw_limit", "start_indexed_move", "stop_jog", "emergency_stop", "home"};
 const std::vector<std::string> kActiveLevels = {"no_current", "current"};
 
+// A two-word value (L2247-L2253) read back; nullopt when the words are not one.
+std::optional<std::int64_t> multiword(std::span<const std::uint16_t> w, std::size_t at) {
+  const auto upper = static_cast<std::int16_t>(w[at]);
+  const auto lower = static_cast<std::int16_t>(w[at + 1]);
+  if (lower > 999 || lower < -999 || (upper > 0 && lower < 0) || (upper < 0 && lower > 0))
+    return std::nullopt;
+  return std::int64_t{upper} * 1000 + lower;
+}
+
 } // namespace
+
+PlannedMove smd23e_planned_move(std::span<const std::vector<std::uint16_t>> earlier,
+                                std::span<const std::uint16_t> words) {
+  const auto refuse = [](const std::string& what) { throw NoPlannedMove(what); };
+  // A Relative Move (MSW 0x0002, L2503-L2516) run at once: an absolute move's length hangs on
+  // where the run stands; an encoder move's target is where it starts to decelerate (L1080-L1086);
+  // an indexed move waits for its input (LSW bit 8, L2473).
+  if (words.size() < 10 || words[0] != 0x0002)
+    refuse("a relative move (move = \"relative\", MSW 0x0002): an absolute move's length hangs on where the "
+           "run stands, a jog or homing move has none");
+  if ((words[1] & (bit(2) | bit(8))) != 0)
+    refuse("a plain relative move: not an encoder move (LSW bit 2) nor an indexed one (LSW bit 8)");
+  const auto offset = multiword(words, 2);
+  const auto speed = multiword(words, 4);
+  if (!offset || *offset == 0 || *offset < -kMaxSteps || *offset > kMaxSteps)
+    refuse(fmt::format("a move of 1 .. {} steps either way (words 2-3, L2508)", kMaxSteps));
+  const std::int64_t accel = words[6], decel = words[7];
+  if (accel < 1 || accel > kMaxRate || decel < 1 || decel > kMaxRate)
+    refuse(
+        fmt::format("Acceleration and Deceleration 1 .. {} steps/ms/s (words 6, 7, L2512-L2513)", kMaxRate));
+  if (words[9] != 0)
+    refuse("Acceleration Jerk 0, linear ramps (word 9, L891): the manual does not define the S-curves of "
+           "1 .. 5000 well enough to draw (L901, L908)");
+  // The Starting Speed: the last configuration before it (Configuration Mode, control word
+  // bit 15, L2284; words 2-3, L2268).
+  std::optional<std::int64_t> starting;
+  for (const auto& w : earlier)
+    if (w.size() >= 4 && (w[0] & bit(15)) != 0) starting = multiword(w, 2);
+  if (!starting || *starting < 1 || *starting > 1'999'999)
+    refuse("a move after a configuration with its Starting Speed 1 .. 1,999,999 steps/s (L863, L2268)");
+  if (!speed || *speed < *starting || *speed > kMaxSpeed)
+    refuse(fmt::format("a Programmed Speed of the Starting Speed ({}) .. {} steps/s (words 4-5, L2510)",
+                       *starting, kMaxSpeed));
+  // Steps/ms/s to steps/s² (L848-L851).
+  return PlannedMove{static_cast<double>(*starting), static_cast<double>(*speed),
+                     1000.0 * static_cast<double>(accel), 1000.0 * static_cast<double>(decel),
+                     static_cast<double>(*offset < 0 ? -*offset : *offset)};
+}
 
 std::vector<ProgramBlockInfo> smd23e_programs() {
   using C = Configuration;

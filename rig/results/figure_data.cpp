@@ -65,7 +65,8 @@ std::int64_t value_at(const TraceLane& lane, Nanos t) {
 json lane_chart(const TraceLane& lane, const TraceWindow& span, Nanos origin, const char* colour) {
   json xs = json::array(), ys = json::array();
   for (const auto& c : lane.changes) {
-    xs.push_back(rel(std::max(c.time, span.begin), origin));
+    // An analog lane's sample before the span (it has none inside) stays at its own time.
+    xs.push_back(rel(lane.real ? c.time : std::max(c.time, span.begin), origin));
     if (lane.real)
       ys.push_back(c.real);
     else
@@ -88,6 +89,52 @@ json lane_chart(const TraceLane& lane, const TraceWindow& span, Nanos origin, co
           {"series", {{{"label", lane.name}, {"colour", colour}, {"draw", "step"}}}}};
 }
 
+// The expected profile as a second series of a rate lane's chart: uPlot gives both one x
+// array, so the lane's points and the profile's knots are merged in time. At a knot the lane
+// holds its level (a stepped series drawn the same); at a lane point the profile is its line
+// between the knots around (the same line), and nothing outside its knots.
+void add_profile(json& chart, std::span<const RatePoint> profile, Nanos origin) {
+  const json lane_x = chart["data"][0], lane_y = chart["data"][1];
+  std::vector<double> kx, ky;
+  for (const auto& k : profile) kx.push_back(rel(k.time, origin)), ky.push_back(k.rate);
+  const auto on_profile = [&](double x) -> json {
+    if (x < kx.front() || x > kx.back()) return nullptr;
+    const auto hi = static_cast<std::size_t>(std::upper_bound(kx.begin(), kx.end(), x) - kx.begin());
+    if (hi == kx.size()) return ky.back();
+    const std::size_t lo = hi - 1;
+    return ky[lo] + (ky[hi] - ky[lo]) * (x - kx[lo]) / (kx[hi] - kx[lo]);
+  };
+  json xs = json::array(), ys = json::array(), expected = json::array();
+  std::size_t i = 0, k = 0;
+  while (i < lane_x.size() || k < kx.size()) {
+    if (k < kx.size() && (i == lane_x.size() || kx[k] < lane_x[i].get<double>())) {
+      xs.push_back(kx[k]);
+      ys.push_back(i > 0 ? lane_y[i - 1] : json(nullptr));
+      expected.push_back(ky[k++]);
+    } else {
+      xs.push_back(lane_x[i]);
+      ys.push_back(lane_y[i]);
+      expected.push_back(on_profile(lane_x[i++].get<double>()));
+    }
+  }
+  chart["data"] = {xs, ys, expected};
+  chart["series"].push_back({{"label", "expected profile"},
+                             {"colour", "#1a7f37"},
+                             {"draw", "line"},
+                             {"dashed", true},
+                             {"cls", "expected"}});
+}
+
+// The words for a profile: its start, peak and end.
+std::string profile_words(std::span<const RatePoint> profile) {
+  double peak = 0.0;
+  for (const auto& k : profile) peak = std::max(peak, k.rate);
+  return fmt::format("expected profile: {} steps/s from {}, peak {} steps/s, back to {} steps/s at {}",
+                     format_number(profile.front().rate), format_time(profile.front().time),
+                     format_number(peak), format_number(profile.back().rate),
+                     format_time(profile.back().time));
+}
+
 } // namespace
 
 const char* outcome_colour(Judgement j) {
@@ -107,7 +154,7 @@ const char* outcome_colour(Judgement j) {
 }
 
 json timing_figure(const Measurement& m, Judgement shown, const WindowTrace* trace,
-                   std::optional<RateBand> rate) {
+                   std::optional<RateBand> rate, std::span<const RatePoint> profile) {
   if (!m.window) return nullptr;
   const TraceWindow span = trace ? trace->span : figure_span(m);
   const Nanos origin = m.window->begin;
@@ -160,6 +207,16 @@ json timing_figure(const Measurement& m, Judgement shown, const WindowTrace* tra
            {"cls", "expected"}}};
       chart["y"]["min"] = 0.0;
       chart["y"]["max"] = std::max(peak, hi) * 1.1;
+    }
+    if (lane.role == LaneRole::Rate && !profile.empty()) {
+      add_profile(chart, profile, origin);
+      // The axis holds the profile's peak too.
+      double top = chart["y"].value("max", 0.0) / 1.1;
+      for (const auto& c : lane.changes) top = std::max(top, static_cast<double>(c.value));
+      for (const auto& k : profile) top = std::max(top, k.rate);
+      chart["y"]["min"] = 0.0;
+      chart["y"]["max"] = top * 1.1;
+      notes += profile_words(profile) + "; ";
     }
     if (lane.role == LaneRole::Count && m.at)
       notes += fmt::format("{}: {} at the edge; ", lane.name, value_at(lane, *m.at));

@@ -26,10 +26,13 @@ namespace hilrig::rig {
 // per lane the run captured over its span (stimulus and output as logic levels, the shaft's
 // count and a step rate as values), all stepped; without, one output lane stepping at `at`.
 // Null without a window.
-// A rate lane shows `rate`, the step rate band expected at the move's peak, shaded.
+// A rate lane shows `rate`, the step rate band expected at the move's peak, shaded, and
+// `profile`, the step rate the move's profile expects (CheckResult::expected_rate), as a
+// dashed line through its knots over the measured rate.
 [[nodiscard]] nlohmann::json timing_figure(const Measurement& m, Judgement shown,
                                            const WindowTrace* trace = nullptr,
-                                           std::optional<RateBand> rate = std::nullopt);
+                                           std::optional<RateBand> rate = std::nullopt,
+                                           std::span<const RatePoint> profile = {});
 
 // One chart per measurement with a limit: its value (a point in the colour of its word) on
 // an axis in its unit holding every limit, the passing band shaded. Null when none has one.

@@ -85,7 +85,9 @@ struct LaneChange {
 struct TraceLane {
   std::string name; // the trace's name: "enc.A", "shaft.count", "ls1"
   LaneRole role = LaneRole::Output;
-  std::vector<LaneChange> changes; // the first: the value at span.begin
+  // The first: the value at span.begin; a real lane's: its samples in the span (the one
+  // before it, at its own time, when none is inside), volts to 1 uV.
+  std::vector<LaneChange> changes;
   // Changes left out to fit the figure (more than one per pixel column of it; the first and
   // last of each column are kept, so every level the lane held there is still drawn).
   std::size_t thinned = 0;
@@ -98,6 +100,13 @@ struct WindowTrace {
   TraceWindow around; // the measurement window it was cut for (Measurement::window)
   TraceWindow span;   // what the excerpt covers
   std::vector<TraceLane> lanes;
+};
+
+// A knot of an expected step rate (a programmed move's profile), steps/s, joined to the next
+// by a straight line.
+struct RatePoint {
+  Nanos time;
+  double rate = 0.0;
 };
 
 // An observation: a value read from the DUT (a status or data word) recorded by name.
@@ -165,6 +174,9 @@ struct CheckResult {
   std::vector<Probe> probes;              // a debounce check's probes, in the order they ran
   // The trace around each window the report draws a timing diagram for (timing_figures()).
   std::vector<WindowTrace> traces;
+  // A shaft_move check that names its move (profile_of): the step rate the move's profile
+  // expects (rig/checks/move_profile.hpp), drawn over the measured rate; evidence, not judged.
+  std::vector<RatePoint> expected_rate;
   // The measurements' outcome: Error when there is none (a check that judged nothing).
   [[nodiscard]] Outcome outcome() const {
     Outcome o = Outcome::Pass;

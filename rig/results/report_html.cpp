@@ -132,7 +132,7 @@ std::string check_figures(const CheckResult& c, const RunResult& run) {
   if (!on_motion) {
     for (const Measurement* m : timing_figures(c)) {
       const WindowTrace* trace = trace_for(c, *m);
-      s += figure(timing_figure(as_drawn(c, *m), shown(c, *m), trace, expected_rate(c)),
+      s += figure(timing_figure(as_drawn(c, *m), shown(c, *m), trace, expected_rate(c), c.expected_rate),
                   fmt::format("{}: {}the expected window (shaded, limits dashed) and the captured edge",
                               xml_escape(m->name),
                               trace ? "the stimulus, the shaft's count and the output as captured; " : ""));

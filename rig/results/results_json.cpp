@@ -171,6 +171,11 @@ json check_json(const CheckResult& c) {
     j["probes"] = ps;
   }
   if (!c.traces.empty()) j["traces"] = traces_json(c.traces);
+  if (!c.expected_rate.empty()) { // only a check that names its move: the others keep their bytes
+    json knots = json::array();
+    for (const auto& k : c.expected_rate) knots.push_back(json::array({k.time.count(), k.rate}));
+    j["expected_rate"] = knots;
+  }
   return j;
 }
 
@@ -191,6 +196,12 @@ CheckResult check_from(const json& j) {
       c.probes.push_back(probe);
     }
   if (j.contains("traces")) c.traces = traces_from(j.at("traces"));
+  if (j.contains("expected_rate"))
+    for (const auto& k : j.at("expected_rate")) {
+      if (!k.is_array() || k.size() != 2 || !k[0].is_number_integer() || !k[1].is_number())
+        throw std::runtime_error("results: an expected_rate knot is not [time_ns, steps/s]");
+      c.expected_rate.push_back(RatePoint{Nanos{k[0].get<std::int64_t>()}, k[1].get<double>()});
+    }
   return c;
 }
 

@@ -42,7 +42,8 @@ INSPECT = """JSON.stringify((() => {
     return {stimulus: lanes('stimulus'), count: lanes('count'), output: lanes('output'), rate: lanes('rate'),
             analog: lanes('analog'),
             expected: Number(top.dataset.expected), limits: Number(top.dataset.limits),
-            rate_expected: [...f.querySelectorAll('div.chart.lane.rate')].map(d => Number(d.dataset.rateExpected))};
+            rate_expected: [...f.querySelectorAll('div.chart.lane.rate')].map(d => Number(d.dataset.rateExpected)),
+            profile: [...f.querySelectorAll('div.chart.lane.rate')].map(d => Number(d.dataset.profile))};
   };
   const figures = s => [...s.querySelectorAll('figure.evidence')];
   // Any other figure: its kind, whether uPlot drew it, the limits its data has and those drawn
@@ -78,7 +79,9 @@ def timing_problems(name, check, timings, encoder, resolver):
     the shaft, the check's output line,
     and its expected window and limit drawn inside the figure (a limitless time: none); a
     shaft_move also its step rate against time with the expected peak rate shaded (when the
-    check limits it), a pulse_width each pulse against the whole [min, max] band."""
+    check limits it) and, when it names its move (profile_of: results.json's expected_rate),
+    the move's whole expected profile drawn over it inside the plot, every knot in the span
+    at least; a pulse_width each pulse against the whole [min, max] band."""
     traces = check.get("traces", [])
     out = []
     given = lambda m, key: m.get(key) is not None  # noqa: E731 - results.json writes null
@@ -107,6 +110,12 @@ def timing_problems(name, check, timings, encoder, resolver):
             out.append(f"{name}: {check['check']}: no step rate against time in its timing diagram")
         if check["kind"] == "shaft_move" and peak_limited and t["rate_expected"] != [1]:
             out.append(f"{name}: {check['check']}: its expected peak step rate is not drawn on the rate lane")
+        knots = check.get("expected_rate", [])
+        inside = sum(1 for k in knots if cut["span"]["begin_ns"] <= k[0] <= cut["span"]["end_ns"])
+        if check["kind"] == "shaft_move" and knots and not (len(t["profile"]) == 1
+                                                            and t["profile"][0] >= max(1, inside)):
+            out.append(f"{name}: {check['check']}: its expected profile is not drawn over the rate lane "
+                       f"(points on the canvas {t['profile']}, knots in the span {inside})")
         if check["kind"] == "pulse_width" and band and (t["expected"], t["limits"]) != (1, 2):
             out.append(f"{name}: {check['check']}: the [min, max] band is not drawn whole: expected window "
                        f"{t['expected']}, limit lines {t['limits']}")
@@ -251,6 +260,7 @@ def main():
     judged_total = 0
     drawn_traces = 0
     analog_drawn = 0  # resolver stator lanes drawn as lines, over every report
+    profiles_drawn = 0  # shaft_move diagrams with their move's expected profile drawn
     try:
         for report in reports:
             name = report.parent.name
@@ -265,6 +275,10 @@ def main():
             for (word, figures, notes, timings, others), c in zip(found["sections"], checks):
                 problems += timing_problems(name, c, timings, encoder, resolver)
                 analog_drawn += sum(len(t["analog"]) for t in timings)
+                profiles_drawn += sum(1 for t in timings if sum(t["profile"]) > 0)
+                # The profile campaign's moves are each named by its checks (profile_of).
+                if name == "smd23e_profile" and c["kind"] == "shaft_move" and not c.get("expected_rate"):
+                    problems.append(f"{name}: {c['check']}: no expected profile in results.json")
                 problems += figure_problems(name, c["check"], others)
                 drawn_traces += len(c.get("traces", []))
                 if word != c["outcome"]:
@@ -294,12 +308,14 @@ def main():
         problems.append("no timing diagram with the run's trace in any report")
     if analog_drawn == 0:
         problems.append("no resolver stator drawn as an analog lane in any report")
+    if profiles_drawn == 0:
+        problems.append("no shaft_move diagram with its move's expected profile in any report")
     for p in problems:
         print("FAIL:", p)
     if not problems:
         print(f"{len(reports)} reports ({shipped} shipped, 1 failing), {judged_total} judged checks, "
               f"each with a figure; {drawn_traces} timing diagrams with stimulus, count and output, "
-              f"{analog_drawn} analog stator lanes")
+              f"{analog_drawn} analog stator lanes, {profiles_drawn} step rates with their expected profile")
     return 1 if problems else 0
 
 

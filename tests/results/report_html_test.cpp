@@ -372,6 +372,57 @@ TEST(Figure, ShaftMoveRateLaneShowsTheExpectedPeak) {
   EXPECT_FALSE(expected_rate(c).has_value());
 }
 
+// smd23e_profile.toml's trapezoid (knots 10, 100, 401, 491 ms at 1000, 10000, 10000, 1000
+// steps/s; seeds/003 L919-928) over its measured rate: one x array for both series (uPlot's),
+// each knot at its own time, the lane holding its level there, the profile on its line
+// between its knots at the lane's points and nothing outside them; the axis holds its peak.
+TEST(Figure, ShaftMoveRateLaneCarriesTheMovesExpectedProfile) {
+  Measurement m = measured("trapezoid.steps", 4000.0, 4000.0, 4000.0, Outcome::Pass);
+  m.unit = "steps";
+  m.window = TraceWindow{Nanos{10'000'000}, Nanos{492'000'000}};
+  m.at = Nanos{492'000'000};
+  WindowTrace w{*m.window, TraceWindow{Nanos{0}, Nanos{600'000'000}}, {}};
+  w.lanes.push_back(
+      {"shaft.step rate",
+       LaneRole::Rate,
+       {{Nanos{0}, 0}, {Nanos{11'000'000}, 1000}, {Nanos{250'000'000}, 10000}, {Nanos{495'000'000}, 0}},
+       0});
+  const std::vector<RatePoint> profile = {{Nanos{10'000'000}, 1000.0},
+                                          {Nanos{100'000'000}, 10000.0},
+                                          {Nanos{401'000'000}, 10000.0},
+                                          {Nanos{491'000'000}, 1000.0}};
+  const nlohmann::json fig = timing_figure(m, Judgement::Pass, &w, std::nullopt, profile);
+  const auto& lane = fig["charts"][0];
+  ASSERT_EQ(lane["series"].size(), 2U);
+  EXPECT_EQ(lane["series"][1]["cls"], "expected");
+  EXPECT_EQ(lane["series"][1]["draw"], "line");
+  const auto& d = lane["data"];
+  ASSERT_EQ(d.size(), 3U);
+  // Times from the window start (10 ms): the lane's 0, 11, 250, 495 ms and the span's end
+  // 600 ms, merged with the knots' 10, 100, 401, 491 ms.
+  const std::vector<double> xs = {-10e6, 0.0, 1e6, 90e6, 240e6, 391e6, 481e6, 485e6, 590e6};
+  ASSERT_EQ(d[0].size(), xs.size());
+  for (std::size_t i = 0; i < xs.size(); ++i) EXPECT_EQ(d[0][i].get<double>(), xs[i]) << i;
+  // The lane: its own points, and at a knot its level there.
+  EXPECT_EQ(d[1], nlohmann::json::parse("[0, 0, 1000, 1000, 10000, 10000, 10000, 0, 0]"));
+  // The profile: null before its start and after its end; at 11 ms on the ramp
+  // 1000 + 9000 * 1/90; at 250 ms cruising.
+  EXPECT_TRUE(d[2][0].is_null());
+  EXPECT_EQ(d[2][1], 1000.0);
+  EXPECT_NEAR(d[2][2].get<double>(), 1100.0, 1e-9);
+  EXPECT_EQ(d[2][3], 10000.0);
+  EXPECT_EQ(d[2][4], 10000.0);
+  EXPECT_EQ(d[2][5], 10000.0);
+  EXPECT_EQ(d[2][6], 1000.0);
+  EXPECT_TRUE(d[2][7].is_null());
+  EXPECT_TRUE(d[2][8].is_null());
+  EXPECT_EQ(lane["y"]["min"], 0.0);
+  EXPECT_GE(lane["y"]["max"].get<double>(), 10000.0);
+  EXPECT_NE(fig["notes"].get<std::string>().find("expected profile"), std::string::npos);
+  // Without a profile the lane has its one series.
+  EXPECT_EQ(timing_figure(m, Judgement::Pass, &w)["charts"][0]["series"].size(), 1U);
+}
+
 TEST(Figure, HistogramKeepsEveryLimitOnTheCanvasAndHasEnoughBins) {
   // Values 1..4 us, limits far beyond (100 us) and below (-50 us): both inside the x range.
   const std::vector<double> v{1.0, 2.0, 3.0, 4.0};

@@ -119,6 +119,57 @@ TEST(ResultsJson, ARealLaneRoundTripsWithItsVolts) {
   EXPECT_THROW((void)campaign_from_json(broken), std::runtime_error);
 }
 
+// Stator volts as the cut writes them, to 1 uV (kRealLaneResolution in
+// rig/campaign/window_traces.hpp): the text holds at most six decimals (no float noise such as
+// 0.38268300000000002) and reads back to the same doubles.
+TEST(ResultsJson, StatorVoltsToOneMicrovoltRoundTripInSixDecimals) {
+  CampaignResult c = test::sample_campaign(2);
+  finalize(c);
+  CheckResult& check = c.runs[0].checks[1];
+  const TraceWindow around = *check.measurements[0].window;
+  TraceLane sin{"resolver.sin", LaneRole::Stimulus, {}, 0, true};
+  for (const double v : {0.382683, -0.707107, 1.0, 0.000001, -0.999999, 0.1, 2.123457})
+    sin.changes.push_back(
+        LaneChange{around.begin + Nanos{static_cast<std::int64_t>(sin.changes.size()) * 200'000}, 0, v});
+  check.traces.push_back(WindowTrace{around, around, {sin}});
+  const std::string text = to_json_text(c);
+  const json lane = json::parse(text)["runs"][0]["checks"][1]["traces"][0]["lanes"][0];
+  for (const auto& change : lane["changes"]) {
+    const std::string volts = change[1].dump();
+    const auto dot = volts.find('.');
+    EXPECT_TRUE(dot == std::string::npos || volts.size() - dot - 1 <= 6) << volts;
+  }
+  const CampaignResult back = campaign_from_json(json::parse(text));
+  const auto& got = back.runs[0].checks[1].traces.at(0).lanes.at(0).changes;
+  ASSERT_EQ(got.size(), sin.changes.size());
+  for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i].real, sin.changes[i].real);
+}
+
+// A shaft_move check's expected profile (CheckResult::expected_rate) round-trips as
+// [time_ns, steps/s] knots, fits the schema, and is absent (the entry's bytes unchanged) for a
+// check without one.
+TEST(ResultsJson, ExpectedRateKnotsRoundTrip) {
+  CampaignResult c = test::sample_campaign(2);
+  finalize(c);
+  const json before = to_json(c);
+  CheckResult& check = c.runs[0].checks[0];
+  EXPECT_FALSE(before["runs"][0]["checks"][0].contains("expected_rate"));
+  check.expected_rate = {
+      {Nanos{610'000'000}, 1000.0}, {Nanos{678'102'497}, 7810.249675906654}, {Nanos{746'204'994}, 1000.0}};
+  const json j = to_json(c);
+  const auto errors = test::validate_json_schema(load_schema(), j);
+  EXPECT_TRUE(errors.empty()) << errors.front();
+  EXPECT_EQ(j["runs"][0]["checks"][0]["expected_rate"][1], json::array({678'102'497, 7810.249675906654}));
+  const CampaignResult back = campaign_from_json(json::parse(to_json_text(c)));
+  ASSERT_EQ(back.runs[0].checks[0].expected_rate.size(), 3U);
+  EXPECT_EQ(back.runs[0].checks[0].expected_rate[1].time, Nanos{678'102'497});
+  EXPECT_EQ(back.runs[0].checks[0].expected_rate[1].rate, 7810.249675906654);
+  EXPECT_EQ(to_json(back), j);
+  json broken = j;
+  broken["runs"][0]["checks"][0]["expected_rate"][0] = json::array({0.5, 1000.0});
+  EXPECT_THROW((void)campaign_from_json(broken), std::runtime_error);
+}
+
 TEST(ResultsJson, ANotANumberValueIsWrittenAsNullAndReadBackAsNaN) {
   CampaignResult c = test::sample_campaign(1);
   c.runs[0].checks[0].measurements[1].value = std::numeric_limits<double>::quiet_NaN();
