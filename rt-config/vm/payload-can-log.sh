@@ -17,14 +17,9 @@ hilrig="${HILRIG_BUILD:-$root/build}/hilrig"
 result=${HILRIG_LANE_RESULT:-/dev/null}
 dir="$out/can-log"
 rm -rf "$dir" && mkdir -p "$dir"
-failed=0
-step() { printf '[can-log %3ss] %s\n' "$SECONDS" "$*"; }
-pass() { printf 'PASS can_log.%s\n' "$1" | tee -a "$result"; }
-fail() {
-  printf 'FAIL can_log.%s: %s\n' "$1" "$2" | tee -a "$result"
-  failed=1
-}
-note() { printf 'NOTE %s\n' "$*" | tee -a "$result"; }
+lane_name=can_log
+# shellcheck source=lane-report.sh
+. "$here/lane-report.sh"
 
 campaign=campaigns/pls2700/pls2700_faults.toml
 step "hilrig run $campaign --epoch 1767225600 --trace none"

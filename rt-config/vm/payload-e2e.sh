@@ -20,14 +20,9 @@ hilrig="${HILRIG_BUILD:-$root/build}/hilrig"
 result=${HILRIG_LANE_RESULT:-/dev/null}
 e2e="$out/e2e"
 mkdir -p "$e2e"
-failed=0
-step() { printf '[e2e %3ss] %s\n' "$SECONDS" "$*"; }
-pass() { printf 'PASS e2e.%s\n' "$1" | tee -a "$result"; }
-fail() {
-  printf 'FAIL e2e.%s: %s\n' "$1" "$2" | tee -a "$result"
-  failed=1
-}
-note() { printf 'NOTE %s\n' "$*" | tee -a "$result"; }
+lane_name=e2e
+# shellcheck source=lane-report.sh
+. "$here/lane-report.sh"
 
 [ -x "$hilrig" ] || {
   fail hilrig "$hilrig not built"
