@@ -77,7 +77,8 @@ std::vector<Plain> record_random(TraceRecorder& t, const std::vector<std::uint32
         now = extremes[rng() % std::size(extremes)];
         break;
       case 1:
-        now -= static_cast<std::int64_t>(rng() % 20000); // back in time
+        // Back in time, wrapping as the encoding's deltas do (now may be the most negative time).
+        now = static_cast<std::int64_t>(static_cast<std::uint64_t>(now) - rng() % 20000);
         break;
       default:
         now = static_cast<std::int64_t>(rng()) >> (rng() % 64);
