@@ -123,7 +123,7 @@ std::string campaign(const std::string& move_fields, const std::string& of = "go
                   "[[wiring]]\nrig = \"shaft.dir\"\nboard = \"DIR\"\n";
   if (!vs.empty())
     t += "[[host]]\nat = \"0ms\"\nprogram = \"configuration\"\nstarting_speed = " + vs +
-                   "\nsteps_per_turn = 2048\nidle_current_percent = 50\nmotor_current_x10 = 20\n";
+         "\nsteps_per_turn = 2048\nidle_current_percent = 50\nmotor_current_x10 = 20\n";
   else
     t += "[[host]]\nat = \"0ms\"\nprogram = \"command\"\ncommand = \"none\"\n";
   t += "[[host]]\nat = \"10ms\"\nname = \"go\"\n" + move_fields + "\n";
@@ -153,7 +153,8 @@ int profile_line(const std::string& text) {
 
 ::testing::AssertionResult refused(const std::string& text, const std::string& says) {
   const std::string got = error_of(text);
-  const std::string where = "t.toml:" + std::to_string(profile_line(text)) + ":14: check[0].profile_of: "; // at its value
+  const std::string where =
+      "t.toml:" + std::to_string(profile_line(text)) + ":14: check[0].profile_of: "; // at its value
   if (got.rfind(where, 0) != 0 || got.find(says) == std::string::npos)
     return ::testing::AssertionFailure()
            << "expected \"" << where << "...\" naming \"" << says << "\", got \"" << got << "\"";
