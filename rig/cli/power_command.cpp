@@ -10,6 +10,7 @@
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/check_selection.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/seed_option.hpp"
 #include "rig/power/power.hpp"
 #include "rig/power/power_report.hpp"
 #include "rig/results/results_json.hpp"
@@ -74,24 +75,16 @@ int power_campaign(const PowerOptions& o, std::ostream& out, std::ostream& err) 
 
 void add_power_command(CLI::App& app) {
   auto o = std::make_shared<PowerOptions>();
-  auto seed = std::make_shared<std::int64_t>(-1);
   auto max_margin = std::make_shared<double>(-1.0);
   CLI::App* cmd = app.add_subcommand(
       "power", "detection power: bisect each check's knob on the virtual board to where the check fails");
   cmd->add_option("campaign", o->file, "campaign file (.toml)")->required();
   cmd->add_option("--out", o->out, "write power.json and power.html into this directory");
-  cmd->add_option("--seed", *seed, "base seed (default: the campaign's)");
+  add_seed_option(*cmd, o->seed, "base seed (default: the campaign's)");
   cmd->add_option("--max-margin", *max_margin,
                   "exit 1 when a check's margin beyond its limit is over PCT %, or it has none");
   cmd->add_option("--check", o->checks, "only this check (repeatable)")->allow_extra_args(false);
-  cmd->callback([o, seed, max_margin, cmd] {
-    if (cmd->count("--seed") > 0) {
-      if (*seed < 0) {
-        std::cerr << "hilrig power: --seed: expected a number >= 0\n";
-        exit_with(kBadInput);
-      }
-      o->seed = static_cast<std::uint64_t>(*seed);
-    }
+  cmd->callback([o, max_margin, cmd] {
     if (cmd->count("--max-margin") > 0) o->max_margin_pct = *max_margin;
     const int status = power_campaign(*o, std::cout, std::cerr);
     if (status != kPassed) exit_with(status);

@@ -28,6 +28,7 @@
 #include "rig/cli/exit_status.hpp"
 #include "rig/cli/output_dir.hpp"
 #include "rig/cli/run_progress.hpp"
+#include "rig/cli/seed_option.hpp"
 #include "rig/cli/serve_devices.hpp"
 #include "rig/cli/stop_signals.hpp"
 #include "rig/cli/suite_files.hpp"
@@ -538,12 +539,7 @@ void add_run_command(CLI::App& app) {
                   "directory for results.json, junit.xml, report.html, trace.vcd (a suite: junit.xml, "
                   "report.html and a directory per campaign)")
       ->required();
-  cmd->add_option("--seed", options->seed, "base seed (overrides [campaign] seed; 0 or more)")
-      ->check(CLI::Validator(
-          [](const std::string& v) {
-            return v.starts_with("-") ? std::string("a seed is 0 or more (an unsigned 64-bit integer)") : "";
-          },
-          "SEED>=0"));
+  add_seed_option(*cmd, options->seed, "base seed (overrides [campaign] seed)");
   cmd->add_option("--shard", options->shard, "K/N: run only the runs whose index mod N is K (0-based)");
   cmd->add_option("--jobs,-j", options->jobs, "campaigns of a suite run at once (outputs as with 1)")
       ->check(CLI::Range(1, 1024));

@@ -60,9 +60,18 @@ for key, value in (("campaign", "another-campaign"), ("device", "smd23e")):
 # A negative --seed is refused before anything runs; serve --fault names the choices.
 campaign = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "campaigns", "reference",
                         "reference_pls_pass.toml")
-r = expect(2, "run", campaign, "--out", os.path.join(sample, "negative-seed"), "--seed", "-1")
-if "a seed is 0 or more" not in r.stderr or os.path.exists(os.path.join(sample, "negative-seed", "results.json")):
-    problems.append("--seed -1 not refused clearly:\n" + r.stderr)
+# run and power parse --seed alike (rig/cli/seed_option.cpp): 0..2^64-1, nothing past it, no sign.
+seed_range = "a seed is a decimal integer 0..18446744073709551615"
+for command in ("run", "power"):
+    for bad in ("-1", "18446744073709551616"):
+        out = os.path.join(sample, f"bad-seed-{command}")
+        r = expect(2, command, campaign, "--out", out, "--seed", bad)
+        if seed_range not in r.stderr or os.path.exists(out):
+            problems.append(f"{command} --seed {bad} not refused clearly:\n" + r.stderr)
+# The top of the range is a seed for both (power: refused later, for its unknown --check).
+r = expect(2, "power", campaign, "--seed", "18446744073709551615", "--check", "no-such-check")
+if "no-such-check" not in r.stderr or "seed" in r.stderr:
+    problems.append("power --seed 2^64-1 not taken:\n" + r.stderr)
 r = expect(2, "serve", "smd23e", "--pty", "--fault", "lost-step")
 if "(one of: none, wrong-acceleration, lost-steps, ignored-limit, late-stop)" not in r.stderr:
     problems.append("serve --fault does not list the choices:\n" + r.stderr)
