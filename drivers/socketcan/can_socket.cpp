@@ -2,6 +2,7 @@
 
 #include <linux/can.h>
 #include <linux/can/raw.h>
+#include <linux/net_tstamp.h>
 #include <linux/sock_diag.h>
 #include <net/if.h>
 #include <poll.h>
@@ -16,6 +17,33 @@
 #include <ctime>
 
 namespace hilrig::socketcan {
+
+// Made once per socket: a batch costs no allocation. Each header points at its own frame and
+// control space for good; only the lengths are reset before a call.
+struct CanSocket::Buffers {
+  std::array<canfd_frame, kBatch> tx{};
+  std::array<iovec, kBatch> tx_iov{};
+  std::array<mmsghdr, kBatch> tx_msg{};
+  std::array<canfd_frame, kBatch> rx{};
+  std::array<iovec, kBatch> rx_iov{};
+  std::array<mmsghdr, kBatch> rx_msg{};
+  struct alignas(cmsghdr) Control {
+    std::array<char, kRxControlBytes> bytes;
+  };
+  std::array<Control, kBatch> rx_control{};
+
+  Buffers() {
+    for (std::size_t k = 0; k < kBatch; ++k) {
+      tx_iov[k] = iovec{&tx[k], sizeof(canfd_frame)};
+      tx_msg[k].msg_hdr.msg_iov = &tx_iov[k];
+      tx_msg[k].msg_hdr.msg_iovlen = 1;
+      rx_iov[k] = iovec{&rx[k], sizeof(canfd_frame)};
+      rx_msg[k].msg_hdr.msg_iov = &rx_iov[k];
+      rx_msg[k].msg_hdr.msg_iovlen = 1;
+      rx_msg[k].msg_hdr.msg_control = rx_control[k].bytes.data();
+    }
+  }
+};
 
 namespace {
 
@@ -37,7 +65,7 @@ int poll_ms(Nanos remaining) {
 } // namespace
 
 CanSocket::CanSocket(const std::string& interface, const CanSocketOptions& options)
-    : interface_(interface), fd_frames_(options.fd) {
+    : interface_(interface), fd_frames_(options.fd), io_(std::make_unique<Buffers>()) {
   fd_ = ::socket(PF_CAN, SOCK_RAW | SOCK_CLOEXEC, CAN_RAW);
   if (fd_ < 0) throw CanError(why(interface, "socket(PF_CAN)", errno));
   auto fail = [&](const char* what) {
@@ -75,7 +103,10 @@ CanSocket::CanSocket(const std::string& interface, const CanSocketOptions& optio
     const can_err_mask_t mask = CAN_ERR_MASK;
     if (::setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &mask, sizeof(mask)) < 0) fail("error filter");
   }
-  if (::setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof(on)) < 0) fail("SO_TIMESTAMPNS");
+  // The software receive stamp, the same skb time SO_TIMESTAMP(NS) gives candump.
+  const int stamping = SOF_TIMESTAMPING_RX_SOFTWARE | SOF_TIMESTAMPING_SOFTWARE;
+  if (::setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPING, &stamping, sizeof(stamping)) < 0)
+    fail("SO_TIMESTAMPING");
   if (::setsockopt(fd_, SOL_SOCKET, SO_RXQ_OVFL, &on, sizeof(on)) < 0) fail("SO_RXQ_OVFL");
   sockaddr_can addr{};
   addr.can_family = AF_CAN;
@@ -88,29 +119,36 @@ CanSocket::~CanSocket() {
 }
 
 SendStatus CanSocket::send(const CanFrame& frame, Nanos deadline) {
-  canfd_frame raw{};
-  raw.can_id = frame.id | (frame.extended ? CAN_EFF_FLAG : 0U) | (frame.rtr ? CAN_RTR_FLAG : 0U);
-  raw.len = frame.len;
-  if (frame.fd)
-    raw.flags = static_cast<std::uint8_t>((frame.brs ? CANFD_BRS : 0) | (frame.esi ? CANFD_ESI : 0));
-  std::memcpy(raw.data, frame.data.data(), std::min<std::size_t>(frame.len, sizeof(raw.data)));
-  const std::size_t size = frame.fd ? CANFD_MTU : CAN_MTU;
-  if (frame.fd && !fd_frames_) {
-    last_errno_ = EINVAL;
-    return SendStatus::Failed;
+  return send_batch(std::span<const CanFrame>(&frame, 1), deadline).status;
+}
+
+BatchSent CanSocket::send_batch(std::span<const CanFrame> frames, Nanos deadline) {
+  // An FD frame on a classic socket cannot go: the frames before it still do.
+  std::size_t sendable = frames.size();
+  if (!fd_frames_) {
+    sendable = static_cast<std::size_t>(
+        std::find_if(frames.begin(), frames.end(), [](const CanFrame& f) { return f.fd; }) - frames.begin());
   }
-  for (;;) {
-    const ssize_t n = ::send(fd_, &raw, size, MSG_DONTWAIT);
-    if (n == static_cast<ssize_t>(size)) return SendStatus::Sent;
-    last_errno_ = errno;
-    if (errno == ENETDOWN) return SendStatus::BusOff; // the controller took itself off the bus
-    if (errno != EAGAIN && errno != ENOBUFS) return SendStatus::Failed;
-    // Transmit queue full: wait for room, but never past the deadline.
+  Buffers& io = *io_;
+  auto send_many = [&](std::size_t first, std::size_t count) -> long {
+    for (std::size_t k = 0; k < count; ++k) io.tx_iov[k].iov_len = to_raw(frames[first + k], io.tx[k]);
+    const int n = ::sendmmsg(fd_, io.tx_msg.data(), static_cast<unsigned>(count), MSG_DONTWAIT);
+    return n >= 0 ? n : -static_cast<long>(errno);
+  };
+  auto wait_for_room = [&] {
     const Nanos left = deadline - monotonic_now();
-    if (left <= Nanos{0}) return SendStatus::DeadlineMissed;
+    if (left <= Nanos{0}) return false;
     pollfd p{fd_, POLLOUT, 0};
     ::poll(&p, 1, std::max(1, poll_ms(left)));
+    return true;
+  };
+  BatchSent r = send_in_batches(sendable, kBatch, send_many, wait_for_room);
+  if (r.status == SendStatus::Sent && sendable < frames.size()) {
+    r.status = SendStatus::Failed;
+    r.error = EINVAL;
   }
+  if (r.error != 0) last_errno_ = r.error;
+  return r;
 }
 
 std::uint32_t CanSocket::rx_queue_drops() const {
@@ -123,53 +161,37 @@ std::uint32_t CanSocket::rx_queue_drops() const {
 }
 
 std::optional<CanReceived> CanSocket::receive(Nanos timeout) {
-  canfd_frame raw{};
-  iovec iov{&raw, sizeof(raw)};
-  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec)) + CMSG_SPACE(sizeof(std::uint32_t))];
-  msghdr msg{};
-  msg.msg_iov = &iov;
-  msg.msg_iovlen = 1;
-  msg.msg_control = control;
-  msg.msg_controllen = sizeof(control);
-  // Read first and wait only when nothing is queued: a busy bus costs one syscall a frame.
-  ssize_t n = ::recvmsg(fd_, &msg, MSG_DONTWAIT);
+  CanReceived r;
+  if (receive_batch(std::span<CanReceived>(&r, 1), timeout) == 0) return std::nullopt;
+  return r;
+}
+
+std::size_t CanSocket::receive_batch(std::span<CanReceived> out, Nanos timeout) {
+  const auto want = static_cast<unsigned>(std::min(out.size(), kBatch));
+  if (want == 0) return 0;
+  Buffers& io = *io_;
+  auto read_queued = [&] {
+    for (unsigned k = 0; k < want; ++k) {
+      io.rx_msg[k].msg_hdr.msg_controllen = kRxControlBytes;
+      io.rx_msg[k].msg_hdr.msg_flags = 0;
+    }
+    return ::recvmmsg(fd_, io.rx_msg.data(), want, MSG_DONTWAIT, nullptr);
+  };
+  // Read first and wait only when nothing is queued: a busy bus costs one syscall a batch.
+  int n = read_queued();
   if (n < 0 && errno == EAGAIN && timeout > Nanos{0}) {
     pollfd p{fd_, POLLIN, 0};
-    if (::poll(&p, 1, poll_ms(timeout)) <= 0) return std::nullopt;
-    msg.msg_controllen = sizeof(control);
-    n = ::recvmsg(fd_, &msg, MSG_DONTWAIT);
+    if (::poll(&p, 1, poll_ms(timeout)) <= 0) return 0;
+    n = read_queued();
   }
   if (n < 0) {
     last_errno_ = errno;
-    return std::nullopt;
+    return 0;
   }
-  CanReceived r;
-  for (cmsghdr* c = CMSG_FIRSTHDR(&msg); c != nullptr; c = CMSG_NXTHDR(&msg, c)) {
-    if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SO_TIMESTAMPNS) {
-      timespec ts{};
-      std::memcpy(&ts, CMSG_DATA(c), sizeof(ts));
-      r.timestamp = Nanos{static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec};
-    } else if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SO_RXQ_OVFL) {
-      std::memcpy(&rx_queue_drops_, CMSG_DATA(c), sizeof(rx_queue_drops_));
-    }
-  }
-  if ((raw.can_id & CAN_ERR_FLAG) != 0) {
-    r.is_error = true;
-    std::array<std::uint8_t, 8> data{};
-    std::memcpy(data.data(), raw.data, 8);
-    r.error = decode_error_frame(raw.can_id, data);
-    return r;
-  }
-  CanFrame& f = r.frame;
-  f.extended = (raw.can_id & CAN_EFF_FLAG) != 0;
-  f.rtr = (raw.can_id & CAN_RTR_FLAG) != 0;
-  f.id = raw.can_id & (f.extended ? CAN_EFF_MASK : CAN_SFF_MASK);
-  f.fd = n == static_cast<ssize_t>(CANFD_MTU);
-  f.brs = f.fd && (raw.flags & CANFD_BRS) != 0;
-  f.esi = f.fd && (raw.flags & CANFD_ESI) != 0;
-  f.len = raw.len;
-  std::memcpy(f.data.data(), raw.data, std::min<std::size_t>(raw.len, f.data.size()));
-  return r;
+  const auto got = static_cast<std::size_t>(n);
+  for (std::size_t k = 0; k < got; ++k)
+    out[k] = read_received(io.rx_msg[k].msg_hdr, io.rx_msg[k].msg_len, rx_queue_drops_);
+  return got;
 }
 
 } // namespace hilrig::socketcan

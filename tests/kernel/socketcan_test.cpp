@@ -2,11 +2,15 @@
 // boards on one QEMU CAN bus at 500 kbit/s.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cerrno>
 #include <ctime>
+#include <vector>
 
 #include "core/candump.hpp"
 #include "core/clock.hpp"
 #include "drivers/socketcan/can_socket.hpp"
+#include "tests/rt/allocation_counter.hpp"
 
 using namespace hilrig;
 using namespace hilrig::socketcan;
@@ -44,6 +48,77 @@ TEST(SocketCan, FrameOnVcanArrivesWithAKernelTimestamp) {
   EXPECT_GE(got->timestamp, before);
   EXPECT_LE(got->timestamp, realtime_now());
   EXPECT_NE(candump_line(got->timestamp, "vcan0", got->frame).find("vcan0 123#DEADBEEF"), std::string::npos);
+}
+
+// A burst sent a batch per sendmmsg arrives whole and in order, read a batch per recvmmsg,
+// each frame with its own kernel stamp (non-decreasing, between the send and the read).
+TEST(SocketCan, BatchedFramesArriveInOrderEachWithItsOwnTimestamp) {
+  CanSocket rx("vcan0");
+  CanSocket tx("vcan0");
+  constexpr std::size_t kFrames = 3 * CanSocket::kBatch + 5;
+  std::vector<CanFrame> frames;
+  for (std::size_t i = 0; i < kFrames; ++i)
+    frames.push_back(classic(0x124, {static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(i >> 8)}));
+  const Nanos before = realtime_now();
+  const BatchSent sent = tx.send_batch(frames, soon());
+  ASSERT_EQ(sent.sent, kFrames);
+  ASSERT_EQ(sent.status, SendStatus::Sent);
+  std::array<CanReceived, CanSocket::kBatch> batch{};
+  std::vector<CanReceived> got;
+  std::size_t calls = 0;
+  while (got.size() < kFrames) {
+    const std::size_t n = rx.receive_batch(batch, seconds(1));
+    ASSERT_GT(n, 0U) << "after " << got.size();
+    ++calls;
+    got.insert(got.end(), batch.begin(), batch.begin() + static_cast<std::ptrdiff_t>(n));
+  }
+  const Nanos after = realtime_now();
+  // Everything was queued before the first read: full batches, then the rest.
+  EXPECT_EQ(calls, 4U);
+  for (std::size_t i = 0; i < kFrames; ++i) {
+    EXPECT_EQ(got[i].frame, frames[i]) << i;
+    EXPECT_GE(got[i].timestamp, i == 0 ? before : got[i - 1].timestamp) << i;
+    EXPECT_LE(got[i].timestamp, after) << i;
+  }
+  EXPECT_EQ(rx.rx_queue_drops(), 0U);
+}
+
+// The frames before an FD frame on a classic socket go; it and the ones after do not.
+TEST(SocketCan, AnFdFrameInAClassicBatchStopsTheBatchThere) {
+  CanSocket rx("vcan0");
+  CanSocket tx("vcan0");
+  std::vector<CanFrame> frames{classic(0x125, {1}), classic(0x125, {2}), CanFrame{}, classic(0x125, {4})};
+  frames[2].fd = true;
+  frames[2].len = 12;
+  const BatchSent sent = tx.send_batch(frames, soon());
+  EXPECT_EQ(sent.sent, 2U);
+  EXPECT_EQ(sent.status, SendStatus::Failed);
+  EXPECT_EQ(sent.error, EINVAL);
+  std::array<CanReceived, 8> batch{};
+  EXPECT_EQ(rx.receive_batch(batch, seconds(1)), 2U);
+  EXPECT_EQ(batch[1].frame, frames[1]);
+  EXPECT_EQ(rx.receive_batch(batch, milliseconds(50)), 0U);
+}
+
+// The RT rule on the real socket: sending and receiving batches allocates nothing.
+TEST(SocketCan, BatchedSendAndReceiveDoNotAllocate) {
+  CanSocket rx("vcan0");
+  CanSocket tx("vcan0");
+  std::array<CanFrame, 100> frames{};
+  for (std::size_t i = 0; i < frames.size(); ++i) frames[i] = classic(0x126, {static_cast<std::uint8_t>(i)});
+  std::array<CanReceived, CanSocket::kBatch> batch{};
+  const Nanos deadline = soon();
+  std::size_t received = 0;
+  hilrig::test::arm_allocation_counter();
+  const BatchSent sent = tx.send_batch(frames, deadline);
+  const auto one = tx.send(frames[0], deadline);
+  for (int k = 0; k < 4 && received < frames.size() + 1; ++k) received += rx.receive_batch(batch, Nanos{0});
+  const auto single = rx.receive(Nanos{0});
+  const std::uint64_t allocations = hilrig::test::disarm_allocation_counter();
+  EXPECT_EQ(allocations, 0U);
+  EXPECT_EQ(sent.sent, frames.size());
+  EXPECT_EQ(one, SendStatus::Sent);
+  EXPECT_EQ(received + (single ? 1U : 0U), frames.size() + 1);
 }
 
 // A socket nobody reads while 4,000 frames arrive: its receive queue fills and the kernel
