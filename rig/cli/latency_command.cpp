@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 
 #include <atomic>
+#include <sys/resource.h>
+
 #include <csignal>
 #include <memory>
 #include <thread>
@@ -26,12 +28,36 @@ struct LatencyOptions {
   int cpu = -1;
   std::int64_t interval_us = 1000;
   bool quiet_histogram = false;
+  bool breakdown = false;
 };
+
+// What the loop itself caused, from the thread's own counters around it.
+struct LoopCounters {
+  long minor_faults = 0;
+  long major_faults = 0;
+  long voluntary_switches = 0;
+  long involuntary_switches = 0;
+};
+
+LoopCounters thread_counters() {
+  rusage u{};
+  getrusage(RUSAGE_THREAD, &u);
+  return {u.ru_minflt, u.ru_majflt, u.ru_nvcsw, u.ru_nivcsw};
+}
+
+std::string spread_text(const rig::Spread& s) {
+  return fmt::format("{} / {} / {}", s.p50.count(), s.p99.count(), s.max.count());
+}
 
 int run_latency(const LatencyOptions& o) {
   auto histogram = std::make_unique<rig::LatencyHistogram>();
   const auto loops = static_cast<std::uint64_t>(o.duration_s * 1e6 / static_cast<double>(o.interval_us));
   rig::RtSetupReport setup;
+  // Made and written before the loop (no page of it is new to the loop).
+  std::unique_ptr<rig::WakeupTrace> trace;
+  if (o.breakdown) trace = std::make_unique<rig::WakeupTrace>(static_cast<std::size_t>(loops));
+  rig::Spread clock_cost;
+  LoopCounters before, after;
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   // As cyclictest does: no deep C-states while measuring.
@@ -42,8 +68,11 @@ int run_latency(const LatencyOptions& o) {
     settings.priority = o.priority;
     if (o.cpu >= 0) settings.cpu = o.cpu;
     setup = rig::make_current_thread_realtime(settings);
+    if (trace) clock_cost = rig::clock_read_cost(1000);
+    before = thread_counters();
     const Nanos start = MonotonicClock{}.now();
-    rig::measure_wakeups(start, microseconds(o.interval_us), loops, g_stop, *histogram);
+    rig::measure_wakeups(start, microseconds(o.interval_us), loops, g_stop, *histogram, trace.get());
+    after = thread_counters();
   });
   rt.join();
 
@@ -54,6 +83,7 @@ int run_latency(const LatencyOptions& o) {
              setup.locked ? "locked" : "NOT locked");
   if (!setup.problems.empty()) fmt::print("# problems: {}\n", setup.problems);
   fmt::print("# cpu_dma_latency: {}\n", no_deep_idle.active() ? "held at 0 us" : no_deep_idle.problem());
+  fmt::print("# timer slack: {} ns\n", setup.timer_slack_ns);
   fmt::print("T: 0 P:{:2d} I:{} C:{:7d} Min:{:7d} Avg:{:7d} Max:{:7d}\n", o.priority, o.interval_us,
              h.count(), h.min().count() / 1000, h.average().count() / 1000, h.max().count() / 1000);
   if (!o.quiet_histogram) {
@@ -66,6 +96,21 @@ int run_latency(const LatencyOptions& o) {
   fmt::print("# Max Latencies: {:05d}\n", h.max().count() / 1000);
   fmt::print("# P99 Latencies: {:05d}\n", h.percentile_us(0.99));
   fmt::print("# Histogram Overflows: {:05d}\n", h.overflow());
+  fmt::print(
+      "# In the loop: minor faults {}, major faults {}, voluntary switches {}, involuntary switches {}\n",
+      after.minor_faults - before.minor_faults, after.major_faults - before.major_faults,
+      after.voluntary_switches - before.voluntary_switches,
+      after.involuntary_switches - before.involuntary_switches);
+  if (trace) {
+    const rig::WakeupBreakdown b = rig::summarize(trace->stamps());
+    fmt::print("# Breakdown: {} wake-ups, ns as p50 / p99 / max\n", b.wakeups);
+    fmt::print("# Breakdown latency (woke - due): {}\n", spread_text(b.latency));
+    fmt::print("# Breakdown work (woke -> histogram updated, next deadline set, one clock read): {}\n",
+               spread_text(b.work));
+    fmt::print("# Breakdown ahead (back in clock_nanosleep -> due): {}\n", spread_text(b.ahead));
+    fmt::print("# Breakdown clock read (CLOCK_MONOTONIC, back to back, 1000 pairs): {}\n",
+               spread_text(clock_cost));
+  }
   // A box that could not give the loop SCHED_FIFO is not qualified to run a board.
   return setup.scheduled || o.priority == 0 ? kPassed : kRigFault;
 }
@@ -82,6 +127,8 @@ void add_latency_command(CLI::App& app) {
   cmd->add_option("--interval", opts->interval_us, "wake-up interval in us")
       ->check(CLI::Range(10, 1'000'000));
   cmd->add_flag("--quiet", opts->quiet_histogram, "omit the histogram");
+  cmd->add_flag("--breakdown", opts->breakdown,
+                "also stamp every wake-up (two more clock reads each) and print where the time went");
   cmd->callback([opts] {
     const int code = run_latency(*opts);
     if (code != kPassed) exit_with(code);

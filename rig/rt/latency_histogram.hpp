@@ -56,12 +56,14 @@ public:
   }
 
 private:
-  std::array<std::uint64_t, kBins> bins_{};
+  // The totals first, then the bins: a wake-up of a few us touches one cache line for the
+  // totals and the first bins, not also the line 80 KB further on.
   std::uint64_t overflow_ = 0;
   std::uint64_t count_ = 0;
   std::uint64_t sum_ns_ = 0;
   std::int64_t min_ns_ = std::numeric_limits<std::int64_t>::max();
   std::int64_t max_ns_ = 0;
+  std::array<std::uint64_t, kBins> bins_{};
 };
 
 } // namespace hilrig::rig

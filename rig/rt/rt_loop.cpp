@@ -90,14 +90,18 @@ void play(std::span<const ScheduledEdge> schedule, Nanos start, RtOutputPort& ou
 }
 
 void measure_wakeups(Nanos start, Nanos interval, std::uint64_t loops, const std::atomic<bool>& stop,
-                     LatencyHistogram& histogram) noexcept {
-  Nanos next = start;
+                     LatencyHistogram& histogram, WakeupTrace* trace) noexcept {
+  Nanos next = start + interval;
   for (std::uint64_t i = 0; i < loops && !stop.load(std::memory_order_relaxed); ++i) {
+    const Nanos asleep = trace != nullptr ? monotonic_now() : Nanos{0};
+    const Nanos due = next;
+    const Nanos woke = sleep_until(due);
+    histogram.record(woke - due);
+    // After a stall, the next point of the grid still ahead (as cyclictest): no burst of late
+    // wake-ups, and the phase is kept.
     next += interval;
-    const Nanos woke = sleep_until(next);
-    histogram.record(woke - next);
-    // After a long stall, resynchronise instead of firing a burst of late wake-ups.
-    if (woke - next > interval) next = woke;
+    while (next < woke) next += interval;
+    if (trace != nullptr) trace->add(WakeupStamps{due, asleep, woke, monotonic_now()});
   }
 }
 

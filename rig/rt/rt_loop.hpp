@@ -13,6 +13,7 @@
 #include "core/time.hpp"
 #include "rig/rt/latency_histogram.hpp"
 #include "rig/rt/spsc_ring.hpp"
+#include "rig/rt/wakeup_trace.hpp"
 
 namespace hilrig::rig {
 
@@ -64,8 +65,11 @@ void capture_until(Nanos end, RtInputPort& inputs, SpscRing<LoopSample>& ring, c
                    Nanos poll_period, RtLoopStats& stats) noexcept;
 
 // Wakes every `interval` from `start` for `loops` wake-ups, measuring latency only: what
-// `hilrig latency` and cyclictest both measure.
+// `hilrig latency` and cyclictest both measure, and per wake-up only what cyclictest does
+// (one clock read, a histogram update, the next deadline; after a stall, the next point of
+// the grid, as cyclictest). `trace`, when given, also gets each wake-up's stamps (two more
+// clock reads a wake-up).
 void measure_wakeups(Nanos start, Nanos interval, std::uint64_t loops, const std::atomic<bool>& stop,
-                     LatencyHistogram& histogram) noexcept;
+                     LatencyHistogram& histogram, WakeupTrace* trace = nullptr) noexcept;
 
 } // namespace hilrig::rig

@@ -3,6 +3,7 @@
 #include <pthread.h>
 #include <sched.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 
 #include <cerrno>
 #include <cstring>
@@ -39,6 +40,10 @@ RtSetupReport make_current_thread_realtime(const RtSettings& settings) {
     }
   }
   if (settings.prefault_stack > 0) prefault_stack(settings.prefault_stack);
+  if (settings.timer_slack_ns > 0 && ::prctl(PR_SET_TIMERSLACK, settings.timer_slack_ns, 0, 0, 0) != 0) {
+    note(report.problems, "PR_SET_TIMERSLACK", errno);
+  }
+  report.timer_slack_ns = ::prctl(PR_GET_TIMERSLACK, 0, 0, 0, 0);
   if (settings.cpu) {
     cpu_set_t set;
     CPU_ZERO(&set);

@@ -13,13 +13,18 @@ struct RtSettings {
   std::optional<int> cpu;  // pin to this CPU (an isolated one on a rig)
   bool lock_memory = true; // mlockall(MCL_CURRENT | MCL_FUTURE)
   std::size_t prefault_stack = 256 * 1024;
+  // PR_SET_TIMERSLACK: how late the kernel may fire the thread's sleeps to batch timers
+  // (default 50 us). 1 ns is the least (0 means "back to the default"); the kernel already
+  // ignores the slack of a SCHED_FIFO thread, so this matters when FIFO is refused.
+  unsigned long timer_slack_ns = 1;
 };
 
 struct RtSetupReport {
   bool scheduled = false; // SCHED_FIFO applied
   bool pinned = false;
   bool locked = false;
-  std::string problems; // empty when everything asked for was applied
+  long timer_slack_ns = -1; // as read back (PR_GET_TIMERSLACK); -1 if unreadable
+  std::string problems;     // empty when everything asked for was applied
 };
 
 // Applies the settings to the calling thread. Never throws.
