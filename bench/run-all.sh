@@ -5,7 +5,8 @@
 #
 # Environment:
 #   BUILD_DIR        build tree holding hilrig and bench/ (default build-release)
-#   BENCH_RT_SECONDS duration of each latency run, hilrig and cyclictest (default 10)
+#   BENCH_RT_SECONDS latency measured by each of hilrig and cyclictest, in seconds (default 10)
+#   BENCH_RT_ROUNDS  alternating rounds the latency seconds are cut into (default 5)
 #   BENCH_RT_PRIO    SCHED_FIFO priority of both (default 80)
 #   BENCH_RT_CPU     CPU both are pinned to (default: the last CPU)
 #   BENCH_REPS       Google Benchmark repetitions; the median is reported (default 5)
@@ -61,16 +62,29 @@ if [[ -x $BUILD_DIR/bench/signals/bench_signals ]]; then
   gbench "$BUILD_DIR/bench/signals/bench_signals" 'BM_TrapezoidEdges$' "$WORK/signals.json" || true
 fi
 
-# --- 3. RT loop vs cyclictest, back to back, same duration/priority/CPU ----------------------
-say "latency: hilrig then cyclictest, ${RT_S}s each, priority $RT_PRIO, cpu $RT_CPU"
-"$HILRIG" latency --duration "$RT_S" --priority "$RT_PRIO" --cpu "$RT_CPU" --interval 1000 --quiet \
-  >"$WORK/hilrig-latency.txt" 2>&1 || echo "exit=$?" >>"$WORK/hilrig-latency.txt"
-if command -v cyclictest >/dev/null; then
-  cyclictest -m -p "$RT_PRIO" -a "$RT_CPU" -i 1000 -D "$RT_S" -q -h 1000 \
-    >"$WORK/cyclictest.txt" 2>&1 || echo "exit=$?" >>"$WORK/cyclictest.txt"
-else
-  echo "cyclictest not installed (Debian rt-tests)" >"$WORK/cyclictest.txt"
-fi
+# --- 3. RT loop vs cyclictest, same duration/priority/CPU, in alternating rounds ------------
+# The host's load moves from second to second, so the run is cut into rounds that alternate
+# who goes first; each side's histograms are summed over its rounds (make_table.py), and both
+# see the same stretch of the machine's load.
+RT_ROUNDS=${BENCH_RT_ROUNDS:-5}
+slice=$((RT_S / RT_ROUNDS))
+((slice >= 1)) || slice=1
+say "latency: hilrig and cyclictest, $RT_ROUNDS alternating rounds of ${slice}s each, priority $RT_PRIO, cpu $RT_CPU"
+command -v cyclictest >/dev/null || echo "cyclictest not installed (Debian rt-tests)" >"$WORK/cyclictest-missing"
+rt_hilrig() {
+  "$HILRIG" latency --duration "$slice" --priority "$RT_PRIO" --cpu "$RT_CPU" --interval 1000 \
+    >"$WORK/hilrig-latency-$1.txt" 2>&1 || echo "exit=$?" >>"$WORK/hilrig-latency-$1.txt"
+}
+rt_cyclictest() {
+  [[ -f $WORK/cyclictest-missing ]] && return 0
+  cyclictest -m -p "$RT_PRIO" -a "$RT_CPU" -i 1000 -D "$slice" -q -h 1000 \
+    >"$WORK/cyclictest-$1.txt" 2>&1 || echo "exit=$?" >>"$WORK/cyclictest-$1.txt"
+}
+for r in $(seq 1 "$RT_ROUNDS"); do
+  if ((r % 2)); then rt_hilrig "$r"; rt_cyclictest "$r"; else rt_cyclictest "$r"; rt_hilrig "$r"; fi
+done
+cat "$WORK"/hilrig-latency-*.txt >"$WORK/hilrig-latency.txt"
+if [[ -f $WORK/cyclictest-missing ]]; then cp "$WORK/cyclictest-missing" "$WORK/cyclictest.txt"; else cat "$WORK"/cyclictest-*.txt >"$WORK/cyclictest.txt"; fi
 
 # --- 4./5. ANS1 press campaign: virtual-time speed and peak RSS, 1x and 10x -------------------
 # The bench's own campaign, named: a glob over campaigns/ans1/ would pick up whichever press
