@@ -10,7 +10,7 @@ namespace hilrig::far {
 
 namespace {
 
-// CLOCK_REALTIME, the clock SocketCAN stamps received frames with (SO_TIMESTAMPNS).
+// CLOCK_REALTIME, the clock SocketCAN stamps received frames with (SO_TIMESTAMPING, software).
 Nanos realtime_now() {
   timespec ts{};
   ::clock_gettime(CLOCK_REALTIME, &ts);
