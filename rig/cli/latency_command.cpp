@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <atomic>
 #include <sys/resource.h>
 
@@ -55,7 +56,9 @@ int run_latency(const LatencyOptions& o) {
   rig::RtSetupReport setup;
   // Made and written before the loop (no page of it is new to the loop).
   std::unique_ptr<rig::WakeupTrace> trace;
-  if (o.breakdown) trace = std::make_unique<rig::WakeupTrace>(static_cast<std::size_t>(loops));
+  // At most 2^20 wake-ups (32 MiB) are stamped; later ones are counted, not kept.
+  if (o.breakdown)
+    trace = std::make_unique<rig::WakeupTrace>(std::min<std::size_t>(loops, std::size_t{1} << 20));
   rig::Spread clock_cost;
   LoopCounters before, after;
   std::signal(SIGINT, on_signal);
@@ -103,7 +106,8 @@ int run_latency(const LatencyOptions& o) {
       after.involuntary_switches - before.involuntary_switches);
   if (trace) {
     const rig::WakeupBreakdown b = rig::summarize(trace->stamps());
-    fmt::print("# Breakdown: {} wake-ups, ns as p50 / p99 / max\n", b.wakeups);
+    fmt::print("# Breakdown: {} wake-ups ({} more not stamped), ns as p50 / p99 / max\n", b.wakeups,
+               trace->dropped());
     fmt::print("# Breakdown latency (woke - due): {}\n", spread_text(b.latency));
     fmt::print("# Breakdown work (woke -> histogram updated, next deadline set, one clock read): {}\n",
                spread_text(b.work));
