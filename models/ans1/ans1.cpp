@@ -94,6 +94,17 @@ void Ans1::attach(const Ans1Pins& pins) {
   if (pins.quad_b != nullptr && !sampled) {
     pins.quad_b->on_edge(handler);
   }
+  // The stators may be read ahead of the scans while they announce what changes them.
+  const auto stators_revised = [weak] {
+    if (auto q = weak.lock()) {
+      q->device->stators_revised();
+    }
+  };
+  for (AnalogInput* stator : {pins.stator_sin, pins.stator_cos}) {
+    if (stator != nullptr) {
+      stator->on_revision(stators_revised);
+    }
+  }
   // Z is ignored (L455). The inputs are read at the scan; their edges only wake it.
   const auto input_edge = [weak](const Edge&) {
     if (auto q = weak.lock()) {
@@ -270,6 +281,7 @@ void Ans1::force_inputs(std::uint16_t enable, std::uint16_t state) {
 }
 
 void Ans1::clear_errors() {
+  settle_position();
   if (!resolver_fault_active_) {
     resolver_fault_latched_ = false;
   }
@@ -294,6 +306,9 @@ std::int64_t Ans1::transducer_count() const {
   if (position_.sensor == SensorType::Quadrature) {
     return quad_->count(scheduler_.now());
   }
+  if (walking_peaks_) {
+    return count_at(last_run_grid(scheduler_.now()));
+  }
   return resolver_count_;
 }
 
@@ -313,37 +328,49 @@ void Ans1::schedule_scan(Nanos at) {
       at, [this] { run_scan(); }, Scheduler::Tie::Last);
 }
 
+Ans1::ResolverTrack Ans1::read_peak(ResolverTrack track, Nanos peak) const {
+  const double s = pins_.stator_sin != nullptr ? pins_.stator_sin->sample(peak) : 0.0;
+  const double c = pins_.stator_cos != nullptr ? pins_.stator_cos->sample(peak) : 0.0;
+  const ResolverReading r =
+      decode_resolver(s, c, excitation_.value(peak), params_.resolver_min_ratio, params_.resolver_max_ratio);
+  if (!r.valid) {
+    track.fault_active = true;
+    track.fault_latched = true;
+    return track; // position holds its last valid value
+  }
+  track.fault_active = false;
+  if (position_.fault_auto_clear) {
+    track.fault_latched = false;
+  }
+  // CntDir = 1: GMP increases counter-clockwise (L1840).
+  const auto angle = position_.count_ccw
+                         ? static_cast<std::uint16_t>((kResolverCounts - r.angle) % kResolverCounts)
+                         : r.angle;
+  if (!track.seen) {
+    track.count = angle; // absolute within a turn at power-up
+    track.seen = true;
+  } else {
+    track.count += angle_step(track.angle, angle);
+  }
+  track.angle = angle;
+  return track;
+}
+
 void Ans1::sample_resolver(Nanos now) {
   const Nanos peak = excitation_.latest_peak(now);
   if (peak > now || peak == last_peak_) {
     return;
   }
   last_peak_ = peak;
-  const double s = pins_.stator_sin != nullptr ? pins_.stator_sin->sample(peak) : 0.0;
-  const double c = pins_.stator_cos != nullptr ? pins_.stator_cos->sample(peak) : 0.0;
-  const ResolverReading r =
-      decode_resolver(s, c, excitation_.value(peak), params_.resolver_min_ratio, params_.resolver_max_ratio);
-  if (!r.valid) {
-    resolver_fault_active_ = true;
-    resolver_fault_latched_ = true;
-    return; // position holds its last valid value
+  const ResolverTrack t = read_peak(resolver_track(), peak);
+  if (!resolver_seen_ && t.seen) {
+    speed_reference_count_ = t.count; // the first reading is not motion
   }
-  resolver_fault_active_ = false;
-  if (position_.fault_auto_clear) {
-    resolver_fault_latched_ = false;
-  }
-  // CntDir = 1: GMP increases counter-clockwise (L1840).
-  const auto angle = position_.count_ccw
-                         ? static_cast<std::uint16_t>((kResolverCounts - r.angle) % kResolverCounts)
-                         : r.angle;
-  if (!resolver_seen_) {
-    resolver_count_ = angle; // absolute within a turn at power-up
-    resolver_seen_ = true;
-    speed_reference_count_ = resolver_count_; // the first reading is not motion
-  } else {
-    resolver_count_ += angle_step(resolver_angle_, angle);
-  }
-  resolver_angle_ = angle;
+  resolver_count_ = t.count;
+  resolver_angle_ = t.angle;
+  resolver_seen_ = t.seen;
+  resolver_fault_active_ = t.fault_active;
+  resolver_fault_latched_ = t.fault_latched;
 }
 
 void Ans1::read_inputs() {

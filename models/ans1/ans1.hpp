@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/scheduler.hpp"
 #include "core/skewed_output.hpp"
@@ -201,6 +202,32 @@ private:
   [[nodiscard]] bool scan_repeats() const;
   [[nodiscard]] QuietInterval quiet_interval() const;
   [[nodiscard]] ScanState scan_state(Nanos now) const;
+  // ---- a resolver read ahead (scan_skipping.cpp) ----
+  // What the scans make of the stators: the unwrapped count, the last angle, the fault flags.
+  struct ResolverTrack {
+    std::int64_t count = 0;
+    std::uint16_t angle = 0;
+    bool seen = false;
+    bool fault_active = false;
+    bool fault_latched = false;
+  };
+  [[nodiscard]] ResolverTrack resolver_track() const {
+    return {resolver_count_, resolver_angle_, resolver_seen_, resolver_fault_active_,
+            resolver_fault_latched_};
+  }
+  // The track after reading the stators at an excitation peak.
+  [[nodiscard]] ResolverTrack read_peak(ResolverTrack track, Nanos peak) const;
+  // Both stators announce when their future changes (AnalogInput::announces_revisions) and the
+  // scan reads every peak: the peaks can be read ahead of the scans.
+  [[nodiscard]] bool resolver_read_ahead() const;
+  // Reads the peaks after the walk's front until one would change the flags or take the GMP out
+  // of quiet_ (a wake there), or a few peaks on (a walk again from the last one).
+  void walk_peaks();
+  // A stator's values from now on may have changed: the peaks from now on are read again.
+  void stators_revised();
+  // The track at grid point g while walking: after every peak at or before g.
+  [[nodiscard]] ResolverTrack track_at(Nanos g) const;
+  [[nodiscard]] Nanos peak_at_or_before(Nanos t) const;
   void speed_update();
   void sample_resolver(Nanos now);
   void read_inputs();
@@ -272,6 +299,19 @@ private:
     Nanos at = Nanos::min();
   };
   LeaveMemo leave_memo_{};
+  // A resolver read ahead while armed: the track at the last scan (its last peak read), the
+  // peaks after it whose reading moved the count, and the walk's front (its last peak read
+  // and the track there). leave_event_ is the wake at the leaving peak or the next walk.
+  bool walking_peaks_ = false;
+  ResolverTrack walk_base_{};
+  Nanos walk_base_peak_ = Nanos::min();
+  struct PeakReading {
+    Nanos peak;
+    ResolverTrack track;
+  };
+  std::vector<PeakReading> walk_;
+  Nanos walk_front_ = Nanos::min();
+  ResolverTrack walk_state_{};
 
   // Speed
   SpeedFilter speed_{};

@@ -22,6 +22,8 @@ public:
   [[nodiscard]] Nanos latest_peak(Nanos t) const;
   // The first peak strictly after t.
   [[nodiscard]] Nanos next_peak(Nanos t) const;
+  // Between two peaks (a positive and a negative one).
+  [[nodiscard]] Nanos half_period() const { return half_period_; }
   [[nodiscard]] double frequency_hz() const { return frequency_hz_; }
   [[nodiscard]] double amplitude() const { return amplitude_; }
 

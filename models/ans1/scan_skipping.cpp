@@ -59,8 +59,9 @@ Nanos Ans1::next_change() const {
     next = std::min(next, channel.next_change());
   }
   // The stators are sampled at each excitation peak; the last sampled one is not in the
-  // snapshot, so a peak that reads the same angle keeps the scan quiet.
-  if (!position_.slave_mode && position_.sensor == SensorType::Resolver) {
+  // snapshot, so a peak that reads the same angle keeps the scan quiet. Read ahead, the peak
+  // that changes anything wakes the scan instead (walk_peaks).
+  if (!position_.slave_mode && position_.sensor == SensorType::Resolver && !walking_peaks_) {
     next = std::min(next, excitation_.next_peak(scheduler_.now()));
   }
   return next;
@@ -109,7 +110,8 @@ void Ans1::run_scan() {
   const bool outside = changed_outside_;
   changed_outside_ = false;
   const auto skips_motion = [this] {
-    return !params_.exact_scan && !position_.slave_mode && position_.sensor == SensorType::Quadrature;
+    return !params_.exact_scan && !position_.slave_mode &&
+           (position_.sensor == SensorType::Quadrature || resolver_read_ahead());
   };
   std::optional<ScanSnapshot> before;
   if (!params_.exact_scan && !outside && !skips_motion()) {
@@ -123,11 +125,21 @@ void Ans1::run_scan() {
   if (!changed_outside_ && skips_motion()) {
     if (scan_repeats()) { // asleep until a deadline, or until the GMP leaves quiet_, or wake()
       quiet_ = quiet_interval();
+      if (position_.sensor == SensorType::Resolver) {
+        walking_peaks_ = true;
+        walk_base_ = walk_state_ = resolver_track();
+        walk_base_peak_ = walk_front_ = last_peak_;
+        walk_.clear();
+      }
       quiet_armed_ = true;
       edge_grid_ = now;
       count_at_edge_grid_ = transducer_count();
       next = grid_at_or_after(next_change());
-      schedule_count_leave(now);
+      if (walking_peaks_) {
+        walk_peaks();
+      } else {
+        schedule_count_leave(now);
+      }
     }
   } else if (before && !changed_outside_ && *before == snapshot()) {
     next = grid_at_or_after(next_change()); // asleep until then, or until wake()
@@ -198,6 +210,9 @@ Nanos Ans1::last_run_grid(Nanos now) const {
 }
 
 std::int64_t Ans1::count_at(Nanos g) const {
+  if (walking_peaks_) {
+    return track_at(g).count;
+  }
   if (quad_->waveform != nullptr) {
     return quad_->waveform->count_at(g) - quad_->base; // the scan at g runs after every edge at g
   }
@@ -224,9 +239,9 @@ void Ans1::record_idle_ticks(Nanos g, std::int64_t after) {
   for (Nanos tick = monitors_.next_idle_tick(); tick != Nanos::max() && grid_at_or_after(tick) <= g;
        tick = monitors_.next_idle_tick()) {
     const Nanos at = grid_at_or_after(tick);
-    monitors_.idle_tick(quad_->waveform != nullptr ? count_at(at)
-                        : at == edge_grid_         ? count_at_edge_grid_
-                                                   : after);
+    monitors_.idle_tick(quad_->waveform != nullptr || walking_peaks_ ? count_at(at)
+                        : at == edge_grid_                           ? count_at_edge_grid_
+                                                                     : after);
   }
 }
 
@@ -296,9 +311,103 @@ void Ans1::settle_position(Nanos ran) {
   }
   record_idle_ticks(ran, count_at(ran));
   const std::uint16_t at = global_position(count_at(ran), position_);
+  if (walking_peaks_) { // the count as the scan at `ran` left it, having read every peak up to it
+    // (the flags are the same at every peak read ahead: a peak that changes them wakes the scan)
+    const ResolverTrack t = track_at(ran);
+    resolver_count_ = t.count;
+    resolver_angle_ = t.angle;
+    last_peak_ = std::max(walk_base_peak_, peak_at_or_before(ran));
+    walking_peaks_ = false;
+    walk_.clear();
+    scheduler_.cancel(leave_event_);
+    leave_event_ = {};
+  }
   quiet_armed_ = false;
   gmp_ = previous_gmp_ = at;
   monitors_.settle_position(at);
+}
+
+// ---------------------------------------------------------------- while the resolver turns
+//
+// The scan reads the stators at the latest excitation peak (one per scan: the period is under
+// half the excitation's), so the count at grid point g is the track after every peak at or
+// before g. Stators that announce every change of their future (AnalogInput::on_revision: the
+// rig's follow the resolver node's CAN frames) give each future peak's reading now. While the
+// scan is at a fixed point (scan_repeats), the peaks are read ahead: the first whose reading
+// changes the fault flags or takes the GMP out of quiet_ wakes the scan at its time, as the
+// quadrature's leaving edge does (the scan at the grid point after it reads it); the count at
+// the skipped grid points is the track there (track_at). A revision drops what was read for the
+// peaks from its time on and reads them again.
+
+bool Ans1::resolver_read_ahead() const {
+  return !params_.exact_scan && !position_.slave_mode && position_.sensor == SensorType::Resolver &&
+         pins_.stator_sin != nullptr && pins_.stator_cos != nullptr &&
+         pins_.stator_sin->announces_revisions() && pins_.stator_cos->announces_revisions() &&
+         scan_period() <= excitation_.half_period();
+}
+
+Nanos Ans1::peak_at_or_before(Nanos t) const {
+  const Nanos peak = excitation_.latest_peak(t);
+  return peak <= t ? peak : Nanos::min();
+}
+
+Ans1::ResolverTrack Ans1::track_at(Nanos g) const {
+  const auto after = std::upper_bound(walk_.begin(), walk_.end(), g,
+                                      [](Nanos t, const PeakReading& r) { return t < r.peak; });
+  return after == walk_.begin() ? walk_base_ : std::prev(after)->track;
+}
+
+void Ans1::walk_peaks() {
+  if (!walking_peaks_) {
+    return;
+  }
+  // A few peaks at a time: the rig's stators are revised at every frame (a millisecond, ten
+  // peaks at 5 kHz), and what was read beyond is read again then.
+  constexpr int kPeaksAhead = 16;
+  for (int n = 0; n < kPeaksAhead; ++n) {
+    const Nanos peak = excitation_.next_peak(walk_front_);
+    const ResolverTrack next = read_peak(walk_state_, peak);
+    const bool flags_kept = next.seen == walk_state_.seen && next.fault_active == walk_state_.fault_active &&
+                            next.fault_latched == walk_state_.fault_latched;
+    if (!flags_kept || !quiet_.contains(global_position(next.count, position_))) {
+      schedule_leave_at(peak);
+      return;
+    }
+    if (next.count != walk_state_.count || next.angle != walk_state_.angle) {
+      walk_.push_back({peak, next});
+    }
+    walk_front_ = peak;
+    walk_state_ = next;
+  }
+  leave_event_ = scheduler_.at(walk_front_, [this] {
+    leave_event_ = {};
+    walk_peaks();
+  });
+}
+
+void Ans1::stators_revised() {
+  if (!walking_peaks_) {
+    return;
+  }
+  if (!resolver_read_ahead()) { // a stator no longer announces its changes: scan at the peaks
+    wake();
+    return;
+  }
+  const Nanos now = scheduler_.now();
+  while (!walk_.empty() && walk_.back().peak >= now) {
+    walk_.pop_back();
+  }
+  if (walk_front_ >= now) {
+    walk_state_ = walk_.empty() ? walk_base_ : walk_.back().track;
+    walk_front_ = std::max(walk_base_peak_, peak_at_or_before(now - Nanos{1}));
+  }
+  // Read again after everything else at this instant that may revise a stator (both stators
+  // follow one frame).
+  scheduler_.cancel(leave_event_);
+  leave_event_ = scheduler_.at(now, [this] {
+    leave_event_ = {};
+    walk_peaks();
+  });
 }
 
 } // namespace hilrig::models::ans1

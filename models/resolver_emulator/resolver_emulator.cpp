@@ -112,6 +112,7 @@ std::optional<ResolverAnchor> ResolverEmulator::last_frame() const {
 }
 
 void ResolverEmulator::on_timeout(TimeoutHandler handler) { timeout_handler_ = std::move(handler); }
+void ResolverEmulator::on_frame(FrameHandler handler) { frame_handler_ = std::move(handler); }
 
 void ResolverEmulator::receive(const CanFrame& frame, Nanos at) {
   State& s = *state_;
@@ -142,6 +143,7 @@ void ResolverEmulator::receive(const CanFrame& frame, Nanos at) {
   s.push(ResolverAnchor{at, wrap(decoded->angle_turns), decoded->speed_turns_per_s, decoded->valid,
                         decoded->sin_open, decoded->cos_open});
   arm_timeout(at);
+  if (frame_handler_) frame_handler_();
 }
 
 void ResolverEmulator::arm_timeout(Nanos last_frame) {

@@ -61,6 +61,7 @@ struct ResolverAnchor {
 class ResolverEmulator {
 public:
   using TimeoutHandler = std::function<void(Nanos at)>;
+  using FrameHandler = std::function<void()>;
 
   // Attaches to `port` (the node's side of the bus). Throws std::invalid_argument for an
   // excitation outside 2.2..7 kHz, a non-positive amplitude, TR or frame period, a channel
@@ -82,6 +83,9 @@ public:
 
   // Called when the frame timeout expires, with its time.
   void on_timeout(TimeoutHandler handler);
+  // Called after each frame the node takes: from then on its angle may differ from what it
+  // interpolated before (a reader sampling ahead of time reads again).
+  void on_frame(FrameHandler handler);
 
   // The interpolated angle in turns (wrapped to [0, 1)) at t, or empty when the node does
   // not drive its stators then (no frame yet, frame invalid, or timed out).
@@ -105,6 +109,7 @@ private:
   std::shared_ptr<State> state_;
   EventId timeout_event_{};
   TimeoutHandler timeout_handler_;
+  FrameHandler frame_handler_;
   // The port's receive handler outlives the node (CanPort has no detach): it checks this.
   std::shared_ptr<ResolverEmulator*> self_;
 };

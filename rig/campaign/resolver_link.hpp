@@ -10,6 +10,7 @@
 // begins (the run's first frame arrives a frame time, ~0.23 ms, into it); like the node, the
 // stators carry nothing after a frame timeout or an invalid frame.
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ public:
   // A stator as the board's pin carries it: the resolver's carrier at the node's angle.
   [[nodiscard]] Waveform stator(const ResolverSpec& resolver, Stator which,
                                 std::vector<StatorRatioWindow> faults) const;
+
+  // Called after each frame the node takes: the stators' values from then on may change.
+  void on_frame(std::function<void()> handler) { node_->on_frame(std::move(handler)); }
 
   [[nodiscard]] const models::resolver_emulator::ResolverEmulator& node() const { return *node_; }
   [[nodiscard]] const models::resolver_emulator::AngleStreamer& streamer() const { return streamer_; }

@@ -213,8 +213,15 @@ private:
     resolver_ = std::make_unique<ResolverLink>(sched_, bus_, std::move(shaft), s_.encoder.counts_per_turn());
     const Waveform sin = resolver_->stator(r, Stator::Sine, stator_fault_windows(s_, Stator::Sine));
     const Waveform cos = resolver_->stator(r, Stator::Cosine, stator_fault_windows(s_, Stator::Cosine));
-    bus_.analog(r.sin_line).set_waveform(sin);
-    bus_.analog(r.cos_line).set_waveform(cos);
+    // The stators follow the node's frames: each frame revises them from its arrival on.
+    virt::AnalogChannel& sin_channel = bus_.analog(r.sin_line);
+    virt::AnalogChannel& cos_channel = bus_.analog(r.cos_line);
+    sin_channel.set_waveform(sin, virt::AnalogChannel::Future::Revised);
+    cos_channel.set_waveform(cos, virt::AnalogChannel::Future::Revised);
+    resolver_->on_frame([&sin_channel, &cos_channel] {
+      sin_channel.revise();
+      if (&cos_channel != &sin_channel) cos_channel.revise();
+    });
     trace_stators(sched_, *trace_, r, sin, cos, s_.end);
     resolver_->start(at_start);
   }
