@@ -56,8 +56,8 @@ public:
   }
 
 private:
-  // The totals first, then the bins: a wake-up of a few us touches one cache line for the
-  // totals and the first bins, not also the line 80 KB further on.
+  // The totals first, then the bins: a wake-up writes the totals near the low bins it lands
+  // in, not 80 KB past them on another page.
   std::uint64_t overflow_ = 0;
   std::uint64_t count_ = 0;
   std::uint64_t sum_ns_ = 0;
