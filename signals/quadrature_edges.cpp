@@ -26,6 +26,7 @@ bool QuadratureEdgeSolver::load_segment(std::size_t i) {
   const Segment& s = (*segments_)[i];
   if (s.start >= until_) {
     next_segment_ = segments_->size();
+    more_ = nullptr; // nothing later is solved
     return false;
   }
   Nanos end = s.duration == Nanos::max() ? until_ : std::min(s.end(), until_);
@@ -91,11 +92,18 @@ bool QuadratureEdgeSolver::advance() {
     start_piece(piece_ + 1);
     return true;
   }
-  while (next_segment_ < segments_->size()) {
-    const std::size_t i = next_segment_++;
-    if (load_segment(i)) {
-      start_piece(0);
-      return true;
+  for (;;) {
+    while (next_segment_ < segments_->size()) {
+      const std::size_t i = next_segment_++;
+      if (load_segment(i)) {
+        start_piece(0);
+        return true;
+      }
+    }
+    if (!more_) break;
+    if (!more_()) {
+      more_ = nullptr; // the profile is whole
+      break;
     }
   }
   pieces_ = 0;

@@ -14,7 +14,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "signals/motion_profile.hpp"
@@ -33,6 +35,11 @@ public:
   // together) in time order; returns how many were written, 0 once every edge is out.
   std::size_t fill(std::span<QuadEdge> out);
 
+  // A profile that its owner appends to as the edges are asked for: when the solver has used
+  // every segment it calls `more`, which appends segments to the profile (true) or says that
+  // none will come (false). The edges are those of the whole profile solved at once.
+  void grow_with(std::function<bool()> more) { more_ = std::move(more); }
+
   [[nodiscard]] std::int64_t initial_count() const { return initial_count_; }
   [[nodiscard]] std::int64_t count() const { return count_; } // after the last edge written
   [[nodiscard]] bool done() const { return done_; }
@@ -43,6 +50,7 @@ private:
   void start_piece(int piece);
 
   const std::vector<Segment>* segments_;
+  std::function<bool()> more_;
   QuadratureEncoder encoder_;
   double counts_per_unit_ = 0;
   Nanos until_;

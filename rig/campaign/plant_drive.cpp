@@ -86,6 +86,7 @@ void PlantDrive::apply(plants::PlantInput which, bool level) {
 void PlantDrive::resolve() {
   ++generation_;
   solver_ = std::make_unique<signals::QuadratureEdgeSolver>(motion_.plan(), encoder_, s_.end);
+  solver_->grow_with([this] { return motion_.grow(); });
   next_ = filled_ = 0;
   // The new plan starts where the old one was at this instant; a count that rounding puts
   // on the other side of an edge is set right here, once.

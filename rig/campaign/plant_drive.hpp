@@ -65,7 +65,9 @@ private:
   PlantMotion motion_;
   signals::QuadratureEncoder encoder_;
   std::unique_ptr<signals::QuadratureEdgeSolver> solver_;
-  std::array<signals::QuadEdge, 64> buffer_{};
+  // One edge (and its Z edge) at a time: the solver integrates the plan only as far as the
+  // next edge, and the next input usually replaces the plan before the edge after.
+  std::array<signals::QuadEdge, 2> buffer_{};
   std::size_t next_ = 0, filled_ = 0;
   std::uint64_t generation_ = 0; // edges scheduled under an older plan are dropped
   std::int64_t count_ = 0;

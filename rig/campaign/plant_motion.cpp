@@ -61,6 +61,7 @@ void PlantMotion::input(Nanos t, plants::PlantInput which, bool level) {
 
 void PlantMotion::extend() {
   if (live_ == nullptr || plan_end() >= end_) return;
+  plan_all();
   for (const signals::Segment& s : plan_.segments()) history_.push_back(s);
   history_standstills_.insert(history_standstills_.end(), plan_standstills_.begin(), plan_standstills_.end());
   // On from the played plan's end position exactly (its segments chain in closed form, a
@@ -71,15 +72,31 @@ void PlantMotion::extend() {
 void PlantMotion::plan_from(std::unique_ptr<plants::Plant> plant, double start) {
   checkpoint_ = plant->clone();
   const plants::Knot at = plant->state();
-  const Nanos until = at.time < end_ - ahead_ ? at.time + ahead_ : end_;
-  std::vector<signals::Segment> segments;
-  const std::size_t known = plant->standstills().size();
-  integrate(*plant, until, segments);
-  plan_standstills_.assign(plant->standstills().begin() + static_cast<std::ptrdiff_t>(known),
-                           plant->standstills().end());
+  horizon_ = at.time < end_ - ahead_ ? at.time + ahead_ : end_;
+  live_known_ = plant->standstills().size();
+  plan_standstills_.clear();
   plan_ = signals::MotionProfile(start, at.time);
-  for (const signals::Segment& s : segments) plan_.append(s);
   live_ = std::move(plant);
+  grow();
+}
+
+// The knots integrate() would give on its way to the horizon, a few at a time: the same
+// advance() calls, so the same segments.
+bool PlantMotion::grow() const {
+  plants::Knot prev = live_->state();
+  if (prev.time >= horizon_) return false;
+  for (int knots = 0; knots < kGrowKnots && prev.time < horizon_; ++knots) {
+    const plants::Knot k = live_->advance(horizon_);
+    if (k.time > prev.time) plan_.append(segment(prev, k));
+    prev = k;
+  }
+  const std::vector<Nanos>& located = live_->standstills();
+  for (; live_known_ < located.size(); ++live_known_) plan_standstills_.push_back(located[live_known_]);
+  return true;
+}
+
+void PlantMotion::plan_through(Nanos t) const {
+  while (plan_.end_time() <= t && grow()) {}
 }
 
 // The segment of the history holding t (the last one starting at or before it; the history's
@@ -92,18 +109,21 @@ const signals::Segment* PlantMotion::history_at(Nanos t) const {
 }
 
 double PlantMotion::position(Nanos t) const {
+  plan_through(t);
   const signals::Segment* s = history_at(t);
   if (s == nullptr) return plan_.position(t);
   return t < s->start ? s->position : s->position_at(t);
 }
 
 double PlantMotion::velocity(Nanos t) const {
+  plan_through(t);
   const signals::Segment* s = history_at(t);
   if (s == nullptr) return plan_.velocity(t);
   return t < s->start ? 0.0 : s->velocity_at(t);
 }
 
 signals::MotionProfile PlantMotion::trajectory() const {
+  plan_all();
   const double start = history_.empty() ? plan_.position(plan_.start_time()) : history_.front().position;
   const Nanos t0 = history_.empty() ? plan_.start_time() : history_.front().start;
   signals::MotionProfile p(start, t0);
@@ -113,6 +133,7 @@ signals::MotionProfile PlantMotion::trajectory() const {
 }
 
 std::vector<checks::PositionSample> PlantMotion::samples() const {
+  plan_all();
   std::vector<checks::PositionSample> out;
   const auto add = [&](const signals::Segment& s) { checks::append_motion(out, {s.start, s.position}); };
   for (const signals::Segment& s : history_) add(s);
@@ -123,6 +144,7 @@ std::vector<checks::PositionSample> PlantMotion::samples() const {
 }
 
 std::vector<Nanos> PlantMotion::standstills() const {
+  plan_all();
   std::vector<Nanos> out = history_standstills_;
   out.insert(out.end(), plan_standstills_.begin(), plan_standstills_.end());
   return out;

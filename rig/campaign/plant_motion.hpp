@@ -31,18 +31,24 @@ public:
   // Plans from the plant's start to `end`.
   PlantMotion(const PlantSpec& spec, double counts_per_turn, Nanos end);
 
-  // The plan from the last input on (counts, counts/s): what the encoder plays now.
+  // The plan from the last input on (counts, counts/s): what the encoder plays now. It is
+  // integrated as it is read (a stepper's next pulse usually replaces it a few steps in):
+  // plan() holds its segments so far, grow() appends the next few knots' (false once it
+  // reaches plan_end()). The segments are the same whenever they are integrated.
   [[nodiscard]] const signals::MotionProfile& plan() const { return plan_; }
+  bool grow() const;
   // An input changes at t (>= the last input's time): the plan is redone from t.
   void input(Nanos t, plants::PlantInput which, bool level);
   // When the plan ends (the campaign's end, or its horizon).
-  [[nodiscard]] Nanos plan_end() const { return plan_.end_time(); }
+  [[nodiscard]] Nanos plan_end() const { return horizon_; }
   // The shaft reached plan_end() (< the campaign's end): the plan so far becomes history and
   // the next one runs on from where it ended, the same steps it would have taken.
   void extend();
 
   // Integration steps a plan reaches ahead of its start.
   static constexpr std::int64_t kPlanSteps = 128;
+  // Knots grow() integrates at a time.
+  static constexpr int kGrowKnots = 8;
 
   // The shaft's position at t in counts: the history before the last input, the plan from
   // it on (what a resolver's stators carry; the board samples at or before now).
@@ -65,16 +71,22 @@ private:
   // The plan from `plant`'s state (which becomes the checkpoint) to the horizon, starting at
   // `start` counts.
   void plan_from(std::unique_ptr<plants::Plant> plant, double start);
+  // Grows the plan until it holds t (a segment ending after t) or reaches its horizon.
+  void plan_through(Nanos t) const;
+  void plan_all() const { plan_through(Nanos::max()); }
 
   double per_rad_;
   Nanos end_;
   Nanos ahead_;                               // a plan's horizon
   std::unique_ptr<plants::Plant> checkpoint_; // the plant at the plan's start
-  std::unique_ptr<plants::Plant> live_;       // the plant at the plan's end
   std::vector<signals::Segment> history_;     // before the last input
   std::vector<Nanos> history_standstills_;
-  signals::MotionProfile plan_;
-  std::vector<Nanos> plan_standstills_;
+  Nanos horizon_; // where the plan ends
+  // The plan as integrated so far (logically const: a function of the checkpoint).
+  mutable std::unique_ptr<plants::Plant> live_; // the plant where the plan's segments end
+  mutable std::size_t live_known_ = 0;          // live_'s standstills already in plan_standstills_
+  mutable signals::MotionProfile plan_;
+  mutable std::vector<Nanos> plan_standstills_;
 };
 
 } // namespace hilrig::campaign
