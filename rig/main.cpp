@@ -4,8 +4,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <iterator>
+#include <string>
+#include <string_view>
 
 #include "rig/cli/check_command.hpp"
 #include "rig/cli/compare_command.hpp"
@@ -20,20 +24,39 @@
 #include "rig/cli/usage_hints.hpp"
 #include "rig/results/results_json.hpp"
 
+namespace {
+
+struct Command {
+  const char* name;
+  void (*add)(CLI::App&);
+};
+
+// In the order `hilrig --help` lists them.
+constexpr Command kCommands[] = {
+    {"synth", hilrig::cli::add_synth_command},     {"run", hilrig::cli::add_run_command},
+    {"check", hilrig::cli::add_check_command},     {"list", hilrig::cli::add_list_command},
+    {"compare", hilrig::cli::add_compare_command}, {"merge", hilrig::cli::add_merge_command},
+    {"serve", hilrig::cli::add_serve_command},     {"latency", hilrig::cli::add_latency_command},
+    {"power", hilrig::cli::add_power_command},     {"trend", hilrig::cli::add_trend_command},
+};
+
+} // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"hilrig: a real-time hardware-in-the-loop test rig for AMCI boards"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("hilrig ") + hilrig::rig::tool_version());
-  hilrig::cli::add_synth_command(app);
-  hilrig::cli::add_run_command(app);
-  hilrig::cli::add_check_command(app);
-  hilrig::cli::add_list_command(app);
-  hilrig::cli::add_compare_command(app);
-  hilrig::cli::add_merge_command(app);
-  hilrig::cli::add_serve_command(app);
-  hilrig::cli::add_latency_command(app);
-  hilrig::cli::add_power_command(app);
-  hilrig::cli::add_trend_command(app);
+  // A command line that starts with a command's name builds only that command's options
+  // (building all of them is most of a short run's start-up); any other (--help, --version,
+  // a mistyped or missing command) builds them all, for the listing and the hints.
+  const std::string_view first = argc > 1 ? std::string_view(argv[1]) : std::string_view();
+  const auto* chosen = std::find_if(std::begin(kCommands), std::end(kCommands),
+                                    [&](const Command& c) { return first == c.name; });
+  if (chosen != std::end(kCommands)) {
+    chosen->add(app);
+  } else {
+    for (const Command& c : kCommands) c.add(app);
+  }
   if (const auto problem = hilrig::cli::unknown_word(app, argc, argv)) {
     std::fprintf(stderr, "%s\n", problem->c_str());
     return 2; // bad input, as every usage error
