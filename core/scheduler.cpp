@@ -41,6 +41,23 @@ EventId Scheduler::at(Nanos t, Action action, Tie tie) {
   return EventId{slot, s.generation};
 }
 
+void Scheduler::stream_at(EventStream& stream, Nanos t) {
+  if (t < now()) throw std::logic_error("Scheduler: stream event scheduled in the past");
+  if (stream_pending_ || (stream_ != nullptr && stream_ != &stream))
+    throw std::logic_error("Scheduler: one stream, one pending event of it");
+  stream_ = &stream;
+  stream_next_ = Entry{t.count(), next_seq_++, 0, 0};
+  stream_pending_ = true;
+  ++live_;
+}
+
+bool Scheduler::stream_first() const {
+  if (!stream_pending_) return false;
+  if (heap_.empty()) return true;
+  const Entry& top = heap_.front();
+  return stream_next_.time != top.time ? stream_next_.time < top.time : stream_next_.seq < top.seq;
+}
+
 void Scheduler::heap_push(const Entry& e) {
   heap_.push_back(e);
   std::size_t i = heap_.size() - 1;
@@ -126,11 +143,22 @@ void Scheduler::drop_dead_top() {
 
 Nanos Scheduler::next_time() {
   drop_dead_top();
+  if (stream_first()) return Nanos{stream_next_.time};
   return heap_.empty() ? Nanos::max() : Nanos{heap_.front().time};
 }
 
 bool Scheduler::step() {
   drop_dead_top();
+  if (stream_first()) {
+    stream_pending_ = false;
+    --live_;
+    clock_.advance_to(Nanos{stream_next_.time});
+    ++executed_;
+    ordinary_running_ = true;
+    stream_->fire();
+    ordinary_running_ = false;
+    return true;
+  }
   if (heap_.empty()) {
     return false;
   }

@@ -17,6 +17,16 @@ struct EventId {
   [[nodiscard]] bool valid() const { return slot != UINT32_MAX; }
 };
 
+// A run of ordinary events, each scheduled by the one before (the rig's encoder edges): the
+// scheduler keeps its next event outside the heap (Scheduler::stream_at).
+class EventStream {
+public:
+  virtual void fire() = 0;
+
+protected:
+  ~EventStream() = default;
+};
+
 class Scheduler {
 public:
   using Action = std::function<void()>;
@@ -40,6 +50,12 @@ public:
   // Schedules at an absolute time; a time before now() is a logic error and throws.
   EventId at(Nanos t, Action action, Tie tie = Tie::InOrder);
   EventId after(Nanos delay, Action action) { return at(now() + delay, std::move(action)); }
+
+  // The stream's next event at t: as at(t, [&] { stream.fire(); }) -- the same time and
+  // sequence number, so it orders among the others exactly as that event would -- without a
+  // heap entry, a slot or an Action. One stream per scheduler, at most one event of it pending;
+  // a time before now() is a logic error and throws.
+  void stream_at(EventStream& stream, Nanos t);
 
   // True when the event was still pending (and now never runs).
   bool cancel(EventId id);
@@ -84,7 +100,13 @@ private:
   void heap_push(const Entry& e);
   void heap_pop();
 
+  // True when the stream's pending event runs before the heap's top (drop_dead_top() first).
+  [[nodiscard]] bool stream_first() const;
+
   VirtualClock clock_;
+  EventStream* stream_ = nullptr;
+  Entry stream_next_{}; // valid while stream_pending_; slot and generation unused
+  bool stream_pending_ = false;
   std::vector<Entry> heap_;
   std::vector<Slot> slots_;
   std::vector<std::uint32_t> free_;

@@ -48,7 +48,7 @@ void RigDrive::start(const std::vector<Stimulus>& faults, const std::optional<St
   for (const Stimulus& f : s_.stimuli)
     if (f.kind == StimulusKind::MissingEdges) missing_.push_back(MissingEdges{f, 0});
   next_edge_ = pull_edge();
-  if (next_edge_ && next_edge_->time <= s_.end) sched_.at(next_edge_->time, [this] { encoder_edge(); });
+  schedule_edge();
 
   for (const Stimulus& st : s_.stimuli) schedule(st);
   for (const Stimulus& st : faults) schedule(st);
@@ -86,7 +86,15 @@ void RigDrive::encoder_edge() {
   }
   if (line != nullptr && !lost) line->want(e.level);
   next_edge_ = pull_edge();
-  if (next_edge_ && next_edge_->time <= s_.end) sched_.at(next_edge_->time, [this] { encoder_edge(); });
+  schedule_edge();
+}
+
+void RigDrive::schedule_edge() {
+  if (!next_edge_ || next_edge_->time > s_.end) return;
+  if (heap_edges_)
+    sched_.at(next_edge_->time, [this] { encoder_edge(); });
+  else
+    sched_.stream_at(*this, next_edge_->time);
 }
 
 void RigDrive::schedule(const Stimulus& st) {

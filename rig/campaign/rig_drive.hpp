@@ -29,7 +29,9 @@ class ShaftTrace; // rig/campaign/run_trace.hpp
 // turn), count = floor(position): what the rig plays, from a motion or a plant.
 [[nodiscard]] signals::QuadratureEncoder rig_encoder(const EncoderSpec& spec);
 
-class RigDrive {
+// Its encoder edges are the scheduler's EventStream: one ordinary event per edge, ordered as
+// a scheduled event would be, without a heap entry each.
+class RigDrive final : private EventStream {
 public:
   // The scheduler, scenario and motion outlive the drive.
   RigDrive(Scheduler& scheduler, const Scenario& scenario, const BuiltMotion& motion);
@@ -44,6 +46,10 @@ public:
   // Schedules everything up to the scenario's end. Throws RigFault for a stimulus on a
   // line the rig does not own.
   void start(const std::vector<Stimulus>& faults, const std::optional<Stimulus>& probe, bool record_motion);
+
+  // Each edge as an ordinary heap event (Scheduler::at), not the stream: the oracle's engine
+  // (--exact-scan), so the differential test compares the stream with it. Before start().
+  void edges_as_heap_events() { heap_edges_ = true; }
 
   [[nodiscard]] std::int64_t count() const { return count_; }
   // Every count change from now on also goes to `shaft` (the run's trace).
@@ -68,7 +74,10 @@ private:
   };
 
   DrivenLine* find(std::string_view rig);
+  void fire() override { encoder_edge(); }
   void encoder_edge();
+  // Schedules next_edge_ (when there is one by the end).
+  void schedule_edge();
   // The next A/B edge from the solver, or nothing when the motion has no more.
   [[nodiscard]] std::optional<signals::QuadEdge> pull_edge();
   void schedule(const Stimulus& st);
@@ -90,6 +99,7 @@ private:
   std::int64_t count_ = 0;
   ShaftTrace* shaft_ = nullptr;
   bool record_motion_ = true;
+  bool heap_edges_ = false;
   std::vector<checks::PositionSample> motion_;
 };
 

@@ -64,7 +64,10 @@ public:
     drive_resolver();
     drive_ssi();
     dut_ = info->make(sched_, dut_params(*info, s_.dut), in_.variant, in_.seed);
-    if (in_.exact_scan) dut_->scan_every_period();
+    if (in_.exact_scan) {
+      dut_->scan_every_period();
+      drive_.edges_as_heap_events();
+    }
     sample_encoder();
     std::map<std::string, std::string, std::less<>> pins;
     for (const Wire& w : s_.wiring) pins[w.board] = w.rig;

@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <functional>
 #include <random>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 using namespace hilrig;
@@ -51,4 +55,87 @@ TEST(SchedulerProperty, RunOrderIsTimeThenSchedulingOrder) {
     EXPECT_EQ(s.executed(), ran.size());
     EXPECT_EQ(s.pending_count(), 0U);
   }
+}
+
+namespace {
+
+// A chain of events each scheduling the next (the rig's encoder edges), either as the
+// scheduler's stream or as ordinary events.
+class Chain final : public EventStream {
+public:
+  Chain(Scheduler& s, bool as_stream, std::function<void()> body)
+      : s_(s), stream_(as_stream), body_(std::move(body)) {}
+  void next_at(Nanos t) {
+    if (stream_)
+      s_.stream_at(*this, t);
+    else
+      s_.at(t, [this] { fire(); });
+  }
+  void fire() override { body_(); }
+
+private:
+  Scheduler& s_;
+  bool stream_;
+  std::function<void()> body_;
+};
+
+// What ran, when, and whether Last events at that time had run, for one seed and engine.
+std::vector<std::int64_t> run_chain_program(std::uint32_t seed, bool as_stream) {
+  std::mt19937 rng(seed);
+  auto next = [&rng] { return static_cast<std::int64_t>(rng() % 1000); };
+  Scheduler s;
+  std::vector<std::int64_t> log;
+  int tags = 0;
+  std::function<void(std::int64_t, bool)> add = [&](std::int64_t t, bool last) {
+    const int tag = tags++;
+    s.at(
+        Nanos{t},
+        [&, tag] {
+          log.insert(log.end(), {tag, s.now().count(), s.ordinary_event_running() ? 1 : 0});
+          if (next() % 3 == 0 && tags < 4000) add(s.now().count() + next() % 7, next() % 4 == 0);
+        },
+        last ? Scheduler::Tie::Last : Scheduler::Tie::InOrder);
+  };
+  int links = 0;
+  Chain* chain = nullptr;
+  Chain c(s, as_stream, [&] {
+    log.insert(log.end(), {-1, s.now().count(), s.ordinary_event_running() ? 1 : 0});
+    if (next() % 2 == 0 && tags < 4000) add(s.now().count() + next() % 5, next() % 4 == 0);
+    if (++links < 3000) chain->next_at(s.now() + Nanos{next() % 4}); // 0: two links at one instant
+  });
+  chain = &c;
+  for (int i = 0; i < 300; ++i) add(next() % 100, next() % 4 == 0);
+  chain->next_at(Nanos{next() % 10});
+  for (int i = 0; i < 300; ++i) add(next() % 100, next() % 4 == 0);
+  s.run_until_idle();
+  log.push_back(static_cast<std::int64_t>(s.executed()));
+  return log;
+}
+
+} // namespace
+
+// The stream's events run exactly where the same chain of ordinary events runs: same instants,
+// same order among ties (ordinary events before and after it by scheduling order, Last events
+// after), under many ties and events that schedule more events (fixed seeds).
+TEST(SchedulerProperty, StreamRunsWhereTheSameOrdinaryEventsRun) {
+  for (std::uint32_t seed = 1; seed <= 30; ++seed) {
+    const std::vector<std::int64_t> heap = run_chain_program(seed, false);
+    const std::vector<std::int64_t> stream = run_chain_program(seed, true);
+    ASSERT_GT(heap.size(), 3000u * 3);
+    ASSERT_EQ(stream, heap) << "seed " << seed;
+  }
+}
+
+TEST(SchedulerProperty, StreamEventInThePastOrASecondPendingOneThrows) {
+  Scheduler s;
+  Chain c(s, true, [] {});
+  s.run_until(Nanos{10});
+  EXPECT_THROW(c.next_at(Nanos{9}), std::logic_error);
+  c.next_at(Nanos{12});
+  EXPECT_THROW(c.next_at(Nanos{13}), std::logic_error);
+  EXPECT_EQ(s.pending_count(), 1u);
+  EXPECT_EQ(s.next_time(), Nanos{12});
+  s.run_until_idle();
+  EXPECT_EQ(s.pending_count(), 0u);
+  EXPECT_EQ(s.now(), Nanos{12});
 }
