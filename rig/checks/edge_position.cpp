@@ -48,11 +48,15 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
     auto [want, how] = expected(s);
     const double fired = nearest_wrap(position(e.time), want, c.modulus);
     std::optional<TraceWindow> window;
-    if (s != 0.0) {
-      // Position is inside the tolerance from t(want - tol) to t(want + tol); linear at speed s.
-      const auto at = [&](double pos) { return e.time + Nanos::from_seconds((pos - fired) / s); };
-      Nanos a = at(want - c.tolerance);
-      Nanos b = at(want + c.tolerance);
+    // Position is inside the tolerance from t(want - tol) to t(want + tol); linear at speed s.
+    // Only when those are times: a speed or position that is not a number (or a speed so
+    // small the window outlasts 64-bit nanoseconds) has no window, and its measurement errs.
+    const double to_lo = (want - c.tolerance - fired) / s;
+    const double to_hi = (want + c.tolerance - fired) / s;
+    constexpr double kMaxSeconds = 9e9;                                               // |Nanos| < 9.2e18
+    if (s != 0.0 && std::abs(to_lo) < kMaxSeconds && std::abs(to_hi) < kMaxSeconds) { // false for NaN
+      Nanos a = e.time + Nanos::from_seconds(to_lo);
+      Nanos b = e.time + Nanos::from_seconds(to_hi);
       if (b < a) std::swap(a, b);
       window = TraceWindow{a, b};
     }

@@ -15,7 +15,16 @@ Measurement measure(std::string name, double value, std::string unit, std::optio
   m.lower = lower;
   m.upper = upper;
   m.outcome = rig::judge(value, lower, upper);
-  m.detail = std::isfinite(value) ? std::move(detail) : "not a number: " + detail;
+  // The reason a value or limit judged nothing (judge(): Error) leads the sentence.
+  const auto finite = [](std::optional<double> v) { return !v || std::isfinite(*v); };
+  if (std::isnan(value))
+    m.detail = "not a number: " + detail;
+  else if (!std::isfinite(value))
+    m.detail = "not a finite number: " + detail;
+  else if (!finite(lower) || !finite(upper))
+    m.detail = "a limit is not a finite number: " + detail;
+  else
+    m.detail = std::move(detail);
   m.window = window;
   m.at = at;
   return m;

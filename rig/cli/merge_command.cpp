@@ -53,16 +53,21 @@ int run_merge(const MergeArgs& a) {
       relink_traces(shards.back(), path, a.out);
     }
     const rig::CampaignResult merged = rig::merge_shards(std::move(shards), a.shards);
-    rig::write_results_file(a.out, merged);
     // The wall-clock facts the shards kept: the first shard's start and host. Each run's wall
-    // time is not in results.json: the testcases' time is 0.
+    // time is not in results.json: the testcases carry no time (rig/results/junit.hpp).
     rig::JunitClock clock;
     if (merged.started_at) clock.started_at = *merged.started_at;
     if (merged.host) clock.hostname = *merged.host;
     const fs::path junit = beside(a.out, "junit.xml");
     const fs::path report = beside(a.out, "report.html");
-    rig::write_file_atomically(junit, rig::to_junit_xml(merged, clock));
-    rig::write_file_atomically(report, rig::to_report_html(merged));
+    // Every text is made before the first is written: a result that cannot be written whole
+    // (a figure that throws) leaves no merged results.json without its junit.xml.
+    const std::string results_text = rig::to_json_text(merged);
+    const std::string junit_text = rig::to_junit_xml(merged, clock);
+    const std::string report_text = rig::to_report_html(merged);
+    rig::write_file_atomically(a.out, results_text);
+    rig::write_file_atomically(junit, junit_text);
+    rig::write_file_atomically(report, report_text);
     std::fputs(fmt::format("merged {} shards: {} runs, verdict {}; wrote {}, {}, {}\n", a.shards.size(),
                            merged.runs.size(), rig::to_string(merged.verdict), a.out, junit.string(),
                            report.string())

@@ -124,11 +124,13 @@ struct Observation {
 //    kCompareEpsilon * max(1, |limit|) of a limit is at the limit. It absorbs the rounding of
 //    double arithmetic (101.00000000000003 against 101) and nothing a board could show: a
 //    nanosecond at 10^6 counts/s is already 10^-3 counts.
-//  - A value that is not a finite number is an Error: nothing was judged.
+//  - A value or a limit that is not a finite number is an Error: nothing was judged (every
+//    comparison with NaN is false, so a NaN limit would otherwise pass any value).
 inline constexpr double kCompareEpsilon = 1e-9;
 
 [[nodiscard]] inline Outcome judge(double value, std::optional<double> lower, std::optional<double> upper) {
   if (!std::isfinite(value)) return Outcome::Error;
+  if ((lower && !std::isfinite(*lower)) || (upper && !std::isfinite(*upper))) return Outcome::Error;
   const auto slack = [](double limit) { return kCompareEpsilon * std::max(1.0, std::abs(limit)); };
   if (lower && value < *lower - slack(*lower)) return Outcome::Fail;
   if (upper && value > *upper + slack(*upper)) return Outcome::Fail;

@@ -42,6 +42,38 @@ template <class T> T get(const json& j, const char* key, const char* where) {
   }
 }
 
+// A number our writer wrote: nlohmann writes a double that is not finite (NaN, +-inf) as null,
+// so every reader of a double takes null back as NaN (a NaN reads "not a number" in every
+// output and is never judged a pass); anything else that is not a number is refused.
+double real_or_nan(const json& v, const char* what) {
+  if (v.is_null()) return std::numeric_limits<double>::quiet_NaN();
+  if (!v.is_number())
+    throw std::runtime_error(fmt::format("results: {} is {}, not a number", what, v.type_name()));
+  return v.get<double>();
+}
+
+// An array field: iterating anything else would take an object's values, or a single value,
+// as if they were its elements.
+const json& array_field(const json& j, const char* key, const char* where) {
+  const json& v = field(j, key, where);
+  if (!v.is_array())
+    throw std::runtime_error(fmt::format("results: {}.{} is {}, not an array", where, key, v.type_name()));
+  return v;
+}
+
+// Runs f(element, i) for each element, naming the element ("checks[2]: ...") in what it throws.
+template <class F> void each_of(const json& array, const char* key, F f) {
+  std::size_t i = 0;
+  for (const auto& e : array) {
+    try {
+      f(e);
+    } catch (const std::exception& x) {
+      throw std::runtime_error(fmt::format("{}[{}]: {}", key, i, x.what()));
+    }
+    ++i;
+  }
+}
+
 std::optional<double> get_opt(const json& j, const char* key, const char* where) {
   const json& v = field(j, key, where);
   if (v.is_null()) return std::nullopt;
@@ -69,12 +101,17 @@ Measurement measurement_from(const json& j) {
   const char* w = "measurement";
   Measurement m;
   m.name = get<std::string>(j, "name", w);
-  m.value =
-      field(j, "value", w).is_null() ? std::numeric_limits<double>::quiet_NaN() : get<double>(j, "value", w);
+  m.value = real_or_nan(field(j, "value", w), "a measurement's value");
   m.unit = get<std::string>(j, "unit", w);
   m.lower = get_opt(j, "lower", w);
   m.upper = get_opt(j, "upper", w);
   m.outcome = outcome_from(get<std::string>(j, "outcome", w));
+  // A value that is not a number judged nothing (judge()): a file saying it passed was edited.
+  if (m.outcome == Outcome::Pass && !std::isfinite(m.value))
+    throw std::runtime_error(
+        fmt::format("results: measurement '{}' has no value (null) but outcome 'pass': a "
+                    "value that is not a number is never a pass",
+                    m.name));
   m.detail = get<std::string>(j, "detail", w);
   const json& win = field(j, "window", w);
   if (!win.is_null()) {
@@ -122,11 +159,12 @@ LaneRole role_from(const std::string& s) {
 
 std::vector<WindowTrace> traces_from(const json& j) {
   std::vector<WindowTrace> out;
+  if (!j.is_array()) throw std::runtime_error("results: a check's 'traces' is not an array");
   for (const auto& t : j) {
     WindowTrace w{window_from(field(t, "around", "trace"), "trace around"),
                   window_from(field(t, "span", "trace"), "trace span"),
                   {}};
-    for (const auto& l : field(t, "lanes", "trace")) {
+    for (const auto& l : array_field(t, "lanes", "trace")) {
       TraceLane lane{get<std::string>(l, "name", "lane"),
                      role_from(get<std::string>(l, "role", "lane")),
                      {},
@@ -135,13 +173,14 @@ std::vector<WindowTrace> traces_from(const json& j) {
         if (!r->is_boolean()) throw std::runtime_error("results: a lane's 'real' is not true or false");
         lane.real = r->get<bool>();
       }
-      for (const auto& c : field(l, "changes", "lane")) {
+      for (const auto& c : array_field(l, "changes", "lane")) {
         if (!c.is_array() || c.size() != 2 || !c[0].is_number_integer() ||
-            !(lane.real ? c[1].is_number() : c[1].is_number_integer()))
+            !(lane.real ? c[1].is_number() || c[1].is_null() : c[1].is_number_integer()))
           throw std::runtime_error("results: a lane change is not [time_ns, value]");
-        lane.changes.push_back(lane.real
-                                   ? LaneChange{Nanos{c[0].get<std::int64_t>()}, 0, c[1].get<double>()}
-                                   : LaneChange{Nanos{c[0].get<std::int64_t>()}, c[1].get<std::int64_t>()});
+        lane.changes.push_back(
+            lane.real
+                ? LaneChange{Nanos{c[0].get<std::int64_t>()}, 0, real_or_nan(c[1], "a real lane's value")}
+                : LaneChange{Nanos{c[0].get<std::int64_t>()}, c[1].get<std::int64_t>()});
       }
       w.lanes.push_back(std::move(lane));
     }
@@ -184,23 +223,28 @@ CheckResult check_from(const json& j) {
   CheckResult c;
   c.check = get<std::string>(j, "check", w);
   c.kind = get<std::string>(j, "kind", w);
-  for (const auto& m : field(j, "measurements", w)) c.measurements.push_back(measurement_from(m));
-  for (const auto& s : field(j, "series", w)) {
-    c.series.push_back(Series{get<std::string>(s, "name", "series"), get<std::string>(s, "unit", "series"),
-                              get<std::vector<double>>(s, "values", "series")});
-  }
+  each_of(array_field(j, "measurements", w), "measurements",
+          [&](const json& m) { c.measurements.push_back(measurement_from(m)); });
+  each_of(array_field(j, "series", w), "series", [&](const json& s) {
+    Series series{get<std::string>(s, "name", "series"), get<std::string>(s, "unit", "series"), {}};
+    for (const auto& v : array_field(s, "values", "series"))
+      series.values.push_back(real_or_nan(v, "a series value"));
+    c.series.push_back(std::move(series));
+  });
   if (j.contains("probes"))
-    for (const auto& p : j.at("probes")) {
+    for (const auto& p : array_field(j, "probes", w)) {
       Probe probe{Nanos{get<std::int64_t>(p, "width_ns", "probe")}, get<bool>(p, "accepted", "probe")};
       if (p.contains("start_ns")) probe.start = Nanos{get<std::int64_t>(p, "start_ns", "probe")};
       c.probes.push_back(probe);
     }
   if (j.contains("traces")) c.traces = traces_from(j.at("traces"));
   if (j.contains("expected_rate"))
-    for (const auto& k : j.at("expected_rate")) {
-      if (!k.is_array() || k.size() != 2 || !k[0].is_number_integer() || !k[1].is_number())
+    for (const auto& k : array_field(j, "expected_rate", w)) {
+      if (!k.is_array() || k.size() != 2 || !k[0].is_number_integer() ||
+          !(k[1].is_number() || k[1].is_null()))
         throw std::runtime_error("results: an expected_rate knot is not [time_ns, steps/s]");
-      c.expected_rate.push_back(RatePoint{Nanos{k[0].get<std::int64_t>()}, k[1].get<double>()});
+      c.expected_rate.push_back(
+          RatePoint{Nanos{k[0].get<std::int64_t>()}, real_or_nan(k[1], "an expected_rate knot's rate")});
     }
   return c;
 }
@@ -217,12 +261,14 @@ json motion_json(const MotionRecord& m) {
 
 MotionRecord motion_from(const json& j) {
   MotionRecord m;
-  for (const auto& p : field(j, "points", "motion")) {
-    if (!p.is_array() || p.size() != 3)
+  for (const auto& p : array_field(j, "points", "motion")) {
+    if (!p.is_array() || p.size() != 3 || !p[0].is_number_integer())
       throw std::runtime_error("results: a motion point is not [time_ns, position, speed]");
-    m.points.push_back(MotionPoint{Nanos{p[0].get<std::int64_t>()}, p[1].get<double>(), p[2].get<double>()});
+    m.points.push_back(MotionPoint{Nanos{p[0].get<std::int64_t>()},
+                                   real_or_nan(p[1], "a motion point's position"),
+                                   real_or_nan(p[2], "a motion point's speed")});
   }
-  for (const auto& e : field(j, "events", "motion"))
+  for (const auto& e : array_field(j, "events", "motion"))
     m.events.push_back(MotionEvent{Nanos{get<std::int64_t>(e, "time_ns", "motion event")},
                                    get<std::string>(e, "what", "motion event")});
   return m;
@@ -272,12 +318,13 @@ RunResult run_from_json(const json& j) {
   r.must_catch = get<std::vector<std::string>>(j, "must_catch", w);
   r.error = str_or_empty(j, "error", w);
   if (j.contains("interrupted")) r.interrupted = get<bool>(j, "interrupted", w);
-  for (const auto& c : field(j, "checks", w)) r.checks.push_back(check_from(c));
-  for (const auto& o : field(j, "observations", w)) {
+  each_of(array_field(j, "checks", w), "checks", [&](const json& c) { r.checks.push_back(check_from(c)); });
+  each_of(array_field(j, "observations", w), "observations", [&](const json& o) {
     r.observations.push_back(Observation{
-        get<std::string>(o, "name", "observation"), get<double>(o, "value", "observation"),
+        get<std::string>(o, "name", "observation"),
+        real_or_nan(field(o, "value", "observation"), "an observation's value"),
         get<std::string>(o, "unit", "observation"), Nanos{get<std::int64_t>(o, "time_ns", "observation")}});
-  }
+  });
   if (j.contains("motion")) r.motion = motion_from(j.at("motion"));
   if (j.contains("trace")) r.trace = get<std::string>(j, "trace", w);
   return r;
@@ -372,12 +419,12 @@ CampaignResult campaign_from_json(const json& j) {
       throw std::runtime_error("results: trace_policy \"" + name + "\" is not all, failed or none");
     r.trace_policy = *policy;
   }
-  for (const auto& run : field(j, "runs", w)) r.runs.push_back(run_from_json(run));
+  each_of(array_field(j, "runs", w), "runs", [&](const json& run) { r.runs.push_back(run_from_json(run)); });
   if (j.contains("interrupted")) r.interrupted = get<std::string>(j, "interrupted", w);
   if (j.contains("wall_clock")) {
     const json& wc = j.at("wall_clock");
-    if (wc.contains("started_at")) r.started_at = wc.at("started_at").get<std::string>();
-    if (wc.contains("host")) r.host = wc.at("host").get<std::string>();
+    if (wc.contains("started_at")) r.started_at = get<std::string>(wc, "started_at", "wall_clock");
+    if (wc.contains("host")) r.host = get<std::string>(wc, "host", "wall_clock");
   }
   finalize(r);
   return r;
@@ -456,7 +503,7 @@ CampaignResult read_results_file(const std::filesystem::path& path) {
   }
   try {
     return campaign_from_json(j);
-  } catch (const std::runtime_error& e) {
+  } catch (const std::exception& e) { // a mistyped value nlohmann finds first, too
     throw std::runtime_error(fmt::format("{}: {}", path.string(), e.what()));
   }
 }

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -154,6 +156,15 @@ TEST(Boundary, TheRuleItself) {
   EXPECT_EQ(rig::judge(1e6 + 5e-4, std::nullopt, 1e6), Outcome::Pass);
   EXPECT_EQ(rig::judge(1e6 + 2e-3, std::nullopt, 1e6), Outcome::Fail);
   EXPECT_EQ(rig::judge(std::nan(""), std::nullopt, std::nullopt), Outcome::Error);
+  // A limit that is not a finite number judges nothing either: every comparison with NaN is
+  // false, so it would pass any value.
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const double bad : {std::nan(""), inf, -inf})
+    for (const double v : {-1e9, 0.0, 1e9}) {
+      EXPECT_EQ(rig::judge(v, bad, std::nullopt), Outcome::Error) << bad << " " << v;
+      EXPECT_EQ(rig::judge(v, std::nullopt, bad), Outcome::Error) << bad << " " << v;
+      EXPECT_EQ(rig::judge(v, 0.0, bad), Outcome::Error) << bad << " " << v;
+    }
 }
 
 // Item 5: a check that judged no measurement is an error, never a pass (the parser refuses

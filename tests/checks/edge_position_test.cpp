@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <vector>
 
 #include "check_test_support.hpp"
@@ -70,6 +71,36 @@ TEST(Advance, ReverseMotionAdvancesTheOtherWay) {
   const auto r = check_advance(e, pos, constant(-1000.0), {.name = "a", .setpoint = 100.0, .advance = 10_ms});
   EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
   EXPECT_EQ(find(r, "a.edge0").lower, 109.0);
+}
+
+// A speed or position that is not a number (a division by a zero-length window upstream)
+// judges nothing: every comparison with NaN is false, so a NaN expected position (from a NaN
+// speed) would otherwise pass any edge. The measurement errs and says why; no window is made of
+// it. The ANS1 worked example's figures (lead advance 10 ms, setpoint 100) otherwise.
+TEST(Advance, ASpeedOrPositionThatIsNotANumberIsAnErrorNeverAPass) {
+  const AdvanceSpec spec{.name = "ls1", .setpoint = 100.0, .advance = 10_ms}; // absolute positions
+  const std::vector<Edge> e{{Nanos{156'666'667}, Level::High}};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Case {
+    PositionFn position, speed;
+    const char* reason;
+  };
+  for (const Case& c : {Case{ramp(600.0), constant(nan), "a limit is not a finite number: "},
+                        Case{ramp(600.0), constant(inf), "a limit is not a finite number: "},
+                        Case{constant(nan), constant(600.0), "not a number: "},
+                        Case{constant(inf), constant(600.0), "not a finite number: "}}) {
+    const auto r = check_advance(e, c.position, c.speed, spec);
+    const auto& m = find(r, "ls1.edge0");
+    EXPECT_EQ(m.outcome, rig::Outcome::Error);
+    EXPECT_EQ(m.detail.rfind(c.reason, 0), 0U) << m.detail;
+    EXPECT_FALSE(m.window);
+    EXPECT_EQ(r.outcome(), rig::Outcome::Error);
+  }
+  // A speed so small the tolerance window outlasts 64-bit nanoseconds: judged, with no window.
+  const auto slow = check_advance(e, constant(100.0), constant(1e-300), spec);
+  EXPECT_EQ(slow.outcome(), rig::Outcome::Pass);
+  EXPECT_FALSE(find(slow, "ls1.edge0").window);
 }
 
 TEST(Advance, WrapsModuloFullScale) {
