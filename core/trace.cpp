@@ -134,6 +134,7 @@ void TraceRecorder::real(std::uint32_t signal, Nanos t, double v) {
 void TraceRecorder::record(const TraceSample& s) {
   in_time_order_ = in_time_order_ && s.time >= last_time_;
   last_time_ = s.time;
+  latest_time_ = std::max(latest_time_, s.time);
   // Grows by doubling while the run is short (one that never spills never holds the limit's
   // memory); from an eighth of the limit straight to the limit, so a long run's peak holds
   // the limit and an eighth of it, not the limit and the half it grew from.

@@ -93,6 +93,9 @@ public:
   // Whether every sample was recorded at or after the time of the one before it (as a
   // scheduler records them); kept as they come, so no reader needs a pass to find out.
   [[nodiscard]] bool in_time_order() const { return in_time_order_; }
+  // The latest time of any sample recorded, spilled or held (Nanos::min() before the first):
+  // kept as they come, so finding a run's end reads nothing back.
+  [[nodiscard]] Nanos latest_sample_time() const { return latest_time_; }
   // Calls `chunk` with the samples from index `from` on, in record order, a span at a time.
   using SampleChunk = std::function<void(std::span<const TraceSample>)>;
   void visit_samples(std::size_t from, const SampleChunk& chunk) const;
@@ -137,6 +140,7 @@ private:
   std::vector<TraceSample> samples_;
   bool in_time_order_ = true;
   Nanos last_time_ = Nanos::min();
+  Nanos latest_time_ = Nanos::min();
   std::size_t spill_limit_ = 0; // 0: never spill
   std::size_t spilled_ = 0;     // samples in spill_file_, the oldest first
   std::vector<SpillBlock> spill_blocks_;

@@ -44,14 +44,6 @@ bool failed(const rig::RunResult& run, const rig::CheckResult& check) {
   return j == rig::Judgement::Fail || j == rig::Judgement::Error;
 }
 
-Nanos last_sample_time(const TraceRecorder& trace) {
-  Nanos last{0};
-  trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
-    for (const TraceSample& s : chunk) last = std::max(last, s.time);
-  });
-  return last;
-}
-
 // The save file opens on the first measurement that failed and has a window (its captured
 // edge, when it has one, is the primary marker); else on all the check's windows; a check
 // that judged no window at all (e.g. it saw no edge) opens on the whole run.
@@ -61,7 +53,7 @@ GtkwView view_of(const rig::CheckResult& check, const TraceRecorder& trace) {
       return GtkwView{m.window->begin, std::max(m.window->end, m.window->begin + Nanos{1}), m.at};
   const std::vector<rig::TraceWindow> windows = windows_of(check);
   if (!windows.empty()) return GtkwView{windows.front().begin, windows.back().end, std::nullopt};
-  return GtkwView{Nanos{0}, std::max(Nanos{1}, last_sample_time(trace)), std::nullopt};
+  return GtkwView{Nanos{0}, std::max(Nanos{1}, trace.latest_sample_time()), std::nullopt};
 }
 
 const char* gtkw_flags(SignalKind kind) {

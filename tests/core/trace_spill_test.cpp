@@ -242,6 +242,31 @@ TEST(TraceSpill, ALimitSetLaterSpillsWhatIsHeld) {
   EXPECT_EQ(read_back(t), recorded);
 }
 
+// The latest sample time is known without reading the recording back: the greatest time read
+// back, spilled or held, in or out of time order; Nanos::min() before the first sample.
+TEST(TraceRecorder, KnowsItsLatestSampleTimeSpilledOrHeld) {
+  for (const std::size_t limit : {std::size_t{0}, std::size_t{1}, std::size_t{13}})
+    for (const bool ordered : {true, false}) {
+      TraceRecorder t;
+      if (limit > 0) t.spill_beyond(limit);
+      const std::vector<std::uint32_t> signals = declare_all(t);
+      EXPECT_EQ(t.latest_sample_time(), Nanos::min());
+      (void)record_random(t, signals, 7, 200, ordered);
+      Nanos latest = Nanos::min();
+      t.visit_samples(0, [&](std::span<const TraceSample> chunk) {
+        for (const TraceSample& s : chunk) latest = std::max(latest, s.time);
+      });
+      EXPECT_EQ(t.latest_sample_time(), latest) << "limit " << limit << " ordered " << ordered;
+    }
+  TraceRecorder t;
+  const std::uint32_t a = t.declare("a");
+  t.edge(a, Edge{-5_ns, Level::High});
+  EXPECT_EQ(t.latest_sample_time(), -5_ns);
+  t.edge(a, Edge{30_ns, Level::Low});
+  t.edge(a, Edge{20_ns, Level::High}); // back in time: the latest stays
+  EXPECT_EQ(t.latest_sample_time(), 30_ns);
+}
+
 TEST(TraceRecorder, KnowsWhetherSamplesCameInTimeOrder) {
   TraceRecorder t;
   const std::uint32_t a = t.declare("a");
