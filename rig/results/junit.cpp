@@ -98,14 +98,22 @@ std::string seconds_text(double s) { return fmt::format("{:.3f}", s); }
 struct Counts {
   std::size_t tests = 0, failed = 0, errored = 0, skipped = 0;
   double seconds = 0.0;
+  bool timed = true; // every run's wall time known (JunitClock::run_seconds); else no time is written
   void add(const Counts& o) {
     tests += o.tests;
     failed += o.failed;
     errored += o.errored;
     skipped += o.skipped;
     seconds += o.seconds;
+    timed = timed && o.timed;
   }
 };
+
+// ` time="..."`, or nothing when a run's wall time is not known (`hilrig merge`: results.json
+// holds none): JUnit's time is optional, and a 0 would read as a run that took no time.
+std::string time_attribute(bool known, double seconds) {
+  return known ? fmt::format(" time=\"{}\"", seconds_text(seconds)) : std::string();
+}
 
 // The <testcase> elements of one run. The run's checks are judged from one simulation, so
 // each of its testcases carries an equal share of the run's wall time: the times add up.
@@ -113,15 +121,17 @@ std::string testcases_xml(const CampaignResult& r, const RunResult& run, const J
                           Counts& counts) {
   const auto cases = cases_of(run);
   const auto wall = clock.run_seconds.find(run.index);
-  const double run_seconds = wall == clock.run_seconds.end() ? 0.0 : wall->second;
+  const bool timed = wall != clock.run_seconds.end();
+  const double run_seconds = timed ? wall->second : 0.0;
   const double share = cases.empty() ? 0.0 : run_seconds / static_cast<double>(cases.size());
   counts.seconds += run_seconds;
+  counts.timed = counts.timed && timed;
   const std::string classname = xml_escape(dotless(r.campaign) + "." + dotless(run.name));
   std::string body;
   for (const auto& k : cases) {
     ++counts.tests;
-    body += fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{}\"", xml_escape(k.name),
-                        classname, seconds_text(share));
+    body += fmt::format("    <testcase name=\"{}\" classname=\"{}\"{}", xml_escape(k.name), classname,
+                        time_attribute(timed, share));
     switch (k.verdict) {
     case Verdict::Passed:
       body += k.body.empty() ? "/>\n"
@@ -149,11 +159,11 @@ std::string testcases_xml(const CampaignResult& r, const RunResult& run, const J
 
 std::string testsuite_open(const std::string& name, const Counts& c, const JunitClock& clock,
                            const std::string& id, const std::string& package) {
-  return fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" skipped=\"{}\" "
-                     "time=\"{}\" timestamp=\"{}\" hostname=\"{}\" id=\"{}\" package=\"{}\">\n",
-                     xml_escape(name), c.tests, c.failed, c.errored, c.skipped, seconds_text(c.seconds),
-                     xml_escape(clock.started_at), xml_escape(clock.hostname), xml_escape(id),
-                     xml_escape(package));
+  return fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" skipped=\"{}\"{} "
+                     "timestamp=\"{}\" hostname=\"{}\" id=\"{}\" package=\"{}\">\n",
+                     xml_escape(name), c.tests, c.failed, c.errored, c.skipped,
+                     time_attribute(c.timed, c.seconds), xml_escape(clock.started_at),
+                     xml_escape(clock.hostname), xml_escape(id), xml_escape(package));
 }
 
 std::string property(const std::string& name, const std::string& value) {
@@ -176,8 +186,9 @@ std::string traceability_properties(const CampaignResult& r) {
 
 std::string testsuites_open(const std::string& name, const Counts& all) {
   return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                     "<testsuites name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" time=\"{}\">\n",
-                     xml_escape(name), all.tests, all.failed, all.errored, seconds_text(all.seconds));
+                     "<testsuites name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\"{}>\n",
+                     xml_escape(name), all.tests, all.failed, all.errored,
+                     time_attribute(all.timed, all.seconds));
 }
 
 // The counts of a run's testcases, as testcases_xml adds them, without its text.
@@ -190,7 +201,8 @@ Counts counts_of(const RunResult& run, const JunitClock& clock) {
     c.skipped += k.verdict == Verdict::Skipped ? 1 : 0;
   }
   const auto wall = clock.run_seconds.find(run.index);
-  c.seconds = wall == clock.run_seconds.end() ? 0.0 : wall->second;
+  c.timed = wall != clock.run_seconds.end();
+  c.seconds = c.timed ? wall->second : 0.0;
   return c;
 }
 

@@ -32,7 +32,9 @@ struct JunitClock {
   std::map<std::uint64_t, double> run_seconds; // run index -> wall seconds it took
 };
 // A testcase's time is an equal share of its run's wall seconds (the run's checks are judged
-// from one simulation), so testcase, testsuite and testsuites times add up.
+// from one simulation), so testcase, testsuite and testsuites times add up. A run missing from
+// run_seconds (its wall time is not known: `hilrig merge` reads results.json, which holds none)
+// writes no time, nor does any element holding it: JUnit's time is optional, a 0 would lie.
 [[nodiscard]] std::string to_junit_xml(const CampaignResult& result, const JunitClock& clock = {});
 // The same text for `header` (finalized) with the runs `runs` gives, one at a time.
 void write_junit_xml(const CampaignResult& header, const RunSource& runs, const JunitClock& clock,

@@ -57,6 +57,37 @@ for key, value in (("campaign", "another-campaign"), ("device", "smd23e")):
     if "a baseline must be the same campaign on the same device" not in r.stderr or value not in r.stderr:
         problems.append(f"another {key}: no clear refusal:\n{r.stderr}")
 
+# merge, compare and trend given a file that is not what a writer wrote (cut short, a value
+# hand-edited to another type, another schema, a measurement edited to pass with no value):
+# exit 2, the message names the file, and nothing is written.
+with open(base) as f:
+    text = f.read()
+broken = {
+    "cut": text[: len(text) // 2],
+    "typed": text.replace('"planned_runs": ', '"planned_runs": "x", "was": ', 1),
+    "schema": json.dumps({"testsuites": []}),
+    "passed-null": json.dumps(
+        {**doc, "runs": [{**doc["runs"][0], "checks": [{**doc["runs"][0]["checks"][0], "measurements": [
+            {**m, "value": None, "outcome": "pass"} for m in doc["runs"][0]["checks"][0]["measurements"]]}]}]}),
+}
+for name, body in broken.items():
+    bad = os.path.join(sample, f"broken-{name}.json")
+    with open(bad, "w") as f:
+        f.write(body)
+    out = os.path.join(sample, f"merged-broken-{name}")
+    for args in (("merge", out + ".json", base, bad), ("compare", base, bad), ("trend", base, bad, "--out", out + ".html")):
+        r = expect(2, *args)
+        if bad not in r.stderr:
+            problems.append(f"hilrig {args[0]} of a {name} file: the message does not name it:\n{r.stderr}")
+    written = [p for p in os.listdir(sample) if p.startswith(f"merged-broken-{name}")]
+    if written:
+        problems.append(f"merge/trend of a {name} file wrote {written}")
+
+# The merged junit.xml carries no time it does not know (results.json holds no run's wall time).
+with open(os.path.join(sample, "merged.junit.xml")) as f:
+    if ' time="' in f.read():
+        problems.append("merged junit.xml writes a time results.json does not hold")
+
 # A negative --seed is refused before anything runs; serve --fault names the choices.
 campaign = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "campaigns", "reference",
                         "reference_pls_pass.toml")

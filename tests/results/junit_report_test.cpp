@@ -61,5 +61,30 @@ TEST(Junit, RigErrorIsAnErrorTestcase) {
   EXPECT_NE(x.find("<testcase name=\"rig\""), std::string::npos);
 }
 
+// Times come from the wall clock of the run that made them (JunitClock::run_seconds): each
+// testcase an equal share of its run's, adding up. A run whose wall time is not known (a
+// merge of results.json, which holds none) writes no time, nor does any element holding it:
+// never a 0 that reads as a run that took no time.
+TEST(Junit, TimesAreTheRunsWallTimeOrAbsentWhenNotKnown) {
+  CampaignResult c = test::sample_campaign(3); // runs 0, 1 nominal, run 2 a fault run: 2 cases each
+  JunitClock clock;
+  clock.run_seconds = {{0, 0.5}, {1, 0.25}, {2, 1.5}};
+  std::string x = to_junit_xml(c, clock);
+  EXPECT_EQ(count_of(x, "<testcase "), 6U);
+  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run0\" time=\"0.250\""), 2U) << x;
+  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run1\" time=\"0.125\""), 2U) << x;
+  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run2\" time=\"0.750\""), 2U) << x;
+  EXPECT_NE(x.find("errors=\"0\" time=\"2.250\">"), std::string::npos) << x; // testsuites: the sum
+  clock.run_seconds.erase(1);
+  x = to_junit_xml(c, clock);
+  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run0\" time=\"0.250\""), 2U) << x;
+  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run1\">"), 2U) << x; // no time
+  EXPECT_EQ(count_of(x, "<testsuite "), 3U);
+  EXPECT_EQ(count_of(x, " time=\""), 6U) << x; // runs 0 and 2: 4 testcases and their 2 testsuites
+  EXPECT_EQ(count_of(x, "time=\"0.000\""), 0U) << x;
+  x = to_junit_xml(c); // no wall times at all
+  EXPECT_EQ(count_of(x, " time=\""), 0U) << x;
+}
+
 } // namespace
 } // namespace hilrig::rig
