@@ -52,11 +52,14 @@ PY
 same_as_whole out/merged.json || fail "GNU parallel: merged shards differ from the unsharded run"
 # hilrig merge writes junit.xml and report.html beside the merged results (merged.junit.xml,
 # merged.report.html): the unsharded run's junit.xml but for the wall time each run took (not
-# in results.json).
+# in results.json: the merged file writes no time attribute at all, rather than a false 0).
 python3 - out/merged.junit.xml whole/junit.xml <<'PY' || fail "GNU parallel: merged junit.xml"
 import re, sys
 merged, whole = sys.argv[1:]
-durations = lambda path: re.sub(r'\btime="[^"]*"', 'time=""', open(path).read())
+durations = lambda path: re.sub(r' time="[^"]*"', '', open(path).read())
+text = open(merged).read()
+if ' time="' in text:
+    sys.exit("merged.junit.xml writes a time that results.json does not hold")
 sys.exit(0 if durations(merged) == durations(whole) else "merged.junit.xml is not the unsharded run's junit.xml")
 PY
 # With every trace kept (--trace all), the merged report, written elsewhere than the shards,
