@@ -312,6 +312,9 @@ private:
   std::vector<PeakReading> walk_;
   Nanos walk_front_ = Nanos::min();
   ResolverTrack walk_state_{};
+  // Peaks read per step: one more than came between the last two revisions (16 before any).
+  std::int64_t walk_chunk_ = 16;
+  Nanos last_revision_ = Nanos::min();
 
   // Speed
   SpeedFilter speed_{};

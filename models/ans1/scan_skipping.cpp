@@ -361,10 +361,9 @@ void Ans1::walk_peaks() {
   if (!walking_peaks_) {
     return;
   }
-  // A few peaks at a time: the rig's stators are revised at every frame (a millisecond, ten
-  // peaks at 5 kHz), and what was read beyond is read again then.
-  constexpr int kPeaksAhead = 16;
-  for (int n = 0; n < kPeaksAhead; ++n) {
+  // A few peaks at a time: what was read beyond the next revision is read again then (the
+  // rig's stators are revised at every frame: a millisecond, ten peaks at 5 kHz).
+  for (std::int64_t n = 0; n < walk_chunk_; ++n) {
     const Nanos peak = excitation_.next_peak(walk_front_);
     const ResolverTrack next = read_peak(walk_state_, peak);
     const bool flags_kept = next.seen == walk_state_.seen && next.fault_active == walk_state_.fault_active &&
@@ -386,6 +385,13 @@ void Ans1::walk_peaks() {
 }
 
 void Ans1::stators_revised() {
+  const Nanos now = scheduler_.now();
+  if (now != last_revision_) { // walk as far as the revisions come apart, one peak more
+    if (last_revision_ != Nanos::min()) {
+      walk_chunk_ = std::clamp<std::int64_t>((now - last_revision_) / excitation_.half_period() + 1, 2, 64);
+    }
+    last_revision_ = now;
+  }
   if (!walking_peaks_) {
     return;
   }
@@ -393,7 +399,6 @@ void Ans1::stators_revised() {
     wake();
     return;
   }
-  const Nanos now = scheduler_.now();
   while (!walk_.empty() && walk_.back().peak >= now) {
     walk_.pop_back();
   }
