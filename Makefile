@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
 DEMO_CAMPAIGN ?= campaigns/ans1/ans1_throughput.toml
 
-.PHONY: all deps build build-hilrig build-asan build-fuzz demo test test-unit test-asan test-vm fuzz fuzz-smoke bench format format-check clean
+.PHONY: all deps disk-check build build-hilrig build-asan build-fuzz demo test test-unit test-asan test-vm fuzz fuzz-smoke bench format format-check clean
 
 all: build
 
@@ -69,9 +69,14 @@ fuzz-smoke: build-fuzz
 fuzz: build-fuzz
 	@bash fuzz/run.sh long $(FUZZERS)
 
+# Stops before building when the disk cannot hold the build trees (scripts/check-disk.sh).
+disk-check:
+	@bash scripts/check-disk.sh
+
 # Every test, then the sanitizer build's tests, the fuzzers' short run, then the RT VM lane.
-test: test-unit test-asan format-check fuzz-smoke test-vm
+test: disk-check test-unit test-asan format-check fuzz-smoke test-vm
 	@echo "make test: all suites passed (default and ASan+UBSan builds)"
+	@echo "make test: build trees hold $$(du -scm build build-asan build-fuzz build-gpiod2 build-vm 2>/dev/null | tail -1 | cut -f1) MiB"
 
 bench: deps
 	@cmake --preset release >/dev/null

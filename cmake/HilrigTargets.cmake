@@ -9,6 +9,13 @@ target_compile_options(hilrig_flags INTERFACE
 if(HILRIG_WERROR)
   target_compile_options(hilrig_flags INTERFACE -Werror)
 endif()
+if(HILRIG_COMPRESS_DEBUG)
+  # Debug sections are ~95 % of a test binary and every test links the whole rig statically:
+  # zlib-compressed they take a third of the disk (a clean `make test` once ran out of it). gdb,
+  # addr2line and the sanitizers' symbolizer read them as they are.
+  target_compile_options(hilrig_flags INTERFACE -gz)
+  target_link_options(hilrig_flags INTERFACE -gz)
+endif()
 if(HILRIG_SANITIZE)
   target_compile_options(hilrig_flags INTERFACE
     -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
