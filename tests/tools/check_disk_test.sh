@@ -7,6 +7,7 @@ set -euo pipefail
 src=$1 scratch=$2
 rm -rf "$scratch"
 mkdir -p "$scratch"
+cd "$scratch"
 fail() { echo "FAIL: $*"; exit 1; }
 check() { HILRIG_TEST_DISK_MB=$1 bash "$src/scripts/check-disk.sh" "$scratch"; }
 
