@@ -1,5 +1,6 @@
 #include "rig/campaign/toml_file.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
@@ -108,10 +109,15 @@ std::string read_toml_text(const std::string& path, std::string_view what) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw CampaignError(path, SourcePos{}, "file", fmt::format("a readable {} (cannot open it)", what));
-  // Read at most one byte past the cap: the file may grow between stat and read.
-  std::string text(static_cast<std::size_t>(limits::kMaxFileBytes) + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(in.gcount()));
+  // Read at most one byte past the cap: the file may grow between stat and read. In chunks, so a
+  // campaign of a few KiB costs a few KiB (not a zeroed 1 MiB buffer, a page fault per page).
+  const std::size_t most = static_cast<std::size_t>(limits::kMaxFileBytes) + 1;
+  std::string text;
+  char chunk[16384];
+  while (text.size() < most && in) {
+    in.read(chunk, static_cast<std::streamsize>(std::min(sizeof chunk, most - text.size())));
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
   if (text.size() > limits::kMaxFileBytes)
     throw CampaignError(path, SourcePos{}, "file",
                         fmt::format("a {} of at most {} bytes", what, limits::kMaxFileBytes));

@@ -1,25 +1,35 @@
 #include "rig/cli/stop_signals.hpp"
 
-#include <csignal>
+#include <atomic>
 
 namespace hilrig::cli {
 
-StopSignals::StopSignals(campaign::StopRequest& stop) : stop_(stop), signals_(io_, SIGINT, SIGTERM) {
-  wait();
-  thread_ = std::thread([this] { io_.run(); });
+namespace {
+
+std::atomic<campaign::StopRequest*> current{nullptr};
+static_assert(std::atomic<campaign::StopRequest*>::is_always_lock_free);
+static_assert(std::atomic<int>::is_always_lock_free);
+
+void on_stop_signal(int signal) {
+  // The first signal names the stop; later ones are absorbed (StopRequest::request).
+  if (campaign::StopRequest* stop = current.load()) stop->request(signal);
+}
+
+} // namespace
+
+StopSignals::StopSignals(campaign::StopRequest& stop) : outer_(current.exchange(&stop)) {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  sigfillset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &action, &old_int_);
+  sigaction(SIGTERM, &action, &old_term_);
 }
 
 StopSignals::~StopSignals() {
-  io_.stop();
-  if (thread_.joinable()) thread_.join();
-}
-
-void StopSignals::wait() {
-  signals_.async_wait([this](const boost::system::error_code& ec, int signal) {
-    if (ec) return;
-    stop_.request(signal); // the first signal names the stop; later ones are absorbed
-    wait();
-  });
+  sigaction(SIGINT, &old_int_, nullptr);
+  sigaction(SIGTERM, &old_term_, nullptr);
+  current.store(outer_);
 }
 
 } // namespace hilrig::cli

@@ -1,13 +1,13 @@
 #pragma once
 // SIGINT and SIGTERM stop a campaign instead of killing it mid-write: while a StopSignals
-// lives, a Boost.Asio signal_set on a thread of its own (off the simulation's path) turns
-// either signal into a stop request, which the executive checks before each event. When it
-// is destroyed the signals' default actions are back.
+// lives, a handler turns either signal into a stop request, which the executive checks before
+// each event. When it is destroyed the signals' earlier actions are back.
+//
+// The handler only sets the request's atomic (lock-free, async-signal-safe): no thread of its
+// own, so a short campaign stays a single-threaded process (a second thread, however idle, costs
+// its start-up and a TLB shoot-down at each unmap and copy-on-write fault of the run).
 
-#include <thread>
-
-#include <boost/asio/io_context.hpp>
-#include <boost/asio/signal_set.hpp>
+#include <csignal>
 
 #include "rig/campaign/stop_request.hpp"
 
@@ -21,12 +21,9 @@ public:
   StopSignals& operator=(const StopSignals&) = delete;
 
 private:
-  void wait();
-
-  campaign::StopRequest& stop_;
-  boost::asio::io_context io_;
-  boost::asio::signal_set signals_;
-  std::thread thread_;
+  campaign::StopRequest* outer_; // the request of an enclosing StopSignals, if any
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
 };
 
 } // namespace hilrig::cli

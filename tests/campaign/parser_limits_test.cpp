@@ -16,6 +16,7 @@
 #include "campaign_text.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/limits.hpp"
+#include "rig/campaign/toml_file.hpp"
 #include "rig/duts/dut.hpp"
 #include "tests/tools/scratch_files.hpp"
 
@@ -364,6 +365,17 @@ TEST(CampaignLimits, OnlyARegularFileOfAtMostOneMebibyteIsRead) {
   EXPECT_EQ(file_error_of(hilrig::test::write_file(dir, "cap.toml", text).string()), "accepted");
   EXPECT_EQ(file_error_of(hilrig::test::write_file(dir, "over.toml", text + "\n").string()),
             "file: a campaign file of at most 1048576 bytes");
+}
+
+TEST(CampaignLimits, AFileOfSeveralReadChunksIsReadByteForByte) {
+  // read_toml_text reads in 16 KiB chunks: a text of 2.5 chunks, every byte value but NUL,
+  // comes back whole and in order.
+  const fs::path dir = hilrig::test::scratch_dir("campaign", "chunks");
+  std::string text;
+  for (std::size_t i = 0; i < 40960; ++i) text += static_cast<char>(1 + i % 255);
+  EXPECT_EQ(read_toml_text(hilrig::test::write_file(dir, "chunks.toml", text).string(), "campaign file"),
+            text);
+  EXPECT_EQ(read_toml_text(hilrig::test::write_file(dir, "empty.toml", "").string(), "campaign file"), "");
 }
 
 } // namespace

@@ -24,6 +24,7 @@
 #include "rig/cli/output_dir.hpp"
 #include "rig/cli/run_command.hpp"
 #include "rig/cli/run_progress.hpp"
+#include "rig/cli/stop_signals.hpp"
 #include "rig/cli/suite_files.hpp"
 #include "rig/results/results_json.hpp"
 #include "rig/results/run_log.hpp"
@@ -892,6 +893,38 @@ TEST(RunProgressLines, EachRunWithOutcomeWallTimeAndEta) {
   EXPECT_EQ(clock_text(7.4), "0:07");
   EXPECT_EQ(clock_text(750), "12:30");
   EXPECT_EQ(clock_text(3723), "1:02:03");
+}
+
+int g_earlier_handler_saw = 0;
+void earlier_handler(int signal) { g_earlier_handler_saw = signal; }
+
+TEST(StopSignals, ASignalIsAStopRequestWhileItLivesAndTheEarlierActionIsBackAfter) {
+  struct sigaction earlier {};
+  earlier.sa_handler = earlier_handler;
+  sigemptyset(&earlier.sa_mask);
+  struct sigaction before_int {};
+  struct sigaction before_term {};
+  ASSERT_EQ(sigaction(SIGINT, &earlier, &before_int), 0);
+  ASSERT_EQ(sigaction(SIGTERM, &earlier, &before_term), 0);
+  campaign::StopRequest stop;
+  {
+    const StopSignals signals(stop);
+    EXPECT_FALSE(stop.requested());
+    ASSERT_EQ(std::raise(SIGTERM), 0); // handled on this thread before raise returns
+    EXPECT_TRUE(stop.requested());
+    ASSERT_EQ(std::raise(SIGINT), 0); // absorbed: the first signal names the stop
+    EXPECT_EQ(stop.reason(), "SIGTERM");
+    EXPECT_EQ(g_earlier_handler_saw, 0);
+    // No thread of its own: /proc/self/task holds one entry per thread of the test process.
+    std::size_t threads = 0;
+    for ([[maybe_unused]] const auto& task : std::filesystem::directory_iterator("/proc/self/task"))
+      ++threads;
+    EXPECT_EQ(threads, 1U);
+  }
+  ASSERT_EQ(std::raise(SIGINT), 0);
+  EXPECT_EQ(g_earlier_handler_saw, SIGINT);
+  sigaction(SIGINT, &before_int, nullptr);
+  sigaction(SIGTERM, &before_term, nullptr);
 }
 
 } // namespace
