@@ -108,7 +108,7 @@ void Ans1::attach(const Ans1Pins& pins) {
   // Z is ignored (L455). The inputs are read at the scan; their edges only wake it.
   const auto input_edge = [weak](const Edge&) {
     if (auto q = weak.lock()) {
-      q->device->wake();
+      q->device->input_wake();
     }
   };
   for (LineInput* in : pins.inputs) {
@@ -133,6 +133,7 @@ void Ans1::attach(const Ans1Pins& pins) {
 void Ans1::power_off() {
   if (!powered_) return;
   powered_ = false;
+  channels_fixed_ = false;
   settle_position(); // what the last scan before the supply went left, as when scanning every period
   scheduler_.cancel(scan_event_);
   scheduler_.cancel(speed_event_);
@@ -399,6 +400,7 @@ void Ans1::scan() {
   }
   read_inputs();
   const auto rising = static_cast<std::uint16_t>(active_inputs_ & ~previous_active_inputs_);
+  const auto changed = static_cast<std::uint16_t>(active_inputs_ ^ previous_active_inputs_);
   const std::uint16_t fsc = position_.full_scale_count;
 
   gmp_ = global_position(scaled(), position_.scaled_offset, fsc);
@@ -416,8 +418,14 @@ void Ans1::scan() {
     }
   }
 
+  const ShiftRegister sr_before = shift_register_;
   shift_register_.step(previous_gmp_, gmp_,
                        sr_setup_.input != 0 && (active_inputs_ & bit(sr_setup_.input)) != 0, sr_setup_, fsc);
+  // Since the last scan, which left the channels at a fixed point, nothing but edges of inputs
+  // no channel reads woke the scan (or it is a monitor's deadline): each channel would return
+  // the state it holds (scan_skipping.cpp, "input edges"), as ls_ and masks_ show.
+  channels_held_ = shift_register_ == sr_before && channels_hold(now, changed);
+  scans_channels_held_ += channels_held_ ? 1U : 0U;
 
   // Time of Rotation: between two forward roll-overs of GMP (L794), in 0.1 ms.
   if (!first_scan_ && crossed_forward(previous_gmp_, gmp_, 0, fsc)) {
@@ -432,7 +440,7 @@ void Ans1::scan() {
 
   OutputStatusMasks masks{0, 0, 0, 0, 0, 0, 0};
   std::uint16_t ls = 0;
-  for (int n = 1; n <= kOutputCount; ++n) {
+  for (int n = 1; n <= kOutputCount && !channels_held_; ++n) {
     const OutputState s = channels_[index(n)].scan(state, params_.time_only_retrigger_restarts);
     const auto shift = static_cast<unsigned>(n - 1);
     // Branch-free: eight conditions of sixteen channels every 10 us.
@@ -448,13 +456,15 @@ void Ans1::scan() {
     set(masks.timer, s.timer_ok);
     set(ls, s.ls);
   }
-  masks_ = masks;
-  ls_ = ls;
+  if (!channels_held_) {
+    masks_ = masks;
+    ls_ = ls;
+  }
 
   // Arbitration ([MODEL] §4.13): transducer fault, then force, then the monitors' fault and
   // overflow outputs, then the LS function.
   monitors_.scan(now, MonitorInputs{gmp_, transducer_count(), active_inputs_});
-  std::uint16_t out = apply_claims(monitors_.claims(), ls, ls_programmed(channels_));
+  std::uint16_t out = apply_claims(monitors_.claims(), ls_, ls_programmed(channels_));
   out = static_cast<std::uint16_t>((out & ~output_force_enable_) |
                                    (output_force_state_ & output_force_enable_));
   if (resolver && resolver_fault()) {

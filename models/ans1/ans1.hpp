@@ -155,6 +155,8 @@ public:
   // encoder 4X count, or the slave value. The brake monitor's pos4096 for a resolver.
   [[nodiscard]] std::int64_t transducer_count() const;
   [[nodiscard]] std::uint64_t scans() const { return scans_; }
+  // Scans that left the output channels alone (input edges no channel reads; scan_skipping.cpp).
+  [[nodiscard]] std::uint64_t scans_channels_held() const { return scans_channels_held_; }
   [[nodiscard]] Nanos scan_period() const;
 
 private:
@@ -174,6 +176,15 @@ private:
   [[nodiscard]] Nanos grid_at_or_after(Nanos t) const;
   // Schedules the next scan of the grid if it is earlier than the pending one.
   void wake_now();
+  // An input pin's edge: wake() that keeps channels_fixed_ (the scan checks which inputs moved).
+  void input_wake();
+  // The inputs a scan's output channels, shift register or presets read (bit n-1 = input n).
+  [[nodiscard]] std::uint16_t channel_inputs() const;
+  // The scan at `now` would leave every output channel as it is: they were at a fixed point
+  // after the last scan (channels_fixed_), only input edges woke it, none of an input that
+  // changed since (`changed`) is read by a channel, the shift register or a preset, the GMP is
+  // inside quiet_ and no channel's deadline has come.
+  [[nodiscard]] bool channels_hold(Nanos now, std::uint16_t changed) const;
   // ---- skipping while the encoder moves (scan_skipping.cpp) ----
   // An encoder count changed (before: the count before it): wakes the scan when the GMP
   // leaves the quiet interval, else only remembers the count at the last grid point.
@@ -198,8 +209,9 @@ private:
     if (quiet_armed_) settle_position(last_run_grid(scheduler_.now()));
   }
   // A scan now, with the same inputs and count as the one that just ran, leaves every output
-  // channel, the shift register and the monitors as they are.
-  [[nodiscard]] bool scan_repeats() const;
+  // channel, the shift register and the monitors as they are (the channels not checked again
+  // when the scan that just ran left them alone: channels_hold).
+  [[nodiscard]] bool scan_repeats(bool channels_held) const;
   [[nodiscard]] QuietInterval quiet_interval() const;
   [[nodiscard]] ScanState scan_state(Nanos now) const;
   // ---- a resolver read ahead (scan_skipping.cpp) ----
@@ -299,6 +311,15 @@ private:
     Nanos at = Nanos::min();
   };
   LeaveMemo leave_memo_{};
+  // Skipping the output channels in a scan that input edges woke (channels_hold): the last
+  // scan that ran left every channel at a fixed point for its state and quiet_, and nothing but
+  // input edges woke the scan since (wake() clears it); channels_until_ is the channels' first
+  // deadline then; channels_held_ whether the running scan left the channels alone.
+  bool channels_fixed_ = false;
+  Nanos channels_until_ = Nanos::min();
+  bool channels_held_ = false;
+  std::uint16_t quiet_gmp_ = 0; // the GMP quiet_ was computed at
+  std::uint64_t scans_channels_held_ = 0;
   // A resolver read ahead while armed: the track at the last scan (its last peak read), the
   // peaks after it whose reading moved the count, and the walk's front (its last peak read
   // and the track there). leave_event_ is the wake at the leaving peak or the next walk.

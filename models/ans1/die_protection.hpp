@@ -47,6 +47,12 @@ public:
   // Fault outputs, bit n-1 = output n: the outputs owned by an active monitor, and their level.
   [[nodiscard]] std::uint16_t fault_output_mask() const;
   [[nodiscard]] std::uint16_t fault_output_levels() const;
+  // Equal but for the setup, which update() and begin_production_cycle() never write: a copy
+  // that ran a scan against the original (Monitors::scan_left_alone).
+  [[nodiscard]] bool same_state(const DieProtection& o) const {
+    return state_ == o.state_ && first_to_fault_ == o.first_to_fault_ &&
+           faulted_in_cycle_ == o.faulted_in_cycle_;
+  }
 
 private:
   struct MonitorState {

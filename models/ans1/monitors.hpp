@@ -62,6 +62,14 @@ public:
     brake_.tick(next_tick_, false, pos4096, gmp_);
     next_tick_ += BrakeMonitor::kTick;
   }
+  // `copy` is a copy of this that ran scan(): it left everything as it was. scan() never
+  // writes a setup (its own, die protection's), so those are not compared (scan skipping's
+  // repeat check, Ans1::scan_repeats, runs this after every scan that may arm).
+  [[nodiscard]] bool scan_left_alone(const Monitors& copy) const {
+    return started_ == copy.started_ && next_tick_ == copy.next_tick_ && inputs_ == copy.inputs_ &&
+           gmp_ == copy.gmp_ && rising_ == copy.rising_ && falling_ == copy.falling_ &&
+           die_.same_state(copy.die_) && counters_ == copy.counters_ && brake_ == copy.brake_;
+  }
   [[nodiscard]] OutputClaims claims() const;
   // The earliest time at which scan() with unchanged inputs can change what the monitors
   // report: a brake monitor tick while one is set up, a die-protection level qualifying.

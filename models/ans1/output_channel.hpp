@@ -67,6 +67,12 @@ public:
   void keep_quiet(QuietInterval& quiet, const ScanState& scan) const;
   // The earliest time at which scan() with the same inputs can give another state (its timer).
   [[nodiscard]] Nanos next_change() const { return timer_.expiry(); }
+  // The inputs scan() reads (bit n-1 = input n): its simple, pulse and window ANDing.
+  [[nodiscard]] std::uint16_t inputs_read() const {
+    const auto window =
+        window_input_ >= 0 ? static_cast<std::uint16_t>(1U << static_cast<unsigned>(window_input_)) : 0U;
+    return static_cast<std::uint16_t>(simple_inputs_ | pulse_inputs_ | window);
+  }
 
 private:
   [[nodiscard]] EdgeShift edge_shift(const ScanState& scan) const;

@@ -81,6 +81,11 @@ Nanos Ans1::grid_at_or_after(Nanos t) const {
 }
 
 void Ans1::wake() {
+  channels_fixed_ = false;
+  input_wake();
+}
+
+void Ans1::input_wake() {
   settle_position();
   changed_outside_ = true;
   if (params_.exact_scan || in_scan_ || !powered_) {
@@ -120,11 +125,25 @@ void Ans1::run_scan() {
   in_scan_ = true;
   scan();
   in_scan_ = false;
+  const bool channels_fixed = channels_fixed_; // a wake in the scan cleared it
+  channels_fixed_ = false;                     // until this scan proves a fixed point again
+
   // The period may have changed in the scan.
   Nanos next = now + scan_period();
   if (!changed_outside_ && skips_motion()) {
-    if (scan_repeats()) { // asleep until a deadline, or until the GMP leaves quiet_, or wake()
-      quiet_ = quiet_interval();
+    if ((channels_fixed || !channels_held_) && scan_repeats(channels_held_)) {
+      // Asleep until a deadline, or until the GMP leaves quiet_, or wake(). With the channels
+      // left alone at the same GMP, quiet_ is what it was (quiet_interval reads the channels,
+      // the setups, the speed and the GMP: any other change of them wakes the scan).
+      if (!channels_held_ || gmp_ != quiet_gmp_) {
+        quiet_ = quiet_interval();
+        quiet_gmp_ = gmp_;
+      }
+      channels_fixed_ = true;
+      channels_until_ = Nanos::max();
+      for (const OutputChannel& channel : channels_) {
+        channels_until_ = std::min(channels_until_, channel.next_change());
+      }
       if (position_.sensor == SensorType::Resolver) {
         walking_peaks_ = true;
         walk_base_ = walk_state_ = resolver_track();
@@ -165,7 +184,7 @@ void Ans1::run_scan() {
 // then written as the last skipped scan would have left them (settle_position), from the count
 // at that scan's grid point, which count_edge remembers.
 
-bool Ans1::scan_repeats() const {
+bool Ans1::scan_repeats(bool channels_held) const {
   const std::uint16_t fsc = position_.full_scale_count;
   ShiftRegister sr = shift_register_;
   const bool sr_input = sr_setup_.input != 0 && (active_inputs_ & (1U << (sr_setup_.input - 1U))) != 0;
@@ -175,6 +194,9 @@ bool Ans1::scan_repeats() const {
   }
   const ScanState state = scan_state(scheduler_.now());
   for (const OutputChannel& channel : channels_) {
+    if (channels_held) {
+      break; // at their fixed point for this state (channels_hold)
+    }
     OutputChannel again = channel;
     (void)again.scan(state, params_.time_only_retrigger_restarts);
     if (!(again == channel)) {
@@ -183,7 +205,44 @@ bool Ans1::scan_repeats() const {
   }
   Monitors again = monitors_;
   again.scan(scheduler_.now(), MonitorInputs{gmp_, transducer_count(), active_inputs_});
-  return again == monitors_;
+  return monitors_.scan_left_alone(again);
+}
+
+// ---------------------------------------------------------------- input edges
+//
+// An input edge wakes the scan, which reads every input. The output channels read only their
+// ANDing inputs (simple, pulse, window), the shift register its SR input, a preset its preset
+// input; die protection, the brake monitor and the input edge positions read any input, and
+// the monitors run in every scan. When the last scan that ran left every channel at a fixed
+// point (scan_repeats, quiet_ armed), only input edges woke the scan since (wake() clears
+// channels_fixed_), none of the inputs that changed is one those read, the GMP is inside quiet_
+// and no channel's deadline (a timer's expiry) has come, then each channel's scan would start
+// from its fixed-point state with every condition at its fixed-point value (the ScanState
+// differs only in `now` before the channels' deadline, in input bits no channel reads and in a
+// GMP inside quiet_: part 4 of docs/virtual-time.md), so it would return the state it holds
+// and leave it as it is: the scan leaves ls_ and masks_ as they are and runs the monitors,
+// the arbitration and the host, and scan_repeats does not run the channels again. A die-
+// protection train (a fault counted each closing) thus costs a scan of the monitors per edge.
+
+std::uint16_t Ans1::channel_inputs() const {
+  std::uint16_t mask = 0;
+  const auto add = [&mask](int input) {
+    if (input != 0) {
+      mask = static_cast<std::uint16_t>(mask | (1U << static_cast<unsigned>(input - 1)));
+    }
+  };
+  for (const OutputChannel& channel : channels_) {
+    mask = static_cast<std::uint16_t>(mask | channel.inputs_read());
+    add(channel.setup().ls_preset_input);
+  }
+  add(sr_setup_.input);
+  add(position_.preset_input);
+  return mask;
+}
+
+bool Ans1::channels_hold(Nanos now, std::uint16_t changed) const {
+  return channels_fixed_ && !params_.exact_scan && !first_scan_ && now < channels_until_ &&
+         quiet_.contains(gmp_) && (changed & channel_inputs()) == 0;
 }
 
 QuietInterval Ans1::quiet_interval() const {
