@@ -121,6 +121,64 @@ struct Cutting {
   std::vector<std::vector<rig::LaneChange>> inside;
 };
 
+// A trace signal feeding lane `lane` of cutting[cutting].
+struct Target {
+  std::size_t cutting;
+  std::size_t lane;
+};
+
+// The pass over a trace recorded in time order, the same values as the general pass (below in
+// cut_window_traces) with less work a sample: a signal's last sample before a window's span is
+// its last sample before the first one at or after span.begin (kept once a signal, not once a
+// window), and a window whose span has ended takes no more. Each signal's windows in order of
+// span.begin; those open (begun, not ended) take the sample.
+void feed_in_time_order(const TraceRecorder& trace, const std::vector<std::vector<Target>>& targets,
+                        std::vector<Cutting>& cutting) {
+  struct Feed {
+    std::vector<Target> waiting; // by span.begin
+    std::size_t next = 0;        // waiting[next..] have not begun
+    std::vector<Target> open;
+    Before last; // as the general pass keeps it for a window not begun
+  };
+  const auto span_of = [&](const Target& t) -> const rig::TraceWindow& {
+    return cutting[t.cutting].window->span;
+  };
+  std::vector<Feed> feeds(targets.size());
+  for (std::size_t sig = 0; sig < targets.size(); ++sig) {
+    if (targets[sig].empty()) continue;
+    Feed& f = feeds[sig];
+    f.waiting = targets[sig];
+    std::stable_sort(f.waiting.begin(), f.waiting.end(),
+                     [&](const Target& a, const Target& b) { return span_of(a).begin < span_of(b).begin; });
+    // Every window of a signal starts from the same value (the signal's initial one).
+    f.last = cutting[f.waiting.front().cutting].before[f.waiting.front().lane];
+  }
+  trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
+    for (const TraceSample& s : chunk) {
+      Feed& f = feeds[s.signal];
+      if (f.waiting.empty()) continue;
+      for (; f.next < f.waiting.size() && span_of(f.waiting[f.next]).begin <= s.time; ++f.next) {
+        const Target& t = f.waiting[f.next];
+        cutting[t.cutting].before[t.lane] = f.last; // every sample before this one is before the span
+        f.open.push_back(t);
+      }
+      if (s.time >= f.last.time) f.last = Before{s.time, s.value, s.real};
+      std::size_t kept = 0;
+      for (const Target& t : f.open) {
+        if (s.time > span_of(t).end) continue; // ended: no later sample is inside
+        cutting[t.cutting].inside[t.lane].push_back(rig::LaneChange{s.time, s.value, s.real});
+        f.open[kept++] = t;
+      }
+      f.open.resize(kept);
+    }
+  });
+  for (Feed& f : feeds)
+    for (; f.next < f.waiting.size(); ++f.next) {
+      const Target& t = f.waiting[f.next];
+      cutting[t.cutting].before[t.lane] = f.last;
+    }
+}
+
 // The window's lanes from what the pass collected: each lane its value at span.begin and its
 // changes, thinned; a rate lane from its step line's changes.
 void finish(Cutting& c) {
@@ -172,10 +230,6 @@ std::vector<std::vector<rig::WindowTrace>> cut_window_traces(const std::vector<W
   // Each trace signal's (window, lane) pairs: the lane of its check that it feeds (the last
   // lane of that name), in each of the check's windows.
   const auto& signals = trace.signals();
-  struct Target {
-    std::size_t cutting;
-    std::size_t lane;
-  };
   std::vector<std::vector<Target>> targets(signals.size());
   std::vector<Cutting> cutting;
   for (std::size_t k = 0; k < cuts.size(); ++k) {
@@ -202,19 +256,23 @@ std::vector<std::vector<rig::WindowTrace>> cut_window_traces(const std::vector<W
     }
   }
   if (cutting.empty()) return out;
-  trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
-    for (const TraceSample& s : chunk) {
-      for (const Target& t : targets[s.signal]) {
-        Cutting& c = cutting[t.cutting];
-        const rig::TraceWindow& span = c.window->span;
-        if (s.time < span.begin) {
-          if (s.time >= c.before[t.lane].time) c.before[t.lane] = Before{s.time, s.value, s.real};
-        } else if (s.time <= span.end) {
-          c.inside[t.lane].push_back(rig::LaneChange{s.time, s.value, s.real});
+  if (trace.in_time_order()) {
+    feed_in_time_order(trace, targets, cutting);
+  } else {
+    trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
+      for (const TraceSample& s : chunk) {
+        for (const Target& t : targets[s.signal]) {
+          Cutting& c = cutting[t.cutting];
+          const rig::TraceWindow& span = c.window->span;
+          if (s.time < span.begin) {
+            if (s.time >= c.before[t.lane].time) c.before[t.lane] = Before{s.time, s.value, s.real};
+          } else if (s.time <= span.end) {
+            c.inside[t.lane].push_back(rig::LaneChange{s.time, s.value, s.real});
+          }
         }
       }
-    }
-  });
+    });
+  }
   for (Cutting& c : cutting) finish(c);
   return out;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <utility>
 #include <vector>
 
 #include "rig/results/number_format.hpp"
@@ -73,9 +74,12 @@ json lane_chart(const TraceLane& lane, const TraceWindow& span, Nanos origin, co
       ys.push_back(c.value);
   }
   if (lane.real) // an analog lane: a line through its samples, ending at its last
-    return {{"lane", lane.name}, {"role", to_string(lane.role)},
-            {"height", 70},      {"y", {{"label", "V"}}},
-            {"data", {xs, ys}},  {"series", {{{"label", lane.name}, {"colour", colour}, {"draw", "line"}}}}};
+    return {{"lane", lane.name},
+            {"role", to_string(lane.role)},
+            {"height", 70},
+            {"y", {{"label", "V"}}},
+            {"data", {std::move(xs), std::move(ys)}},
+            {"series", {{{"label", lane.name}, {"colour", colour}, {"draw", "line"}}}}};
   xs.push_back(rel(span.end, origin));
   ys.push_back(lane.changes.back().value);
   const bool level = lane.role == LaneRole::Count || lane.role == LaneRole::Rate;
@@ -84,8 +88,8 @@ json lane_chart(const TraceLane& lane, const TraceWindow& span, Nanos origin, co
   return {{"lane", lane.name},
           {"role", to_string(lane.role)},
           {"height", level ? 90 : 44},
-          {"y", y},
-          {"data", {xs, ys}},
+          {"y", std::move(y)},
+          {"data", {std::move(xs), std::move(ys)}},
           {"series", {{{"label", lane.name}, {"colour", colour}, {"draw", "step"}}}}};
 }
 
@@ -229,7 +233,8 @@ json timing_figure(const Measurement& m, Judgement shown, const WindowTrace* tra
   if (!notes.empty()) notes.resize(notes.size() - 2);
   if (!want) notes += std::string(notes.empty() ? "" : "; ") + "no limit: reported only";
   if (!m.at) notes += std::string(notes.empty() ? "" : "; ") + "no edge captured";
-  return {{"kind", "timing"}, {"title", "timing of " + m.name}, {"charts", charts}, {"notes", notes}};
+  return {
+      {"kind", "timing"}, {"title", "timing of " + m.name}, {"charts", std::move(charts)}, {"notes", notes}};
 }
 
 json limits_figure(std::span<const ShownMeasurement> rows) {
@@ -258,11 +263,11 @@ json limits_figure(std::span<const ShownMeasurement> rows) {
             {"colour", kBand},
             {"label", ""},
             {"cls", "expected"}}}},
-         {"vlines", vlines},
+         {"vlines", std::move(vlines)},
          {"labels", true}});
   }
   if (charts.empty()) return nullptr;
-  return {{"kind", "limits"}, {"title", "measurements against their limits"}, {"charts", charts}};
+  return {{"kind", "limits"}, {"title", "measurements against their limits"}, {"charts", std::move(charts)}};
 }
 
 json histogram_figure(std::span<const double> values, const std::string& unit,

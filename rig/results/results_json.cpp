@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
 
 #include "rig/results/atomic_file.hpp"
 #include "rig/results/run_log.hpp"
@@ -93,7 +94,7 @@ json measurement_json(const Measurement& m) {
               {"upper", opt(m.upper)},
               {"outcome", to_string(m.outcome)},
               {"detail", m.detail},
-              {"window", w},
+              {"window", std::move(w)},
               {"at_ns", m.at ? json(m.at->count()) : json(nullptr)}};
 }
 
@@ -142,11 +143,15 @@ json traces_json(const std::vector<WindowTrace>& traces) {
       for (const auto& c : l.changes)
         changes.push_back(l.real ? json::array({c.time.count(), c.real})
                                  : json::array({c.time.count(), c.value}));
-      json lane{{"name", l.name}, {"role", to_string(l.role)}, {"changes", changes}, {"thinned", l.thinned}};
+      json lane{{"name", l.name},
+                {"role", to_string(l.role)},
+                {"changes", std::move(changes)},
+                {"thinned", l.thinned}};
       if (l.real) lane["real"] = true; // only an analog lane says so: the others stay as they were
       lanes.push_back(std::move(lane));
     }
-    out.push_back(json{{"around", window_json(t.around)}, {"span", window_json(t.span)}, {"lanes", lanes}});
+    out.push_back(
+        json{{"around", window_json(t.around)}, {"span", window_json(t.span)}, {"lanes", std::move(lanes)}});
   }
   return out;
 }
@@ -198,8 +203,8 @@ json check_json(const CheckResult& c) {
          {"kind", c.kind},
          {"outcome", to_string(c.judgement)},
          {"measured", to_string(c.outcome())},
-         {"measurements", ms},
-         {"series", ss}};
+         {"measurements", std::move(ms)},
+         {"series", std::move(ss)}};
   if (!c.probes.empty()) { // only when there are: other checks keep their bytes
     json ps = json::array();
     for (const auto& p : c.probes) {
@@ -207,13 +212,13 @@ json check_json(const CheckResult& c) {
       if (p.start) probe["start_ns"] = p.start->count();
       ps.push_back(std::move(probe));
     }
-    j["probes"] = ps;
+    j["probes"] = std::move(ps);
   }
   if (!c.traces.empty()) j["traces"] = traces_json(c.traces);
   if (!c.expected_rate.empty()) { // only a check that names its move: the others keep their bytes
     json knots = json::array();
     for (const auto& k : c.expected_rate) knots.push_back(json::array({k.time.count(), k.rate}));
-    j["expected_rate"] = knots;
+    j["expected_rate"] = std::move(knots);
   }
   return j;
 }
@@ -255,8 +260,10 @@ json motion_json(const MotionRecord& m) {
   for (const auto& p : m.points) points.push_back(json::array({p.time.count(), p.position, p.speed}));
   json events = json::array();
   for (const auto& e : m.events) events.push_back(json{{"time_ns", e.time.count()}, {"what", e.what}});
-  return json{
-      {"position_unit", "counts"}, {"speed_unit", "counts/s"}, {"points", points}, {"events", events}};
+  return json{{"position_unit", "counts"},
+              {"speed_unit", "counts/s"},
+              {"points", std::move(points)},
+              {"events", std::move(events)}};
 }
 
 MotionRecord motion_from(const json& j) {
@@ -291,8 +298,8 @@ json run_to_json(const RunResult& r) {
          {"error", opt_str(r.error)},
          {"outcome", to_string(r.outcome)},
          {"caught", r.fault.empty() ? json(nullptr) : json(caught(r))},
-         {"checks", checks},
-         {"observations", obs}};
+         {"checks", std::move(checks)},
+         {"observations", std::move(obs)}};
   if (r.interrupted) j["interrupted"] = true; // only when set: uninterrupted results keep their bytes
   if (!r.motion.empty()) j["motion"] = motion_json(r.motion);
   if (!r.trace.empty()) j["trace"] = r.trace;
@@ -362,8 +369,8 @@ json document(const CampaignResult& r, bool with_runs) {
          {"trace_policy", to_string(r.trace_policy)},
          {"planned_runs", r.planned_runs},
          {"complete", r.complete},
-         {"runs", runs},
-         {"faults", faults},
+         {"runs", std::move(runs)},
+         {"faults", std::move(faults)},
          {"totals", json{{"runs", t.runs},
                          {"runs_passed", t.runs_passed},
                          {"runs_failed", t.runs_failed},
@@ -383,7 +390,7 @@ json document(const CampaignResult& r, bool with_runs) {
     json wc = json::object();
     if (r.started_at) wc["started_at"] = *r.started_at;
     if (r.host) wc["host"] = *r.host;
-    j["wall_clock"] = wc;
+    j["wall_clock"] = std::move(wc);
   }
   return j;
 }
@@ -436,6 +443,32 @@ RunDumpSource dumps_of(const RunSource& runs) {
   return [runs](const RunDumpVisitor& visit) {
     runs([&](const RunResult& run) { visit(run_to_json(run).dump(2)); });
   };
+}
+
+std::string compact_json_text(std::string_view indented) {
+  std::string out(indented.size(), '\0');
+  char* w = out.data();
+  const char* p = indented.data();
+  const char* const end = p + indented.size();
+  while (p < end) {
+    const char c = *p++;
+    if (c == '"') { // a string, through its closing quote, escapes (\" and \\ too) as they are
+      *w++ = c;
+      while (p < end) {
+        const char d = *p++;
+        *w++ = d;
+        if (d == '\\') {
+          if (p < end) *w++ = *p++;
+        } else if (d == '"') {
+          break;
+        }
+      }
+    } else if (c != ' ' && c != '\n') {
+      *w++ = c;
+    }
+  }
+  out.resize(static_cast<std::size_t>(w - out.data()));
+  return out;
 }
 
 void write_json_text(const CampaignResult& header, const RunSource& runs, const TextSink& out) {

@@ -40,6 +40,10 @@ void write_json_text(const CampaignResult& header, const RunSource& runs, const 
 using RunDumpVisitor = std::function<void(std::string_view)>;
 using RunDumpSource = std::function<void(const RunDumpVisitor&)>;
 [[nodiscard]] RunDumpSource dumps_of(const RunSource& runs);
+// The compact text (nlohmann's dump()) of the JSON whose indented text (dump(n), any n) is
+// `indented`: the spaces and line breaks outside its strings dropped (the writer puts none
+// anywhere else), so a writer holding an indented dump gets the compact one without a second.
+[[nodiscard]] std::string compact_json_text(std::string_view indented);
 void write_json_dumps(const CampaignResult& header, const RunDumpSource& runs, const TextSink& out);
 
 // Writes to "<path>.tmp", then renames over path: a crash leaves either the previous

@@ -29,13 +29,15 @@ void RunLog::append(const RunResult& run) {
   // The record carries the words finalize() would derive, so a log read on its own agrees.
   RunResult judged = run;
   judge(judged);
-  json record{{"run", run_to_json(judged)}};
-  file_.append(record.dump() + "\n");
+  // The record is {"run":<the run's object, compact>}: while the runs are held, its text is
+  // made from the indented dump results.json takes (compact_json_text), one dump, not two.
+  const json run_json = run_to_json(judged);
+  std::string dump = dropped_ ? run_json.dump() : run_json.dump(2);
+  file_.append("{\"run\":" + (dropped_ ? dump : compact_json_text(dump)) + "}\n");
   if (last_index_ && judged.index <= *last_index_) out_of_order_ = true;
   last_index_ = judged.index;
   tally_.add(judged);
   if (dropped_) return;
-  std::string dump = record.at("run").dump(2);
   held_bytes_ += 2 * dump.size(); // the text and about as much again for the typed run
   if (held_bytes_ > budget_) {
     dropped_ = true;

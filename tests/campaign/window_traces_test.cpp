@@ -204,6 +204,64 @@ TEST(WindowTraces, ChecksCutTogetherAreEachCutAlone) {
                 "cut " + std::to_string(k));
 }
 
+// A trace recorded in time order (a scheduler's) is cut by a pass that keeps each signal's
+// last sample once, not once a window, and drops a window once its span has ended: the same
+// cuts as the general pass, which the same samples and one more, out of time order on a
+// signal no lane shows, take. Windows overlapping, nested, sharing a begin, beginning and
+// ending on a sample's time, before every sample and after the last; samples at equal times;
+// a spilled recording read back.
+TEST(WindowTraces, ATraceInTimeOrderIsCutAsTheGeneralPassCutsIt) {
+  const auto record = [](TraceRecorder& trace, bool out_of_order) {
+    trace.spill_beyond(1'000);
+    const auto a = trace.declare("enc.A");
+    trace.set_initial(a, 1);
+    const auto count = trace.declare("shaft.count", SignalKind::Integer, 64);
+    const auto out = trace.declare("ls1");
+    const auto sine = trace.declare("resolver.sin", SignalKind::Real, 64);
+    const auto other = trace.declare("other");
+    Level level = Level::Low;
+    for (std::int64_t t = 5'000; t < 3'000'000; t += 1'000) {
+      level = level == Level::Low ? Level::High : Level::Low;
+      trace.edge(a, Edge{Nanos{t}, level});
+      trace.value(count, Nanos{t}, t / 1'000);
+      if (t % 3'000 == 0) trace.value(count, Nanos{t}, t / 1'000 + 1); // twice at one time
+      if (t % 40'000 == 0) trace.real(sine, Nanos{t}, std::sin(static_cast<double>(t) * 1e-6));
+      if (t % 170'000 == 0) trace.edge(out, Edge{Nanos{t}, level});
+      if (t % 10'000 == 0) trace.edge(other, Edge{Nanos{t}, level});
+    }
+    if (out_of_order) trace.edge(other, Edge{Nanos{2'000}, Level::High});
+  };
+  TraceRecorder ordered;
+  record(ordered, false);
+  TraceRecorder general;
+  record(general, true);
+  ASSERT_TRUE(ordered.in_time_order());
+  ASSERT_FALSE(general.in_time_order());
+  ASSERT_GT(ordered.sample_count(), 1'000U); // spilled: read back from the file
+  rig::CheckResult many = one_window(Nanos{200'000}, Nanos{1'200'000});
+  for (const auto& [b, e] : std::vector<std::pair<std::int64_t, std::int64_t>>{
+           {1'000'000, 2'000'000}, {200'000, 250'000}, {0, 1'000}})
+    many.measurements.push_back(one_window(Nanos{b}, Nanos{e}).measurements[0]);
+  rig::CheckResult more = one_window(Nanos{2'990'000}, Nanos{3'500'000});
+  for (const auto& [b, e] : std::vector<std::pair<std::int64_t, std::int64_t>>{
+           {4'000'000, 4'100'000}, {500'000, 510'000}, {1'500'000, 1'500'000}})
+    more.measurements.push_back(one_window(Nanos{b}, Nanos{e}).measurements[0]);
+  const Lanes shaft{{"enc.A", rig::LaneRole::Stimulus},
+                    {"resolver.sin", rig::LaneRole::Stimulus},
+                    {"shaft.count", rig::LaneRole::Count},
+                    {"ls1", rig::LaneRole::Output}};
+  const std::vector<WindowCut> cuts{
+      {&many, shaft}, {&more, shaft}, {&many, {{"ls1", rig::LaneRole::Output}}}};
+  const auto fast = cut_window_traces(cuts, ordered);
+  const auto slow = cut_window_traces(cuts, general);
+  ASSERT_EQ(fast.size(), cuts.size());
+  EXPECT_EQ(fast[0].size(), 4U);
+  EXPECT_GE(fast[1].size(), 3U); // the windows timing_figures draws
+  for (std::size_t k = 0; k < cuts.size(); ++k)
+    EXPECT_EQ(fast[k].size(), rig::timing_figures(*cuts[k].check).size()) << k;
+  for (std::size_t k = 0; k < cuts.size(); ++k) expect_same(fast[k], slow[k], "cut " + std::to_string(k));
+}
+
 // A resolver board's stimulus in its diagram: the stators as the run recorded them, real
 // lanes. The stator model (rig/campaign/resolver_stators.hpp, after the ANS1 and Series 2700
 // resolver inputs): the rotor is excited with amplitude * sin(2 pi f t + phase) and each

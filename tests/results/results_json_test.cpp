@@ -211,6 +211,34 @@ TEST(ResultsJson, AtomicWriteLeavesNoTempAndPartialProgressIsReadable) {
   EXPECT_TRUE(same_content(read, c));
 }
 
+// The compact text made from the indented one is nlohmann's own compact dump, byte for byte:
+// strings that hold what the compaction drops outside them (spaces, ": ", escaped line
+// breaks, quotes and backslashes, "</"), empty and nested containers, numbers of each kind.
+TEST(ResultsJson, CompactTextFromTheIndentedDumpIsTheCompactDump) {
+  const json tricky = {
+      {"a key: with spaces", "value: \"quoted\" \\ back\\slash\\"},
+      {"lines", "one\ntwo\r\n  three\t"},
+      {"empty", json::object()},
+      {"none", json::array()},
+      {"nested",
+       {{"x", {1, -2, 3.5, 1e300, -0.0}},
+        {"y", {true, false, nullptr}},
+        {"z", json::array({json::array()})}}},
+      {"unicode", "µs \u00e9 </script> \x01"},
+      {"trailing\\", "\\"},
+  };
+  for (const int indent : {0, 1, 2, 4})
+    EXPECT_EQ(compact_json_text(tricky.dump(indent)), tricky.dump()) << indent;
+  CampaignResult c = test::sample_campaign(4);
+  c.runs[1].error = "bus-off: \"frame\"\n  lost";
+  finalize(c);
+  for (const RunResult& run : c.runs) {
+    const json j = run_to_json(run);
+    EXPECT_EQ(compact_json_text(j.dump(2)), j.dump());
+  }
+  EXPECT_EQ(compact_json_text(to_json(c).dump(2)), to_json(c).dump());
+}
+
 TEST(ResultsJson, ReadingRejectsWhatIsNotAResultsFile) {
   const fs::path path = scratch("bad.json");
   std::ofstream(path) << "{\"format\": \"something-else\", \"version\": 1}";

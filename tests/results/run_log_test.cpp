@@ -174,6 +174,20 @@ TEST(RunLog, WritersFoldIsTheFilesFold) {
         EXPECT_FALSE(log.holds_runs()) << what; // read back from the file
       }
 
+      // Each record is {"run": the judged run's object} dumped compact, whether the writer
+      // made it from the indented dump it holds or dumped it itself (past its budget).
+      std::istringstream lines(slurp(held / kRunLogName));
+      std::string line;
+      std::getline(lines, line); // the header
+      for (const RunResult& run : whole.runs) {
+        RunResult judged = run;
+        judge(judged);
+        ASSERT_TRUE(std::getline(lines, line)) << what;
+        EXPECT_EQ(line, nlohmann::json({{"run", run_to_json(judged)}}).dump())
+            << what << ", run " << run.index;
+      }
+      EXPECT_FALSE(std::getline(lines, line)) << what;
+
       const CampaignResult from_writer = fold_run_log(log, held, facts, clock);
       const CampaignResult from_file = fold_run_log(held / kRunLogName, read, facts, clock);
       EXPECT_EQ(from_writer.totals, from_file.totals) << what;
