@@ -215,11 +215,16 @@ struct Ran {
   std::optional<rig::CampaignResult> result; // without its runs: they are in its run log
   std::filesystem::path log;
   rig::JunitClock clock;
+  std::optional<rig::JunitSuiteBody> junit; // its part of a suite's junit.xml, when made while held
 };
 
 // Runs a prepared campaign into dir. The summary goes to out, the rest to err.
+// In a suite, junit_held counts the bytes of the campaigns' junit text made so far (Ran::junit):
+// while the runs are held and that stays within kRunLogHeldBytes, it is made here, not from the
+// run log read back when the suite's junit.xml is written.
 Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, campaign::StopRequest* stop,
-            RunProgress& progress, std::ostream& out, std::ostream& err) {
+            RunProgress& progress, std::ostream& out, std::ostream& err,
+            std::atomic<std::size_t>* junit_held = nullptr) {
   Ran ran;
   // The campaign's wall-clock start, to the second (or the --epoch / SOURCE_DATE_EPOCH given):
   // junit.xml's timestamp, results.json's wall_clock.started_at, and can.log's epoch (so the
@@ -322,6 +327,11 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     facts.host = ran.clock.hostname;
     rig::CampaignResult result = rig::fold_run_log(log, dir, facts, ran.clock);
     ran.log = log.path();
+    if (junit_held != nullptr && log.holds_runs()) {
+      rig::JunitSuiteBody body = rig::junit_suite_body(result, log.runs(), ran.clock);
+      const std::size_t size = body.testcases.size();
+      if (junit_held->fetch_add(size) + size <= rig::kRunLogHeldBytes) ran.junit = std::move(body);
+    }
 
     const auto& t = result.totals;
     out << fmt::format("{}: {} run(s), {} passed, {} failed, {} errored; faults caught {}/{}; verdict {}\n",
@@ -423,13 +433,15 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
   std::size_t printed = 0;
   std::mutex print_mutex;
   std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> junit_held{0};
   const auto worker = [&] {
     for (std::size_t i = next++; i < n; i = next++) {
       if (stop.requested()) {
         errs[i] << fmt::format("hilrig run: {}: not run (stopped by {})\n", chosen[i].file, stop.reason());
         ran[i].status = kRigFault;
       } else {
-        ran[i] = execute(o, *prepared[i], o.out / chosen[i].subdir, &stop, progress, outs[i], errs[i]);
+        ran[i] = execute(o, *prepared[i], o.out / chosen[i].subdir, &stop, progress, outs[i], errs[i],
+                         &junit_held);
       }
       const std::lock_guard lock(print_mutex);
       finished[i] = true;
@@ -457,7 +469,8 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
   }
   for (std::size_t i = 0; i < n; ++i)
     if (rows[i].result)
-      junit.push_back({&*rows[i].result, chosen[i].file, ran[i].clock, rig::run_log_runs(ran[i].log)});
+      junit.push_back({&*rows[i].result, chosen[i].file, ran[i].clock, rig::run_log_runs(ran[i].log),
+                       ran[i].junit ? &*ran[i].junit : nullptr});
   const std::string title = "hilrig suite: " + [&] {
     std::string names;
     for (const std::string& f : o.files) names += (names.empty() ? "" : " ") + f;

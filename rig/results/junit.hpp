@@ -42,11 +42,24 @@ void write_junit_xml(const CampaignResult& header, const RunSource& runs, const 
 
 // A suite of campaigns (`hilrig run DIR`): one <testsuite> per campaign holding every
 // testcase of its runs (classname "<campaign>.<run>"), its file, seed and verdict as properties.
+// A campaign's testcases in a suite's junit.xml, made while its runs are at hand (the run log's
+// writer holds them), so the suite's junit.xml need not read every run log back: their counts
+// (the <testsuite> attributes) and text.
+struct JunitSuiteBody {
+  std::size_t tests = 0, failed = 0, errored = 0, skipped = 0;
+  double seconds = 0.0;
+  bool timed = true;
+  std::string testcases;
+};
+[[nodiscard]] JunitSuiteBody junit_suite_body(const CampaignResult& header, const RunSource& runs,
+                                              const JunitClock& clock);
+
 struct JunitCampaign {
   const CampaignResult* result = nullptr;
   std::string file; // the campaign file as given
   JunitClock clock;
-  RunSource runs; // the campaign's runs when `result` does not hold them (its run log)
+  RunSource runs;                       // the campaign's runs when `result` does not hold them (its run log)
+  const JunitSuiteBody* body = nullptr; // when given: junit_suite_body(*result, runs, clock), made before
 };
 [[nodiscard]] std::string to_junit_suite_xml(const std::string& name,
                                              const std::vector<JunitCampaign>& campaigns);

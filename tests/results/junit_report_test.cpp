@@ -86,5 +86,38 @@ TEST(Junit, TimesAreTheRunsWallTimeOrAbsentWhenNotKnown) {
   EXPECT_EQ(count_of(x, " time=\""), 0U) << x;
 }
 
+// A suite's junit.xml from each campaign's body made beforehand (junit_suite_body, while its runs
+// are held) is the text read from the runs when it is written: counts, times and testcases.
+TEST(Junit, ASuiteFromBodiesMadeBeforehandIsTheTextFromTheRuns) {
+  CampaignResult a = test::sample_campaign(3); // 2 testcases per run: 6
+  CampaignResult b;
+  b.campaign = "ans1 <sample>";
+  b.planned_runs = 2;
+  b.runs = {test::nominal_run(0, 21.0), test::fault_run(1, "slow", false)}; // one failure each
+  finalize(b);
+  JunitClock timed;
+  timed.run_seconds = {{0, 0.1}, {1, 0.2}, {2, 0.7}};
+  JunitClock partly; // run 1's wall time not known: no time on its campaign nor the suite
+  partly.run_seconds = {{0, 0.3}};
+  const std::vector<JunitCampaign> from_runs = {{&a, "a.toml", timed, runs_of(a), nullptr},
+                                                {&b, "b.toml", partly, runs_of(b), nullptr}};
+  const JunitSuiteBody body_a = junit_suite_body(a, runs_of(a), timed);
+  const JunitSuiteBody body_b = junit_suite_body(b, runs_of(b), partly);
+  EXPECT_EQ(body_a.tests, 6U);
+  EXPECT_TRUE(body_a.timed);
+  EXPECT_FALSE(body_b.timed);
+  EXPECT_EQ(count_of(body_a.testcases, "<testcase "), 6U);
+  std::vector<JunitCampaign> from_bodies = from_runs;
+  from_bodies[0].body = &body_a;
+  from_bodies[1].body = &body_b;
+  const std::string x = to_junit_suite_xml("suite", from_runs);
+  EXPECT_EQ(to_junit_suite_xml("suite", from_bodies), x);
+  EXPECT_EQ(count_of(x, "<testsuite "), 2U);
+  EXPECT_EQ(count_of(x, " time=\"1.000\" timestamp="), 1U) << x; // campaign a: 0.1 + 0.2 + 0.7
+  // Only one campaign given its body: the same text too.
+  from_bodies[1].body = nullptr;
+  EXPECT_EQ(to_junit_suite_xml("suite", from_bodies), x);
+}
+
 } // namespace
 } // namespace hilrig::rig
