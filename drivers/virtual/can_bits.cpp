@@ -10,12 +10,35 @@ namespace {
 // Longest unstuffed SOF..CRC of any frame: FD extended, 64 bytes: 41 + 512 + 21 bits.
 constexpr std::size_t kMaxBits = 600;
 
+// CRC-15 (kCanCrc15) a byte at a time: the register after 8 bit steps from (x << 7), input 0.
+constexpr std::array<std::uint16_t, 256> kCrc15Bytes = [] {
+  std::array<std::uint16_t, 256> table{};
+  for (std::uint32_t x = 0; x < 256; ++x) {
+    std::uint32_t reg = x << 7U;
+    for (int i = 0; i < 8; ++i) reg = ((reg << 1U) & 0x7FFFU) ^ ((reg & 0x4000U) != 0 ? kCanCrc15.poly : 0U);
+    table[x] = static_cast<std::uint16_t>(reg);
+  }
+  return table;
+}();
+
 struct BitStream {
   std::array<std::uint8_t, kMaxBits> bits{};
   std::size_t n = 0;
   std::size_t brs = 0; // index of the BRS bit (FD only)
+  // can_crc(bits, n, kCanCrc15) of the bits pushed so far, kept as they are pushed (a data
+  // byte in one table step): a classic frame's CRC field.
+  std::uint32_t crc15 = kCanCrc15.init;
 
   void push(std::uint32_t v, unsigned count) {
+    if (count == 8) {
+      crc15 = ((crc15 << 8U) & 0x7FFFU) ^ kCrc15Bytes[((crc15 >> 7U) ^ v) & 0xFFU];
+    } else {
+      for (unsigned i = count; i-- > 0;) {
+        const bool feedback = ((crc15 & 0x4000U) != 0) != (((v >> i) & 1U) != 0);
+        crc15 = (crc15 << 1U) & 0x7FFFU;
+        if (feedback) crc15 ^= kCanCrc15.poly;
+      }
+    }
     for (unsigned i = count; i-- > 0;) bits[n++] = static_cast<std::uint8_t>((v >> i) & 1U);
   }
 };
@@ -165,8 +188,7 @@ std::uint8_t can_len_to_dlc(std::uint8_t len) {
 CanFrameBits can_frame_bits(const CanFrame& frame) {
   BitStream s = header_and_data(frame);
   if (!frame.fd) {
-    const std::uint32_t crc = can_crc(s.bits.data(), s.n, kCanCrc15);
-    s.push(crc, 15);
+    s.push(s.crc15, 15); // can_crc(s.bits.data(), s.n, kCanCrc15), kept as the bits were pushed
     return assemble(frame, s, count_stuff(s, true, false));
   }
   return assemble(frame, s, count_stuff(s, false, frame.brs));
