@@ -25,6 +25,16 @@ EventId Scheduler::at(Nanos t, Action action, Tie tie) {
   if (t < now()) {
     throw std::logic_error("Scheduler: event scheduled in the past");
   }
+  return insert(t, std::move(action), next_seq_++ | (tie == Tie::Last ? kLast : 0));
+}
+
+EventId Scheduler::at(Nanos t, Action action, Reservation place) {
+  if (t < now() || (t.count() == running_time_ && place.seq < running_seq_))
+    throw std::logic_error("Scheduler: event scheduled in the past (at a place already passed)");
+  return insert(t, std::move(action), place.seq);
+}
+
+EventId Scheduler::insert(Nanos t, Action action, std::uint64_t seq) {
   std::uint32_t slot = 0;
   if (!free_.empty()) {
     slot = free_.back();
@@ -36,7 +46,7 @@ EventId Scheduler::at(Nanos t, Action action, Tie tie) {
   Slot& s = slots_[slot];
   s.action = std::move(action);
   s.live = true;
-  heap_push(Entry{t.count(), next_seq_++ | (tie == Tie::Last ? kLast : 0), slot, s.generation});
+  heap_push(Entry{t.count(), seq, slot, s.generation});
   ++live_;
   return EventId{slot, s.generation};
 }
@@ -154,6 +164,8 @@ bool Scheduler::step() {
     --live_;
     clock_.advance_to(Nanos{stream_next_.time});
     ++executed_;
+    running_time_ = stream_next_.time;
+    running_seq_ = stream_next_.seq;
     ordinary_running_ = true;
     stream_->fire();
     ordinary_running_ = false;
@@ -169,6 +181,8 @@ bool Scheduler::step() {
   release(e.slot);
   clock_.advance_to(Nanos{e.time});
   ++executed_;
+  running_time_ = e.time;
+  running_seq_ = e.seq;
   ordinary_running_ = (e.seq & kLast) == 0;
   action();
   ordinary_running_ = false;

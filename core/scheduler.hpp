@@ -17,6 +17,13 @@ struct EventId {
   [[nodiscard]] bool valid() const { return slot != UINT32_MAX; }
 };
 
+// A place among events at equal times, taken before the event's time is known
+// (Scheduler::reserve): an event scheduled later at that place runs where one scheduled at
+// the reservation would have.
+struct Reservation {
+  std::uint64_t seq = 0;
+};
+
 // A run of ordinary events, each scheduled by the one before (the rig's encoder edges): the
 // scheduler keeps its next event outside the heap (Scheduler::stream_at).
 class EventStream {
@@ -50,6 +57,14 @@ public:
   // Schedules at an absolute time; a time before now() is a logic error and throws.
   EventId at(Nanos t, Action action, Tie tie = Tie::InOrder);
   EventId after(Nanos delay, Action action) { return at(now() + delay, std::move(action)); }
+
+  // The place an ordinary event scheduled now would take among those at its time. An
+  // at(t, action, place) later runs exactly where at(t, action) at the reservation would
+  // have: after the events at t scheduled before the reservation, before those scheduled
+  // after it. One pending event per reservation; a place already passed (t == now() and an
+  // event after the place running) is a logic error and throws, as a past time does.
+  [[nodiscard]] Reservation reserve() { return Reservation{next_seq_++}; }
+  EventId at(Nanos t, Action action, Reservation place);
 
   // The stream's next event at t: as at(t, [&] { stream.fire(); }) -- the same time and
   // sequence number, so it orders among the others exactly as that event would -- without a
@@ -93,6 +108,7 @@ private:
   static bool later(const Entry& a, const Entry& b) {
     return a.time != b.time ? a.time > b.time : a.seq > b.seq;
   }
+  EventId insert(Nanos t, Action action, std::uint64_t seq);
   void drop_dead_top();
   void release(std::uint32_t slot);
   // A 4-ary min-heap on (time, seq): half the depth of a binary heap, and the four children
@@ -111,6 +127,9 @@ private:
   std::vector<Slot> slots_;
   std::vector<std::uint32_t> free_;
   std::uint64_t next_seq_ = 0;
+  // The running (or last run) event's place: what a Reservation may no longer take.
+  std::int64_t running_time_ = INT64_MIN;
+  std::uint64_t running_seq_ = 0;
   std::uint64_t executed_ = 0;
   std::size_t live_ = 0;
   bool stop_requested_ = false;

@@ -101,7 +101,9 @@ bool QuadratureEdgeSolver::advance() {
       }
     }
     if (!more_) break;
-    if (!more_()) {
+    const Growth grown = more_();
+    if (grown == Growth::Later) return false; // not done: the next fill() asks again
+    if (grown == Growth::Whole) {
       more_ = nullptr; // the profile is whole
       break;
     }

@@ -36,21 +36,23 @@ public:
   std::size_t fill(std::span<QuadEdge> out);
 
   // A profile that its owner appends to as the edges are asked for: when the solver has used
-  // every segment it calls `more`, which appends segments to the profile (true) or says that
-  // none will come (false). The edges are those of the whole profile solved at once.
-  void grow_with(std::function<bool()> more) { more_ = std::move(more); }
+  // every segment it calls `more`, which appends segments to the profile (Grown), says that
+  // none will come (Whole), or that it appends no more for now (Later: fill() returns what it
+  // has, and the next fill() asks again). The edges are those of the whole profile solved at once.
+  enum class Growth : std::uint8_t { Grown, Whole, Later };
+  void grow_with(std::function<Growth()> more) { more_ = std::move(more); }
 
   [[nodiscard]] std::int64_t initial_count() const { return initial_count_; }
   [[nodiscard]] std::int64_t count() const { return count_; } // after the last edge written
   [[nodiscard]] bool done() const { return done_; }
 
 private:
-  bool advance();                   // sets up the next monotonic piece; false when none is left
+  bool advance();                   // sets up the next monotonic piece; false when none is left (yet)
   bool load_segment(std::size_t i); // false when segment i does not move
   void start_piece(int piece);
 
   const std::vector<Segment>* segments_;
-  std::function<bool()> more_;
+  std::function<Growth()> more_;
   QuadratureEncoder encoder_;
   double counts_per_unit_ = 0;
   Nanos until_;

@@ -23,10 +23,14 @@ double StepperLoad::commanded_angle() const {
   return electrical_command() / static_cast<double>(p_.rotor_teeth);
 }
 
+// The detent's sin is taken only when it can change the torque: a zero detent torque makes
+// the term a signed zero, which leaves a non-zero holding term as it is (x - (+-0) == x).
 StepperLoad::Vec StepperLoad::derivative(const Vec& x) const {
   const double n = static_cast<double>(p_.rotor_teeth);
-  const double torque = p_.holding_torque * std::sin(electrical_command() - n * x(0)) -
-                        p_.detent_torque * std::sin(4.0 * n * x(0)) - p_.viscous * x(1) - p_.load_torque;
+  const double holding = p_.holding_torque * std::sin(electrical_command() - n * x(0));
+  const double detent =
+      p_.detent_torque != 0.0 || holding == 0.0 ? p_.detent_torque * std::sin(4.0 * n * x(0)) : 0.0;
+  const double torque = holding - detent - p_.viscous * x(1) - p_.load_torque;
   return Vec(x(1), torque / (p_.rotor_inertia + p_.load_inertia));
 }
 

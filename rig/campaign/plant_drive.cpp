@@ -86,7 +86,12 @@ void PlantDrive::apply(plants::PlantInput which, bool level) {
 void PlantDrive::resolve() {
   ++generation_;
   solver_ = std::make_unique<signals::QuadratureEdgeSolver>(motion_.plan(), encoder_, s_.end);
-  solver_->grow_with([this] { return motion_.grow(); });
+  solver_->grow_with([this] {
+    using Growth = signals::QuadratureEdgeSolver::Growth;
+    if (grows_left_ == 0) return Growth::Later;
+    --grows_left_;
+    return motion_.grow() ? Growth::Grown : Growth::Whole;
+  });
   next_ = filled_ = 0;
   // The new plan starts where the old one was at this instant; a count that rounding puts
   // on the other side of an edge is set right here, once.
@@ -110,16 +115,37 @@ void PlantDrive::resolve() {
 }
 
 void PlantDrive::schedule_next() {
+  next_place_ = sched_.reserve();
+  seek();
+}
+
+void PlantDrive::seek() {
+  grows_left_ = kGrowsPerLook;
   if (next_ == filled_) {
     filled_ = solver_->fill(buffer_);
     next_ = 0;
-    if (filled_ == 0) return;
+    if (filled_ == 0) {
+      if (solver_->done()) return;
+      // No edge in the plan so far: none before its end, where the search goes on. That
+      // look runs in the edge's place, so an edge found at its instant runs where it would
+      // have; an input before it replaces the plan and drops the look, as it would the edge.
+      sched_.at(
+          motion_.plan().end_time(),
+          [this, g = generation_] {
+            if (g == generation_) seek();
+          },
+          next_place_);
+      return;
+    }
   }
   const Nanos at = buffer_[next_].time;
   if (at > s_.end) return;
-  sched_.at(at, [this, g = generation_] {
-    if (g == generation_) play();
-  });
+  sched_.at(
+      at,
+      [this, g = generation_] {
+        if (g == generation_) play();
+      },
+      next_place_);
 }
 
 void PlantDrive::play() {

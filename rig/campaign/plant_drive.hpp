@@ -56,7 +56,12 @@ public:
 private:
   void apply(plants::PlantInput which, bool level);
   void resolve(); // a new solver over the plan, from now
+  // The next edge's event, at the place it takes in the order of events at its time.
   void schedule_next();
+  // Looks for that edge in the plan integrated a few knots further; when none is there yet,
+  // looks again (at the same place) where the plan ends: the plan is integrated only a little
+  // ahead of the shaft, since the next input (a stepper's next pulse) usually replaces it.
+  void seek();
   void play();
 
   Scheduler& sched_;
@@ -70,6 +75,10 @@ private:
   std::array<signals::QuadEdge, 2> buffer_{};
   std::size_t next_ = 0, filled_ = 0;
   std::uint64_t generation_ = 0; // edges scheduled under an older plan are dropped
+  Reservation next_place_;       // where the next edge's event stands among those at its time
+  int grows_left_ = 0;           // PlantMotion::grow() calls this look at the plan may make
+  // grow() calls a look at the plan makes before waiting for the shaft to get there.
+  static constexpr int kGrowsPerLook = 1;
   std::int64_t count_ = 0;
   ShaftTrace* shaft_ = nullptr;
   std::vector<checks::PositionSample> counts_;

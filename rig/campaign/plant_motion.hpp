@@ -48,7 +48,7 @@ public:
   // Integration steps a plan reaches ahead of its start.
   static constexpr std::int64_t kPlanSteps = 128;
   // Knots grow() integrates at a time.
-  static constexpr int kGrowKnots = 8;
+  static constexpr int kGrowKnots = 4;
 
   // The shaft's position at t in counts: the history before the last input, the plan from
   // it on (what a resolver's stators carry; the board samples at or before now).

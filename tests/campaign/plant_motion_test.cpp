@@ -83,7 +83,10 @@ TEST(PlantMotion, PlanGrownAsReadIsThePlanIntegratedWhole) {
       for (const signals::QuadEdge& e : signals::solve_quadrature(whole.plan(), enc, end).edges)
         if (e.time < next) expected.push_back(e);
       signals::QuadratureEdgeSolver solver(grown.plan(), enc, end);
-      solver.grow_with([&grown] { return grown.grow(); });
+      solver.grow_with([&grown] {
+        return grown.grow() ? signals::QuadratureEdgeSolver::Growth::Grown
+                            : signals::QuadratureEdgeSolver::Growth::Whole;
+      });
       std::array<signals::QuadEdge, 2> one{};
       std::vector<signals::QuadEdge> played;
       for (std::size_t n = solver.fill(one); n != 0; n = solver.fill(one)) {

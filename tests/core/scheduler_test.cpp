@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,72 @@ TEST(Scheduler, TellsWhetherTheLastEventsAtNowHaveRunYet) {
   s.run_until(5_us);
   EXPECT_EQ(seen, (std::vector<bool>{true, false}));
   EXPECT_FALSE(s.ordinary_event_running());
+}
+
+// A reservation holds the place an event scheduled at it would have had: an event scheduled
+// later at that place, at a time only known then, runs after the events at its time scheduled
+// before the reservation and before those scheduled after it, and a place can be taken again
+// (a look ahead that found nothing yet moves on in the same place).
+TEST(Scheduler, ReservedPlaceOrdersAsAtTheReservation) {
+  Scheduler s;
+  std::string order;
+  s.at(5_us, [&] { order.push_back('a'); });
+  const Reservation place = s.reserve();
+  s.at(5_us, [&] { order.push_back('c'); });
+  s.at(1_us, [&] {
+    s.at(5_us, [&] { order.push_back('d'); }); // scheduled after the reservation, before its use
+    // Taken at 2 us, then again at 5 us from there: still between a and c.
+    s.at(
+        2_us,
+        [&] {
+          s.at(
+              5_us, [&] { order.push_back('b'); }, place);
+        },
+        place);
+  });
+  s.at(
+      5_us, [&] { order.push_back('e'); }, Scheduler::Tie::Last);
+  s.run_until_idle();
+  EXPECT_EQ(order, "abcde");
+}
+
+TEST(Scheduler, ReservedPlaceAlreadyPassedIsRefused) {
+  Scheduler s;
+  const Reservation early = s.reserve();
+  bool refused = false;
+  bool now_at_own_place = false;
+  s.at(5_us, [&] {
+    // The place before this event's, at its instant, has passed; a later instant has not.
+    try {
+      s.at(
+          5_us, [] {}, early);
+    } catch (const std::logic_error&) {
+      refused = true;
+    }
+    s.at(
+        6_us, [] {}, early);
+  });
+  const Reservation own = s.reserve();
+  s.at(
+      7_us,
+      [&] {
+        s.at(
+            7_us, [&] { now_at_own_place = true; }, own);
+      },
+      own);
+  s.run_until_idle();
+  EXPECT_TRUE(refused);
+  EXPECT_TRUE(now_at_own_place); // an event may hand its own place on at its instant
+  // After run_until() moved the clock past the last event, a reservation is good at now().
+  Scheduler t;
+  const Reservation first = t.reserve();
+  t.at(1_us, [] {});
+  t.run_until(3_us);
+  bool ran = false;
+  t.at(
+      3_us, [&] { ran = true; }, first);
+  t.run_until_idle();
+  EXPECT_TRUE(ran);
 }
 
 // A run stopped by a rig fault leaves events pending; one may own the last reference to a

@@ -1,7 +1,7 @@
 // A profile its owner appends to while the solver reads it (QuadratureEdgeSolver::grow_with,
 // how a plant's plan is integrated only as far as the encoder's next edge): the edges must be
-// those of the whole profile solved at once, whatever the chunks, the buffer size and the
-// `until` cut.
+// those of the whole profile solved at once, whatever the chunks, the pauses (Growth::Later),
+// the buffer size and the `until` cut.
 
 #include "signals/quadrature_edges.hpp"
 
@@ -30,18 +30,23 @@ std::vector<QuadEdge> solve_growing(const MotionProfile& whole, const Quadrature
   QuadratureEdgeSolver solver(growing, enc, until);
   initial = solver.initial_count();
   int asked_after_end = 0;
+  using Growth = QuadratureEdgeSolver::Growth;
   solver.grow_with([&] {
+    if (rng() % 3 == 0) return Growth::Later; // none for now: fill() stops, the next one asks again
     if (given == all.size()) {
       ++asked_after_end;
-      return false;
+      return Growth::Whole;
     }
     give(1 + rng() % 5);
-    return true;
+    return Growth::Grown;
   });
   std::vector<QuadEdge> buffer(buffer_size);
   std::vector<QuadEdge> out;
-  for (std::size_t n = solver.fill(buffer); n != 0; n = solver.fill(buffer))
+  for (;;) {
+    const std::size_t n = solver.fill(buffer);
+    if (n == 0 && solver.done()) break;
     out.insert(out.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
+  }
   EXPECT_TRUE(solver.done());
   EXPECT_LE(asked_after_end, 1); // once told no more will come, it does not ask again
   return out;
