@@ -95,19 +95,7 @@ std::string dotless(std::string text) {
 
 std::string seconds_text(double s) { return fmt::format("{:.3f}", s); }
 
-struct Counts {
-  std::size_t tests = 0, failed = 0, errored = 0, skipped = 0;
-  double seconds = 0.0;
-  bool timed = true; // every run's wall time known (JunitClock::run_seconds); else no time is written
-  void add(const Counts& o) {
-    tests += o.tests;
-    failed += o.failed;
-    errored += o.errored;
-    skipped += o.skipped;
-    seconds += o.seconds;
-    timed = timed && o.timed;
-  }
-};
+using Counts = JunitCounts;
 
 // ` time="..."`, or nothing when a run's wall time is not known (`hilrig merge`: results.json
 // holds none): JUnit's time is optional, and a 0 would read as a run that took no time.
@@ -215,17 +203,6 @@ Counts counts_of(const RunSource& runs, const JunitClock& clock) {
 
 RunSource source_of(const JunitCampaign& c) { return c.runs ? c.runs : runs_of(*c.result); }
 
-Counts counts_of(const JunitSuiteBody& b) {
-  Counts c;
-  c.tests = b.tests;
-  c.failed = b.failed;
-  c.errored = b.errored;
-  c.skipped = b.skipped;
-  c.seconds = b.seconds;
-  c.timed = b.timed;
-  return c;
-}
-
 } // namespace
 
 JunitSuiteBody junit_suite_body(const CampaignResult& header, const RunSource& runs,
@@ -238,8 +215,7 @@ JunitSuiteBody junit_suite_body(const CampaignResult& header, const RunSource& r
     Counts counts;
     text += testcases_xml(header, run, clock, counts);
   });
-  return JunitSuiteBody{all.tests,   all.failed, all.errored,    all.skipped,
-                        all.seconds, all.timed,  std::move(text)};
+  return JunitSuiteBody{all, std::move(text)};
 }
 
 void write_junit_xml(const CampaignResult& r, const RunSource& runs, const JunitClock& clock,
@@ -274,7 +250,7 @@ std::string to_junit_xml(const CampaignResult& r, const JunitClock& clock) {
 void write_junit_suite_xml(const std::string& name, const std::vector<JunitCampaign>& campaigns,
                            const TextSink& out) {
   const auto counts_of_campaign = [](const JunitCampaign& c) {
-    return c.body ? counts_of(*c.body) : counts_of(source_of(c), c.clock);
+    return c.body ? c.body->counts : counts_of(source_of(c), c.clock);
   };
   Counts all;
   for (const auto& c : campaigns) all.add(counts_of_campaign(c));

@@ -45,10 +45,21 @@ void write_junit_xml(const CampaignResult& header, const RunSource& runs, const 
 // A campaign's testcases in a suite's junit.xml, made while its runs are at hand (the run log's
 // writer holds them), so the suite's junit.xml need not read every run log back: their counts
 // (the <testsuite> attributes) and text.
-struct JunitSuiteBody {
+struct JunitCounts {
   std::size_t tests = 0, failed = 0, errored = 0, skipped = 0;
   double seconds = 0.0;
-  bool timed = true;
+  bool timed = true; // every run's wall time known (JunitClock::run_seconds); else no time is written
+  void add(const JunitCounts& o) {
+    tests += o.tests;
+    failed += o.failed;
+    errored += o.errored;
+    skipped += o.skipped;
+    seconds += o.seconds;
+    timed = timed && o.timed;
+  }
+};
+struct JunitSuiteBody {
+  JunitCounts counts;
   std::string testcases;
 };
 [[nodiscard]] JunitSuiteBody junit_suite_body(const CampaignResult& header, const RunSource& runs,

@@ -103,9 +103,9 @@ TEST(Junit, ASuiteFromBodiesMadeBeforehandIsTheTextFromTheRuns) {
                                                 {&b, "b.toml", partly, runs_of(b), nullptr}};
   const JunitSuiteBody body_a = junit_suite_body(a, runs_of(a), timed);
   const JunitSuiteBody body_b = junit_suite_body(b, runs_of(b), partly);
-  EXPECT_EQ(body_a.tests, 6U);
-  EXPECT_TRUE(body_a.timed);
-  EXPECT_FALSE(body_b.timed);
+  EXPECT_EQ(body_a.counts.tests, 6U);
+  EXPECT_TRUE(body_a.counts.timed);
+  EXPECT_FALSE(body_b.counts.timed);
   EXPECT_EQ(count_of(body_a.testcases, "<testcase "), 6U);
   std::vector<JunitCampaign> from_bodies = from_runs;
   from_bodies[0].body = &body_a;
