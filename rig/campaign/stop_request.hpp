@@ -1,6 +1,7 @@
 #pragma once
-// A request to stop a campaign early (SIGINT/SIGTERM): set from the signal-handling thread,
-// read by the simulation between events. The first request wins; its signal names the stop.
+// A request to stop a campaign early (SIGINT/SIGTERM): set from a signal handler, read by the
+// simulation between events. The first request wins; its signal names the stop. flag() is the
+// same request as the plain stop flag the servers and RT loops poll.
 
 #include <atomic>
 #include <csignal>
@@ -13,8 +14,10 @@ public:
   void request(int signal) {
     int none = 0;
     signal_.compare_exchange_strong(none, signal);
+    stopped_.store(true);
   }
-  [[nodiscard]] bool requested() const { return signal_.load(std::memory_order_relaxed) != 0; }
+  [[nodiscard]] bool requested() const { return stopped_.load(std::memory_order_relaxed); }
+  [[nodiscard]] const std::atomic<bool>& flag() const { return stopped_; }
   // "SIGTERM", "SIGINT", ... ("" before any request).
   [[nodiscard]] std::string reason() const {
     const int s = signal_.load();
@@ -34,6 +37,7 @@ public:
 
 private:
   std::atomic<int> signal_{0};
+  std::atomic<bool> stopped_{false};
 };
 
 } // namespace hilrig::campaign

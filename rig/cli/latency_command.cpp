@@ -3,15 +3,15 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <atomic>
 #include <sys/resource.h>
 
-#include <csignal>
 #include <memory>
 #include <thread>
 
 #include "core/clock.hpp"
+#include "rig/campaign/stop_request.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/stop_signals.hpp"
 #include "rig/rt/cpu_latency_request.hpp"
 #include "rig/rt/rt_loop.hpp"
 #include "rig/rt/rt_thread.hpp"
@@ -19,9 +19,6 @@
 namespace hilrig::cli {
 
 namespace {
-
-std::atomic<bool> g_stop{false};
-extern "C" void on_signal(int /*sig*/) { g_stop.store(true); }
 
 struct LatencyOptions {
   double duration_s = 10.0;
@@ -61,8 +58,8 @@ int run_latency(const LatencyOptions& o) {
     trace = std::make_unique<rig::WakeupTrace>(std::min<std::size_t>(loops, std::size_t{1} << 20));
   rig::Spread clock_cost;
   LoopCounters before, after;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  campaign::StopRequest stop;
+  const StopSignals signals(stop);
   // As cyclictest does: no deep C-states while measuring.
   const rig::CpuLatencyRequest no_deep_idle(0);
   // The measuring thread is set up exactly as the campaign RT loop is.
@@ -74,7 +71,7 @@ int run_latency(const LatencyOptions& o) {
     if (trace) clock_cost = rig::clock_read_cost(1000);
     before = thread_counters();
     const Nanos start = MonotonicClock{}.now();
-    rig::measure_wakeups(start, microseconds(o.interval_us), loops, g_stop, *histogram, trace.get());
+    rig::measure_wakeups(start, microseconds(o.interval_us), loops, stop.flag(), *histogram, trace.get());
     after = thread_counters();
   });
   rt.join();

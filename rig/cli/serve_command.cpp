@@ -1,6 +1,5 @@
 #include "rig/cli/serve_command.hpp"
 
-#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -14,18 +13,16 @@
 #include "drivers/modbus/tcp_server.hpp"
 #include "rig/campaign/campaign_error.hpp"
 #include "rig/campaign/duration.hpp"
+#include "rig/campaign/stop_request.hpp"
 #include "rig/cli/exit_status.hpp"
 #include "rig/cli/serve_devices.hpp"
 #include "rig/cli/serve_params.hpp"
+#include "rig/cli/stop_signals.hpp"
 #include "rig/duts/dut.hpp"
 
 namespace hilrig::cli {
 
 namespace {
-
-std::atomic<bool> g_stop{false};
-
-extern "C" void on_stop_signal(int /*signo*/) { g_stop.store(true); }
 
 bool is_loopback(const std::string& addr) { return addr.rfind("127.", 0) == 0 || addr == "localhost"; }
 
@@ -154,31 +151,15 @@ void serve_main(const ServeArgs& args) {
   if (o.far.config.empty() && (!o.far.gpio_sim.empty() || !o.far.can.empty())) {
     bad_input("--gpio-sim and --can need --far FAR.toml (which pin is on which line)");
   }
-  g_stop.store(false);
-  struct sigaction sa {};
-  sa.sa_handler = on_stop_signal;
-  sigemptyset(&sa.sa_mask);
-  struct sigaction old_int {};
-  struct sigaction old_term {};
-  sigaction(SIGINT, &sa, &old_int);
-  sigaction(SIGTERM, &sa, &old_term);
-  const auto restore = [&] {
-    sigaction(SIGINT, &old_int, nullptr);
-    sigaction(SIGTERM, &old_term, nullptr);
-  };
+  campaign::StopRequest stop;
+  const StopSignals signals(stop);
   try {
-    serve_device(o, g_stop, [&](const ServeEndpoint& e) { announce(o, e, args.port_file); });
+    serve_device(o, stop.flag(), [&](const ServeEndpoint& e) { announce(o, e, args.port_file); });
   } catch (const std::invalid_argument& e) {
-    restore();
     bad_input(e.what());
   } catch (const campaign::CampaignError& e) {
-    restore();
     bad_input(e.what());
-  } catch (...) {
-    restore();
-    throw;
   }
-  restore();
 }
 
 // Runs a server with the model in real time: virtual time is the monotonic time since start.

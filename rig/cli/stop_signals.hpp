@@ -1,7 +1,8 @@
 #pragma once
-// SIGINT and SIGTERM stop a campaign instead of killing it mid-write: while a StopSignals
-// lives, a handler turns either signal into a stop request, which the executive checks before
-// each event. When it is destroyed the signals' earlier actions are back.
+// SIGINT and SIGTERM stop hilrig instead of killing it mid-write: while a StopSignals lives, a
+// handler turns either signal into a stop request (the executive checks it before each event;
+// `serve` and `latency` poll its flag()). When it is destroyed the signals' earlier actions
+// are back. Every command that stops on a signal installs it this way, and only this way.
 //
 // The handler only sets the request's atomic (lock-free, async-signal-safe): no thread of its
 // own, so a short campaign stays a single-threaded process (a second thread, however idle, costs

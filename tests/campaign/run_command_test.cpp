@@ -910,8 +910,10 @@ TEST(StopSignals, ASignalIsAStopRequestWhileItLivesAndTheEarlierActionIsBackAfte
   {
     const StopSignals signals(stop);
     EXPECT_FALSE(stop.requested());
+    EXPECT_FALSE(stop.flag().load());  // the flag `serve` and `latency` poll
     ASSERT_EQ(std::raise(SIGTERM), 0); // handled on this thread before raise returns
     EXPECT_TRUE(stop.requested());
+    EXPECT_TRUE(stop.flag().load());
     ASSERT_EQ(std::raise(SIGINT), 0); // absorbed: the first signal names the stop
     EXPECT_EQ(stop.reason(), "SIGTERM");
     EXPECT_EQ(g_earlier_handler_saw, 0);

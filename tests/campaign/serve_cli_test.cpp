@@ -86,6 +86,22 @@ public:
 
   [[nodiscard]] std::string why_not() const { return test::read_file(dir_ / "stderr"); }
 
+  // Sends `signal` and waits (bounded) for the server to end: its wait status, or nullopt if it
+  // had not started or was still running at the deadline (then it is killed).
+  std::optional<int> stop_with(int signal) {
+    if (pid_ <= 0) return std::nullopt;
+    kill(pid_, signal);
+    for (const auto until = Clock::now() + kDeadline; Clock::now() < until;) {
+      int status = 0;
+      if (waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1;
+        return status;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return std::nullopt; // the destructor's SIGTERM and wait end it
+  }
+
   // A connected client, or null (then why_not() says why).
   modbus_t* client() {
     if (ctx_ != nullptr || port_ <= 0) return ctx_;
@@ -288,6 +304,19 @@ TEST(ServeCli, AServedSmd23eLockedByAFlashSaveComesBackAfterAPowerCycle) {
   EXPECT_EQ(s.write(kProgramSwitch, {1}), EMBXILADD);
   EXPECT_EQ(s.write(kClearPair, {1}), EMBXILADD);
   EXPECT_EQ(s.holding_registers(kSupply, 1).words, std::vector<std::uint16_t>{1});
+}
+
+// SIGTERM and SIGINT are stop requests (StopSignals, as for `hilrig run`): the server leaves its
+// loop, closes its clients and exits 0, with a client still connected.
+TEST(ServeCli, SigtermOrSigintStopsTheServerCleanly) {
+  for (const int signal : {SIGTERM, SIGINT}) {
+    Served s(std::string("stop_") + std::to_string(signal), {"--model", "2741"});
+    ASSERT_EQ(s.input_registers(0, 3).error, 0) << s.why_not();
+    const std::optional<int> status = s.stop_with(signal);
+    ASSERT_TRUE(status.has_value()) << "still serving after signal " << signal;
+    EXPECT_TRUE(WIFEXITED(*status)) << "killed by signal " << (WIFSIGNALED(*status) ? WTERMSIG(*status) : 0);
+    EXPECT_EQ(WIFEXITED(*status) ? WEXITSTATUS(*status) : -1, 0) << s.why_not();
+  }
 }
 
 TEST(ServeCli, BadMotionOrParamIsRefusedBeforeServing) {
