@@ -191,11 +191,13 @@ def main():
     status10 = (work / "exit-x10").read_text().strip() if (work / "exit-x10").exists() else "0"
     sp1 = ratio(sim1, wall1)
     sp10 = ratio(sim10, wall10)
+    # The long press campaign (1,800 RPM, 1,024-line encoder, 16 outputs) is held to 1,000x
+    # (issue 20); 200x is the floor for every other ANS1 campaign (campaign_speed.py).
     row(f"4. virtual-time speed, {campaign.name} ({sim1:g} s simulated, exit {status1})",
-        f"{sim1:g} s in {wall1:.2f} s wall", "real time (1 s per s)", sp1, ">= 200x",
-        None if sp1 is None else sp1 >= 200)
+        f"{sim1:g} s in {wall1:.2f} s wall", "real time (1 s per s)", sp1, ">= 1,000x",
+        None if sp1 is None else sp1 >= 1000)
     row(f"4b. same, 10x longer ({sim10:g} s simulated, exit {status10})", f"{sim10:g} s in {wall10:.2f} s wall",
-        "real time", sp10, ">= 200x", None if sp10 is None else sp10 >= 200)
+        "real time", sp10, ">= 1,000x", None if sp10 is None else sp10 >= 1000)
     root = campaign.resolve().parents[2]
     for fig, rel in (("4c", "ans1/ans1_press_plant.toml"), ("4d", "smd23e/smd23e_load_too_fast.toml")):
         sim, cpu, runs, status = plant_row(work, root, rel)
