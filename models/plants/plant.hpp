@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "core/time.hpp"
@@ -33,6 +34,23 @@ class Plant {
 public:
   virtual ~Plant() = default;
   [[nodiscard]] virtual std::unique_ptr<Plant> clone() const = 0;
+  // Becomes a copy of `other`, a plant of this one's own kind, reusing its storage.
+  virtual void assign(const Plant& other) = 0;
+  // Whether the plant resumes at its knots: (1) `until` only cuts a step short: advance(until)
+  // reaches min(until, e), where e (the end of the integration step, a breakpoint or a
+  // parameter change) does not depend on until, and nothing is located inside a step (a
+  // shorter step could place an event elsewhere); so a knot reached integrating towards a
+  // later instant is, when it lies before that instant (or at `until` itself), the knot
+  // integrating towards `until` reaches from the same state. (2) Its state after a step is
+  // its knot and what resume_at() restores from it.
+  [[nodiscard]] virtual bool resumes_at_knots() const { return false; }
+  // For a plant that resumes at its knots: puts this plant, at a knot of an integration (a
+  // sequence of advance() calls with no input between), at `later`, a knot that integration
+  // reached afterwards, in the state it had there.
+  virtual void resume_at(const Knot& later) {
+    (void)later;
+    throw std::logic_error("this plant does not resume at its knots");
+  }
 
   // The knot at now().
   [[nodiscard]] virtual Knot state() const = 0;

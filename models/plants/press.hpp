@@ -56,6 +56,7 @@ public:
              std::vector<ParamChange<PressParams>> changes = {});
 
   [[nodiscard]] std::unique_ptr<Plant> clone() const override { return std::make_unique<PressPlant>(*this); }
+  void assign(const Plant& other) override { *this = static_cast<const PressPlant&>(other); }
   [[nodiscard]] Knot state() const override { return Knot{now_, x_(0), x_(1)}; }
   Knot advance(Nanos until) override;
   void input(PlantInput which, bool level) override;

@@ -49,6 +49,7 @@ public:
              std::vector<ParamChange<RotaryParams>> changes = {});
 
   [[nodiscard]] std::unique_ptr<Plant> clone() const override { return std::make_unique<RotaryAxis>(*this); }
+  void assign(const Plant& other) override { *this = static_cast<const RotaryAxis&>(other); }
   [[nodiscard]] Knot state() const override;
   Knot advance(Nanos until) override;
   void input(PlantInput which, bool level) override;

@@ -46,6 +46,16 @@ Knot StepperLoad::advance(Nanos until) {
   return state();
 }
 
+// After advance() from s to e the changes at or before s are in force and none lies in (s, e)
+// (a step ends at the next one): those before e. One at e itself takes effect at the next
+// advance() (input() at e still sees the parameters before it).
+void StepperLoad::resume_at(const Knot& later) {
+  now_ = later.time;
+  x_ = Vec(later.angle, later.speed);
+  while (next_change_ < changes_.size() && changes_[next_change_].at < now_)
+    p_ = changes_[next_change_++].params;
+}
+
 void StepperLoad::input(PlantInput which, bool level) {
   if (which == PlantInput::Direction) forward_ = level;
   if (which != PlantInput::Step) return;

@@ -36,6 +36,11 @@ public:
               std::vector<ParamChange<StepperParams>> changes = {});
 
   [[nodiscard]] std::unique_ptr<Plant> clone() const override { return std::make_unique<StepperLoad>(*this); }
+  void assign(const Plant& other) override { *this = static_cast<const StepperLoad&>(other); }
+  // A step ends at until, the integration step's end or a parameter change: nothing is
+  // located; after it the state is the knot and the parameters of the changes before it.
+  [[nodiscard]] bool resumes_at_knots() const override { return true; }
+  void resume_at(const Knot& later) override;
   [[nodiscard]] Knot state() const override { return Knot{now_, x_(0), x_(1)}; }
   Knot advance(Nanos until) override;
   void input(PlantInput which, bool level) override;

@@ -1,5 +1,7 @@
 #include "rig/campaign/plant_drive.hpp"
 
+#include <limits>
+
 #include "rig/campaign/rig_drive.hpp"
 #include "rig/campaign/run_trace.hpp"
 #include "rig/campaign/scenario_reader.hpp"
@@ -29,6 +31,7 @@ PlantDrive::PlantDrive(Scheduler& scheduler, const Scenario& scenario)
     : sched_(scheduler), s_(scenario), spec_(*scenario.plant),
       motion_(spec_, scenario.encoder.counts_per_turn(), scenario.end),
       encoder_(rig_encoder(scenario.encoder)),
+      grows_per_look_(spec_.kind == PlantKind::StepperLoad ? kGrowsPerLook : std::numeric_limits<int>::max()),
       valve_(spec_.kind != PlantKind::Press || spec_.press_start.valve) {
   count_ = encoder_.count_at(motion_.plan().position(motion_.plan().start_time()));
   checks::append_motion(counts_, {motion_.plan().start_time(), static_cast<double>(count_)});
@@ -120,7 +123,7 @@ void PlantDrive::schedule_next() {
 }
 
 void PlantDrive::seek() {
-  grows_left_ = kGrowsPerLook;
+  grows_left_ = grows_per_look_;
   if (next_ == filled_) {
     filled_ = solver_->fill(buffer_);
     next_ = 0;

@@ -77,8 +77,13 @@ private:
   std::uint64_t generation_ = 0; // edges scheduled under an older plan are dropped
   Reservation next_place_;       // where the next edge's event stands among those at its time
   int grows_left_ = 0;           // PlantMotion::grow() calls this look at the plan may make
-  // grow() calls a look at the plan makes before waiting for the shaft to get there.
+  // grow() calls a look at the plan makes before waiting for the shaft to get there: for a
+  // stepper kGrowsPerLook (its next pulse usually replaces the plan a few knots in); no limit
+  // for a plant whose inputs are rare (a press, a rotary axis), whose plan the shaft mostly
+  // plays to its end: one look finds the next edge (or integrates the plan whole) rather than
+  // a look every few knots.
   static constexpr int kGrowsPerLook = 1;
+  int grows_per_look_;
   std::int64_t count_ = 0;
   ShaftTrace* shaft_ = nullptr;
   std::vector<checks::PositionSample> counts_;

@@ -19,10 +19,13 @@ std::unique_ptr<plants::Plant> make_plant(const PlantSpec& spec) {
   return nullptr;
 }
 
-PlantMotion::PlantMotion(const PlantSpec& spec, double counts_per_turn, Nanos end)
-    : per_rad_(counts_per_turn / (2.0 * std::numbers::pi)), end_(end), ahead_(spec.step * kPlanSteps),
-      checkpoint_(make_plant(spec)) {
-  input(checkpoint_->now(), plants::PlantInput::Valve,
+PlantMotion::PlantMotion(const PlantSpec& spec, double counts_per_turn, Nanos end, Resume resume)
+    : per_rad_(counts_per_turn / (2.0 * std::numbers::pi)), end_(end), ahead_(spec.step * kPlanSteps) {
+  checkpoint_ = make_plant(spec);
+  knots_.push_back(checkpoint_->state());
+  keep_knots_ = resume == Resume::AtKnot && checkpoint_->resumes_at_knots();
+  horizon_ = knots_.front().time;
+  input(knots_.front().time, plants::PlantInput::Valve,
         spec.kind != PlantKind::Press || spec.press_start.valve);
 }
 
@@ -46,17 +49,38 @@ void PlantMotion::integrate(plants::Plant& plant, Nanos until, std::vector<signa
   }
 }
 
+std::size_t PlantMotion::resume_knot(Nanos t) const {
+  if (!keep_knots_) return 0;
+  const auto after = std::upper_bound(knots_.begin(), knots_.end(), t,
+                                      [](Nanos v, const plants::Knot& k) { return v < k.time; });
+  if (after == knots_.begin()) return 0;
+  auto i = static_cast<std::size_t>(after - knots_.begin()) - 1;
+  // A knot at the horizon before t may be a step the horizon cut short; integration towards t
+  // takes the whole step from the knot before.
+  while (i > 0 && knots_[i].time == horizon_ && horizon_ < t) --i;
+  return i;
+}
+
 void PlantMotion::input(Nanos t, plants::PlantInput which, bool level) {
   // Rewind to the plan's start and integrate to t: the same steps as the plan took, so the
-  // history matches what the encoder played up to t.
-  std::unique_ptr<plants::Plant> plant = checkpoint_->clone();
-  const std::size_t before = plant->standstills().size();
-  integrate(*plant, t, history_);
-  for (std::size_t i = before; i < plant->standstills().size(); ++i)
-    history_standstills_.push_back(plant->standstills()[i]);
-  plant->input(which, level);
-  const double at = plant->state().angle * per_rad_;
-  plan_from(std::move(plant), at);
+  // history matches what the encoder played up to t. For a plant that resumes at its knots,
+  // the steps up to the plan's last knot at or before t are the plan's own (the same advance()
+  // calls from the same states): their segments and the state there are taken as they are,
+  // and only the rest is integrated.
+  const std::size_t from = resume_knot(t);
+  for (std::size_t i = 1; i <= from; ++i)
+    if (knots_[i].time > knots_[i - 1].time) history_.push_back(segment(knots_[i - 1], knots_[i]));
+  if (live_ == nullptr)
+    live_ = checkpoint_->clone();
+  else
+    live_->assign(*checkpoint_);
+  if (from > 0) live_->resume_at(knots_[from]);
+  const std::size_t before = checkpoint_->standstills().size();
+  integrate(*live_, t, history_);
+  const std::vector<Nanos>& located = live_->standstills();
+  for (std::size_t i = before; i < located.size(); ++i) history_standstills_.push_back(located[i]);
+  live_->input(which, level);
+  plan_from(live_->state().angle * per_rad_);
 }
 
 void PlantMotion::extend() {
@@ -66,17 +90,18 @@ void PlantMotion::extend() {
   history_standstills_.insert(history_standstills_.end(), plan_standstills_.begin(), plan_standstills_.end());
   // On from the played plan's end position exactly (its segments chain in closed form, a
   // rounding away from the knots'): no jump where the shaft stands still.
-  plan_from(std::move(live_), plan_.end_position());
+  plan_from(plan_.end_position());
 }
 
-void PlantMotion::plan_from(std::unique_ptr<plants::Plant> plant, double start) {
-  checkpoint_ = plant->clone();
-  const plants::Knot at = plant->state();
+void PlantMotion::plan_from(double start) {
+  const plants::Knot at = live_->state();
+  checkpoint_->assign(*live_);
+  knots_.clear();
+  knots_.push_back(at);
   horizon_ = at.time < end_ - ahead_ ? at.time + ahead_ : end_;
-  live_known_ = plant->standstills().size();
+  live_known_ = live_->standstills().size();
   plan_standstills_.clear();
   plan_ = signals::MotionProfile(start, at.time);
-  live_ = std::move(plant);
   grow();
 }
 
@@ -89,6 +114,7 @@ bool PlantMotion::grow() const {
     const plants::Knot k = live_->advance(horizon_);
     if (k.time > prev.time) plan_.append(segment(prev, k));
     prev = k;
+    if (keep_knots_) knots_.push_back(k);
   }
   const std::vector<Nanos>& located = live_->standstills();
   for (; live_known_ < located.size(); ++live_known_) plan_standstills_.push_back(located[live_known_]);

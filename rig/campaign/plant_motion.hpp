@@ -8,7 +8,11 @@
 //
 // Closing the loop: an input (a board output) at time t rewinds the plant to its state at
 // the last input, integrates it to t exactly, applies the input and plans again from t. What
-// lies before t is kept; the rig re-solves the encoder from t. A plan reaches only a bounded
+// lies before t is kept; the rig re-solves the encoder from t. For a plant that resumes at
+// its knots (Plant::resumes_at_knots, the stepper), the plan's knots up to t are the steps
+// that integration takes (the same advance() calls from the same states in the same order):
+// an input resumes from the plan's last knot at or before t, so only the partial step to t is
+// integrated again. A plan reaches only a bounded
 // horizon ahead (kPlanSteps integration steps); the rig extends it when the shaft gets
 // there, so a run costs O(its length) however many inputs it takes (a stepper's every pulse
 // is one), not a plan to the end per input.
@@ -28,8 +32,12 @@ namespace hilrig::campaign {
 
 class PlantMotion {
 public:
+  // How an input finds the plant's state at its instant: from the plan's last knot at or before
+  // it where the plant allows (the same state), or integrated from the last input (the
+  // reference a test compares with).
+  enum class Resume : std::uint8_t { AtKnot, FromInput };
   // Plans from the plant's start to `end`.
-  PlantMotion(const PlantSpec& spec, double counts_per_turn, Nanos end);
+  PlantMotion(const PlantSpec& spec, double counts_per_turn, Nanos end, Resume resume = Resume::AtKnot);
 
   // The plan from the last input on (counts, counts/s): what the encoder plays now. It is
   // integrated as it is read (a stepper's next pulse usually replaces it a few steps in):
@@ -68,9 +76,12 @@ private:
   // Integrates `plant` to `until`, appending a segment per knot.
   void integrate(plants::Plant& plant, Nanos until, std::vector<signals::Segment>& out) const;
   [[nodiscard]] signals::Segment segment(const plants::Knot& a, const plants::Knot& b) const;
-  // The plan from `plant`'s state (which becomes the checkpoint) to the horizon, starting at
+  // The plan from live_'s state (which becomes the checkpoint) to the horizon, starting at
   // `start` counts.
-  void plan_from(std::unique_ptr<plants::Plant> plant, double start);
+  void plan_from(double start);
+  // The plan's knot an input at t resumes from: the last one at or before t that integration
+  // towards t reaches too (not one the horizon cut short before t).
+  [[nodiscard]] std::size_t resume_knot(Nanos t) const;
   // Grows the plan until it holds t (a segment ending after t) or reaches its horizon.
   void plan_through(Nanos t) const;
   void plan_all() const { plan_through(Nanos::max()); }
@@ -78,13 +89,16 @@ private:
   double per_rad_;
   Nanos end_;
   Nanos ahead_;                               // a plan's horizon
+  bool keep_knots_;                           // inputs resume at the plan's knots (kept in knots_)
   std::unique_ptr<plants::Plant> checkpoint_; // the plant at the plan's start
   std::vector<signals::Segment> history_;     // before the last input
   std::vector<Nanos> history_standstills_;
   Nanos horizon_; // where the plan ends
   // The plan as integrated so far (logically const: a function of the checkpoint).
   mutable std::unique_ptr<plants::Plant> live_; // the plant where the plan's segments end
-  mutable std::size_t live_known_ = 0;          // live_'s standstills already in plan_standstills_
+  // The plan's knots so far, the first its start (only that one unless keep_knots_).
+  mutable std::vector<plants::Knot> knots_;
+  mutable std::size_t live_known_ = 0; // live_'s standstills already in plan_standstills_
   mutable signals::MotionProfile plan_;
   mutable std::vector<Nanos> plan_standstills_;
 };

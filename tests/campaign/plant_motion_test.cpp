@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -149,5 +150,158 @@ TEST(PlantMotion, PlanGrownAsReadIsThePlanIntegratedWhole) {
     EXPECT_EQ(whole.standstills(), grown.standstills());
     EXPECT_GT(compared_edges, 500) << "trial " << trial;
     EXPECT_GT(compared_knots, 1000) << "trial " << trial;
+  }
+}
+
+// An input resumes the stepper from the plan's last knot at or before its instant (the state
+// the plan kept there) instead of integrating again from the last input. That must be the
+// integration from the last input bit for bit: random stepper loads (odd integration steps,
+// parameter changes, detent, friction, load torque), random step trains (pulses on knots, at
+// and past the plan's horizon, between knots, a few ns apart, reversals), the plan read to
+// random depths before each input; positions, velocities, the plan's knots and the encoder's
+// edges compared with a PlantMotion that integrates from the last input (Resume::FromInput).
+namespace {
+
+std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+
+bool same_bits(const signals::Segment& a, const signals::Segment& b) {
+  return a.start == b.start && a.duration == b.duration && bits(a.position) == bits(b.position) &&
+         bits(a.velocity) == bits(b.velocity) && bits(a.acceleration) == bits(b.acceleration) &&
+         a.settled_end == b.settled_end;
+}
+
+plants::StepperParams random_stepper(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  plants::StepperParams p;
+  p.holding_torque = 0.5 + 1.5 * u(rng);
+  p.rotor_inertia = 4.8e-5;
+  p.load_inertia = 1.0e-3 * static_cast<double>(rng() % 20);
+  p.detent_torque = rng() % 3 == 0 ? 0.08 * u(rng) : 0.0;
+  p.viscous = rng() % 3 == 0 ? 0.02 * u(rng) : 0.0;
+  p.load_torque = rng() % 4 == 0 ? 0.3 * u(rng) : 0.0;
+  p.microsteps = std::array{1, 8, 16, 64}[rng() % 4];
+  p.step_every_edge = (rng() & 1) != 0;
+  return p;
+}
+
+} // namespace
+
+TEST(PlantMotion, InputResumedAtAKnotIsTheIntegrationFromTheLastInput) {
+  std::mt19937_64 rng(20261127);
+  const signals::QuadratureEncoder enc = fine_encoder();
+  for (int trial = 0; trial < 12; ++trial) {
+    campaign::PlantSpec spec;
+    spec.kind = campaign::PlantKind::StepperLoad;
+    spec.step = Nanos{static_cast<std::int64_t>(7'001 + rng() % 6'000)};
+    spec.stepper = random_stepper(rng);
+    const Nanos end{static_cast<std::int64_t>(150'000'000 + rng() % 100'000'000)};
+    // Parameter changes: a few, or enough that many plans hold one (its steps then end off the
+    // grid from the input, and the horizon cuts a step short).
+    const int changes = static_cast<int>((rng() & 1) != 0 ? rng() % 4 : 40 + rng() % 60);
+    for (int c = changes; c > 0; --c)
+      spec.stepper_changes.push_back(
+          {Nanos{static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(end.count()))},
+           random_stepper(rng)});
+    campaign::PlantMotion fast(spec, kCountsPerTurn, end);
+    campaign::PlantMotion ref(spec, kCountsPerTurn, end, campaign::PlantMotion::Resume::FromInput);
+    bool level = false;
+    bool forward = true;
+    Nanos t{0};
+    int inputs = 0;
+    int compared = 0;
+    while (t < end - Nanos{2'000'000}) {
+      // The next input: on a knot of the plan (a whole number of steps on, where no parameter
+      // change intervenes), at its horizon or past it, a few ns or a few steps on.
+      Nanos next = t;
+      switch (rng() % 10) {
+      case 0:
+      case 1:
+        next = t + spec.step * static_cast<std::int64_t>(1 + rng() % 12);
+        break;
+      case 2:
+        next = fast.plan_end();
+        break;
+      case 3:
+        next = fast.plan_end() + Nanos{static_cast<std::int64_t>(1 + rng() % 2'000'000)};
+        break;
+      case 4:
+        next = t + Nanos{static_cast<std::int64_t>(rng() % 40)};
+        break;
+      default:
+        next = t + Nanos{static_cast<std::int64_t>(1'000 + rng() % 200'000)};
+        break;
+      }
+      // The plan read to a random depth first (none, a few knots, as far as the next input, whole).
+      switch (rng() % 4) {
+      case 0:
+        break;
+      case 1:
+        for (int g = static_cast<int>(rng() % 6); g > 0; --g) (void)fast.grow();
+        break;
+      case 2:
+        (void)fast.position(next);
+        break;
+      default:
+        (void)fast.standstills();
+        break;
+      }
+      // Readings between the two inputs.
+      for (int i = 0; i < 2; ++i) {
+        const Nanos at =
+            t + Nanos{static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>((next - t).count() + 1))};
+        ASSERT_EQ(bits(fast.position(at)), bits(ref.position(at)))
+            << "trial " << trial << " at " << at.count();
+        ASSERT_EQ(bits(fast.velocity(at)), bits(ref.velocity(at)))
+            << "trial " << trial << " at " << at.count();
+      }
+      // The edges the encoder would play from the plan up to the next input.
+      if (rng() % 3 == 0) {
+        (void)fast.standstills();
+        (void)ref.standstills();
+        ASSERT_EQ(signals::solve_quadrature(fast.plan(), enc, next).edges,
+                  signals::solve_quadrature(ref.plan(), enc, next).edges)
+            << "trial " << trial << " at " << t.count();
+      }
+      // A drive extends the plan at its horizon before any input after it.
+      if (rng() % 2 == 0)
+        while (fast.plan_end() < std::min(next, end)) {
+          fast.extend();
+          ref.extend();
+        }
+      t = std::min(next, end);
+      if (rng() % 25 == 0) {
+        forward = !forward;
+        fast.input(t, plants::PlantInput::Direction, forward);
+        ref.input(t, plants::PlantInput::Direction, forward);
+      }
+      level = !level;
+      fast.input(t, plants::PlantInput::Step, level);
+      ref.input(t, plants::PlantInput::Step, level);
+      ++inputs;
+      ASSERT_EQ(fast.plan().start_time(), t);
+      ASSERT_EQ(bits(fast.position(t)), bits(ref.position(t))) << "trial " << trial << " at " << t.count();
+      ASSERT_EQ(bits(fast.velocity(t)), bits(ref.velocity(t))) << "trial " << trial << " at " << t.count();
+      ++compared;
+    }
+    while (fast.plan_end() < end) {
+      fast.extend();
+      ref.extend();
+    }
+    const signals::MotionProfile a = fast.trajectory();
+    const signals::MotionProfile b = ref.trajectory();
+    ASSERT_EQ(a.segments().size(), b.segments().size()) << "trial " << trial;
+    for (std::size_t i = 0; i < a.segments().size(); ++i)
+      ASSERT_TRUE(same_bits(a.segments()[i], b.segments()[i])) << "trial " << trial << ", segment " << i;
+    EXPECT_EQ(signals::solve_quadrature(a, enc, end).edges, signals::solve_quadrature(b, enc, end).edges);
+    const auto sa = fast.samples();
+    const auto sb = ref.samples();
+    ASSERT_EQ(sa.size(), sb.size());
+    for (std::size_t i = 0; i < sa.size(); ++i) {
+      EXPECT_EQ(sa[i].time, sb[i].time);
+      EXPECT_EQ(bits(sa[i].position), bits(sb[i].position));
+    }
+    EXPECT_EQ(fast.standstills(), ref.standstills());
+    EXPECT_GT(inputs, 150) << "trial " << trial;
+    EXPECT_GT(a.segments().size(), 4'000U) << "trial " << trial;
   }
 }
