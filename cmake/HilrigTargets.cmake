@@ -33,6 +33,17 @@ if(HILRIG_FUZZ)
 endif()
 target_include_directories(hilrig_flags INTERFACE ${PROJECT_SOURCE_DIR})
 
+# hilrig_static_runtime(TARGET): libstdc++ and libgcc linked into an executable (HILRIG_STATIC_RUNTIME).
+# With fmt and toml++ compiled in (deps/), nothing else loads libstdc++.so: its ~2,700 symbol
+# relocations and the loading of two more shared libraries were most of `hilrig --version`'s
+# cost (docs/PERFORMANCE.md, "Fixed cost of a run"). Not with ASan/UBSan or libFuzzer: their
+# runtimes replace operator new/delete and expect the shared libstdc++.
+function(hilrig_static_runtime target)
+  if(HILRIG_STATIC_RUNTIME AND NOT HILRIG_SANITIZE AND NOT HILRIG_FUZZ)
+    target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc)
+  endif()
+endfunction()
+
 # hilrig_library(NAME SOURCES ... DEPS ...)
 function(hilrig_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})

@@ -47,14 +47,15 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("hilrig ") + hilrig::rig::tool_version());
   // A command line that starts with a command's name builds only that command's options
-  // (building all of them is most of a short run's start-up); any other (--help, --version,
-  // a mistyped or missing command) builds them all, for the listing and the hints.
+  // (building all of them is most of a short run's start-up), and `hilrig --version` alone
+  // builds none (CLI11 answers the flag before it asks for a command); any other (--help, a
+  // mistyped or missing command) builds them all, for the listing and the hints.
   const std::string_view first = argc > 1 ? std::string_view(argv[1]) : std::string_view();
   const auto* chosen = std::find_if(std::begin(kCommands), std::end(kCommands),
                                     [&](const Command& c) { return first == c.name; });
   if (chosen != std::end(kCommands)) {
     chosen->add(app);
-  } else {
+  } else if (!(argc == 2 && first == "--version")) {
     for (const Command& c : kCommands) c.add(app);
   }
   if (const auto problem = hilrig::cli::unknown_word(app, argc, argv)) {

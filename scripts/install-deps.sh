@@ -5,7 +5,7 @@ set -euo pipefail
 
 # package            why
 packages=(
-  build-essential     # g++ 12 (C++20), make
+  build-essential     # g++ 12 (C++20), make; libstdc++.a and libgcc.a, linked into hilrig (HILRIG_STATIC_RUNTIME)
   cmake               # build system (>= 3.25)
   ninja-build         # fast parallel builds for every preset
   pkg-config          # finds libgpiod and libmodbus
@@ -14,13 +14,13 @@ packages=(
   libbenchmark-dev    # Google Benchmark: bench/
   libboost-dev        # Boost.Asio: serial ports, host-link I/O, signals on the non-RT side
   libeigen3-dev       # plant models (shafts, press brake, stepper load)
-  libtomlplusplus-dev # campaign files (TOML) with line/column in errors
+  libtomlplusplus-dev # campaign files (TOML) with line/column in errors; its headers compiled into hilrig (deps/)
   libcli11-dev        # the hilrig command line
-  libfmt-dev          # formatting of reports and messages
+  libfmt-dev          # formatting of reports and messages; its headers compiled into hilrig (deps/)
   nlohmann-json3-dev  # results.json, shard merging, baselines
-  nettle-dev          # SHA-256 of the campaign file in results.json (merge refuses mixed revisions); not libssl: its load costs every run ~1.5 ms
+  nettle-dev          # SHA-256 of the campaign file in results.json (merge refuses mixed revisions); not libssl: its load costs every run ~1.5 ms; libnettle.a linked in
   libmodbus-dev       # Modbus RTU/TCP host link and the virtual SMD23E server
-  libgpiod-dev        # GPIO backend (libgpiod 1.6 on Debian 12)
+  libgpiod-dev        # GPIO backend (libgpiod 1.6 on Debian 12); libgpiod.a linked in
   mbpoll              # an independent Modbus client for integration tests
   can-utils           # candump/log2asc/canplayer: read the rig's CAN logs
   rt-tests            # cyclictest: the peer for the RT loop's latency

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <string>
 
+#include "rig/results/results_json.hpp"
 #include "tests/tools/scratch_files.hpp"
 
 namespace hilrig {
@@ -185,6 +186,24 @@ TEST(CommandLine, SummaryAndReportPathOnStdoutTheRestOnStderr) {
                 (out / "report.html").string() + "\n");
   EXPECT_NE(r.err.find("[4/4] run 3: pass in "), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("verdict"), std::string::npos) << r.err;
+}
+
+// `hilrig --version` alone builds no command's options (rig/main.cpp); CLI11 still answers it.
+TEST(CommandLine, VersionAloneNamesTheToolVersion) {
+  const Result r = hilrig("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out, std::string("hilrig ") + rig::tool_version() + "\n");
+  EXPECT_EQ(r.err, "");
+}
+
+// --help still builds every command: the listing names each.
+TEST(CommandLine, HelpListsEveryCommand) {
+  const Result r = hilrig("--help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* command :
+       {"synth", "run", "check", "list", "compare", "merge", "serve", "latency", "power", "trend"}) {
+    EXPECT_NE(r.out.find(std::string("\n  ") + command + " "), std::string::npos) << command << "\n" << r.out;
+  }
 }
 
 TEST(CommandLine, CheckValidatesADirectory) {
