@@ -1,5 +1,6 @@
 #include "signals/resolver_frames.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -54,23 +55,31 @@ std::int64_t sign_extend(std::uint64_t raw, unsigned length) {
 const DbcMessage& resolver_angle_message() { return kResolverAngle; }
 const DbcMessage& edge_report_message() { return kEdgeReport; }
 
+// Both a byte's part of the signal at a time: (start_bit + i) % 8 is where bit i of the
+// signal sits in its byte, and a byte holds up to 8 - that of the signal's bits.
 std::uint64_t get_raw(const CanFrame& frame, unsigned start_bit, unsigned length) {
   std::uint64_t v = 0;
-  for (unsigned i = 0; i < length; ++i) {
+  for (unsigned i = 0; i < length;) {
     const unsigned bit = start_bit + i;
-    if ((static_cast<unsigned>(frame.data[bit / 8]) >> (bit % 8)) & 1u) v |= 1ull << i;
+    const unsigned shift = bit % 8;
+    const unsigned take = std::min(8U - shift, length - i);
+    const unsigned part = (static_cast<unsigned>(frame.data[bit / 8]) >> shift) & ((1U << take) - 1U);
+    v |= std::uint64_t{part} << i;
+    i += take;
   }
   return v;
 }
 
 void put_raw(CanFrame& frame, unsigned start_bit, unsigned length, std::uint64_t raw) {
-  for (unsigned i = 0; i < length; ++i) {
+  for (unsigned i = 0; i < length;) {
     const unsigned bit = start_bit + i;
-    const auto mask = static_cast<std::uint8_t>(1u << (bit % 8));
-    if ((raw >> i) & 1u)
-      frame.data[bit / 8] = static_cast<std::uint8_t>(frame.data[bit / 8] | mask);
-    else
-      frame.data[bit / 8] = static_cast<std::uint8_t>(frame.data[bit / 8] & ~mask);
+    const unsigned shift = bit % 8;
+    const unsigned take = std::min(8U - shift, length - i);
+    const unsigned mask = ((1U << take) - 1U) << shift;
+    const auto part = static_cast<unsigned>((raw >> i) << shift) & mask;
+    std::uint8_t& byte = frame.data[bit / 8];
+    byte = static_cast<std::uint8_t>((byte & ~mask) | part);
+    i += take;
   }
 }
 

@@ -21,27 +21,91 @@ constexpr std::array<std::uint16_t, 256> kCrc15Bytes = [] {
   return table;
 }();
 
+// The bit stream packed 64 to a word, first bit sent in a word's top bit: a byte of it (any
+// bit offset) is two shifts, so the stuff bits are counted a byte at a time (kStuffStep).
 struct BitStream {
-  std::array<std::uint8_t, kMaxBits> bits{};
+  std::array<std::uint64_t, kMaxBits / 64 + 2> words{};
   std::size_t n = 0;
   std::size_t brs = 0; // index of the BRS bit (FD only)
-  // can_crc(bits, n, kCanCrc15) of the bits pushed so far, kept as they are pushed (a data
-  // byte in one table step): a classic frame's CRC field.
-  std::uint32_t crc15 = kCanCrc15.init;
 
+  // The low `count` (1..32) bits of v, most significant first.
   void push(std::uint32_t v, unsigned count) {
-    if (count == 8) {
-      crc15 = ((crc15 << 8U) & 0x7FFFU) ^ kCrc15Bytes[((crc15 >> 7U) ^ v) & 0xFFU];
+    const std::uint64_t bits = std::uint64_t{v} & ((std::uint64_t{1} << count) - 1U);
+    const std::size_t word = n / 64;
+    const auto off = static_cast<unsigned>(n % 64);
+    if (off + count <= 64) {
+      words[word] |= bits << (64U - off - count);
     } else {
-      for (unsigned i = count; i-- > 0;) {
-        const bool feedback = ((crc15 & 0x4000U) != 0) != (((v >> i) & 1U) != 0);
-        crc15 = (crc15 << 1U) & 0x7FFFU;
-        if (feedback) crc15 ^= kCanCrc15.poly;
-      }
+      const unsigned rest = off + count - 64; // bits in the next word
+      words[word] |= bits >> rest;
+      words[word + 1] |= bits << (64U - rest);
     }
-    for (unsigned i = count; i-- > 0;) bits[n++] = static_cast<std::uint8_t>((v >> i) & 1U);
+    n += count;
+  }
+  // can_crc(bits, n, kCanCrc15) of the bits so far: a byte of them in one table step, the last
+  // n % 8 a bit at a time.
+  [[nodiscard]] std::uint32_t crc15() const {
+    std::uint32_t crc = kCanCrc15.init;
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) crc = ((crc << 8U) & 0x7FFFU) ^ kCrc15Bytes[((crc >> 7U) ^ byte(i)) & 0xFFU];
+    for (; i < n; ++i) {
+      const bool feedback = ((crc & 0x4000U) != 0) != (bit(i) != 0);
+      crc = (crc << 1U) & 0x7FFFU;
+      if (feedback) crc ^= kCanCrc15.poly;
+    }
+    return crc;
+  }
+  [[nodiscard]] unsigned bit(std::size_t i) const {
+    return static_cast<unsigned>(words[i / 64] >> (63U - i % 64)) & 1U;
+  }
+  // Bits i..i+7, bit i the byte's top bit.
+  [[nodiscard]] unsigned byte(std::size_t i) const {
+    const std::size_t word = i / 64;
+    const auto off = static_cast<unsigned>(i % 64);
+    std::uint64_t v = words[word] << off;
+    if (off > 56) v |= words[word + 1] >> (64U - off);
+    return static_cast<unsigned>(v >> 56U);
   }
 };
+
+// Dynamic stuffing as a state machine: the state is the last bit sent (stuff bits included)
+// and how many equal bits end the stream (1..4; a fifth is followed by its complement, which
+// starts a run of 1), or kStuffStart before the first bit. A state is 1 + 4 * bit + run - 1.
+constexpr unsigned kStuffStart = 0;
+
+struct StuffStepResult {
+  unsigned state;
+  bool stuffed; // this bit made a run of 5: a stuff bit follows it
+};
+
+constexpr StuffStepResult stuff_step(unsigned state, unsigned b) {
+  unsigned run = 1;
+  if (state != kStuffStart) {
+    const unsigned prev = (state - 1U) / 4U;
+    run = prev == b ? (state - 1U) % 4U + 2U : 1U;
+  }
+  if (run == 5) return {1U + 4U * (1U - b), true};
+  return {1U + 4U * b + run - 1U, false};
+}
+
+// A byte (top bit first) from each state: the state after it (low 4 bits) and the stuff bits
+// it needs (the rest).
+constexpr std::array<std::array<std::uint8_t, 256>, 9> kStuffStep = [] {
+  std::array<std::array<std::uint8_t, 256>, 9> table{};
+  for (unsigned state = 0; state < 9; ++state) {
+    for (unsigned v = 0; v < 256; ++v) {
+      unsigned s = state;
+      unsigned stuffed = 0;
+      for (unsigned i = 8; i-- > 0;) {
+        const StuffStepResult r = stuff_step(s, (v >> i) & 1U);
+        s = r.state;
+        stuffed += r.stuffed ? 1U : 0U;
+      }
+      table[state][v] = static_cast<std::uint8_t>(s | (stuffed << 4U));
+    }
+  }
+  return table;
+}();
 
 bool fd_length_ok(std::uint8_t len) {
   return len <= 8 || len == 12 || len == 16 || len == 20 || len == 24 || len == 32 || len == 48 || len == 64;
@@ -95,8 +159,14 @@ BitStream header_and_data(const CanFrame& f) {
     s.push(f.esi ? 1U : 0U, 1);
   }
   s.push(can_len_to_dlc(f.len), 4);
-  if (!f.rtr) {
-    for (std::size_t i = 0; i < f.len; ++i) s.push(f.data[i], 8);
+  if (!f.rtr) { // four bytes a push, then the rest one by one
+    std::size_t i = 0;
+    for (; i + 4 <= f.len; i += 4) {
+      s.push(std::uint32_t{f.data[i]} << 24U | std::uint32_t{f.data[i + 1]} << 16U |
+                 std::uint32_t{f.data[i + 2]} << 8U | f.data[i + 3],
+             32);
+    }
+    for (; i < f.len; ++i) s.push(f.data[i], 8);
   }
   return s;
 }
@@ -115,21 +185,34 @@ struct StuffCount {
 
 // Counts dynamic stuff bits: after 5 equal bits (stuff bits included) a complement is sent,
 // which starts the next run. `last_stuffed` says whether a stuff bit due after the final bit
-// is sent (classic CRC end: yes; FD data end: no, the fixed stuff bit takes its place).
+// is sent (classic CRC end: yes; FD data end: no, the fixed stuff bit takes its place). With
+// split_at_brs, a stuff bit after a bit at or past the BRS bit is a data-phase bit.
 StuffCount count_stuff(const BitStream& s, bool last_stuffed, bool split_at_brs) {
   StuffCount c;
-  std::uint8_t prev = 2;
-  unsigned run = 0;
-  for (std::size_t i = 0; i < s.n; ++i) {
-    const std::uint8_t b = s.bits[i];
-    run = b == prev ? run + 1 : 1;
-    prev = b;
-    if (run == 5) {
-      if (i + 1 == s.n && !last_stuffed) break;
-      (split_at_brs && i >= s.brs ? c.data : c.nominal) += 1;
-      prev = static_cast<std::uint8_t>(1U - b);
-      run = 1;
+  unsigned state = kStuffStart;
+  // Bits [from, to) into `count`, a byte at a time, then a bit at a time.
+  const auto run = [&](std::size_t from, std::size_t to, std::uint32_t& count) {
+    std::size_t i = from;
+    for (; i + 8 <= to; i += 8) {
+      const std::uint8_t next = kStuffStep[state][s.byte(i)];
+      state = next & 0xFU;
+      count += next >> 4U;
     }
+    for (; i < to; ++i) {
+      const StuffStepResult r = stuff_step(state, s.bit(i));
+      state = r.state;
+      count += r.stuffed ? 1U : 0U;
+    }
+  };
+  // The last bit's stuff bit, when it is not sent, is not counted: it does not change the count
+  // of any bit before it.
+  const std::size_t end = last_stuffed ? s.n : s.n - 1;
+  if (split_at_brs) {
+    const std::size_t brs = s.brs < end ? s.brs : end;
+    run(0, brs, c.nominal);
+    run(brs, end, c.data);
+  } else {
+    run(0, end, c.nominal);
   }
   return c;
 }
@@ -188,7 +271,7 @@ std::uint8_t can_len_to_dlc(std::uint8_t len) {
 CanFrameBits can_frame_bits(const CanFrame& frame) {
   BitStream s = header_and_data(frame);
   if (!frame.fd) {
-    s.push(s.crc15, 15); // can_crc(s.bits.data(), s.n, kCanCrc15), kept as the bits were pushed
+    s.push(s.crc15(), 15); // can_crc of SOF..data (kCanCrc15)
     return assemble(frame, s, count_stuff(s, true, false));
   }
   return assemble(frame, s, count_stuff(s, false, frame.brs));

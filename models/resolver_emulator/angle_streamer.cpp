@@ -77,15 +77,30 @@ void AngleStreamer::lead_by_transport(TransportDelay delay, std::vector<Nanos> p
 // frame's own delay next. No match at all: the nearest miss.
 CanFrame AngleStreamer::frame_at(Nanos t) {
   if (!transport_) return angle_frame(shaft_(t + params_.lead), params_, sent_, flags_);
-  constexpr int kNudges = 16; // codes tried from the one at or above the shaft
   CanFrame nearest;
   Nanos miss = Nanos::max();
+  // The shaft is read once per delay tried, and each (delay, code) frame's own delay found
+  // once: a frame tried again changes nothing (its miss is no nearer than the nearest's).
+  tries_.clear();
+  const auto tried = [&](Nanos delay) -> DelayTry& {
+    for (DelayTry& d : tries_)
+      if (d.delay == delay) return d;
+    DelayTry& d = tries_.emplace_back();
+    d.delay = delay;
+    d.shaft = shaft_(t + params_.lead + delay);
+    d.code = std::ceil(d.shaft.position / params_.units_per_turn / kAngleCode);
+    return d;
+  };
   const auto build = [&](Nanos delay, int nudge) {
-    ShaftSample shaft = shaft_(t + params_.lead + delay);
-    shaft.position = (std::ceil(shaft.position / params_.units_per_turn / kAngleCode) + nudge) * kAngleCode *
-                     params_.units_per_turn;
+    DelayTry& d = tried(delay);
+    const auto bit = static_cast<std::uint16_t>(1U << static_cast<unsigned>(nudge));
+    if ((d.known & bit) != 0) return d.own[static_cast<std::size_t>(nudge)];
+    ShaftSample shaft = d.shaft;
+    shaft.position = (d.code + nudge) * kAngleCode * params_.units_per_turn;
     const CanFrame frame = angle_frame(shaft, params_, sent_, flags_);
     const Nanos own = transport_(frame);
+    d.own[static_cast<std::size_t>(nudge)] = own;
+    d.known = static_cast<std::uint16_t>(d.known | bit);
     const Nanos off = own > delay ? own - delay : delay - own;
     if (off < miss) {
       nearest = frame;

@@ -8,6 +8,7 @@
 // of frame, ~108..130 bits) cancels the transport delay; with lead 0 the node's angle lags
 // the profile by that time.
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -97,6 +98,18 @@ private:
   TransportDelay transport_;
   std::vector<Nanos> possible_;
   Nanos last_delay_{0}; // the last frame's transport delay
+
+  // frame_at's tries for one delay: the shaft at it, the angle's code at or above the shaft,
+  // and the own delay of each code's frame tried so far (bit n of `known`: code + n).
+  static constexpr int kNudges = 16; // codes tried from the one at or above the shaft
+  struct DelayTry {
+    Nanos delay{0};
+    ShaftSample shaft;
+    double code = 0.0;
+    std::uint16_t known = 0;
+    std::array<Nanos, kNudges> own{};
+  };
+  std::vector<DelayTry> tries_; // this frame's, kept for its capacity
 
   EventId next_{};
   std::uint64_t sent_ = 0;

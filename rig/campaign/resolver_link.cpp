@@ -1,5 +1,8 @@
 #include "rig/campaign/resolver_link.hpp"
 
+#include <array>
+#include <cstdint>
+#include <optional>
 #include <utility>
 
 #include "signals/resolver_frames.hpp"
@@ -41,6 +44,10 @@ ResolverLink::ResolverLink(Scheduler& scheduler, virt::VirtualBus& bus,
   streamer_.lead_by_transport(
       [timing](const CanFrame& frame) { return virt::can_end_of_frame(virt::can_frame_bits(frame), timing); },
       virt::can_end_of_frame_range(signals::encode(signals::ResolverAngleFrame{}), timing));
+  node_->on_frame([frames = frames_, handler = frame_handler_] {
+    ++frames->taken;
+    if (*handler) (*handler)();
+  });
 }
 
 void ResolverLink::start(const models::resolver_emulator::ShaftSample& at_start) {
@@ -52,11 +59,27 @@ void ResolverLink::start(const models::resolver_emulator::ShaftSample& at_start)
 
 Waveform ResolverLink::stator(const ResolverSpec& resolver, Stator which,
                               std::vector<StatorRatioWindow> faults) const {
-  const Waveform carried =
-      stator_waveform([node = node_, per_turn = counts_per_turn_](
-                          Nanos t) { return node->angle_turns(t).value_or(0.0) * per_turn; },
-                      counts_per_turn_, resolver, which, std::move(faults));
-  return [node = node_, carried](Nanos t) { return node->angle_turns(t) ? carried(t) : 0.0; };
+  // The node's angle read once a sample: nothing when the node drives no stators. The values
+  // read since the node's last frame are kept (a few, by time): the same t reads the same value
+  // until the next frame.
+  struct Kept {
+    Nanos t{0};
+    std::uint64_t frames = 0;
+    double value = 0.0;
+    bool held = false;
+  };
+  constexpr std::size_t kKept = 64;
+  auto kept = std::make_shared<std::array<Kept, kKept>>();
+  return [node = node_, frames = frames_, kept, per_turn = counts_per_turn_,
+          form = StatorForm(counts_per_turn_, resolver, which, std::move(faults))](Nanos t) {
+    const auto ns = static_cast<std::uint64_t>(t.count());
+    Kept& k = (*kept)[((ns ^ (ns >> 7U) ^ (ns >> 17U)) * 0x9E37'79B9'7F4A'7C15ULL >> 58U) % kKept];
+    if (k.held && k.t == t && k.frames == frames->taken) return k.value;
+    const std::optional<double> turns = node->angle_turns(t);
+    const double value = turns ? form(t, *turns * per_turn) : 0.0;
+    k = Kept{t, frames->taken, value, true};
+    return value;
+  };
 }
 
 } // namespace hilrig::campaign

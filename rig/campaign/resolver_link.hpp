@@ -10,6 +10,7 @@
 // begins (the run's first frame arrives a frame time, ~0.23 ms, into it); like the node, the
 // stators carry nothing after a frame timeout or an invalid frame.
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -46,13 +47,22 @@ public:
                                 std::vector<StatorRatioWindow> faults) const;
 
   // Called after each frame the node takes: the stators' values from then on may change.
-  void on_frame(std::function<void()> handler) { node_->on_frame(std::move(handler)); }
+  void on_frame(std::function<void()> handler) { *frame_handler_ = std::move(handler); }
 
   [[nodiscard]] const models::resolver_emulator::ResolverEmulator& node() const { return *node_; }
   [[nodiscard]] const models::resolver_emulator::AngleStreamer& streamer() const { return streamer_; }
 
+  // The frames the node has taken (each may change a stator's value at any time from its
+  // arrival on, nothing else does): a stator's value at t is kept for reading again at t until
+  // the next frame (the board reads each peak ahead of time, the trace at the time).
+  struct Frames {
+    std::uint64_t taken = 0;
+  };
+
 private:
   double counts_per_turn_;
+  std::shared_ptr<Frames> frames_ = std::make_shared<Frames>();
+  std::shared_ptr<std::function<void()>> frame_handler_ = std::make_shared<std::function<void()>>();
   // Shared with the stator waveforms, which the bus holds.
   std::shared_ptr<models::resolver_emulator::ResolverEmulator> node_;
   models::resolver_emulator::AngleStreamer streamer_;

@@ -18,19 +18,28 @@ std::vector<StatorRatioWindow> stator_fault_windows(const Scenario& scenario, St
   return out;
 }
 
+StatorForm::StatorForm(double counts_per_turn, const ResolverSpec& resolver, Stator stator,
+                       std::vector<StatorRatioWindow> faults)
+    : ratio_(resolver.ratio), amplitude_(resolver.amplitude),
+      omega_(2.0 * std::numbers::pi * resolver.excitation_hz),
+      phase_(resolver.phase_deg * std::numbers::pi / 180.0),
+      radians_per_count_(2.0 * std::numbers::pi / counts_per_turn), stator_(stator),
+      faults_(std::move(faults)) {}
+
+double StatorForm::operator()(Nanos t, double position) const {
+  double r = ratio_;
+  for (const StatorRatioWindow& w : faults_)
+    if (t >= w.at && t < w.until) r = w.ratio;
+  const double angle = radians_per_count_ * position;
+  const double carrier = r * amplitude_ * std::sin(omega_ * t.seconds() + phase_);
+  return carrier * (stator_ == Stator::Sine ? std::sin(angle) : std::cos(angle));
+}
+
 Waveform stator_waveform(ShaftPosition position, double counts_per_turn, const ResolverSpec& resolver,
                          Stator stator, std::vector<StatorRatioWindow> faults) {
-  const double omega = 2.0 * std::numbers::pi * resolver.excitation_hz;
-  const double radians_per_count = 2.0 * std::numbers::pi / counts_per_turn;
-  const double phase = resolver.phase_deg * std::numbers::pi / 180.0;
-  return [position = std::move(position), ratio = resolver.ratio, amplitude = resolver.amplitude, omega,
-          phase, radians_per_count, stator, faults = std::move(faults)](Nanos t) {
-    double r = ratio;
-    for (const StatorRatioWindow& w : faults)
-      if (t >= w.at && t < w.until) r = w.ratio;
-    const double angle = radians_per_count * position(t);
-    const double carrier = r * amplitude * std::sin(omega * t.seconds() + phase);
-    return carrier * (stator == Stator::Sine ? std::sin(angle) : std::cos(angle));
+  return [position = std::move(position),
+          form = StatorForm(counts_per_turn, resolver, stator, std::move(faults))](Nanos t) {
+    return form(t, position(t));
   };
 }
 

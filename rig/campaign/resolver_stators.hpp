@@ -34,6 +34,26 @@ struct StatorRatioWindow {
 // later one wins where two overlap).
 [[nodiscard]] std::vector<StatorRatioWindow> stator_fault_windows(const Scenario& scenario, Stator stator);
 
+// A stator at t with the shaft at `position` counts: the excitation times the ratio in force
+// at t (a fault window's, else the resolver's) times sin or cos of the shaft angle. A reader
+// that has the position at hand (the resolver front end's node) calls it with no
+// ShaftPosition between.
+class StatorForm {
+public:
+  StatorForm(double counts_per_turn, const ResolverSpec& resolver, Stator stator,
+             std::vector<StatorRatioWindow> faults = {});
+  [[nodiscard]] double operator()(Nanos t, double position) const;
+
+private:
+  double ratio_;
+  double amplitude_;
+  double omega_;
+  double phase_;
+  double radians_per_count_;
+  Stator stator_;
+  std::vector<StatorRatioWindow> faults_;
+};
+
 // position: the shaft in encoder counts, counts_per_turn of them per shaft turn.
 [[nodiscard]] Waveform stator_waveform(ShaftPosition position, double counts_per_turn,
                                        const ResolverSpec& resolver, Stator stator,

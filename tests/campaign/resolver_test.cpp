@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
 #include "rig/campaign/plant_motion.hpp"
+#include "rig/campaign/resolver_link.hpp"
 #include "rig/campaign/resolver_stators.hpp"
 #include "test_support.hpp"
 
@@ -276,6 +278,46 @@ TEST(ResolverStators, CarryThePlantsAngleAndDecodeBackToIt) {
   EXPECT_NEAR(motion.position(Nanos{100'000'000}), w0 * 0.1 * per_turn / (2.0 * std::numbers::pi), 1e-6);
   // At rest at the closed form's stop angle.
   EXPECT_NEAR(motion.position(end), angle(1.0) * per_turn / (2.0 * std::numbers::pi), 1e-5);
+}
+
+// The resolver front end's stators keep the values read since the node's last frame (the
+// board reads each peak ahead, the trace again at the time): every read, ahead of the frames
+// or after them, is the stator of the node's angle as the node holds it when read -- a frame
+// that arrives between two reads of the same instant changes what the second one gives.
+TEST(ResolverLink, StatorsReadAgainAfterAFrameFollowTheNodesNewAngle) {
+  Scheduler sched;
+  virt::VirtualBus bus(sched);
+  constexpr double kPerTurn = 4096.0;
+  ResolverLink link(
+      sched, bus,
+      [](Nanos t) {
+        const double s = t.seconds();
+        return models::resolver_emulator::ShaftSample{kPerTurn * (0.2 + 7.0 * s + 30.0 * s * s),
+                                                      kPerTurn * (7.0 + 60.0 * s)};
+      },
+      kPerTurn);
+  ResolverSpec spec;
+  spec.excitation_hz = 5000.0;
+  spec.phase_deg = 12.0;
+  const Waveform sin = link.stator(spec, Stator::Sine, {{3_ms, 4_ms, 0.5}});
+  const Waveform cos = link.stator(spec, Stator::Cosine, {});
+  const StatorForm sin_form(kPerTurn, spec, Stator::Sine, {{3_ms, 4_ms, 0.5}});
+  const StatorForm cos_form(kPerTurn, spec, Stator::Cosine);
+  const auto want = [&](const StatorForm& form, Nanos t) {
+    const std::optional<double> turns = link.node().angle_turns(t);
+    return turns ? form(t, *turns * kPerTurn) : 0.0;
+  };
+  link.start(models::resolver_emulator::ShaftSample{kPerTurn * 0.2, kPerTurn * 7.0});
+  for (Nanos now{0}; now < 8_ms; now += 50_us) {
+    sched.run_until(now);
+    for (Nanos t = now; t < now + 2_ms; t += 25_us) { // ahead, across the next frames
+      const double s = sin(t);
+      ASSERT_EQ(s, want(sin_form, t)) << now.count() << " " << t.count();
+      ASSERT_EQ(cos(t), want(cos_form, t)) << now.count() << " " << t.count();
+      ASSERT_EQ(sin(t), s); // read again with no frame between: the same
+    }
+  }
+  EXPECT_GT(link.node().counters().frames, 6U);
 }
 
 } // namespace

@@ -18,6 +18,33 @@ namespace {
 
 using namespace hilrig::literals;
 
+// put_raw and get_raw move a byte's part of the signal at a time; on random signals (any start
+// bit and length 1..64, over random frame bytes) they do what moving one bit at a time does
+// (Intel order: bit i of the signal is bit (start + i) % 8 of byte (start + i) / 8), and
+// leave every other bit of the frame as it was.
+TEST(RawSignal, RandomSignalsMatchMovingThemBitByBit) {
+  std::mt19937_64 rng(27112026);
+  for (int k = 0; k < 20'000; ++k) {
+    CanFrame frame;
+    for (std::uint8_t& b : frame.data) b = static_cast<std::uint8_t>(rng());
+    const auto length = static_cast<unsigned>(1 + rng() % 64);
+    const auto start = static_cast<unsigned>(rng() % (512 - length + 1));
+    const std::uint64_t raw = rng();
+    std::uint64_t want_read = 0;
+    for (unsigned i = 0; i < length; ++i)
+      want_read |= std::uint64_t{(frame.data[(start + i) / 8] >> ((start + i) % 8)) & 1U} << i;
+    ASSERT_EQ(get_raw(frame, start, length), want_read) << k;
+    CanFrame want = frame;
+    for (unsigned i = 0; i < length; ++i) {
+      const auto mask = static_cast<std::uint8_t>(1U << ((start + i) % 8));
+      std::uint8_t& b = want.data[(start + i) / 8];
+      b = static_cast<std::uint8_t>(((raw >> i) & 1U) != 0 ? b | mask : b & ~mask);
+    }
+    put_raw(frame, start, length, raw);
+    ASSERT_EQ(frame, want) << k;
+  }
+}
+
 TEST(ResolverAngleFrame, HandComputedPayload) {
   // angle 0.5 turn -> 0x800000 (bytes 00 00 80); speed -1 turn/s -> -4096 = 0xFFF000 in 24
   // bits (bytes 00 F0 FF); sequence 5 and valid in byte 6 -> 0x15; channel 2 in byte 7.

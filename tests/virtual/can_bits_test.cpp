@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <vector>
 
 using namespace hilrig;
@@ -154,4 +155,109 @@ TEST(CanDlc, FdLengthsRoundTrip) {
     EXPECT_EQ(can_len_to_dlc(lengths[dlc]), dlc);
   }
   EXPECT_EQ(can_dlc_to_len(12, false), 8U);
+}
+
+namespace {
+
+// can_frame_bits worked out the slow way, as a transmitter sends the frame: the unstuffed bits
+// of the layout in can_bus.hpp one per element (the classic CRC by can_crc over them), then
+// each bit sent and a stuff bit (its complement) sent after it whenever the last 5 bits sent
+// are equal -- except after an FD frame's last data bit, where the fixed stuff bit stands.
+CanFrameBits reference_bits(const CanFrame& f) {
+  std::vector<std::uint8_t> bits;
+  const auto push = [&](std::uint32_t v, int count) {
+    for (int i = count - 1; i >= 0; --i) bits.push_back(static_cast<std::uint8_t>((v >> i) & 1U));
+  };
+  push(0, 1);
+  push(f.extended ? f.id >> 18 : f.id, 11);
+  if (f.extended) {
+    push(1, 1); // SRR
+    push(1, 1); // IDE
+    push(f.id & 0x3FFFFU, 18);
+  }
+  std::size_t brs = 0;
+  if (f.fd) {
+    push(0, 1);                  // RRS
+    if (!f.extended) push(0, 1); // IDE
+    push(1, 1);                  // FDF
+    push(0, 1);                  // res
+    brs = bits.size();
+    push(f.brs ? 1 : 0, 1);
+    push(f.esi ? 1 : 0, 1);
+  } else {
+    push(f.rtr ? 1 : 0, 1);
+    push(0, 2); // IDE r0, or r1 r0
+  }
+  push(can_len_to_dlc(f.len), 4);
+  if (!f.rtr)
+    for (std::size_t i = 0; i < f.len; ++i) push(f.data[i], 8);
+  if (!f.fd) push(can_crc(bits.data(), bits.size(), kCanCrc15), 15);
+
+  std::vector<std::uint8_t> sent;
+  std::uint32_t nominal_stuff = 0;
+  std::uint32_t data_stuff = 0;
+  for (std::size_t i = 0; i < bits.size(); ++i) {
+    sent.push_back(bits[i]);
+    const std::size_t k = sent.size();
+    const bool five = k >= 5 && sent[k - 1] == sent[k - 2] && sent[k - 2] == sent[k - 3] &&
+                      sent[k - 3] == sent[k - 4] && sent[k - 4] == sent[k - 5];
+    if (!five || (f.fd && i + 1 == bits.size())) continue;
+    sent.push_back(static_cast<std::uint8_t>(1U - bits[i]));
+    (f.fd && f.brs && i >= brs ? data_stuff : nominal_stuff) += 1;
+  }
+  const auto n = static_cast<std::uint32_t>(bits.size());
+  CanFrameBits out;
+  if (!f.fd) {
+    out.nominal = n + nominal_stuff + 13;
+    out.stuff = nominal_stuff;
+    return out;
+  }
+  const std::uint32_t crc = f.len <= 16 ? 17 : 21;
+  const std::uint32_t fixed = 1 + (4 + crc - 1) / 4;
+  out.stuff = nominal_stuff + data_stuff + fixed;
+  if (f.brs) {
+    out.nominal = static_cast<std::uint32_t>(brs) + 1 + nominal_stuff + 13;
+    out.data = n - static_cast<std::uint32_t>(brs) - 1 + data_stuff + 4 + crc + fixed;
+  } else {
+    out.nominal = n + nominal_stuff + 4 + crc + fixed + 13;
+  }
+  return out;
+}
+
+} // namespace
+
+// can_frame_bits packs the bits and counts stuff bits a byte at a time; on random frames of
+// every format it gives what sending them bit by bit gives. The data bytes are drawn mostly
+// from long runs of equal bits (0x00, 0xFF, 0x0F, 0xE0, ...), so frames need many stuff bits,
+// at every bit offset, up to and after the last data bit.
+TEST(CanFrameBits, RandomFramesMatchSendingThemBitByBit) {
+  std::mt19937_64 rng(20261127);
+  const std::uint8_t runs[] = {0x00, 0xFF, 0x0F, 0xF0, 0xE0, 0x1F, 0x07, 0xF8, 0x83, 0x7C};
+  const std::uint8_t fd_lengths[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64};
+  std::size_t with_stuff = 0;
+  for (int k = 0; k < 20'000; ++k) {
+    CanFrame f;
+    f.extended = rng() % 2 == 0;
+    f.fd = rng() % 3 == 0;
+    const std::uint64_t pick = rng();
+    const std::uint32_t id_mask = f.extended ? 0x1FFF'FFFFU : 0x7FFU;
+    f.id = static_cast<std::uint32_t>(pick % 4 == 0 ? 0 : pick % 4 == 1 ? id_mask : rng()) & id_mask;
+    if (f.fd) {
+      f.brs = rng() % 2 == 0;
+      f.esi = rng() % 2 == 0;
+      f.len = fd_lengths[rng() % 16];
+    } else {
+      f.rtr = rng() % 5 == 0;
+      f.len = static_cast<std::uint8_t>(rng() % 9);
+    }
+    for (std::size_t i = 0; i < f.len; ++i)
+      f.data[i] = rng() % 3 == 0 ? static_cast<std::uint8_t>(rng()) : runs[rng() % std::size(runs)];
+    const CanFrameBits want = reference_bits(f);
+    const CanFrameBits got = can_frame_bits(f);
+    ASSERT_EQ(got.nominal, want.nominal) << k;
+    ASSERT_EQ(got.data, want.data) << k;
+    ASSERT_EQ(got.stuff, want.stuff) << k;
+    if (want.stuff > (f.fd ? 7U : 0U)) ++with_stuff;
+  }
+  EXPECT_GT(with_stuff, 15'000U); // the draw gives stuff bits to most frames
 }
