@@ -27,6 +27,13 @@ double Segment::end_velocity() const { return velocity_at(end()); }
 MotionProfile::MotionProfile(double start_position, Nanos start_time)
     : start_position_(start_position), start_time_(start_time) {}
 
+void MotionProfile::restart(double start_position, Nanos start_time) {
+  start_position_ = start_position;
+  peak_speed_ = 0.0;
+  start_time_ = start_time;
+  segments_.clear();
+}
+
 MotionProfile& MotionProfile::accelerate(double acceleration, Nanos duration) {
   return append(Segment{end_time(), duration, end_position(), end_velocity(), acceleration});
 }

@@ -35,6 +35,9 @@ class MotionProfile {
 public:
   MotionProfile() = default;
   explicit MotionProfile(double start_position, Nanos start_time = Nanos{0});
+  // Becomes MotionProfile(start_position, start_time), keeping the segments' storage (a plan
+  // redone at every input appends without reallocating).
+  void restart(double start_position, Nanos start_time);
 
   // Appends a segment that starts where and when the last one ended (continuous position
   // and velocity).

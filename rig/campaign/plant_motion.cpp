@@ -101,7 +101,7 @@ void PlantMotion::plan_from(double start) {
   horizon_ = at.time < end_ - ahead_ ? at.time + ahead_ : end_;
   live_known_ = live_->standstills().size();
   plan_standstills_.clear();
-  plan_ = signals::MotionProfile(start, at.time);
+  plan_.restart(start, at.time);
   grow();
 }
 

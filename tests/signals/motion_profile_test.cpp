@@ -33,6 +33,30 @@ TEST(MotionProfile, HoldsStartAndEndPositionsOutside) {
   EXPECT_DOUBLE_EQ(p.end_velocity(), 2.0);
 }
 
+// restart() keeps the segments' storage but nothing else: the profile is a new one from the
+// given start (no segment, the start held, peak speed 0, appends chained from the new start).
+TEST(MotionProfile, RestartedIsANewProfile) {
+  MotionProfile p(5.0, 1_s);
+  p.accelerate(40.0, 1_s).cruise(1_s).accelerate(-40.0, 1_s); // peak 40 units/s
+  p.restart(-3.0, 7_s);
+  EXPECT_TRUE(p.segments().empty());
+  EXPECT_EQ(p.start_time(), 7_s);
+  EXPECT_EQ(p.end_time(), 7_s);
+  EXPECT_EQ(p.position(9_s), -3.0);
+  EXPECT_EQ(p.peak_speed(), 0.0);
+  // The same appends give the same profile as a fresh one, segment for segment.
+  MotionProfile fresh(-3.0, 7_s);
+  for (MotionProfile* q : {&p, &fresh}) q->accelerate(2.0, 1_s).cruise(2_s);
+  ASSERT_EQ(p.segments().size(), fresh.segments().size());
+  for (std::size_t i = 0; i < p.segments().size(); ++i) {
+    EXPECT_EQ(p.segments()[i].start, fresh.segments()[i].start);
+    EXPECT_EQ(p.segments()[i].position, fresh.segments()[i].position);
+    EXPECT_EQ(p.segments()[i].velocity, fresh.segments()[i].velocity);
+  }
+  EXPECT_EQ(p.peak_speed(), 2.0);
+  EXPECT_EQ(p.end_position(), fresh.end_position());
+}
+
 TEST(MotionProfile, SegmentIndexFindsTheSegmentContainingT) {
   MotionProfile p;
   p.accelerate(1.0, 1_s).cruise(2_s).accelerate(-1.0, 1_s);
