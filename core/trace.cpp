@@ -96,6 +96,12 @@ std::uint32_t TraceRecorder::declare(std::string_view name, SignalKind kind, std
   const auto index = static_cast<std::uint32_t>(signals_.size());
   signals_.push_back(SignalInfo{std::string(name), kind, width});
   index_.emplace(std::string(name), index);
+  kept_of_.push_back(0);
+  if (keeping_ && kind == SignalKind::Wire &&
+      std::find(keep_names_.begin(), keep_names_.end(), name) != keep_names_.end()) {
+    kept_.emplace_back();
+    kept_of_.back() = static_cast<std::uint32_t>(kept_.size());
+  }
   return index;
 }
 
@@ -119,10 +125,10 @@ void TraceRecorder::edge(std::uint32_t signal, const Edge& e) {
   record(TraceSample{e.time, signal, is_high(e.level) ? 1 : 0, 0.0});
 }
 
-void TraceRecorder::value(std::uint32_t signal, Nanos t, std::int64_t v) {
+void TraceRecorder::value_refused(std::uint32_t signal) const {
   const SignalInfo& info = checked(signals_, signal);
   require_kind(info, info.kind != SignalKind::Real, "value (use real)");
-  record(TraceSample{t, signal, v, 0.0});
+  throw std::logic_error("TraceRecorder::value: refused a valid sample"); // not reached
 }
 
 void TraceRecorder::real(std::uint32_t signal, Nanos t, double v) {
@@ -131,21 +137,16 @@ void TraceRecorder::real(std::uint32_t signal, Nanos t, double v) {
   record(TraceSample{t, signal, 0, v});
 }
 
-void TraceRecorder::record(const TraceSample& s) {
-  in_time_order_ = in_time_order_ && s.time >= last_time_;
-  last_time_ = s.time;
-  latest_time_ = std::max(latest_time_, s.time);
+void TraceRecorder::grow() {
   // Grows by doubling while the run is short (one that never spills never holds the limit's
   // memory); from an eighth of the limit straight to the limit, so a long run's peak holds
   // the limit and an eighth of it, not the limit and the half it grew from.
-  if (samples_.size() == samples_.capacity() && spill_limit_ != 0 && samples_.size() >= spill_limit_ / 8)
-    samples_.reserve(spill_limit_);
-  samples_.push_back(s);
-  if (spill_limit_ != 0 && samples_.size() >= spill_limit_) spill();
+  if (spill_limit_ != 0 && samples_.size() >= spill_limit_ / 8) samples_.reserve(spill_limit_);
 }
 
 void TraceRecorder::spill_beyond(std::size_t limit) {
   spill_limit_ = limit;
+  spill_at_ = limit != 0 ? limit : static_cast<std::size_t>(-1);
   if (limit != 0 && samples_.size() >= limit) spill();
 }
 
@@ -230,6 +231,23 @@ std::int64_t TraceRecorder::find(std::string_view name) const {
   return it == index_.end() ? -1 : static_cast<std::int64_t>(it->second);
 }
 
+void TraceRecorder::keep_edges_of(std::span<const std::string> names) {
+  if (sample_count() != 0 || names.empty()) return;
+  keeping_ = true;
+  for (const std::string& name : names) {
+    if (std::find(keep_names_.begin(), keep_names_.end(), name) != keep_names_.end()) continue;
+    keep_names_.push_back(name);
+    const std::int64_t index = find(name);
+    if (index < 0 || signals_[static_cast<std::size_t>(index)].kind != SignalKind::Wire) continue;
+    kept_.emplace_back();
+    kept_of_[static_cast<std::size_t>(index)] = static_cast<std::uint32_t>(kept_.size());
+  }
+}
+
+void TraceRecorder::keep(const TraceSample& s) {
+  kept_[kept_of_[s.signal] - 1].push_back(Edge{s.time, level_of(s.value != 0)});
+}
+
 std::vector<Edge> TraceRecorder::edges_of(std::string_view name) const {
   const std::string names[] = {std::string(name)};
   return std::move(edges_of(names).begin()->second);
@@ -241,19 +259,28 @@ TraceRecorder::edges_of(std::span<const std::string> names) const {
   // Per signal index: where its edges go (null for signals nobody asked for).
   std::vector<std::vector<Edge>*> wanted(signals_.size(), nullptr);
   bool any = false;
+  bool all_kept = true;
   for (const std::string& name : names) {
     std::vector<Edge>& edges = out[name];
     const std::int64_t index = find(name);
     if (index < 0 || signals_[static_cast<std::size_t>(index)].kind != SignalKind::Wire) continue;
     wanted[static_cast<std::size_t>(index)] = &edges;
     any = true;
+    all_kept = all_kept && kept_of_[static_cast<std::size_t>(index)] != 0;
   }
   if (!any) return out;
-  visit_samples(0, [&](std::span<const TraceSample> chunk) {
-    for (const TraceSample& s : chunk) {
-      if (std::vector<Edge>* edges = wanted[s.signal]) edges->push_back(Edge{s.time, level_of(s.value != 0)});
-    }
-  });
+  if (all_kept) {
+    // Kept as they were recorded: the samples the pass below would collect, in the same order.
+    for (std::size_t i = 0; i < wanted.size(); ++i)
+      if (wanted[i] != nullptr) *wanted[i] = kept_[kept_of_[i] - 1];
+  } else {
+    visit_samples(0, [&](std::span<const TraceSample> chunk) {
+      for (const TraceSample& s : chunk) {
+        if (std::vector<Edge>* edges = wanted[s.signal])
+          edges->push_back(Edge{s.time, level_of(s.value != 0)});
+      }
+    });
+  }
   // Recorded in the order they happened, which is time order on a scheduler; a stable sort
   // keeps that order for equal times and guards hand-fed traces.
   const auto by_time = [](const Edge& a, const Edge& b) { return a.time < b.time; };

@@ -71,7 +71,11 @@ public:
   void set_initial_real(std::uint32_t signal, double v);
 
   void edge(std::uint32_t signal, const Edge& e);
-  void value(std::uint32_t signal, Nanos t, std::int64_t v);
+  // Inline: a long run records millions (the shaft's count and position at every encoder edge).
+  void value(std::uint32_t signal, Nanos t, std::int64_t v) {
+    if (signal >= signals_.size() || signals_[signal].kind == SignalKind::Real) value_refused(signal);
+    record(TraceSample{t, signal, v, 0.0});
+  }
   void real(std::uint32_t signal, Nanos t, double v);
   void can(std::string_view bus, Nanos t, const CanFrame& frame);
   void serial(std::string_view link, SerialDirection dir, Nanos t, std::uint8_t byte);
@@ -101,6 +105,12 @@ public:
   void visit_samples(std::size_t from, const SampleChunk& chunk) const;
   [[nodiscard]] const std::vector<TraceCanFrame>& can_frames() const { return can_; }
   [[nodiscard]] const std::vector<TraceSerialByte>& serial_bytes() const { return serial_; }
+  // Keeps the samples of the Wire signals of these names (declared now or later) as edges in
+  // memory as they are recorded, so edges_of() asking only for them reads no sample back (a
+  // spilled run's edges_of was a pass decoding every sample). Only before the first sample:
+  // called later it keeps nothing (edges_of then reads the samples, as it does for a name not
+  // kept).
+  void keep_edges_of(std::span<const std::string> names);
   // Edges of one Wire signal, in time order.
   [[nodiscard]] std::vector<Edge> edges_of(std::string_view name) const;
   // The same for several signals in one pass over the samples; every name is a key of the
@@ -123,7 +133,19 @@ public:
   [[nodiscard]] std::string canonical_text() const;
 
 private:
-  void record(const TraceSample& s);
+  // Records one sample; the growth and the spill out of line.
+  void record(const TraceSample& s) {
+    in_time_order_ = in_time_order_ && s.time >= last_time_;
+    last_time_ = s.time;
+    if (s.time > latest_time_) latest_time_ = s.time;
+    if (keeping_ && kept_of_[s.signal] != 0) keep(s);
+    if (samples_.size() == samples_.capacity()) grow();
+    samples_.push_back(s);
+    if (samples_.size() >= spill_at_) spill();
+  }
+  void grow();
+  void keep(const TraceSample& s);
+  [[noreturn]] void value_refused(std::uint32_t signal) const;
   void spill();
 
   struct CloseFile {
@@ -141,8 +163,9 @@ private:
   bool in_time_order_ = true;
   Nanos last_time_ = Nanos::min();
   Nanos latest_time_ = Nanos::min();
-  std::size_t spill_limit_ = 0; // 0: never spill
-  std::size_t spilled_ = 0;     // samples in spill_file_, the oldest first
+  std::size_t spill_limit_ = 0;                         // 0: never spill
+  std::size_t spill_at_ = static_cast<std::size_t>(-1); // spill_limit_, or never
+  std::size_t spilled_ = 0;                             // samples in spill_file_, the oldest first
   std::vector<SpillBlock> spill_blocks_;
   std::uint64_t spill_bytes_ = 0; // the file's length
   // A block's bytes on their way to the file: room for the worst case, only what is written
@@ -150,6 +173,11 @@ private:
   std::unique_ptr<std::uint8_t[]> spill_buffer_;
   std::size_t spill_buffer_size_ = 0;
   std::unique_ptr<std::FILE, CloseFile> spill_file_;
+  // keep_edges_of: the names, and per signal 1 + its index in kept_ (0: not kept).
+  std::vector<std::string> keep_names_;
+  bool keeping_ = false;
+  std::vector<std::uint32_t> kept_of_;
+  std::vector<std::vector<Edge>> kept_;
   std::vector<TraceCanFrame> can_;
   std::vector<TraceSerialByte> serial_;
 };

@@ -40,6 +40,7 @@ private:
   std::span<const SignalInfo> signals_;
   std::uint64_t time_ = 0;
   std::vector<std::uint64_t> last_; // per signal: its previous value in the block
+  std::vector<std::uint8_t> real_;  // per signal: 1 for a Real (its kind, packed)
 };
 
 } // namespace hilrig::trace_spill

@@ -13,6 +13,7 @@
 #include <array>
 #include <bit>
 #include <charconv>
+#include <memory>
 #include <ostream>
 #include <stdexcept>
 #include <vector>
@@ -110,10 +111,13 @@ constexpr std::array<std::array<char, 8>, 256> kByteDigits = [] {
   return table;
 }();
 
-// Appends one value change ("1!", "b110 #", "r1.25 $") and its newline to `out`, formatted
-// into a local line first: one append per change (a long run writes millions).
-void append_value(std::string& out, const SignalInfo& s, std::string_view id, std::int64_t v, double r) {
-  char line[128];
+// The most characters format_value writes besides the identifier: 'b' and 64 digits and a
+// space, or 'r', a double's shortest text (at most 24) and a space; and the newline.
+constexpr std::size_t kValueChars = 1 + 64 + 1 + 1;
+
+// Formats one value change ("1!", "b110 #", "r1.25 $") and its newline at `line`, which has
+// room for kValueChars and the identifier; returns the characters written.
+std::size_t format_value(char* line, const SignalInfo& s, std::string_view id, std::int64_t v, double r) {
   std::size_t n = 0;
   switch (s.kind) {
   case SignalKind::Wire:
@@ -144,16 +148,17 @@ void append_value(std::string& out, const SignalInfo& s, std::string_view id, st
     break;
   }
   }
-  if (n + id.size() + 1 > sizeof line) { // never for a real trace (5 characters name 7e9 signals)
-    out.append(line, n);
-    out += id;
-    out += '\n';
-    return;
-  }
   id.copy(line + n, id.size());
   n += id.size();
   line[n++] = '\n';
-  out.append(line, n);
+  return n;
+}
+
+// Appends one value change and its newline to `out`.
+void append_value(std::string& out, const SignalInfo& s, std::string_view id, std::int64_t v, double r) {
+  const std::size_t at = out.size();
+  out.resize(at + kValueChars + id.size());
+  out.resize(at + format_value(out.data() + at, s, id, v, r));
 }
 
 void write_value(std::ostream& out, const SignalInfo& s, std::size_t index, std::int64_t v, double r) {
@@ -196,8 +201,13 @@ public:
   VcdBody(std::ostream& out, const std::vector<SignalInfo>& signals, std::size_t declared)
       : out_(out), signals_(signals) {
     ids_.reserve(declared);
-    for (std::size_t i = 0; i < declared; ++i) ids_.push_back(id_code(i));
-    buffer_.reserve(kBlock + 128);
+    std::size_t longest = 0;
+    for (std::size_t i = 0; i < declared; ++i) {
+      ids_.push_back(id_code(i));
+      longest = std::max(longest, ids_.back().size());
+    }
+    // Room for a "#t" line and a change after the block's last byte.
+    buffer_ = std::make_unique_for_overwrite<char[]>(kBlock + kTimeChars + kValueChars + longest);
   }
   ~VcdBody() = default;
   VcdBody(const VcdBody&) = delete;
@@ -208,32 +218,34 @@ public:
   bool add(const TraceSample& s, std::int64_t& time) {
     check_time(s.time);
     bool in_order = true;
+    char* at = buffer_.get() + used_;
     if (s.time.count() < time) {
       in_order = false;
     } else if (s.time.count() != time) {
       time = s.time.count();
-      char buf[24];
-      const auto res = std::to_chars(buf, buf + sizeof buf, time);
-      buffer_ += '#';
-      buffer_.append(buf, static_cast<std::size_t>(res.ptr - buf));
-      buffer_ += '\n';
+      *at++ = '#';
+      at = std::to_chars(at, at + kTimeChars, time).ptr;
+      *at++ = '\n';
     }
-    append_value(buffer_, signals_[s.signal], ids_[s.signal], s.value, s.real);
-    if (buffer_.size() >= kBlock) flush();
+    at += format_value(at, signals_[s.signal], ids_[s.signal], s.value, s.real);
+    used_ = static_cast<std::size_t>(at - buffer_.get());
+    if (used_ >= kBlock) flush();
     return in_order;
   }
 
   void flush() {
-    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-    buffer_.clear();
+    out_.write(buffer_.get(), static_cast<std::streamsize>(used_));
+    used_ = 0;
   }
 
 private:
   static constexpr std::size_t kBlock = 64 * 1024;
+  static constexpr std::size_t kTimeChars = 1 + 20 + 1; // '#', an int64, '\n'
   std::ostream& out_;
   const std::vector<SignalInfo>& signals_;
   std::vector<std::string> ids_;
-  std::string buffer_;
+  std::unique_ptr<char[]> buffer_;
+  std::size_t used_ = 0;
 };
 
 } // namespace

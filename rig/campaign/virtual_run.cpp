@@ -51,6 +51,12 @@ public:
     // The encoder alone is ~10^5 edges a second: beyond 2 MiB of samples the trace goes to a
     // temporary file (read back for the VCD and the checks), so memory does not grow with the run.
     trace_->spill_beyond(std::size_t{1} << 16);
+    // The lines the checks read (the executive's capture, a debounce probe's output) kept as
+    // edges while recorded: reading them reads no spilled sample back.
+    std::vector<std::string> checked_lines;
+    for (const CheckSpec& check : s_.checks)
+      for (std::string& line : checks::lines_of(check.params)) checked_lines.push_back(std::move(line));
+    trace_->keep_edges_of(checked_lines);
     if (s_.plant) plant_ = std::make_unique<PlantDrive>(sched_, s_);
   }
 

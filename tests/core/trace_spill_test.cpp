@@ -183,6 +183,42 @@ TEST(TraceSpill, AnEncoderEdgeAndItsCountTakeSevenBytes) {
   EXPECT_EQ(trace_spill::encode(real, t.signals(), scratch), 1U + 1U + 8U);
 }
 
+// Every varint length at its edges (1 to 10 bytes: 0x7F, 0x80, 0x3FFF, 0x4000, ... as a time step
+// and as a value step), far from the block's end (decoded unchecked, the 2-byte case on its own
+// path) and at it (checked), read back equal.
+TEST(TraceSpill, VarintsOfEveryLengthRoundTripAtTheirEdges) {
+  TraceRecorder t;
+  const std::uint32_t n = t.declare("n", SignalKind::Integer, 64);
+  const std::uint32_t w = t.declare("w");
+  std::vector<TraceSample> samples;
+  std::int64_t now = 0;
+  std::int64_t value = 0;
+  for (int round = 0; round < 3; ++round) {
+    for (unsigned bits = 1; bits < 64; ++bits) {
+      for (const std::uint64_t step : {(std::uint64_t{1} << bits) - 1U, std::uint64_t{1} << bits}) {
+        // zigzag(d) = 2d for d >= 0: half the step gives a varint of exactly that many bits.
+        const auto half = static_cast<std::int64_t>(step / 2);
+        now += half;
+        value += round == 1 ? -half : half;
+        samples.push_back(TraceSample{Nanos{now}, n, value, 0.0});
+        samples.push_back(TraceSample{Nanos{now}, w, value & 1, 0.0});
+        if (now > std::numeric_limits<std::int64_t>::max() / 4) now = 0;
+      }
+    }
+  }
+  std::vector<std::uint8_t> bytes(samples.size() * trace_spill::kMaxSampleBytes);
+  bytes.resize(trace_spill::encode(samples, t.signals(), bytes));
+  for (const std::size_t chunk : {std::size_t{1}, std::size_t{64}, std::size_t{4096}}) {
+    trace_spill::BlockDecoder decoder(bytes, t.signals());
+    std::vector<TraceSample> buffer(chunk);
+    std::vector<Plain> got;
+    while (const std::size_t k = decoder.next(buffer))
+      for (std::size_t i = 0; i < k; ++i) got.push_back(plain(buffer[i]));
+    ASSERT_EQ(got.size(), samples.size()) << "chunk " << chunk;
+    for (std::size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i], plain(samples[i])) << "sample " << i;
+  }
+}
+
 TEST(TraceSpill, ATruncatedBlockIsAnErrorNotASample) {
   TraceRecorder t;
   const std::uint32_t n = t.declare("n", SignalKind::Integer, 64);

@@ -109,6 +109,59 @@ TEST(TraceRecorder, EdgesOfReturnsOneWireInTimeOrder) {
   EXPECT_TRUE(t.edges_of("c").empty());
 }
 
+// keep_edges_of: the edges of the kept Wire signals, recorded by edge() or value(), declared
+// before the call or after it, spilled or held, are what reading the samples back gives; a name
+// not kept, not a wire or not declared, asked with kept ones, is read back as before; a call
+// after the first sample keeps nothing.
+TEST(TraceRecorder, EdgesKeptAsRecordedAreTheEdgesReadBack) {
+  for (const std::uint32_t seed : {1U, 2U, 3U, 4U}) {
+    for (const std::size_t spill : {std::size_t{0}, std::size_t{5}, std::size_t{64}}) {
+      for (const bool late : {false, true}) {
+        SCOPED_TRACE("seed " + std::to_string(seed) + " spill " + std::to_string(spill) +
+                     (late ? " keep after a sample" : ""));
+        std::mt19937 rng(seed);
+        TraceRecorder kept;
+        TraceRecorder plain;
+        const std::vector<std::string> names{"early", "late", "count", "nowhere"};
+        for (TraceRecorder* t : {&kept, &plain}) {
+          t->spill_beyond(spill);
+          (void)t->declare("early");
+          (void)t->declare("count", SignalKind::Integer, 16);
+        }
+        if (late) {
+          kept.value(0, Nanos{0}, 1);
+          plain.value(0, Nanos{0}, 1);
+        }
+        kept.keep_edges_of(names);
+        for (TraceRecorder* t : {&kept, &plain}) {
+          (void)t->declare("late");
+          (void)t->declare("other");
+        }
+        std::int64_t now = 0;
+        for (int i = 0; i < 400; ++i) {
+          now += static_cast<std::int64_t>(rng() % 3); // equal times too
+          const std::uint32_t signal = rng() % 4;
+          const auto v = static_cast<std::int64_t>(signal == 1 ? rng() % 1000 : rng() % 2);
+          const bool by_edge = signal != 1 && rng() % 2 == 0;
+          for (TraceRecorder* t : {&kept, &plain}) {
+            if (by_edge)
+              t->edge(signal, Edge{Nanos{now}, level_of(v != 0)});
+            else
+              t->value(signal, Nanos{now}, v);
+          }
+        }
+        EXPECT_EQ(kept.edges_of(names), plain.edges_of(names));
+        const std::vector<std::string> wires{"late", "early"};
+        EXPECT_EQ(kept.edges_of(wires), plain.edges_of(wires));
+        EXPECT_FALSE(kept.edges_of("late").empty());
+        EXPECT_EQ(kept.edges_of("late"), plain.edges_of("late"));
+        EXPECT_EQ(kept.edges_of("other"), plain.edges_of("other")); // not kept: read back
+        EXPECT_EQ(kept.canonical_text(), plain.canonical_text());
+      }
+    }
+  }
+}
+
 TEST(TraceRecorder, Fnv1aReferenceMatchesPublishedVectors) {
   // FNV-1a 64 test vectors (Fowler/Noll/Vo reference): "" and "a".
   EXPECT_EQ(fnv1a(""), 0xcbf29ce484222325ULL);
