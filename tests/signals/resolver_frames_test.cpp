@@ -32,7 +32,7 @@ TEST(RawSignal, RandomSignalsMatchMovingThemBitByBit) {
     const std::uint64_t raw = rng();
     std::uint64_t want_read = 0;
     for (unsigned i = 0; i < length; ++i)
-      want_read |= std::uint64_t{(frame.data[(start + i) / 8] >> ((start + i) % 8)) & 1U} << i;
+      want_read |= std::uint64_t{(unsigned{frame.data[(start + i) / 8]} >> ((start + i) % 8)) & 1U} << i;
     ASSERT_EQ(get_raw(frame, start, length), want_read) << k;
     CanFrame want = frame;
     for (unsigned i = 0; i < length; ++i) {
