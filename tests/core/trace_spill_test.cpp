@@ -202,7 +202,11 @@ TEST(TraceSpill, VarintsOfEveryLengthRoundTripAtTheirEdges) {
         value += round == 1 ? -half : half;
         samples.push_back(TraceSample{Nanos{now}, n, value, 0.0});
         samples.push_back(TraceSample{Nanos{now}, w, value & 1, 0.0});
+        // Both start again before the next step could overflow them (a step is at most 2^62).
         if (now > std::numeric_limits<std::int64_t>::max() / 4) now = 0;
+        if (value > std::numeric_limits<std::int64_t>::max() / 4 ||
+            value < std::numeric_limits<std::int64_t>::min() / 4)
+          value = 0;
       }
     }
   }
