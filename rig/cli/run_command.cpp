@@ -26,6 +26,7 @@
 #include "rig/campaign/limits.hpp"
 #include "rig/campaign/modbus_host_link.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/heap_policy.hpp"
 #include "rig/cli/output_dir.hpp"
 #include "rig/cli/run_progress.hpp"
 #include "rig/cli/seed_option.hpp"
@@ -606,6 +607,7 @@ void add_run_command(CLI::App& app) {
       "--progress", options->progress_lines,
       "a line per finished run on stderr (outcome, wall time, ETA), also when it is not a terminal");
   cmd->callback([options, trace] {
+    keep_freed_heap(); // where it is not glibc's allocator there is nothing to keep
     options->trace = *rig::trace_policy_named(*trace); // checked above
     options->progress = isatty(fileno(stderr)) != 0;
     if (!options->epoch) {
