@@ -102,7 +102,9 @@ void PlantMotion::plan_from(double start) {
   live_known_ = live_->standstills().size();
   plan_standstills_.clear();
   plan_.restart(start, at.time);
-  grow();
+  // Nothing is integrated yet: the first look for an edge grows the plan (a stepper's next
+  // pulse usually replaces it a few knots in, so knots integrated here ahead of that look
+  // would mostly be thrown away).
 }
 
 // The knots integrate() would give on its way to the horizon, a few at a time: the same
