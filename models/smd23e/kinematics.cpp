@@ -139,6 +139,73 @@ Phase Motion::phase(Nanos t) const {
   return pieces_[index_at(board_time(t))].phase;
 }
 
+// In a piece with v0, a0 and jerk >= 0 every floating-point step of progress() is
+// non-decreasing in t, and rounding to nearest keeps it so: the board time (int64 to double,
+// a product and a quotient by positive constants), the local time (a difference with and a min
+// of constants, >= 0), distance_at's sums and products of terms >= 0 that do not decrease, and
+// p0 plus that. So progress is non-decreasing over whole ns that map into such a piece.
+Motion::Span Motion::span_between(std::int64_t lo, std::int64_t hi, std::size_t& piece) const {
+  piece = index_at(board_time(Nanos{lo}));
+  // index_at is non-decreasing in the board time, which is non-decreasing in t.
+  if (piece + 1 < placed_.size() && placed_[piece + 1].t0 <= board_time(Nanos{hi})) return Span::Pieces;
+  const Piece& p = pieces_[piece];
+  return p.v0 >= 0.0 && p.a0 >= 0.0 && p.jerk >= 0.0 ? Span::Rising : Span::OnePiece;
+}
+
+// Progress is non-decreasing on [lo, hi], so every probe keeps progress(lo) < x <= progress(hi)
+// and the first ns reaching x is the one the bisection would end on. The first probe is the
+// closed-form time (within a ns or so of the answer); from there the bracket grows towards the
+// answer in doubling strides, then is halved: a few probes, never many more than a bisection's.
+Nanos Motion::first_reaching(double x, std::size_t piece, std::int64_t lo, std::int64_t hi) const {
+  const Piece& p = pieces_[piece];
+  const double rest = x - placed_[piece].p0;
+  // The local time where the piece covers `rest`: the quadratic's stable root, then Newton for
+  // the jerk's term.
+  const double root = std::sqrt(std::max(0.0, p.v0 * p.v0 + 2.0 * p.a0 * rest));
+  double tau = p.v0 + root > 0.0 ? 2.0 * rest / (p.v0 + root) : 0.0;
+  if (p.jerk != 0.0) {
+    for (int i = 0; i < 4; ++i) {
+      const double v = p.velocity_at(tau);
+      if (!(v > 0.0)) break;
+      tau -= (p.distance_at(tau) - rest) / v;
+    }
+  }
+  const double guess =
+      std::ceil(static_cast<double>(start_.count()) + (placed_[piece].t0 + tau) * scale_ * 1e9);
+  std::int64_t g = lo + (hi - lo) / 2;
+  if (guess > static_cast<double>(lo) && guess < static_cast<double>(hi))
+    g = static_cast<std::int64_t>(guess);
+  if (progress(Nanos{g}) >= x) {
+    hi = g;
+    for (std::int64_t stride = 1; hi - lo > 1; stride *= 2) {
+      const std::int64_t t = std::max(hi - stride, lo + 1);
+      if (progress(Nanos{t}) < x) {
+        lo = t;
+        break;
+      }
+      hi = t;
+    }
+  } else {
+    lo = g;
+    for (std::int64_t stride = 1; hi - lo > 1; stride *= 2) {
+      const std::int64_t t = std::min(lo + stride, hi - 1);
+      if (progress(Nanos{t}) >= x) {
+        hi = t;
+        break;
+      }
+      lo = t;
+    }
+  }
+  while (hi - lo > 1) {
+    const std::int64_t mid = lo + (hi - lo) / 2;
+    if (progress(Nanos{mid}) >= x)
+      hi = mid;
+    else
+      lo = mid;
+  }
+  return Nanos{hi};
+}
+
 Nanos Motion::time_at_progress(double x) const {
   if (x <= 0.0) {
     return start_;
@@ -157,15 +224,32 @@ Nanos Motion::time_at_progress(double x) const {
       step *= 2;
     }
   }
-  while (hi - lo > 1) {
+  // The progress at lo: the start's, or a probe's (the value progress(Nanos{lo}) gives).
+  double at_lo = progress(Nanos{lo});
+  const auto probe = [this](std::int64_t t) { return progress(Nanos{t}); };
+  // Once lo and hi are probes (progress(lo) < x <= progress(hi)) within one rising piece, the
+  // bisection can only end at the one ns where progress there first reaches x: that ns is
+  // found from the piece's closed form rather than by the rest of the bisection's probes. Looked at only
+  // before a probe the path does not remember (remembered ones cost nothing), and no more once
+  // lo and hi share a piece that is not rising.
+  bool look_for_rise = true;
+  for (std::size_t depth = 0; hi - lo > 1; ++depth) {
     const std::int64_t mid = lo + (hi - lo) / 2;
-    if (progress(Nanos{mid}) >= x) {
+    if (look_for_rise && lo > start_.count() && hi < end_.count() && !path_.knows(depth, mid)) {
+      std::size_t piece = 0;
+      const Span span = span_between(lo, hi, piece);
+      if (span == Span::Rising) return first_reaching(x, piece, lo, hi);
+      look_for_rise = span == Span::Pieces;
+    }
+    const double at_mid = path_.probe(depth, mid, probe);
+    if (at_mid >= x) {
       hi = mid;
     } else {
       lo = mid;
+      at_lo = at_mid;
     }
   }
-  return progress(Nanos{lo}) >= x ? Nanos{lo} : Nanos{hi};
+  return at_lo >= x ? Nanos{lo} : Nanos{hi};
 }
 
 } // namespace hilrig::models::smd23e

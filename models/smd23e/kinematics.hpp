@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/time.hpp"
+#include "models/smd23e/bisection_path.hpp"
 
 namespace hilrig::models::smd23e {
 
@@ -86,6 +87,14 @@ private:
     double p0; // progress at t0
   };
   [[nodiscard]] std::size_t index_at(double tau) const;
+  // Where whole nanoseconds lo < hi (both inside (start, end)) fall: in one piece whose speed,
+  // acceleration and jerk are all >= 0 (progress() is then non-decreasing from lo to hi in
+  // floating point too), in one other piece, or in more than one. `piece`: lo's piece.
+  enum class Span : std::uint8_t { Rising, OnePiece, Pieces };
+  [[nodiscard]] Span span_between(std::int64_t lo, std::int64_t hi, std::size_t& piece) const;
+  // The first whole ns in (lo, hi] whose progress reaches x, where [lo, hi] lies in that rising
+  // piece, progress(lo) < x and progress(hi) >= x: searched from the piece's closed-form time.
+  [[nodiscard]] Nanos first_reaching(double x, std::size_t piece, std::int64_t lo, std::int64_t hi) const;
   [[nodiscard]] double board_time(Nanos t) const { return (t - start_).seconds() / scale_; }
   Nanos start_{0};
   Nanos end_{0};
@@ -93,6 +102,9 @@ private:
   double total_ = 0.0;
   std::vector<Piece> pieces_;
   std::vector<Placed> placed_;
+  // time_at_progress()'s last probes: the next whole step's time (a bisection from the
+  // motion's start to its end) shares the first of them with the step before.
+  mutable BisectionPath path_;
 };
 
 } // namespace hilrig::models::smd23e
