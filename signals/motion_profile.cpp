@@ -46,22 +46,26 @@ MotionProfile& MotionProfile::dwell(Nanos duration) {
 }
 
 MotionProfile& MotionProfile::append(const Segment& s) {
-  if (!segments_.empty() && open_ended(segments_.back()))
-    throw std::logic_error("MotionProfile::append: the last segment is open-ended");
-  if (s.start != end_time())
+  // Where and when the profile ends so far: end_time() and end_position(), the last segment
+  // read once.
+  Nanos end = start_time_;
+  double p0 = start_position_;
+  if (!segments_.empty()) {
+    const Segment& last = segments_.back();
+    if (open_ended(last)) throw std::logic_error("MotionProfile::append: the last segment is open-ended");
+    end = last.start + last.duration;
+    p0 = last.settled_end ? *last.settled_end : last.position_at(end);
+  }
+  if (s.start != end)
     throw std::invalid_argument("MotionProfile::append: segment does not start at the end time");
   if (s.duration <= Nanos::zero()) throw std::invalid_argument("MotionProfile::append: duration must be > 0");
   // Position must be continuous (velocity may step: an ideal shaft "already spinning").
-  const double p0 = end_position();
   if (std::abs(s.position - p0) > 1e-9 * (1.0 + std::abs(p0)))
     throw std::invalid_argument("MotionProfile::append: position is not continuous");
-  Segment copy = s;
-  copy.position = p0;
-  copy.settled_end.reset(); // only settle() declares an end // exact continuity, so edge solvers see no jump
-                            // at the boundary
-  segments_.push_back(copy);
-  peak_speed_ = std::max(peak_speed_, std::abs(copy.velocity));
-  if (!open_ended(copy)) peak_speed_ = std::max(peak_speed_, std::abs(copy.end_velocity()));
+  // Exact continuity, so edge solvers see no jump at the boundary; only settle() declares an end.
+  const Segment& added = segments_.emplace_back(Segment{s.start, s.duration, p0, s.velocity, s.acceleration});
+  peak_speed_ = std::max(peak_speed_, std::abs(added.velocity));
+  if (!open_ended(added)) peak_speed_ = std::max(peak_speed_, std::abs(added.end_velocity()));
   return *this;
 }
 

@@ -38,6 +38,8 @@ public:
   // Becomes MotionProfile(start_position, start_time), keeping the segments' storage (a plan
   // redone at every input appends without reallocating).
   void restart(double start_position, Nanos start_time);
+  // Room for n segments in all, so that appending up to them does not reallocate.
+  void reserve(std::size_t n) { segments_.reserve(n); }
 
   // Appends a segment that starts where and when the last one ended (continuous position
   // and velocity).

@@ -155,6 +155,7 @@ signals::MotionProfile PlantMotion::trajectory() const {
   const double start = history_.empty() ? plan_.position(plan_.start_time()) : history_.front().position;
   const Nanos t0 = history_.empty() ? plan_.start_time() : history_.front().start;
   signals::MotionProfile p(start, t0);
+  p.reserve(history_.size() + plan_.segments().size());
   for (const signals::Segment& s : history_) p.append(s);
   for (const signals::Segment& s : plan_.segments()) p.append(s);
   return p;
