@@ -12,13 +12,24 @@ int sign_of(double x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
 
 QuadratureEdgeSolver::QuadratureEdgeSolver(const MotionProfile& profile, const QuadratureEncoder& encoder,
                                            Nanos until)
-    : segments_(&profile.segments()), encoder_(encoder), counts_per_unit_(encoder.counts_per_unit()),
-      until_(until), edge_offset_(encoder.edge_offset()), counts_per_turn_(encoder.counts_per_turn()) {
+    : profile_(&profile), segments_(&profile.segments()), encoder_(encoder),
+      counts_per_unit_(encoder.counts_per_unit()), until_(until), edge_offset_(encoder.edge_offset()),
+      counts_per_turn_(encoder.counts_per_turn()) {
   if (encoder.lines_per_turn == 0)
     throw std::invalid_argument("QuadratureEncoder: lines_per_turn must be > 0");
-  initial_count_ = encoder.count_at(profile.position(profile.start_time()));
+  restart();
+}
+
+void QuadratureEdgeSolver::restart() {
+  growing_ = static_cast<bool>(more_);
+  next_segment_ = 0;
+  done_ = false;
+  piece_active_ = false;
+  pieces_ = 0;
+  piece_ = 0;
+  initial_count_ = encoder_.count_at(profile_->position(profile_->start_time()));
   count_ = initial_count_;
-  index_phase_ = (count_ - encoder.index_count) % counts_per_turn_;
+  index_phase_ = (count_ - encoder_.index_count) % counts_per_turn_;
   if (index_phase_ < 0) index_phase_ += counts_per_turn_;
 }
 
@@ -26,7 +37,7 @@ bool QuadratureEdgeSolver::load_segment(std::size_t i) {
   const Segment& s = (*segments_)[i];
   if (s.start >= until_) {
     next_segment_ = segments_->size();
-    more_ = nullptr; // nothing later is solved
+    growing_ = false; // nothing later is solved
     return false;
   }
   Nanos end = s.duration == Nanos::max() ? until_ : std::min(s.end(), until_);
@@ -100,11 +111,11 @@ bool QuadratureEdgeSolver::advance() {
         return true;
       }
     }
-    if (!more_) break;
+    if (!growing_) break;
     const Growth grown = more_();
     if (grown == Growth::Later) return false; // not done: the next fill() asks again
     if (grown == Growth::Whole) {
-      more_ = nullptr; // the profile is whole
+      growing_ = false; // the profile is whole
       break;
     }
   }

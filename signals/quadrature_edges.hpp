@@ -40,7 +40,14 @@ public:
   // none will come (Whole), or that it appends no more for now (Later: fill() returns what it
   // has, and the next fill() asks again). The edges are those of the whole profile solved at once.
   enum class Growth : std::uint8_t { Grown, Whole, Later };
-  void grow_with(std::function<Growth()> more) { more_ = std::move(more); }
+  void grow_with(std::function<Growth()> more) {
+    more_ = std::move(more);
+    growing_ = static_cast<bool>(more_);
+  }
+
+  // Starts over from the profile's start, as a new solver of the same profile, encoder,
+  // `until` and growth would (the profile may have been restarted and appended to since).
+  void restart();
 
   [[nodiscard]] std::int64_t initial_count() const { return initial_count_; }
   [[nodiscard]] std::int64_t count() const { return count_; } // after the last edge written
@@ -51,8 +58,10 @@ private:
   bool load_segment(std::size_t i); // false when segment i does not move
   void start_piece(int piece);
 
+  const MotionProfile* profile_;
   const std::vector<Segment>* segments_;
   std::function<Growth()> more_;
+  bool growing_ = false; // more_ may still be asked
   QuadratureEncoder encoder_;
   double counts_per_unit_ = 0;
   Nanos until_;

@@ -30,11 +30,17 @@ std::string event_words(plants::PlantInput which, bool level) {
 PlantDrive::PlantDrive(Scheduler& scheduler, const Scenario& scenario)
     : sched_(scheduler), s_(scenario), spec_(*scenario.plant),
       motion_(spec_, scenario.encoder.counts_per_turn(), scenario.end),
-      encoder_(rig_encoder(scenario.encoder)),
+      encoder_(rig_encoder(scenario.encoder)), solver_(motion_.plan(), encoder_, scenario.end),
       grows_per_look_(spec_.kind == PlantKind::StepperLoad ? kGrowsPerLook : std::numeric_limits<int>::max()),
       valve_(spec_.kind != PlantKind::Press || spec_.press_start.valve) {
   count_ = encoder_.count_at(motion_.plan().position(motion_.plan().start_time()));
   checks::append_motion(counts_, {motion_.plan().start_time(), static_cast<double>(count_)});
+  solver_.grow_with([this] {
+    using Growth = signals::QuadratureEdgeSolver::Growth;
+    if (grows_left_ == 0) return Growth::Later;
+    --grows_left_;
+    return motion_.grow() ? Growth::Grown : Growth::Whole;
+  });
 }
 
 bool PlantDrive::drives(std::string_view rig) const {
@@ -88,17 +94,15 @@ void PlantDrive::apply(plants::PlantInput which, bool level) {
 
 void PlantDrive::resolve() {
   ++generation_;
-  solver_ = std::make_unique<signals::QuadratureEdgeSolver>(motion_.plan(), encoder_, s_.end);
-  solver_->grow_with([this] {
-    using Growth = signals::QuadratureEdgeSolver::Growth;
-    if (grows_left_ == 0) return Growth::Later;
-    --grows_left_;
-    return motion_.grow() ? Growth::Grown : Growth::Whole;
-  });
+  // The old plan's pending events are dead (their generation checks would drop them).
+  sched_.cancel(next_event_);
+  sched_.cancel(extend_event_);
+  next_event_ = extend_event_ = EventId{};
+  solver_.restart();
   next_ = filled_ = 0;
   // The new plan starts where the old one was at this instant; a count that rounding puts
   // on the other side of an edge is set right here, once.
-  const std::int64_t start = solver_->initial_count();
+  const std::int64_t start = solver_.initial_count();
   if (start != count_) {
     count_ = start;
     if (shaft_ != nullptr) shaft_->count(sched_.now(), count_);
@@ -107,14 +111,27 @@ void PlantDrive::resolve() {
     if (enc_b_ != nullptr) enc_b_->set(level_of(signals::channel_b(count_)));
   }
   // The plan reaches a horizon: there it runs on (before any edge of that instant, which the
-  // new plan's initial count covers).
-  if (const Nanos until = motion_.plan_end(); until < s_.end)
-    sched_.at(until, [this, g = generation_] {
-      if (g != generation_) return;
-      motion_.extend();
-      resolve();
-    });
+  // new plan's initial count covers). Its place is taken now; its event waits for extend_by().
+  extend_owed_ = motion_.plan_end() < s_.end;
+  if (extend_owed_) extend_place_ = sched_.reserve();
   schedule_next();
+}
+
+// Until the drive's next event reaches the horizon, that event runs first and looks again
+// (or an input replaces the plan): the extension is scheduled before the scheduler can get
+// to its place, and runs there as if scheduled when the plan began.
+void PlantDrive::extend_by(Nanos next) {
+  if (!extend_owed_ || next < motion_.plan_end()) return;
+  extend_owed_ = false;
+  extend_event_ = sched_.at(
+      motion_.plan_end(),
+      [this, g = generation_] {
+        if (g != generation_) return;
+        extend_event_ = EventId{};
+        motion_.extend();
+        resolve();
+      },
+      extend_place_);
 }
 
 void PlantDrive::schedule_next() {
@@ -124,16 +141,22 @@ void PlantDrive::schedule_next() {
 
 void PlantDrive::seek() {
   grows_left_ = grows_per_look_;
+  next_event_ = EventId{};
   if (next_ == filled_) {
-    filled_ = solver_->fill(buffer_);
+    filled_ = solver_.fill(buffer_);
     next_ = 0;
     if (filled_ == 0) {
-      if (solver_->done()) return;
+      if (solver_.done()) {
+        extend_by(Nanos::max());
+        return;
+      }
       // No edge in the plan so far: none before its end, where the search goes on. That
       // look runs in the edge's place, so an edge found at its instant runs where it would
       // have; an input before it replaces the plan and drops the look, as it would the edge.
-      sched_.at(
-          motion_.plan().end_time(),
+      const Nanos look = motion_.plan().end_time();
+      extend_by(look);
+      next_event_ = sched_.at(
+          look,
           [this, g = generation_] {
             if (g == generation_) seek();
           },
@@ -142,8 +165,9 @@ void PlantDrive::seek() {
     }
   }
   const Nanos at = buffer_[next_].time;
+  extend_by(at);
   if (at > s_.end) return;
-  sched_.at(
+  next_event_ = sched_.at(
       at,
       [this, g = generation_] {
         if (g == generation_) play();

@@ -55,7 +55,10 @@ public:
 
 private:
   void apply(plants::PlantInput which, bool level);
-  void resolve(); // a new solver over the plan, from now
+  void resolve(); // the solver over the new plan, from now
+  // Schedules the plan's extension at its horizon (at the place resolve() took for it) once the
+  // drive's next event is `next` (Nanos::max(): none) and that is no earlier than the horizon.
+  void extend_by(Nanos next);
   // The next edge's event, at the place it takes in the order of events at its time.
   void schedule_next();
   // Looks for that edge in the plan integrated a few knots further; when none is there yet,
@@ -69,14 +72,23 @@ private:
   const PlantSpec& spec_;
   PlantMotion motion_;
   signals::QuadratureEncoder encoder_;
-  std::unique_ptr<signals::QuadratureEdgeSolver> solver_;
+  // Over motion_.plan(), restarted at each new plan.
+  signals::QuadratureEdgeSolver solver_;
   // One edge (and its Z edge) at a time: the solver integrates the plan only as far as the
   // next edge, and the next input usually replaces the plan before the edge after.
   std::array<signals::QuadEdge, 2> buffer_{};
   std::size_t next_ = 0, filled_ = 0;
   std::uint64_t generation_ = 0; // edges scheduled under an older plan are dropped
   Reservation next_place_;       // where the next edge's event stands among those at its time
-  int grows_left_ = 0;           // PlantMotion::grow() calls this look at the plan may make
+  EventId next_event_{};         // the next edge's (or look's) event
+  // The plan's extension at its horizon: where its event stands (taken when the plan began, as
+  // scheduling it then would), whether it is still to be scheduled, and the event. It is
+  // scheduled only when the drive itself would not act again before the horizon: a stepper's
+  // next pulse usually replaces the plan long before.
+  Reservation extend_place_;
+  bool extend_owed_ = false;
+  EventId extend_event_{};
+  int grows_left_ = 0; // PlantMotion::grow() calls this look at the plan may make
   // grow() calls a look at the plan makes before waiting for the shaft to get there: for a
   // stepper kGrowsPerLook (its next pulse usually replaces the plan a few knots in); no limit
   // for a plant whose inputs are rare (a press, a rotary axis), whose plan the shaft mostly
