@@ -161,23 +161,30 @@ namespace {
 
 void TraceRecorder::spill() {
   if (!spill_file_) spill_file_.reset(anonymous_temporary_file());
-  if (spill_buffer_size_ < samples_.size() * trace_spill::kMaxSampleBytes) {
-    spill_buffer_size_ = samples_.size() * trace_spill::kMaxSampleBytes;
+  // In blocks of at most kSpillBlockSamples: the buffer a block is encoded into, and the one
+  // visit_samples() reads a block back into, stay small however many samples are held.
+  const std::size_t most = std::min(samples_.size(), kSpillBlockSamples);
+  if (spill_buffer_size_ < most * trace_spill::kMaxSampleBytes) {
+    spill_buffer_size_ = most * trace_spill::kMaxSampleBytes;
     spill_buffer_ = std::make_unique_for_overwrite<std::uint8_t[]>(spill_buffer_size_);
   }
   const std::span<std::uint8_t> buffer(spill_buffer_.get(), spill_buffer_size_);
-  const std::span<const std::uint8_t> block = buffer.first(trace_spill::encode(samples_, signals_, buffer));
-  // Written whole at the file's end, unbuffered: each block is read back with pread().
   const int fd = fileno(spill_file_.get());
-  for (std::size_t done = 0; done < block.size();) {
-    const ssize_t n =
-        ::pwrite(fd, block.data() + done, block.size() - done, static_cast<off_t>(spill_bytes_ + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) spill_failed("write");
-    done += static_cast<std::size_t>(n);
+  for (std::size_t from = 0; from < samples_.size(); from += kSpillBlockSamples) {
+    const std::span<const TraceSample> part = std::span<const TraceSample>(samples_).subspan(
+        from, std::min(kSpillBlockSamples, samples_.size() - from));
+    const std::span<const std::uint8_t> block = buffer.first(trace_spill::encode(part, signals_, buffer));
+    // Written whole at the file's end, unbuffered: each block is read back with pread().
+    for (std::size_t done = 0; done < block.size();) {
+      const ssize_t n =
+          ::pwrite(fd, block.data() + done, block.size() - done, static_cast<off_t>(spill_bytes_ + done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) spill_failed("write");
+      done += static_cast<std::size_t>(n);
+    }
+    spill_blocks_.push_back(SpillBlock{spilled_ + from, spill_bytes_});
+    spill_bytes_ += block.size();
   }
-  spill_blocks_.push_back(SpillBlock{spilled_, spill_bytes_});
-  spill_bytes_ += block.size();
   spilled_ += samples_.size();
   samples_.clear(); // keeps its capacity: the memory held stays at the limit
 }

@@ -39,6 +39,13 @@ struct SignalInfo {
   double initial_real = 0.0; // Real
 };
 
+// What a campaign run holds in memory before its trace spills (spill_beyond): 48 MiB of samples
+// (1.5 Mi), so no shipped campaign's run (the longest writes a 1.27 M-line trace.vcd) encodes or reads
+// back a spilled sample, while a longer run's memory stays bounded. A debounce check's probe
+// runs (one per probe thread at once; only their kept edges are read) keep the small limit.
+inline constexpr std::size_t kRunTraceHeldBytes = std::size_t{48} << 20;
+inline constexpr std::size_t kProbeTraceHeldSamples = std::size_t{1} << 16; // 2 MiB
+
 enum class SerialDirection : std::uint8_t { AtoB, BtoA };
 
 struct TraceSample {
@@ -47,6 +54,8 @@ struct TraceSample {
   std::int64_t value;   // Wire: 0/1; Integer: the value
   double real;          // Real only
 };
+
+inline constexpr std::size_t kRunTraceHeldSamples = kRunTraceHeldBytes / sizeof(TraceSample);
 
 struct TraceCanFrame {
   Nanos time; // end of frame
@@ -84,10 +93,13 @@ public:
   // temporary file (in TMPDIR, else /tmp; gone when the recorder is), a few bytes a sample
   // (core/trace_spill.hpp), so a run's memory does not grow with its length. Every reader below
   // sees spilled samples as if they were still held, decoded a chunk at a time. The memory held
-  // grows with the samples, up to the limit (a short run never reserves it). Throws
+  // grows with the samples, up to the limit (a short run never reserves it), and spilling
+  // or reading back takes the buffers of one block (kSpillBlockSamples, ~1.6 MiB each). Throws
   // std::runtime_error when the file cannot be created, written or read back. (The recorder
   // owns the file: it moves, it is not copied.)
   void spill_beyond(std::size_t limit);
+  // The limit spill_beyond() set (0: never spills).
+  [[nodiscard]] std::size_t spill_limit() const { return spill_limit_; }
 
   [[nodiscard]] const std::vector<SignalInfo>& signals() const { return signals_; }
   // The samples still held in memory: all of them unless spill_beyond() moved some out.
@@ -151,7 +163,10 @@ private:
   struct CloseFile {
     void operator()(std::FILE* f) const { std::fclose(f); }
   };
-  // One spill() call's samples in the file: where its bytes start, and its first sample's index.
+  // The most samples one block of the spill file holds (spill() writes what is held as blocks
+  // of at most this many): encoding or reading back a block takes ~1.6 MiB at most.
+  static constexpr std::size_t kSpillBlockSamples = std::size_t{1} << 16;
+  // A block of samples in the file: where its bytes start, and its first sample's index.
   struct SpillBlock {
     std::size_t first = 0;
     std::uint64_t offset = 0;

@@ -13,6 +13,7 @@
 #include <array>
 #include <bit>
 #include <charconv>
+#include <cstring>
 #include <memory>
 #include <ostream>
 #include <stdexcept>
@@ -193,21 +194,88 @@ void check_time(Nanos t) {
   if (t < Nanos::zero()) throw std::invalid_argument("VCD: negative sample time");
 }
 
+// kByteDigits with each row padded to 16 characters: the last r digits of a byte are copied
+// as one 8-character word from its row + 8 - r (the padding after them is overwritten by the
+// characters that follow).
+constexpr std::array<std::array<char, 16>, 256> kPaddedByteDigits = [] {
+  std::array<std::array<char, 16>, 256> table{};
+  for (std::size_t v = 0; v < 256; ++v)
+    for (std::size_t i = 0; i < 8; ++i) table[v][i] = kByteDigits[v][i];
+  return table;
+}();
+
+// "00" .. "99": a number's decimal digits two at a time.
+constexpr std::array<char, 200> kDigitPairs = [] {
+  std::array<char, 200> table{};
+  for (std::size_t v = 0; v < 100; ++v) {
+    table[2 * v] = static_cast<char>('0' + v / 10);
+    table[2 * v + 1] = static_cast<char>('0' + v % 10);
+  }
+  return table;
+}();
+
+// 10^0 .. 10^19.
+constexpr std::array<std::uint64_t, 20> kPowersOf10 = [] {
+  std::array<std::uint64_t, 20> table{};
+  std::uint64_t p = 1;
+  for (std::uint64_t& t : table) {
+    t = p;
+    p *= 10;
+  }
+  return table;
+}();
+
+// Writes v's decimal digits at `at`; returns the end. The same text as std::to_chars.
+char* put_decimal(char* at, std::uint64_t v) {
+  if (v < 10) {
+    *at = static_cast<char>('0' + v);
+    return at + 1;
+  }
+  // floor(log10(2^bits)) from the bit length (1233 / 4096 ~ log10 2), then one compare.
+  const auto bits = static_cast<std::size_t>(64 - std::countl_zero(v));
+  const std::size_t guess = (bits * 1233) >> 12U;
+  char* const end = at + guess + (v >= kPowersOf10[guess] ? 1 : 0);
+  char* p = end;
+  for (; v >= 100; v /= 100) {
+    p -= 2;
+    std::memcpy(p, kDigitPairs.data() + 2 * (v % 100), 2);
+  }
+  if (v >= 10) {
+    std::memcpy(p - 2, kDigitPairs.data() + 2 * v, 2);
+  } else {
+    p[-1] = static_cast<char>('0' + v);
+  }
+  return end;
+}
+
 // The value changes after $dumpvars: "#t" before the first change at each new time, then the
 // changes. Formats into a buffer written out in large blocks: a long run has millions of
-// changes, and ostream formatting per change was most of the writing time.
+// changes, and ostream formatting per change was most of the writing time. Writes a change
+// with fixed-size copies that may run up to kOverrun characters past its end (overwritten by
+// the next; the buffer has room for them).
 class VcdBody {
 public:
   VcdBody(std::ostream& out, const std::vector<SignalInfo>& signals, std::size_t declared)
       : out_(out), signals_(signals) {
     ids_.reserve(declared);
+    written_.reserve(declared);
     std::size_t longest = 0;
     for (std::size_t i = 0; i < declared; ++i) {
       ids_.push_back(id_code(i));
       longest = std::max(longest, ids_.back().size());
+      const SignalInfo& s = signals[i];
+      Written w;
+      w.kind = s.kind;
+      w.mask = s.width < 64 ? (std::uint64_t{1} << s.width) - 1U : ~std::uint64_t{0};
+      w.short_id = ids_.back().size() <= w.id.size();
+      if (w.short_id) {
+        ids_.back().copy(w.id.data(), ids_.back().size());
+        w.id_size = static_cast<std::uint8_t>(ids_.back().size());
+      }
+      written_.push_back(w);
     }
-    // Room for a "#t" line and a change after the block's last byte.
-    buffer_ = std::make_unique_for_overwrite<char[]>(kBlock + kTimeChars + kValueChars + longest);
+    // Room for a "#t" line and a change after the block's last byte, and the overrun.
+    buffer_ = std::make_unique_for_overwrite<char[]>(kBlock + kTimeChars + kValueChars + longest + kOverrun);
   }
   ~VcdBody() = default;
   VcdBody(const VcdBody&) = delete;
@@ -224,10 +292,35 @@ public:
     } else if (s.time.count() != time) {
       time = s.time.count();
       *at++ = '#';
-      at = std::to_chars(at, at + kTimeChars, time).ptr;
+      at = put_decimal(at, static_cast<std::uint64_t>(time));
       *at++ = '\n';
     }
-    at += format_value(at, signals_[s.signal], ids_[s.signal], s.value, s.real);
+    const Written& w = written_[s.signal];
+    if (w.kind == SignalKind::Real || !w.short_id) {
+      at += format_value(at, signals_[s.signal], ids_[s.signal], s.value, s.real);
+    } else {
+      if (w.kind == SignalKind::Wire) {
+        *at++ = s.value != 0 ? '1' : '0';
+      } else {
+        // As format_value: 'b', the digits from the most significant one (one "0" for zero).
+        const std::uint64_t bits = static_cast<std::uint64_t>(s.value) & w.mask;
+        int left = bits == 0 ? 1 : 64 - std::countl_zero(bits);
+        *at++ = 'b';
+        if (const int part = left % 8; part != 0) {
+          left -= part;
+          std::memcpy(at, kPaddedByteDigits[bits >> static_cast<unsigned>(left)].data() + (8 - part), 8);
+          at += part;
+        }
+        for (; left > 0; left -= 8) {
+          std::memcpy(at, kPaddedByteDigits[(bits >> static_cast<unsigned>(left - 8)) & 0xFFU].data(), 8);
+          at += 8;
+        }
+        *at++ = ' ';
+      }
+      std::memcpy(at, w.id.data(), w.id.size());
+      at += w.id_size;
+      *at++ = '\n';
+    }
     used_ = static_cast<std::size_t>(at - buffer_.get());
     if (used_ >= kBlock) flush();
     return in_order;
@@ -239,11 +332,24 @@ public:
   }
 
 private:
-  static constexpr std::size_t kBlock = 64 * 1024;
+  // A signal as add() writes it: identifiers of up to 8 characters (94^8 signals) copied as one
+  // word; reals and longer identifiers through format_value.
+  struct Written {
+    SignalKind kind = SignalKind::Wire;
+    bool short_id = false;
+    std::uint8_t id_size = 0;
+    std::uint64_t mask = 0;
+    std::array<char, 8> id{};
+  };
+  // A block of 1 MiB: at least the buffer of write_file_atomically's stream, which then writes
+  // it straight out instead of copying it into that buffer first.
+  static constexpr std::size_t kBlock = std::size_t{1} << 20U;
   static constexpr std::size_t kTimeChars = 1 + 20 + 1; // '#', an int64, '\n'
+  static constexpr std::size_t kOverrun = 8;
   std::ostream& out_;
   const std::vector<SignalInfo>& signals_;
   std::vector<std::string> ids_;
+  std::vector<Written> written_;
   std::unique_ptr<char[]> buffer_;
   std::size_t used_ = 0;
 };

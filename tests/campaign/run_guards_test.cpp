@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "core/time.hpp"
@@ -164,6 +166,29 @@ TEST(RunGuards, AFloodedTraceStopsWithTheTraceGuard) {
   in.guards.max_trace_samples = 100; // the encoder alone records 100 edges a ms
   const VirtualRun v = run_virtual(in);
   EXPECT_NE(v.rig_fault.find("trace size guard"), std::string::npos) << v.rig_fault;
+}
+
+// A run's trace holds 48 MiB of samples before it spills (core/trace.hpp); a debounce probe
+// run, one per probe thread at once, keeps 2 MiB (65,536 samples).
+TEST(RunGuards, ARunsTraceHoldsTheRunBudgetAProbeRunsTheSmallOne) {
+  // The shipped debounce campaign, its probe pulse on the brake line it wires; both runs stopped
+  // by the trace guard early (the limit is set before the first sample).
+  std::ifstream file(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_debounce.toml");
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const Campaign c = parse_campaign(text, "ans1_debounce.toml");
+  RunInputs in = inputs_of(c);
+  in.guards.max_trace_samples = 100;
+  EXPECT_EQ(run_virtual(in).trace->spill_limit(), std::size_t{1'572'864});
+  Stimulus pulse;
+  pulse.kind = StimulusKind::Pulse;
+  pulse.at = 1_ms;
+  pulse.line = "brake";
+  pulse.level = Level::Low;
+  pulse.width = 10_ms;
+  in.probe = pulse;
+  const VirtualRun probe = run_virtual(in);
+  EXPECT_NE(probe.rig_fault.find("trace size guard"), std::string::npos) << probe.rig_fault;
+  EXPECT_EQ(probe.trace->spill_limit(), std::size_t{65'536});
 }
 
 // With the default guards the run ends too, as a rig fault in the results (exit 3).

@@ -369,3 +369,51 @@ TEST(TraceSpill, ATinySpillLimitGivesTheSameVcdBytes) {
     }
   }
 }
+
+// A campaign run's recorder holds its whole budget before it spills: 48 MiB of 32-byte samples
+// is 48 * 2^20 / 32 = 1,572,864 samples (a debounce probe run's 2 MiB: 65,536). One sample short
+// of the limit nothing has left memory; the limit-th sample sends all of them to the file, and
+// they read back as recorded.
+TEST(TraceSpill, ARunHoldsItsWholeBudgetBeforeItSpills) {
+  static_assert(sizeof(TraceSample) == 32);
+  ASSERT_EQ(kRunTraceHeldSamples, std::size_t{1'572'864});
+  ASSERT_EQ(kProbeTraceHeldSamples, std::size_t{65'536});
+  const std::size_t limit = kRunTraceHeldSamples;
+  TraceRecorder t;
+  t.spill_beyond(limit);
+  EXPECT_EQ(t.spill_limit(), limit);
+  const std::uint32_t count = t.declare("enc.count", SignalKind::Integer, 32);
+  const auto at = [](std::size_t i) { return static_cast<std::int64_t>(i); };
+  for (std::size_t i = 0; i + 1 < limit; ++i) t.value(count, Nanos{at(i)}, at(i) % 1000);
+  EXPECT_EQ(t.samples().size(), limit - 1); // held, none spilled
+  EXPECT_EQ(t.sample_count(), limit - 1);
+  t.value(count, Nanos{at(limit - 1)}, at(limit - 1) % 1000);
+  EXPECT_TRUE(t.samples().empty()); // the limit-th: all of them in the file
+  EXPECT_EQ(t.sample_count(), limit);
+  t.value(count, Nanos{at(limit)}, at(limit) % 1000);
+  EXPECT_EQ(t.samples().size(), 1U);
+  std::size_t next = 0;
+  bool same = true;
+  t.visit_samples(0, [&](std::span<const TraceSample> chunk) {
+    for (const TraceSample& s : chunk) {
+      same = same && s.time == Nanos{at(next)} && s.signal == count && s.value == at(next) % 1000;
+      ++next;
+    }
+  });
+  EXPECT_EQ(next, limit + 1);
+  EXPECT_TRUE(same);
+  // Spilled as blocks of 65,536: read from inside the second block and from inside the last
+  // (1,572,864 = 24 * 65,536: its last block starts at 1,507,328).
+  for (const std::size_t from : {std::size_t{70'000}, limit - 5}) {
+    next = from;
+    same = true;
+    t.visit_samples(from, [&](std::span<const TraceSample> chunk) {
+      for (const TraceSample& s : chunk) {
+        same = same && s.time == Nanos{at(next)} && s.value == at(next) % 1000;
+        ++next;
+      }
+    });
+    EXPECT_EQ(next, limit + 1) << "from " << from;
+    EXPECT_TRUE(same) << "from " << from;
+  }
+}

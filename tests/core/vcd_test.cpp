@@ -79,6 +79,63 @@ TEST(Vcd, WritesTheHandWrittenFile) {
   EXPECT_EQ(out.str(), kSmallVcd);
 }
 
+// The body's formatting by hand: times across decimal lengths (1, 2, 3, 10, 11 and 19 digits,
+// each side of a power of ten), integers across byte boundaries of their binary digits (1, 7, 8,
+// 9, 16, 17 and 64 digits, zero as one digit, two's complement masked to the width), and
+// two-character identifiers (signal 94 is "!\"": 94 = 0 + 1 * 94; signal 95 is "\"\"").
+TEST(Vcd, WritesTimesIntegersAndLongIdentifiersByHand) {
+  TraceRecorder t;
+  const std::uint32_t w = t.declare("w0");
+  for (int i = 1; i < 94; ++i) t.declare("w" + std::to_string(i));
+  const std::uint32_t n = t.declare("n", SignalKind::Integer, 64);
+  const std::uint32_t m = t.declare("m", SignalKind::Integer, 12);
+  ASSERT_EQ(n, 94U);
+  ASSERT_EQ(m, 95U);
+  t.value(n, 7_ns, 0);
+  t.value(n, 10_ns, 1);
+  t.value(n, 99_ns, 0x7F);
+  t.value(n, 100_ns, 0x80);
+  t.value(n, 1000_ns, 0x1FF);
+  t.value(n, Nanos{123456789}, 0xA5A5);
+  t.value(m, Nanos{123456789}, 0x10001); // 12 bits of it: 1
+  t.value(n, Nanos{9999999999}, 0x10001);
+  t.value(n, Nanos{10000000000}, -1);
+  t.value(n, Nanos{99999999999}, std::numeric_limits<std::int64_t>::min());
+  t.value(m, Nanos{std::numeric_limits<std::int64_t>::max()}, -2);
+  t.edge(w, Edge{Nanos{std::numeric_limits<std::int64_t>::max()}, Level::High});
+  std::ostringstream out;
+  write_vcd(t, out);
+  const std::string s = out.str();
+  const std::size_t dumped = s.find("$end\n", s.find("$dumpvars"));
+  ASSERT_NE(dumped, std::string::npos);
+  EXPECT_EQ(s.substr(dumped + 5), "#7\n"
+                                  "b0 !\"\n"
+                                  "#10\n"
+                                  "b1 !\"\n"
+                                  "#99\n"
+                                  "b1111111 !\"\n"
+                                  "#100\n"
+                                  "b10000000 !\"\n"
+                                  "#1000\n"
+                                  "b111111111 !\"\n"
+                                  "#123456789\n"
+                                  "b1010010110100101 !\"\n"
+                                  "b1 \"\"\n"
+                                  "#9999999999\n"
+                                  "b10000000000000001 !\"\n"
+                                  "#10000000000\n"
+                                  "b" +
+                                      std::string(64, '1') +
+                                      " !\"\n"
+                                      "#99999999999\n"
+                                      "b1" +
+                                      std::string(63, '0') +
+                                      " !\"\n"
+                                      "#9223372036854775807\n"
+                                      "b111111111110 \"\"\n"
+                                      "1!\n");
+}
+
 TEST(Vcd, DateCommentIsOptionalHeader) {
   std::ostringstream out;
   write_vcd(small_trace(), out, "run 42");
