@@ -45,6 +45,12 @@ bool matches(const CanFrame& f, std::uint32_t id) {
   return f.id == id && !f.extended && !f.rtr && !f.fd && f.len == 8;
 }
 
+// The 8 data bytes from a 64-bit payload whose bit k is the frame's bit k (the little-endian
+// layout put_raw gives each signal: byte k / 8, bit k % 8 of it).
+void store_payload(CanFrame& frame, std::uint64_t payload) {
+  for (std::size_t i = 0; i < 8; ++i) frame.data[i] = static_cast<std::uint8_t>(payload >> (8U * i));
+}
+
 std::int64_t sign_extend(std::uint64_t raw, unsigned length) {
   const std::uint64_t sign = 1ull << (length - 1);
   return static_cast<std::int64_t>(raw ^ sign) - static_cast<std::int64_t>(sign);
@@ -96,13 +102,11 @@ CanFrame encode(const ResolverAngleFrame& f) {
   const double speed_counts = std::round(f.speed_turns_per_s * 4096.0);
   const double clamped = std::fmax(-8'388'608.0, std::fmin(8'388'607.0, speed_counts));
   const auto speed = static_cast<std::uint64_t>(static_cast<std::int64_t>(clamped)) & 0xFF'FFFFu;
-  put_raw(out, 0, 24, angle);
-  put_raw(out, 24, 24, speed);
-  put_raw(out, 48, 4, f.sequence & 0xFu);
-  put_raw(out, 52, 1, f.valid ? 1u : 0u);
-  put_raw(out, 53, 1, f.sin_open ? 1u : 0u);
-  put_raw(out, 54, 1, f.cos_open ? 1u : 0u);
-  put_raw(out, 56, 4, f.channel & 0xFu);
+  // The signals of kResolverAngleSignals at their start bits, in one payload.
+  store_payload(out, angle | speed << 24U | std::uint64_t{f.sequence & 0xFu} << 48U |
+                         std::uint64_t{f.valid ? 1u : 0u} << 52U |
+                         std::uint64_t{f.sin_open ? 1u : 0u} << 53U |
+                         std::uint64_t{f.cos_open ? 1u : 0u} << 54U | std::uint64_t{f.channel & 0xFu} << 56U);
   return out;
 }
 
@@ -124,11 +128,10 @@ CanFrame encode(const EdgeReportFrame& f) {
     throw std::out_of_range("edge report timestamp must be 0 .. 2^48-1 ns");
   CanFrame out = blank(kEdgeReportId);
   const auto t = static_cast<std::uint64_t>(f.timestamp.count());
-  put_raw(out, 0, 8, f.line);
-  put_raw(out, 8, 1, is_high(f.level) ? 1u : 0u);
-  put_raw(out, 9, 7, f.sequence & 0x7Fu);
-  put_raw(out, 16, 16, t >> 32);
-  put_raw(out, 32, 32, t & 0xFFFF'FFFFu);
+  // The signals of kEdgeReportSignals at their start bits, in one payload (t < 2^48).
+  store_payload(out, std::uint64_t{f.line} | std::uint64_t{is_high(f.level) ? 1u : 0u} << 8U |
+                         std::uint64_t{f.sequence & 0x7Fu} << 9U | (t >> 32U) << 16U |
+                         (t & 0xFFFF'FFFFu) << 32U);
   return out;
 }
 

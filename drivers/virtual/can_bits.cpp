@@ -10,12 +10,21 @@ namespace {
 // Longest unstuffed SOF..CRC of any frame: FD extended, 64 bytes: 41 + 512 + 21 bits.
 constexpr std::size_t kMaxBits = 600;
 
+// One bit into a CRC register (ISO 11898-1): the register shifts left, and the polynomial is
+// added when its top bit differs from the input bit. Every CRC here steps with it.
+constexpr std::uint32_t crc_step(const CanCrc& crc, std::uint32_t reg, unsigned bit) {
+  const std::uint32_t top = 1U << (crc.width - 1U);
+  const bool feedback = ((reg & top) != 0) != (bit != 0);
+  reg = (reg << 1U) & ((top << 1U) - 1U);
+  return feedback ? reg ^ crc.poly : reg;
+}
+
 // CRC-15 (kCanCrc15) a byte at a time: the register after 8 bit steps from (x << 7), input 0.
 constexpr std::array<std::uint16_t, 256> kCrc15Bytes = [] {
   std::array<std::uint16_t, 256> table{};
   for (std::uint32_t x = 0; x < 256; ++x) {
     std::uint32_t reg = x << 7U;
-    for (int i = 0; i < 8; ++i) reg = ((reg << 1U) & 0x7FFFU) ^ ((reg & 0x4000U) != 0 ? kCanCrc15.poly : 0U);
+    for (int i = 0; i < 8; ++i) reg = crc_step(kCanCrc15, reg, 0);
     table[x] = static_cast<std::uint16_t>(reg);
   }
   return table;
@@ -48,11 +57,7 @@ struct BitStream {
     std::uint32_t crc = kCanCrc15.init;
     std::size_t i = 0;
     for (; i + 8 <= n; i += 8) crc = ((crc << 8U) & 0x7FFFU) ^ kCrc15Bytes[((crc >> 7U) ^ byte(i)) & 0xFFU];
-    for (; i < n; ++i) {
-      const bool feedback = ((crc & 0x4000U) != 0) != (bit(i) != 0);
-      crc = (crc << 1U) & 0x7FFFU;
-      if (feedback) crc ^= kCanCrc15.poly;
-    }
+    for (; i < n; ++i) crc = crc_step(kCanCrc15, crc, bit(i));
     return crc;
   }
   [[nodiscard]] unsigned bit(std::size_t i) const {
@@ -111,7 +116,9 @@ bool fd_length_ok(std::uint8_t len) {
   return len <= 8 || len == 12 || len == 16 || len == 20 || len == 24 || len == 32 || len == 48 || len == 64;
 }
 
-void validate(const CanFrame& f) {
+} // namespace
+
+void can_check_frame(const CanFrame& f) {
   if (f.id > (f.extended ? 0x1FFF'FFFFU : 0x7FFU))
     throw std::invalid_argument("CAN: identifier out of range");
   if (f.fd) {
@@ -123,9 +130,11 @@ void validate(const CanFrame& f) {
   }
 }
 
+namespace {
+
 // SOF through the data field, unstuffed.
 BitStream header_and_data(const CanFrame& f) {
-  validate(f);
+  can_check_frame(f);
   BitStream s;
   s.push(0, 1); // SOF
   if (f.extended) {
@@ -240,14 +249,8 @@ CanFrameBits assemble(const CanFrame& f, const BitStream& s, StuffCount dyn) {
 } // namespace
 
 std::uint32_t can_crc(const std::uint8_t* bits, std::size_t count, const CanCrc& crc) {
-  const std::uint32_t top = 1U << (crc.width - 1U);
-  const std::uint32_t mask = (top << 1U) - 1U;
-  std::uint32_t reg = crc.init & mask;
-  for (std::size_t i = 0; i < count; ++i) {
-    const bool feedback = ((reg & top) != 0) != (bits[i] != 0);
-    reg = (reg << 1U) & mask;
-    if (feedback) reg ^= crc.poly;
-  }
+  std::uint32_t reg = crc.init & ((1U << crc.width) - 1U);
+  for (std::size_t i = 0; i < count; ++i) reg = crc_step(crc, reg, bits[i]);
   return reg;
 }
 

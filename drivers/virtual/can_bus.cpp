@@ -127,7 +127,7 @@ struct CanBus::Impl {
 
 void CanNode::send(const CanFrame& frame) {
   if (bus_off_) return;
-  (void)can_frame_bits(frame); // validates the frame now, in the sender's context
+  can_check_frame(frame); // now, in the sender's context
   queue_.push_back(frame);
   bus_.wake();
 }

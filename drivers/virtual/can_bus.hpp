@@ -66,6 +66,9 @@ struct CanFrameBits {
   std::uint32_t stuff = 0; // stuff bits included in the two counts above
 };
 
+// Throws std::invalid_argument for a frame no bus can send (identifier out of range, a length
+// or bits its format does not have): the check every function below makes first.
+void can_check_frame(const CanFrame& frame);
 // Actual: stuff bits worked out from the frame's real bit stream (including its CRC).
 [[nodiscard]] CanFrameBits can_frame_bits(const CanFrame& frame);
 // Worst case: the maximum stuff bits any frame of this format and length could need.

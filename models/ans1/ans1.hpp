@@ -233,8 +233,12 @@ private:
   // scan reads every peak: the peaks can be read ahead of the scans.
   [[nodiscard]] bool resolver_read_ahead() const;
   // Reads the peaks after the walk's front until one would change the flags or take the GMP out
-  // of quiet_ (a wake there), or a few peaks on (a walk again from the last one).
-  void walk_peaks();
+  // of quiet_ (a wake there), or through the first peak at or after `until` (64 at most; a walk
+  // again from the last one, 2 peaks on, then twice as many each time, until a revision).
+  void walk_peaks(Nanos until);
+  // Where a walk reads to: the next revision expected (a gap between the last two after the
+  // last one), so the peaks read beyond it are one or two; 16 peaks on before two revisions.
+  [[nodiscard]] Nanos revision_expected() const;
   // A stator's values from now on may have changed: the peaks from now on are read again.
   void stators_revised();
   // The track at grid point g while walking: after every peak at or before g.
@@ -333,9 +337,11 @@ private:
   std::vector<PeakReading> walk_;
   Nanos walk_front_ = Nanos::min();
   ResolverTrack walk_state_{};
-  // Peaks read per step: one more than came between the last two revisions (16 before any).
-  std::int64_t walk_chunk_ = 16;
+  // The last revision, the gap before it (revision_expected), and the peaks the next walk
+  // without a revision reads.
   Nanos last_revision_ = Nanos::min();
+  Nanos walk_gap_ = Nanos::zero();
+  std::int64_t walk_more_ = 2;
 
   // Speed
   SpeedFilter speed_{};

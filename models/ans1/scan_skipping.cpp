@@ -155,7 +155,7 @@ void Ans1::run_scan() {
       count_at_edge_grid_ = transducer_count();
       next = grid_at_or_after(next_change());
       if (walking_peaks_) {
-        walk_peaks();
+        walk_peaks(revision_expected());
       } else {
         schedule_count_leave(now);
       }
@@ -416,13 +416,21 @@ Ans1::ResolverTrack Ans1::track_at(Nanos g) const {
   return after == walk_.begin() ? walk_base_ : std::prev(after)->track;
 }
 
-void Ans1::walk_peaks() {
+Nanos Ans1::revision_expected() const {
+  if (last_revision_ == Nanos::min() || walk_gap_ <= Nanos::zero()) { // 16 peaks before any
+    return excitation_.next_peak(walk_front_) + excitation_.half_period() * 15;
+  }
+  return last_revision_ + walk_gap_;
+}
+
+void Ans1::walk_peaks(Nanos until) {
   if (!walking_peaks_) {
     return;
   }
-  // A few peaks at a time: what was read beyond the next revision is read again then (the
-  // rig's stators are revised at every frame: a millisecond, ten peaks at 5 kHz).
-  for (std::int64_t n = 0; n < walk_chunk_; ++n) {
+  // Up to the first peak at or after `until` (64 at most): what was read beyond the next
+  // revision is read again then (the rig's stators are revised at every frame: a millisecond,
+  // ten peaks at 5 kHz), and a walk that stops short of it needs another event.
+  for (std::int64_t n = 0; n < 64; ++n) {
     const Nanos peak = excitation_.next_peak(walk_front_);
     const ResolverTrack next = read_peak(walk_state_, peak);
     const bool flags_kept = next.seen == walk_state_.seen && next.fault_active == walk_state_.fault_active &&
@@ -436,20 +444,27 @@ void Ans1::walk_peaks() {
     }
     walk_front_ = peak;
     walk_state_ = next;
+    if (peak >= until) {
+      break;
+    }
   }
+  // No revision came by the last peak read: 2 peaks more, then twice as many each time.
   leave_event_ = scheduler_.at(walk_front_, [this] {
     leave_event_ = {};
-    walk_peaks();
+    const std::int64_t more = walk_more_;
+    walk_more_ = std::min<std::int64_t>(walk_more_ * 2, 64);
+    walk_peaks(excitation_.next_peak(walk_front_) + excitation_.half_period() * (more - 1));
   });
 }
 
 void Ans1::stators_revised() {
   const Nanos now = scheduler_.now();
-  if (now != last_revision_) { // walk as far as the revisions come apart, one peak more
+  if (now != last_revision_) { // the next is expected as far on as this one came after the last
     if (last_revision_ != Nanos::min()) {
-      walk_chunk_ = std::clamp<std::int64_t>((now - last_revision_) / excitation_.half_period() + 1, 2, 64);
+      walk_gap_ = now - last_revision_;
     }
     last_revision_ = now;
+    walk_more_ = 2;
   }
   if (!walking_peaks_) {
     return;
@@ -470,7 +485,7 @@ void Ans1::stators_revised() {
   scheduler_.cancel(leave_event_);
   leave_event_ = scheduler_.at(now, [this] {
     leave_event_ = {};
-    walk_peaks();
+    walk_peaks(revision_expected());
   });
 }
 

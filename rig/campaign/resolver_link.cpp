@@ -59,27 +59,48 @@ void ResolverLink::start(const models::resolver_emulator::ShaftSample& at_start)
 
 Waveform ResolverLink::stator(const ResolverSpec& resolver, Stator which,
                               std::vector<StatorRatioWindow> faults) const {
-  // The node's angle read once a sample: nothing when the node drives no stators. The values
-  // read since the node's last frame are kept (a few, by time): the same t reads the same value
-  // until the next frame.
+  Stators both = which == Stator::Sine ? stators(resolver, std::move(faults), {})
+                                       : stators(resolver, {}, std::move(faults));
+  return which == Stator::Sine ? std::move(both.sin) : std::move(both.cos);
+}
+
+ResolverLink::Stators ResolverLink::stators(const ResolverSpec& resolver,
+                                            std::vector<StatorRatioWindow> sin_faults,
+                                            std::vector<StatorRatioWindow> cos_faults) const {
+  // The node's angle read once a sample time for both stators: nothing when the node drives no
+  // stators. The pairs read since the node's last frame are kept (a few, by time): the same t
+  // reads the same values until the next frame.
   struct Kept {
     Nanos t{0};
     std::uint64_t frames = 0;
-    double value = 0.0;
+    StatorForm::Pair value;
     bool held = false;
   };
   constexpr std::size_t kKept = 64;
-  auto kept = std::make_shared<std::array<Kept, kKept>>();
-  return [node = node_, frames = frames_, kept, per_turn = counts_per_turn_,
-          form = StatorForm(counts_per_turn_, resolver, which, std::move(faults))](Nanos t) {
-    const auto ns = static_cast<std::uint64_t>(t.count());
-    Kept& k = (*kept)[((ns ^ (ns >> 7U) ^ (ns >> 17U)) * 0x9E37'79B9'7F4A'7C15ULL >> 58U) % kKept];
-    if (k.held && k.t == t && k.frames == frames->taken) return k.value;
-    const std::optional<double> turns = node->angle_turns(t);
-    const double value = turns ? form(t, *turns * per_turn) : 0.0;
-    k = Kept{t, frames->taken, value, true};
-    return value;
+  struct Shared {
+    std::shared_ptr<models::resolver_emulator::ResolverEmulator> node;
+    std::shared_ptr<Frames> frames;
+    double per_turn;
+    StatorForm sin_form;
+    StatorForm cos_form;
+    std::array<Kept, kKept> kept{};
+
+    StatorForm::Pair at(Nanos t) {
+      const auto ns = static_cast<std::uint64_t>(t.count());
+      Kept& k = kept[((ns ^ (ns >> 7U) ^ (ns >> 17U)) * 0x9E37'79B9'7F4A'7C15ULL >> 58U) % kKept];
+      if (k.held && k.t == t && k.frames == frames->taken) return k.value;
+      const std::optional<double> turns = node->angle_turns(t);
+      const StatorForm::Pair value =
+          turns ? StatorForm::pair(sin_form, cos_form, t, *turns * per_turn) : StatorForm::Pair{};
+      k = Kept{t, frames->taken, value, true};
+      return value;
+    }
   };
+  auto shared = std::make_shared<Shared>(
+      Shared{node_, frames_, counts_per_turn_,
+             StatorForm(counts_per_turn_, resolver, Stator::Sine, std::move(sin_faults)),
+             StatorForm(counts_per_turn_, resolver, Stator::Cosine, std::move(cos_faults))});
+  return {[shared](Nanos t) { return shared->at(t).sin; }, [shared](Nanos t) { return shared->at(t).cos; }};
 }
 
 } // namespace hilrig::campaign

@@ -45,6 +45,15 @@ public:
   // A stator as the board's pin carries it: the resolver's carrier at the node's angle.
   [[nodiscard]] Waveform stator(const ResolverSpec& resolver, Stator which,
                                 std::vector<StatorRatioWindow> faults) const;
+  // Both stators, each with its own fault windows: a read of one at t forms both (one node angle,
+  // one carrier wave, StatorForm::pair) and keeps the other's for its read at t, as the board's
+  // read of a peak and the trace's take them.
+  struct Stators {
+    Waveform sin;
+    Waveform cos;
+  };
+  [[nodiscard]] Stators stators(const ResolverSpec& resolver, std::vector<StatorRatioWindow> sin_faults,
+                                std::vector<StatorRatioWindow> cos_faults) const;
 
   // Called after each frame the node takes: the stators' values from then on may change.
   void on_frame(std::function<void()> handler) { *frame_handler_ = std::move(handler); }

@@ -26,13 +26,27 @@ StatorForm::StatorForm(double counts_per_turn, const ResolverSpec& resolver, Sta
       radians_per_count_(2.0 * std::numbers::pi / counts_per_turn), stator_(stator),
       faults_(std::move(faults)) {}
 
-double StatorForm::operator()(Nanos t, double position) const {
+double StatorForm::ratio_at(Nanos t) const {
   double r = ratio_;
   for (const StatorRatioWindow& w : faults_)
     if (t >= w.at && t < w.until) r = w.ratio;
+  return r;
+}
+
+double StatorForm::operator()(Nanos t, double position) const {
   const double angle = radians_per_count_ * position;
-  const double carrier = r * amplitude_ * std::sin(omega_ * t.seconds() + phase_);
+  const double carrier = ratio_at(t) * amplitude_ * std::sin(omega_ * t.seconds() + phase_);
   return carrier * (stator_ == Stator::Sine ? std::sin(angle) : std::cos(angle));
+}
+
+// The same products in the same order as operator() (ratio * amplitude * wave, times sin or
+// cos of the angle), so each value is the bit-identical double.
+StatorForm::Pair StatorForm::pair(const StatorForm& sine, const StatorForm& cosine, Nanos t,
+                                  double position) {
+  const double angle = sine.radians_per_count_ * position;
+  const double wave = std::sin(sine.omega_ * t.seconds() + sine.phase_);
+  return {sine.ratio_at(t) * sine.amplitude_ * wave * std::sin(angle),
+          cosine.ratio_at(t) * cosine.amplitude_ * wave * std::cos(angle)};
 }
 
 Waveform stator_waveform(ShaftPosition position, double counts_per_turn, const ResolverSpec& resolver,

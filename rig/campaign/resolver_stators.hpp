@@ -44,7 +44,18 @@ public:
              std::vector<StatorRatioWindow> faults = {});
   [[nodiscard]] double operator()(Nanos t, double position) const;
 
+  // Both stators at t with the shaft at `position`, one carrier wave and one angle between them:
+  // the values sine(t, position) and cosine(t, position) give (forms of one resolver and
+  // counts_per_turn, each with its own fault windows; sine's carrier and angle are used).
+  struct Pair {
+    double sin = 0.0;
+    double cos = 0.0;
+  };
+  [[nodiscard]] static Pair pair(const StatorForm& sine, const StatorForm& cosine, Nanos t, double position);
+
 private:
+  [[nodiscard]] double ratio_at(Nanos t) const;
+
   double ratio_;
   double amplitude_;
   double omega_;

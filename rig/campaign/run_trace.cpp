@@ -29,7 +29,8 @@ void ShaftTrace::count(Nanos t, std::int64_t count) {
 
 namespace {
 
-// Samples the stators at each excitation peak until `end`, one event a period.
+// Samples the stators at each excitation peak until `end`, one event a period. The events hold
+// a plain pointer (a std::function keeps it without a heap block); the caller owns the sampler.
 struct StatorSampler {
   Scheduler& sched;
   TraceRecorder& trace;
@@ -42,23 +43,24 @@ struct StatorSampler {
   [[nodiscard]] Nanos peak(std::int64_t i) const {
     return Nanos{std::llround(first_ns + static_cast<double>(i) * period_ns)};
   }
-  static void next(const std::shared_ptr<StatorSampler>& self) {
-    const Nanos at = self->peak(self->k);
-    if (at > self->end) return;
-    self->sched.at(at, [self, at] {
-      self->trace.real(self->sin_signal, at, self->sin(at));
-      self->trace.real(self->cos_signal, at, self->cos(at));
-      ++self->k;
-      next(self);
+  void next() {
+    const Nanos at = peak(k);
+    if (at > end) return;
+    sched.at(at, [this] {
+      const Nanos t = peak(k);
+      trace.real(sin_signal, t, sin(t));
+      trace.real(cos_signal, t, cos(t));
+      ++k;
+      next();
     });
   }
 };
 
 } // namespace
 
-void trace_stators(Scheduler& scheduler, TraceRecorder& trace, const ResolverSpec& resolver, Waveform sin,
-                   Waveform cos, Nanos end) {
-  if (!(resolver.excitation_hz > 0.0)) return;
+std::shared_ptr<void> trace_stators(Scheduler& scheduler, TraceRecorder& trace, const ResolverSpec& resolver,
+                                    Waveform sin, Waveform cos, Nanos end) {
+  if (!(resolver.excitation_hz > 0.0)) return nullptr;
   const double period_ns = 1e9 / resolver.excitation_hz;
   // sin(2 pi f t + phase) peaks where 2 pi f t + phase = pi/2 + 2 pi k.
   double cycles = 0.25 - resolver.phase_deg / 360.0;
@@ -66,7 +68,8 @@ void trace_stators(Scheduler& scheduler, TraceRecorder& trace, const ResolverSpe
   auto s = std::make_shared<StatorSampler>(StatorSampler{
       scheduler, trace, std::move(sin), std::move(cos), trace.declare(kStatorSin, SignalKind::Real),
       trace.declare(kStatorCos, SignalKind::Real), cycles * period_ns, period_ns, end});
-  StatorSampler::next(s);
+  s->next();
+  return s;
 }
 
 TracedHostWords::TracedHostWords(HostWords& words, const Scheduler& scheduler, TraceRecorder& trace,

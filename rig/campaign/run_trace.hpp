@@ -10,6 +10,7 @@
 // Recording only: nothing here changes what the board sees.
 
 #include <cstdint>
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -43,8 +44,10 @@ private:
 
 // Samples both stators at every peak of the excitation (amplitude * sin(2 pi f t + phase)),
 // from time 0 to `end`: there a stator carries ratio * amplitude * sin or cos of the angle.
-void trace_stators(Scheduler& scheduler, TraceRecorder& trace, const ResolverSpec& resolver, Waveform sin,
-                   Waveform cos, Nanos end);
+// The sampler: keep it while the scheduler may run its events (null when nothing is sampled).
+[[nodiscard]] std::shared_ptr<void> trace_stators(Scheduler& scheduler, TraceRecorder& trace,
+                                                  const ResolverSpec& resolver, Waveform sin, Waveform cos,
+                                                  Nanos end);
 
 // The host's words as they pass, around the words the host sequence uses.
 class TracedHostWords final : public HostWords {

@@ -221,8 +221,8 @@ private:
     }
     const ShaftSample at_start = shaft(Nanos{0});
     resolver_ = std::make_unique<ResolverLink>(sched_, bus_, std::move(shaft), s_.encoder.counts_per_turn());
-    const Waveform sin = resolver_->stator(r, Stator::Sine, stator_fault_windows(s_, Stator::Sine));
-    const Waveform cos = resolver_->stator(r, Stator::Cosine, stator_fault_windows(s_, Stator::Cosine));
+    const auto [sin, cos] = resolver_->stators(r, stator_fault_windows(s_, Stator::Sine),
+                                               stator_fault_windows(s_, Stator::Cosine));
     // The stators follow the node's frames: each frame revises them from its arrival on.
     virt::AnalogChannel& sin_channel = bus_.analog(r.sin_line);
     virt::AnalogChannel& cos_channel = bus_.analog(r.cos_line);
@@ -232,7 +232,7 @@ private:
       sin_channel.revise();
       if (&cos_channel != &sin_channel) cos_channel.revise();
     });
-    trace_stators(sched_, *trace_, r, sin, cos, s_.end);
+    stator_trace_ = trace_stators(sched_, *trace_, r, sin, cos, s_.end);
     resolver_->start(at_start);
   }
 
@@ -287,6 +287,7 @@ private:
   std::unique_ptr<signals::QuadratureWaveform> encoder_; // sampled by the DUT (sample_encoder)
   std::unique_ptr<duts::Dut> dut_;
   std::unique_ptr<ResolverLink> resolver_; // the resolver front end, when the board reads one
+  std::shared_ptr<void> stator_trace_;     // samples the stators into the trace (trace_stators)
   std::unique_ptr<signals::SsiSlave> ssi_; // the [ssi] transducer, on its lines
   std::unique_ptr<signals::SsiSlaveNode> ssi_node_;
   std::vector<LineOutput*> owned_; // the lines the rig drives

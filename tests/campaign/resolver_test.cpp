@@ -56,6 +56,34 @@ TEST(ResolverStators, APhaseShiftsTheExcitation) {
   EXPECT_NEAR(s(50_us), 0.0, 1e-12);
 }
 
+TEST(ResolverStators, APairIsBothStatorsFromOneCarrierAndAngle) {
+  // 1 kHz, amplitude 2, ratio 0.5, 4096 counts a turn; the shaft at 512 counts (an eighth of a
+  // turn, sin = cos = sqrt(1/2)); t = 250 us is the carrier's positive peak (sin(pi/2) = 1):
+  // both stators 0.5 * 2 * sqrt(1/2). A fault window sets the sine's ratio to 0.25 in 0.2 ..
+  // 0.3 ms: there the sine is half. Each value is the one its own form gives, to the bit.
+  ResolverSpec r;
+  r.excitation_hz = 1000.0;
+  r.amplitude = 2.0;
+  r.ratio = 0.5;
+  const StatorForm s(4096.0, r, Stator::Sine, {{200_us, 300_us, 0.25}});
+  const StatorForm c(4096.0, r, Stator::Cosine);
+  const double half_root = std::sqrt(0.5);
+  const StatorForm::Pair at_peak = StatorForm::pair(s, c, 250_us, 512.0);
+  EXPECT_NEAR(at_peak.sin, 0.25 * 2.0 * half_root, 1e-12);
+  EXPECT_NEAR(at_peak.cos, 0.5 * 2.0 * half_root, 1e-12);
+  const StatorForm::Pair after = StatorForm::pair(s, c, 1250_us, 512.0); // a period on, no fault
+  EXPECT_NEAR(after.sin, 0.5 * 2.0 * half_root, 1e-12);
+  EXPECT_NEAR(after.cos, 0.5 * 2.0 * half_root, 1e-12);
+  std::mt19937_64 rng(1127);
+  for (int k = 0; k < 1000; ++k) {
+    const Nanos t{static_cast<std::int64_t>(rng() % 1'000'000)};
+    const double position = static_cast<double>(rng() % 100'000) / 7.0;
+    const StatorForm::Pair p = StatorForm::pair(s, c, t, position);
+    ASSERT_EQ(p.sin, s(t, position)) << t.count() << " " << position;
+    ASSERT_EQ(p.cos, c(t, position)) << t.count() << " " << position;
+  }
+}
+
 TEST(ResolverStators, DemodulatedAtAPeakGiveBackTheAngle) {
   // Property: at any excitation peak, atan2(sin, cos) is the shaft angle (seeded positions).
   std::mt19937_64 rng(42);
@@ -318,6 +346,47 @@ TEST(ResolverLink, StatorsReadAgainAfterAFrameFollowTheNodesNewAngle) {
     }
   }
   EXPECT_GT(link.node().counters().frames, 6U);
+}
+
+// stators() gives both stators of one read (one node angle, one carrier) and keeps the other's
+// value for its read: each is what its own form gives at the node's angle, whichever is read
+// first, ahead of the frames or after them, each with its own fault window.
+TEST(ResolverLink, BothStatorsFromOneReadAreEachFormsValue) {
+  Scheduler sched;
+  virt::VirtualBus bus(sched);
+  constexpr double kPerTurn = 4096.0;
+  ResolverLink link(
+      sched, bus,
+      [](Nanos t) {
+        const double s = t.seconds();
+        return models::resolver_emulator::ShaftSample{kPerTurn * (0.6 - 5.0 * s), kPerTurn * -5.0};
+      },
+      kPerTurn);
+  ResolverSpec spec;
+  spec.excitation_hz = 4000.0;
+  spec.phase_deg = -30.0;
+  const auto [sin, cos] = link.stators(spec, {{2_ms, 3_ms, 0.0}}, {{4_ms, 5_ms, 1.5}});
+  const StatorForm sin_form(kPerTurn, spec, Stator::Sine, {{2_ms, 3_ms, 0.0}});
+  const StatorForm cos_form(kPerTurn, spec, Stator::Cosine, {{4_ms, 5_ms, 1.5}});
+  const auto want = [&](const StatorForm& form, Nanos t) {
+    const std::optional<double> turns = link.node().angle_turns(t);
+    return turns ? form(t, *turns * kPerTurn) : 0.0;
+  };
+  link.start(models::resolver_emulator::ShaftSample{kPerTurn * 0.6, kPerTurn * -5.0});
+  bool cos_first = false;
+  for (Nanos now{0}; now < 7_ms; now += 70_us) {
+    sched.run_until(now);
+    for (Nanos t = now; t < now + 1500_us; t += 30_us) {
+      cos_first = !cos_first;
+      if (cos_first) {
+        ASSERT_EQ(cos(t), want(cos_form, t)) << now.count() << " " << t.count();
+      }
+      ASSERT_EQ(sin(t), want(sin_form, t)) << now.count() << " " << t.count();
+      ASSERT_EQ(cos(t), want(cos_form, t)) << now.count() << " " << t.count();
+    }
+  }
+  EXPECT_EQ(sin(2500_us), 0.0); // the open sine's window, read after its frames
+  EXPECT_GT(link.node().counters().frames, 5U);
 }
 
 } // namespace

@@ -277,8 +277,8 @@ TEST(Figure, AResolverWindowHasItsStatorsAsRealLanesAtEachExcitationPeak) {
   const ShaftPosition shaft = [](Nanos t) { return 1000.0 * t.seconds(); }; // 1000 counts/s
   Scheduler sched;
   TraceRecorder trace;
-  trace_stators(sched, trace, r, stator_waveform(shaft, kPerTurn, r, Stator::Sine),
-                stator_waveform(shaft, kPerTurn, r, Stator::Cosine), Nanos{5'000'000});
+  const auto sampler = trace_stators(sched, trace, r, stator_waveform(shaft, kPerTurn, r, Stator::Sine),
+                                     stator_waveform(shaft, kPerTurn, r, Stator::Cosine), Nanos{5'000'000});
   sched.run_until_idle();
   const checks::CheckParams params = checks::ThroughputParams{};
   const auto lanes = lanes_of(params, trace);
@@ -323,8 +323,8 @@ TEST(Figure, AStatorLaneWithNoPeakInsideItsSpanShowsTheLastPeakAtItsOwnTime) {
   const ShaftPosition shaft = [](Nanos) { return 1024.0; }; // a quarter turn: sin 1, cos 0
   Scheduler sched;
   TraceRecorder trace;
-  trace_stators(sched, trace, r, stator_waveform(shaft, 4096.0, r, Stator::Sine),
-                stator_waveform(shaft, 4096.0, r, Stator::Cosine), Nanos{5'000'000});
+  const auto sampler = trace_stators(sched, trace, r, stator_waveform(shaft, 4096.0, r, Stator::Sine),
+                                     stator_waveform(shaft, 4096.0, r, Stator::Cosine), Nanos{5'000'000});
   sched.run_until_idle();
   const auto lanes = lanes_of(checks::ThroughputParams{}, trace);
   // Window 1.150 .. 1.160 ms: its span (a fifth either side, 1.148 .. 1.162 ms) lies between

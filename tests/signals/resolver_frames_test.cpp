@@ -61,6 +61,77 @@ TEST(ResolverAngleFrame, HandComputedPayload) {
   for (int i = 0; i < 8; ++i) EXPECT_EQ(c.data[static_cast<std::size_t>(i)], expected[i]) << "byte " << i;
 }
 
+TEST(ResolverAngleFrame, HandComputedPayloadWithBothOpenFlags) {
+  // angle 0.25 turn -> 0x400000 (bytes 00 00 40); speed 1 turn/s -> 4096 = 0x001000 (bytes
+  // 00 10 00); byte 6: sequence 10 (bits 48..51) 0x0A, valid 0, sin_open (bit 53) 0x20,
+  // cos_open (bit 54) 0x40 -> 0x6A; channel 15 in byte 7.
+  ResolverAngleFrame f;
+  f.angle_turns = 0.25;
+  f.speed_turns_per_s = 1.0;
+  f.sequence = 10;
+  f.valid = false;
+  f.sin_open = true;
+  f.cos_open = true;
+  f.channel = 15;
+  const CanFrame c = encode(f);
+  const std::uint8_t expected[8] = {0x00, 0x00, 0x40, 0x00, 0x10, 0x00, 0x6A, 0x0F};
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(c.data[static_cast<std::size_t>(i)], expected[i]) << "byte " << i;
+}
+
+// encode() writes the whole payload at once; each signal is where the message's table puts it:
+// the frame put_raw builds signal by signal from that table, on seeded values.
+TEST(ResolverAngleFrame, EncodeIsEachSignalPutAtItsStartBit) {
+  std::mt19937_64 rng(1127);
+  const DbcMessage& m = resolver_angle_message();
+  for (int i = 0; i < 2000; ++i) {
+    ResolverAngleFrame f;
+    const std::uint64_t angle = rng() & 0xFF'FFFFu;
+    const auto speed = static_cast<std::int64_t>(rng() % 16'777'216U) - 8'388'608;
+    f.angle_turns = static_cast<double>(angle) / 16'777'216.0;
+    f.speed_turns_per_s = static_cast<double>(speed) / 4096.0;
+    f.sequence = static_cast<std::uint8_t>(rng() % 16);
+    f.valid = (rng() & 1U) != 0;
+    f.sin_open = (rng() & 1U) != 0;
+    f.cos_open = (rng() & 1U) != 0;
+    f.channel = static_cast<std::uint8_t>(rng() % 16);
+    const std::uint64_t raws[7] = {angle,
+                                   static_cast<std::uint64_t>(speed) & 0xFF'FFFFu,
+                                   f.sequence,
+                                   f.valid ? 1U : 0U,
+                                   f.sin_open ? 1U : 0U,
+                                   f.cos_open ? 1U : 0U,
+                                   f.channel};
+    ASSERT_EQ(m.signals.size(), 7U);
+    CanFrame want;
+    want.id = kResolverAngleId;
+    want.len = 8;
+    for (std::size_t k = 0; k < 7; ++k) put_raw(want, m.signals[k].start_bit, m.signals[k].length, raws[k]);
+    ASSERT_EQ(encode(f), want) << i;
+  }
+}
+
+// The same for the edge report, with timestamps over all 48 bits.
+TEST(EdgeReportFrame, EncodeIsEachSignalPutAtItsStartBit) {
+  std::mt19937_64 rng(1128);
+  const DbcMessage& m = edge_report_message();
+  for (int i = 0; i < 2000; ++i) {
+    EdgeReportFrame e;
+    e.line = static_cast<std::uint8_t>(rng());
+    e.level = level_of((rng() & 1U) != 0);
+    e.sequence = static_cast<std::uint8_t>(rng() % 128);
+    const std::uint64_t t = rng() >> 16U;
+    e.timestamp = Nanos{static_cast<std::int64_t>(t)};
+    const std::uint64_t raws[5] = {e.line, is_high(e.level) ? 1U : 0U, e.sequence, t >> 32U,
+                                   t & 0xFFFF'FFFFu};
+    ASSERT_EQ(m.signals.size(), 5U);
+    CanFrame want;
+    want.id = kEdgeReportId;
+    want.len = 8;
+    for (std::size_t k = 0; k < 5; ++k) put_raw(want, m.signals[k].start_bit, m.signals[k].length, raws[k]);
+    ASSERT_EQ(encode(e), want) << i;
+  }
+}
+
 TEST(ResolverAngleFrame, AngleWrapsIntoOneTurn) {
   ResolverAngleFrame f;
   f.angle_turns = -0.25; // = 0.75 turn

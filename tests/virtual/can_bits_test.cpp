@@ -148,6 +148,32 @@ TEST(CanFrameBits, InvalidFramesAreRejected) {
   EXPECT_THROW((void)can_frame_bits(f), std::invalid_argument);
 }
 
+// can_check_frame is the check can_frame_bits makes first (CanNode::send makes only it): it
+// throws for what can_frame_bits throws for and passes the frames it takes.
+TEST(CanFrameBits, CheckFrameRejectsWhatTheBitsReject) {
+  CanFrame f;
+  f.len = 9; // classic: 8 at most
+  EXPECT_THROW(can_check_frame(f), std::invalid_argument);
+  f.len = 8;
+  f.brs = true; // an FD bit in a classic frame
+  EXPECT_THROW(can_check_frame(f), std::invalid_argument);
+  f.fd = true;
+  f.len = 10; // not an FD length
+  EXPECT_THROW(can_check_frame(f), std::invalid_argument);
+  f.len = 12;
+  f.rtr = true; // FD has no remote frames
+  EXPECT_THROW(can_check_frame(f), std::invalid_argument);
+  f.rtr = false;
+  f.id = 0x800; // 12 bits in a standard ID
+  EXPECT_THROW(can_check_frame(f), std::invalid_argument);
+  f.extended = true; // 29 bits hold it
+  EXPECT_NO_THROW(can_check_frame(f));
+  EXPECT_NO_THROW((void)can_frame_bits(f));
+  f.id = 0x2000'0000; // 30 bits
+  EXPECT_THROW(can_check_frame(f), std::invalid_argument);
+  EXPECT_THROW((void)can_frame_bits(f), std::invalid_argument);
+}
+
 TEST(CanDlc, FdLengthsRoundTrip) {
   const std::uint8_t lengths[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64};
   for (std::uint8_t dlc = 0; dlc < 16; ++dlc) {

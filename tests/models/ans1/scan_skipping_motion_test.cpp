@@ -515,5 +515,46 @@ TEST(ScanSkippingMotion, ResolverReadAheadGivesTheOraclesEdgesAndWords) {
   EXPECT_LT(skipped_scans, oracle_scans / 10);
 }
 
+// The walk reads through the first peak at or after the next revision expected (a gap between
+// the last two after the last one), so a revision drops one or two peaks read beyond it. A
+// standing shaft, frames 990 us and 1010 us apart by turns (as a frame's stuff bits move its
+// arrival) for 100 ms: 1,000 peaks (5 kHz, two a period). Per frame at most 2 peaks are read
+// again -- the peak at or after the expected revision when the frame comes before it, or the
+// 2 of the walk on when it comes after -- and 16 before the second frame: at most
+// 1,000 + 2 * 100 + 16 sine reads. (Walking as many peaks as came between the last two frames
+// plus one, a 990 us gap walked 10 peaks and stopped short of the next frame, then read 10 more
+// that the frame dropped: ~1,500.)
+TEST(ScanSkippingMotion, AResolverWalkReadsPeaksOnceAndOneOrTwoAgainAFrame) {
+  Bench b;
+  const ResolverExcitation& ex = b.device().excitation();
+  std::uint64_t sine_reads = 0;
+  constexpr double kAngle = 0.3; // rad
+  virt::AnalogChannel& sin = b.bus().analog("ans1.SIN");
+  virt::AnalogChannel& cos = b.bus().analog("ans1.COS");
+  sin.set_waveform(
+      [&](Nanos t) {
+        ++sine_reads;
+        return 0.95 * ex.value(t) * std::sin(kAngle);
+      },
+      virt::AnalogChannel::Future::Revised);
+  cos.set_waveform([&](Nanos t) { return 0.95 * ex.value(t) * std::cos(kAngle); },
+                   virt::AnalogChannel::Future::Revised);
+  int frames = 0;
+  for (Nanos t = 230_us; t < 100_ms; t += (frames % 2 == 0 ? 990_us : 1010_us)) {
+    ++frames;
+    b.scheduler().at(t, [&sin, &cos] {
+      sin.revise();
+      cos.revise();
+    });
+  }
+  b.run_until(100_ms);
+  ASSERT_EQ(frames, 100);
+  EXPECT_GT(b.device().transducer_count(), 0); // read: 0.3 rad is count 195
+  EXPECT_FALSE(b.device().resolver_fault());
+  EXPECT_LT(b.device().scans(), 100U); // skipping: the walk did the reading
+  EXPECT_GE(sine_reads, 1'000U);
+  EXPECT_LE(sine_reads, 1'000U + 2U * 100U + 16U);
+}
+
 } // namespace
 } // namespace hilrig::models::ans1
