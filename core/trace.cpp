@@ -138,14 +138,15 @@ void TraceRecorder::real(std::uint32_t signal, Nanos t, double v) {
 }
 
 void TraceRecorder::grow() {
-  // Grows by doubling while the run is short (one that never spills never holds the limit's
-  // memory); from an eighth of the limit straight to the limit, so a long run's peak holds
-  // the limit and an eighth of it, not the limit and the half it grew from.
-  if (spill_limit_ != 0 && samples_.size() >= spill_limit_ / 8) samples_.reserve(spill_limit_);
+  // Only a recorder without a limit grows here (spill_beyond reserves the limit): by doubling.
+  samples_.reserve(std::max<std::size_t>(1024, 2 * samples_.capacity()));
 }
 
 void TraceRecorder::spill_beyond(std::size_t limit) {
   spill_limit_ = limit;
+  // Reserved once: untouched pages cost nothing, and filled ones are never copied to a larger
+  // block (whose pages would fault again while the smaller one is still held).
+  if (limit != 0) samples_.reserve(limit);
   spill_at_ = limit != 0 ? limit : static_cast<std::size_t>(-1);
   if (limit != 0 && samples_.size() >= limit) spill();
 }

@@ -370,13 +370,13 @@ TEST(TraceSpill, ATinySpillLimitGivesTheSameVcdBytes) {
   }
 }
 
-// A campaign run's recorder holds its whole budget before it spills: 48 MiB of 32-byte samples
-// is 48 * 2^20 / 32 = 1,572,864 samples (a debounce probe run's 2 MiB: 65,536). One sample short
+// A campaign run's recorder holds its whole budget before it spills: 16 MiB of 32-byte samples
+// is 16 * 2^20 / 32 = 524,288 samples (a debounce probe run's 2 MiB: 65,536). One sample short
 // of the limit nothing has left memory; the limit-th sample sends all of them to the file, and
 // they read back as recorded.
 TEST(TraceSpill, ARunHoldsItsWholeBudgetBeforeItSpills) {
   static_assert(sizeof(TraceSample) == 32);
-  ASSERT_EQ(kRunTraceHeldSamples, std::size_t{1'572'864});
+  ASSERT_EQ(kRunTraceHeldSamples, std::size_t{524'288});
   ASSERT_EQ(kProbeTraceHeldSamples, std::size_t{65'536});
   const std::size_t limit = kRunTraceHeldSamples;
   TraceRecorder t;
@@ -403,7 +403,7 @@ TEST(TraceSpill, ARunHoldsItsWholeBudgetBeforeItSpills) {
   EXPECT_EQ(next, limit + 1);
   EXPECT_TRUE(same);
   // Spilled as blocks of 65,536: read from inside the second block and from inside the last
-  // (1,572,864 = 24 * 65,536: its last block starts at 1,507,328).
+  // (524,288 = 8 * 65,536: its last block starts at 458,752).
   for (const std::size_t from : {std::size_t{70'000}, limit - 5}) {
     next = from;
     same = true;
