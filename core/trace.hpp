@@ -39,15 +39,15 @@ struct SignalInfo {
   double initial_real = 0.0; // Real
 };
 
-// What a campaign run holds in memory before its trace spills (spill_beyond): 16 MiB of samples
-// (512 Ki), reserved when the limit is set, so the held samples never move and a run's memory
-// is its samples' pages, up to the limit, whatever its length (bench figure 5: a press campaign
-// 10x longer peaks within 1.2x of it). Most shipped campaigns' runs hold their whole trace; the
-// few longer ones (pls2700_update_2741, the bench press) encode the rest to the file and read it
-// back. A debounce check's probe runs (one per probe thread at once; only their kept edges are
-// read) keep the small limit.
-inline constexpr std::size_t kRunTraceHeldBytes = std::size_t{16} << 20;
-inline constexpr std::size_t kProbeTraceHeldSamples = std::size_t{1} << 16; // 2 MiB
+// What a run holds in memory before its trace spills (spill_beyond): 65,536 samples, 2 MiB,
+// reserved when the limit is set, so the held samples never move and a run's memory does not
+// grow with its length (bench figure 5). Measured 2026-11-27 against 4, 8 and 16 MiB (and 48
+// MiB grown by doubling): more held means fewer instructions (less to encode and read back)
+// but more pages first touched, and a page fault costs 10-40 us of system CPU on the VM the
+// figures come from; the bench press and pls2700_update_2741 took the least CPU at 2 MiB
+// (docs/PERFORMANCE.md, "The kernel's share"). A debounce check's probe runs, one per probe
+// thread at once, hold the same.
+inline constexpr std::size_t kTraceHeldSamples = std::size_t{1} << 16;
 
 enum class SerialDirection : std::uint8_t { AtoB, BtoA };
 
@@ -57,8 +57,6 @@ struct TraceSample {
   std::int64_t value;   // Wire: 0/1; Integer: the value
   double real;          // Real only
 };
-
-inline constexpr std::size_t kRunTraceHeldSamples = kRunTraceHeldBytes / sizeof(TraceSample);
 
 struct TraceCanFrame {
   Nanos time; // end of frame

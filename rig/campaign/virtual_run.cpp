@@ -48,10 +48,10 @@ public:
   explicit Simulation(const RunInputs& in)
       : in_(in), s_(*in.scenario), trace_(std::make_shared<TraceRecorder>()), bus_(sched_, trace_.get()),
         motion_(build_motion("", s_.motion, s_.encoder)), drive_(sched_, s_, motion_) {
-    // The encoder alone is ~10^5 edges a second: beyond 16 MiB of samples (2 MiB in a debounce
-    // probe run) the trace goes to a temporary file (read back for the VCD and the checks), so
-    // memory does not grow with the run (core/trace.hpp, kRunTraceHeldBytes).
-    trace_->spill_beyond(in.probe ? kProbeTraceHeldSamples : kRunTraceHeldSamples);
+    // The encoder alone is ~10^5 edges a second: beyond 2 MiB of samples the trace goes to a
+    // temporary file (read back for the VCD and the checks), so memory does not grow with the
+    // run (core/trace.hpp, kTraceHeldSamples).
+    trace_->spill_beyond(kTraceHeldSamples);
     // The lines the checks read (the executive's capture, a debounce probe's output) kept as
     // edges while recorded: reading them reads no spilled sample back.
     std::vector<std::string> checked_lines;

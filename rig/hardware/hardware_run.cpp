@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "core/scheduler.hpp"
+#include "core/trace.hpp"
 #include "models/resolver_emulator/angle_streamer.hpp"
 #include "rig/campaign/executive.hpp"
 #include "rig/campaign/host_sequence.hpp"
@@ -153,7 +154,7 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
   const EdgeSchedule schedule = build_schedule(in, plan);
 
   auto trace = std::make_shared<TraceRecorder>();
-  trace->spill_beyond(std::size_t{1} << 16); // as the virtual run: long runs go to a temporary file
+  trace->spill_beyond(kTraceHeldSamples); // as the virtual run: long runs go to a temporary file
   std::vector<std::uint32_t> out_signal;
   std::vector<std::uint32_t> in_signal;
   for (const PlannedLine& p : plan.outputs) {

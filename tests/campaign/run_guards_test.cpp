@@ -168,9 +168,9 @@ TEST(RunGuards, AFloodedTraceStopsWithTheTraceGuard) {
   EXPECT_NE(v.rig_fault.find("trace size guard"), std::string::npos) << v.rig_fault;
 }
 
-// A run's trace holds 16 MiB of samples before it spills (core/trace.hpp); a debounce probe
-// run, one per probe thread at once, keeps 2 MiB (65,536 samples).
-TEST(RunGuards, ARunsTraceHoldsTheRunBudgetAProbeRunsTheSmallOne) {
+// A run's trace holds 65,536 samples (2 MiB) before it spills (core/trace.hpp), a debounce
+// probe run (one per probe thread at once) the same.
+TEST(RunGuards, ARunsAndAProbeRunsTraceHoldTheBudget) {
   // The shipped debounce campaign, its probe pulse on the brake line it wires; both runs stopped
   // by the trace guard early (the limit is set before the first sample).
   std::ifstream file(std::string(HILRIG_SOURCE_DIR) + "/campaigns/ans1/ans1_debounce.toml");
@@ -178,7 +178,7 @@ TEST(RunGuards, ARunsTraceHoldsTheRunBudgetAProbeRunsTheSmallOne) {
   const Campaign c = parse_campaign(text, "ans1_debounce.toml");
   RunInputs in = inputs_of(c);
   in.guards.max_trace_samples = 100;
-  EXPECT_EQ(run_virtual(in).trace->spill_limit(), std::size_t{524'288}); // 16 MiB / 32 bytes
+  EXPECT_EQ(run_virtual(in).trace->spill_limit(), std::size_t{65'536});
   Stimulus pulse;
   pulse.kind = StimulusKind::Pulse;
   pulse.at = 1_ms;

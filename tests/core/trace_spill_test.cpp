@@ -370,15 +370,14 @@ TEST(TraceSpill, ATinySpillLimitGivesTheSameVcdBytes) {
   }
 }
 
-// A campaign run's recorder holds its whole budget before it spills: 16 MiB of 32-byte samples
-// is 16 * 2^20 / 32 = 524,288 samples (a debounce probe run's 2 MiB: 65,536). One sample short
-// of the limit nothing has left memory; the limit-th sample sends all of them to the file, and
-// they read back as recorded.
+// A run's recorder holds its whole budget before it spills: 65,536 samples (2 MiB of 32-byte
+// samples). One sample short of the limit nothing has left memory; the limit-th sample sends
+// all of them to the file as one block, and each later 65,536 another; they read back as
+// recorded, from the start and from inside the second and the last block.
 TEST(TraceSpill, ARunHoldsItsWholeBudgetBeforeItSpills) {
   static_assert(sizeof(TraceSample) == 32);
-  ASSERT_EQ(kRunTraceHeldSamples, std::size_t{524'288});
-  ASSERT_EQ(kProbeTraceHeldSamples, std::size_t{65'536});
-  const std::size_t limit = kRunTraceHeldSamples;
+  ASSERT_EQ(kTraceHeldSamples, std::size_t{65'536});
+  const std::size_t limit = kTraceHeldSamples;
   TraceRecorder t;
   t.spill_beyond(limit);
   EXPECT_EQ(t.spill_limit(), limit);
@@ -390,30 +389,23 @@ TEST(TraceSpill, ARunHoldsItsWholeBudgetBeforeItSpills) {
   t.value(count, Nanos{at(limit - 1)}, at(limit - 1) % 1000);
   EXPECT_TRUE(t.samples().empty()); // the limit-th: all of them in the file
   EXPECT_EQ(t.sample_count(), limit);
-  t.value(count, Nanos{at(limit)}, at(limit) % 1000);
+  // Three blocks in the file (3 * 65,536 = 196,608 samples) and one sample held.
+  const std::size_t total = 3 * limit + 1;
+  for (std::size_t i = limit; i < total; ++i) t.value(count, Nanos{at(i)}, at(i) % 1000);
   EXPECT_EQ(t.samples().size(), 1U);
-  std::size_t next = 0;
-  bool same = true;
-  t.visit_samples(0, [&](std::span<const TraceSample> chunk) {
-    for (const TraceSample& s : chunk) {
-      same = same && s.time == Nanos{at(next)} && s.signal == count && s.value == at(next) % 1000;
-      ++next;
-    }
-  });
-  EXPECT_EQ(next, limit + 1);
-  EXPECT_TRUE(same);
-  // Spilled as blocks of 65,536: read from inside the second block and from inside the last
-  // (524,288 = 8 * 65,536: its last block starts at 458,752).
-  for (const std::size_t from : {std::size_t{70'000}, limit - 5}) {
-    next = from;
-    same = true;
+  EXPECT_EQ(t.sample_count(), total);
+  // From the start, from inside the second block (70,000) and from inside the last (its first
+  // sample is 131,072).
+  for (const std::size_t from : {std::size_t{0}, std::size_t{70'000}, total - 5}) {
+    std::size_t next = from;
+    bool same = true;
     t.visit_samples(from, [&](std::span<const TraceSample> chunk) {
       for (const TraceSample& s : chunk) {
-        same = same && s.time == Nanos{at(next)} && s.value == at(next) % 1000;
+        same = same && s.time == Nanos{at(next)} && s.signal == count && s.value == at(next) % 1000;
         ++next;
       }
     });
-    EXPECT_EQ(next, limit + 1) << "from " << from;
+    EXPECT_EQ(next, total) << "from " << from;
     EXPECT_TRUE(same) << "from " << from;
   }
 }
