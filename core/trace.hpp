@@ -94,7 +94,7 @@ public:
   // temporary file (in TMPDIR, else /tmp; gone when the recorder is), a few bytes a sample
   // (core/trace_spill.hpp), so a run's memory does not grow with its length. Every reader below
   // sees spilled samples as if they were still held, decoded a chunk at a time. The memory held
-  // grows with the samples, up to the limit (a short run never reserves it), and spilling
+  // is the limit's, reserved here (pages a short run never fills cost nothing), and spilling
   // or reading back takes the buffers of one block (kSpillBlockSamples, ~1.6 MiB each). Throws
   // std::runtime_error when the file cannot be created, written or read back. (The recorder
   // owns the file: it moves, it is not copied.)

@@ -116,6 +116,34 @@ constexpr std::array<std::array<char, 8>, 256> kByteDigits = [] {
 // space, or 'r', a double's shortest text (at most 24) and a space; and the newline.
 constexpr std::size_t kValueChars = 1 + 64 + 1 + 1;
 
+// kByteDigits with each row padded to 16 characters: the last r digits of a byte are copied
+// as one 8-character word from its row + 8 - r (the padding after them is overwritten by the
+// characters that follow).
+constexpr std::array<std::array<char, 16>, 256> kPaddedByteDigits = [] {
+  std::array<std::array<char, 16>, 256> table{};
+  for (std::size_t v = 0; v < 256; ++v)
+    for (std::size_t i = 0; i < 8; ++i) table[v][i] = kByteDigits[v][i];
+  return table;
+}();
+
+// Writes bits' binary digits from the most significant one (one "0" for zero) at `at` and
+// returns their end. The digits above the last whole byte come as one 8-character word from
+// their row, so up to 7 characters past the end may be written (room the callers leave: the
+// line's rest overwrites them).
+char* put_binary(char* at, std::uint64_t bits) {
+  int left = bits == 0 ? 1 : 64 - std::countl_zero(bits);
+  if (const int part = left % 8; part != 0) {
+    left -= part;
+    std::memcpy(at, kPaddedByteDigits[bits >> static_cast<unsigned>(left)].data() + (8 - part), 8);
+    at += part;
+  }
+  for (; left > 0; left -= 8) {
+    std::memcpy(at, kPaddedByteDigits[(bits >> static_cast<unsigned>(left - 8)) & 0xFFU].data(), 8);
+    at += 8;
+  }
+  return at;
+}
+
 // Formats one value change ("1!", "b110 #", "r1.25 $") and its newline at `line`, which has
 // room for kValueChars and the identifier; returns the characters written.
 std::size_t format_value(char* line, const SignalInfo& s, std::string_view id, std::int64_t v, double r) {
@@ -127,17 +155,8 @@ std::size_t format_value(char* line, const SignalInfo& s, std::string_view id, s
   case SignalKind::Integer: {
     auto bits = static_cast<std::uint64_t>(v);
     if (s.width < 64) bits &= (std::uint64_t{1} << s.width) - 1U;
-    const int digits = bits == 0 ? 1 : 64 - std::countl_zero(bits);
     line[n++] = 'b';
-    // The digits above the last whole byte one at a time, then whole bytes from the table.
-    int left = digits;
-    for (; left % 8 != 0; --left)
-      line[n++] = static_cast<char>('0' + ((bits >> static_cast<unsigned>(left - 1)) & 1U));
-    for (; left > 0; left -= 8) {
-      const auto& byte = kByteDigits[(bits >> static_cast<unsigned>(left - 8)) & 0xFFU];
-      std::copy(byte.begin(), byte.end(), line + n);
-      n += 8;
-    }
+    n = static_cast<std::size_t>(put_binary(line + n, bits) - line);
     line[n++] = ' ';
     break;
   }
@@ -193,16 +212,6 @@ void write_header(std::ostream& out, const std::vector<SignalInfo>& signals, std
 void check_time(Nanos t) {
   if (t < Nanos::zero()) throw std::invalid_argument("VCD: negative sample time");
 }
-
-// kByteDigits with each row padded to 16 characters: the last r digits of a byte are copied
-// as one 8-character word from its row + 8 - r (the padding after them is overwritten by the
-// characters that follow).
-constexpr std::array<std::array<char, 16>, 256> kPaddedByteDigits = [] {
-  std::array<std::array<char, 16>, 256> table{};
-  for (std::size_t v = 0; v < 256; ++v)
-    for (std::size_t i = 0; i < 8; ++i) table[v][i] = kByteDigits[v][i];
-  return table;
-}();
 
 // "00" .. "99": a number's decimal digits two at a time.
 constexpr std::array<char, 200> kDigitPairs = [] {
@@ -302,19 +311,8 @@ public:
       if (w.kind == SignalKind::Wire) {
         *at++ = s.value != 0 ? '1' : '0';
       } else {
-        // As format_value: 'b', the digits from the most significant one (one "0" for zero).
-        const std::uint64_t bits = static_cast<std::uint64_t>(s.value) & w.mask;
-        int left = bits == 0 ? 1 : 64 - std::countl_zero(bits);
         *at++ = 'b';
-        if (const int part = left % 8; part != 0) {
-          left -= part;
-          std::memcpy(at, kPaddedByteDigits[bits >> static_cast<unsigned>(left)].data() + (8 - part), 8);
-          at += part;
-        }
-        for (; left > 0; left -= 8) {
-          std::memcpy(at, kPaddedByteDigits[(bits >> static_cast<unsigned>(left - 8)) & 0xFFU].data(), 8);
-          at += 8;
-        }
+        at = put_binary(at, static_cast<std::uint64_t>(s.value) & w.mask);
         *at++ = ' ';
       }
       std::memcpy(at, w.id.data(), w.id.size());
