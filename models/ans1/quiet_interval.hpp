@@ -47,4 +47,43 @@ struct QuietInterval {
   void pin(std::uint16_t at) { lo = hi = at; }
 };
 
+// How many counts in a row from `count` (not counting it) in direction `step` (+1 or -1) have
+// their GMP inside `quiet`, at most one cycle (CPC): the walk
+//   k = 0; while (k < CPC && quiet.contains(global_position(count + step * (k + 1), setup))) ++k;
+// without a division per count. Over counts whose q = count mod CPC does not roll over, the
+// scaled count s = floor(q * FSC / CPC) never decreases, and GMP = (s + SMO) mod FSC is
+// s + SMO - m * FSC for one m until s + SMO reaches the next multiple of FSC; so from a count
+// inside, every count up to (down to) the first whose s passes the interval's end (start),
+// shifted by m * FSC - SMO, is inside too, and the walk jumps there. Each jump reaches a count
+// outside, a roll-over of q or of the GMP: a few jumps a cycle.
+[[nodiscard]] constexpr std::int64_t counts_inside(std::int64_t count, std::int64_t step,
+                                                   const PositionSetup& setup, const QuietInterval& quiet) {
+  const std::int64_t cpc = setup.counts_per_cycle;
+  const std::int64_t fsc = setup.full_scale_count;
+  const std::int64_t offset = setup.scaled_offset;
+  std::int64_t k = 1; // the count tested next is count + step * k
+  while (k <= cpc) {
+    const std::int64_t q = wrap(count + step * k, cpc);
+    const std::int64_t t = q * fsc / cpc + offset;
+    const std::int64_t gmp = wrap(t, fsc);
+    if (gmp < quiet.lo || gmp > quiet.hi) {
+      return k - 1;
+    }
+    const std::int64_t base = t - gmp; // m * FSC
+    std::int64_t end = 0;              // the first q in the walk's direction not known inside
+    if (step > 0) {
+      // Inside while s <= quiet.hi + base - offset (which is below the next multiple of FSC).
+      const std::int64_t first_out = quiet.hi + base - offset + 1; // s at or above it: outside
+      end = std::min(cpc, (first_out * cpc + fsc - 1) / fsc);      // least q with s >= first_out
+      k += end - q;
+    } else {
+      // Inside while s >= quiet.lo + base - offset (at or above the multiple of FSC).
+      const std::int64_t least_in = quiet.lo + base - offset;
+      end = least_in <= 0 ? -1 : (least_in * cpc + fsc - 1) / fsc - 1; // greatest q with s < least_in
+      k += q - end;
+    }
+  }
+  return cpc;
+}
+
 } // namespace hilrig::models::ans1

@@ -325,15 +325,8 @@ void Ans1::schedule_count_leave(Nanos now) {
   }
   const std::int64_t count = transducer_count();
   const std::int64_t cpc = position_.counts_per_cycle;
-  const auto inside = [&](std::int64_t c) { return quiet_.contains(global_position(c, position_)); };
-  std::int64_t hi = count;
-  while (hi - count < cpc && inside(hi + 1)) {
-    ++hi;
-  }
-  std::int64_t lo = count;
-  while (count - lo < cpc && inside(lo - 1)) {
-    --lo;
-  }
+  const std::int64_t hi = count + counts_inside(count, 1, position_, quiet_);
+  const std::int64_t lo = count - counts_inside(count, -1, position_, quiet_);
   // A whole cycle inside: the GMP never leaves (one count per cycle).
   const std::int64_t top = hi - count >= cpc ? std::numeric_limits<std::int64_t>::max() : hi + quad_->base;
   const std::int64_t bottom = count - lo >= cpc ? std::numeric_limits<std::int64_t>::min() : lo + quad_->base;

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "models/ans1/position.hpp"
+#include "models/ans1/quiet_interval.hpp"
 
 namespace hilrig::models::ans1 {
 namespace {
@@ -139,6 +140,87 @@ TEST(Ans1Position, BitParametersRoundTrip) {
   EXPECT_TRUE(s.slave_mode);
   EXPECT_EQ(s.sensor, SensorType::Resolver);
 }
+
+// counts_inside (the quiet run's ends, schedule_count_leave) against the count-by-count walk it
+// replaces, on random scalings (FSC up to CPC, and beyond it), offsets, intervals (narrow,
+// wide, at either end of the FSC, some not holding the present GMP) and counts of either sign.
+namespace quiet_run {
+
+std::int64_t walked(std::int64_t count, std::int64_t step, const PositionSetup& setup,
+                    const QuietInterval& quiet) {
+  std::int64_t k = 0;
+  while (k < setup.counts_per_cycle && quiet.contains(global_position(count + step * (k + 1), setup))) {
+    ++k;
+  }
+  return k;
+}
+
+TEST(Ans1Position, CountsInsideIsTheCountByCountWalk) {
+  std::mt19937_64 rng(20261127);
+  const auto pick = [&](std::int64_t lo, std::int64_t hi) {
+    return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng);
+  };
+  int whole_cycles = 0;
+  int stopped = 0;
+  for (int i = 0; i < 20000; ++i) {
+    PositionSetup s;
+    s.counts_per_cycle = static_cast<std::uint16_t>(pick(0, 3) == 0 ? pick(2, 12) : pick(2, 4096));
+    const std::int64_t fsc_max = pick(0, 9) == 0 ? 4 * std::int64_t{s.counts_per_cycle} : s.counts_per_cycle;
+    s.full_scale_count = static_cast<std::uint16_t>(pick(1, std::min<std::int64_t>(fsc_max, 65535)));
+    const std::int64_t fsc = s.full_scale_count;
+    s.scaled_offset = static_cast<std::int32_t>(pick(-(fsc - 1), fsc - 1));
+    const std::int64_t count =
+        pick(-3 * std::int64_t{s.counts_per_cycle}, 3 * std::int64_t{s.counts_per_cycle});
+    const std::uint16_t at = global_position(count, s);
+    QuietInterval q = QuietInterval::around(at, s.full_scale_count);
+    switch (pick(0, 4)) {
+    case 0: // a narrowed run around the present GMP
+      q.lo = static_cast<std::uint16_t>(pick(q.lo, at));
+      q.hi = static_cast<std::uint16_t>(pick(at, q.hi));
+      break;
+    case 1: // pinned
+      q.pin(at);
+      break;
+    case 2: // anywhere, maybe not holding the present GMP
+      q.lo = static_cast<std::uint16_t>(pick(0, fsc - 1));
+      q.hi = static_cast<std::uint16_t>(pick(q.lo, fsc - 1));
+      break;
+    case 3: // the whole FSC
+      q.lo = 0;
+      q.hi = static_cast<std::uint16_t>(fsc - 1);
+      break;
+    default: // around() as it is
+      break;
+    }
+    for (const std::int64_t step : {std::int64_t{1}, std::int64_t{-1}}) {
+      const std::int64_t want = walked(count, step, s, q);
+      ASSERT_EQ(counts_inside(count, step, s, q), want)
+          << "cpc " << s.counts_per_cycle << " fsc " << fsc << " smo " << s.scaled_offset << " count "
+          << count << " step " << step << " quiet " << q.lo << ".." << q.hi;
+      whole_cycles += want == s.counts_per_cycle ? 1 : 0;
+      stopped += want < s.counts_per_cycle ? 1 : 0;
+    }
+  }
+  // Both outcomes were exercised, many times.
+  EXPECT_GT(whole_cycles, 1000);
+  EXPECT_GT(stopped, 10000);
+}
+
+TEST(Ans1Position, CountsInsideOfAWorkedScaling) {
+  // CPC 4096, FSC 360, SMO 0: count c has GMP floor(c * 360 / 4096). GMP 90 is counts
+  // 1024..1035 (1036 * 360 / 4096 = 91.05), GMP 89 from 1013 (1013 * 360 / 4096 = 89.03).
+  PositionSetup s;
+  const QuietInterval q{89, 90};
+  EXPECT_EQ(counts_inside(1024, 1, s, q), 1035 - 1024);
+  EXPECT_EQ(counts_inside(1024, -1, s, q), 1024 - 1013);
+  // With SMO -90 the same counts read GMP 0 and 359: 1024..1035 is GMP 0, 1013..1023 is 359.
+  s.scaled_offset = -90;
+  EXPECT_EQ(counts_inside(1024, 1, s, QuietInterval{0, 5}),
+            1092 - 1024); // GMP 5 ends at 1092 (1093 * 360 / 4096 = 96.06)
+  EXPECT_EQ(counts_inside(1024, -1, s, QuietInterval{0, 5}), 0); // 1023 reads 359
+}
+
+} // namespace quiet_run
 
 } // namespace
 } // namespace hilrig::models::ans1
