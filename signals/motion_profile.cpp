@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace hilrig::signals {
 
@@ -46,15 +47,31 @@ MotionProfile& MotionProfile::dwell(Nanos duration) {
 }
 
 MotionProfile& MotionProfile::append(const Segment& s) {
+  const Segment added = joined(segments_.empty() ? nullptr : &segments_.back(), s);
+  note_speed(segments_.emplace_back(added));
+  return *this;
+}
+
+MotionProfile MotionProfile::chained(double start_position, Nanos start_time,
+                                     std::vector<Segment>&& segments) {
+  MotionProfile p(start_position, start_time);
+  p.segments_ = std::move(segments);
+  for (std::size_t i = 0; i < p.segments_.size(); ++i) {
+    p.segments_[i] = p.joined(i == 0 ? nullptr : &p.segments_[i - 1], p.segments_[i]);
+    p.note_speed(p.segments_[i]);
+  }
+  return p;
+}
+
+Segment MotionProfile::joined(const Segment* last, const Segment& s) const {
   // Where and when the profile ends so far: end_time() and end_position(), the last segment
   // read once.
   Nanos end = start_time_;
   double p0 = start_position_;
-  if (!segments_.empty()) {
-    const Segment& last = segments_.back();
-    if (open_ended(last)) throw std::logic_error("MotionProfile::append: the last segment is open-ended");
-    end = last.start + last.duration;
-    p0 = last.settled_end ? *last.settled_end : last.position_at(end);
+  if (last != nullptr) {
+    if (open_ended(*last)) throw std::logic_error("MotionProfile::append: the last segment is open-ended");
+    end = last->start + last->duration;
+    p0 = last->settled_end ? *last->settled_end : last->position_at(end);
   }
   if (s.start != end)
     throw std::invalid_argument("MotionProfile::append: segment does not start at the end time");
@@ -63,10 +80,12 @@ MotionProfile& MotionProfile::append(const Segment& s) {
   if (std::abs(s.position - p0) > 1e-9 * (1.0 + std::abs(p0)))
     throw std::invalid_argument("MotionProfile::append: position is not continuous");
   // Exact continuity, so edge solvers see no jump at the boundary; only settle() declares an end.
-  const Segment& added = segments_.emplace_back(Segment{s.start, s.duration, p0, s.velocity, s.acceleration});
+  return Segment{s.start, s.duration, p0, s.velocity, s.acceleration};
+}
+
+void MotionProfile::note_speed(const Segment& added) {
   peak_speed_ = std::max(peak_speed_, std::abs(added.velocity));
   if (!open_ended(added)) peak_speed_ = std::max(peak_speed_, std::abs(added.end_velocity()));
-  return *this;
 }
 
 MotionProfile& MotionProfile::settle(double position) {

@@ -48,6 +48,11 @@ public:
   MotionProfile& dwell(Nanos duration);  // velocity must be 0 (throws otherwise)
   // Appends an arbitrary segment; its start must equal the current end time.
   MotionProfile& append(const Segment& s);
+  // MotionProfile(start_position, start_time) with each of `segments` appended in order (the
+  // same checks, positions and peak speed), in the vector's own storage: a long trajectory
+  // is not copied to a second block of memory.
+  [[nodiscard]] static MotionProfile chained(double start_position, Nanos start_time,
+                                             std::vector<Segment>&& segments);
   // Declares that the last segment ends exactly at `position` (within the closed form's
   // rounding, a relative 1e-9; throws otherwise): a move to count 2000 then ends on 2000,
   // not on 1999.9999999999998, and the next segment starts there.
@@ -76,6 +81,10 @@ public:
   [[nodiscard]] double peak_speed() const { return peak_speed_; }
 
 private:
+  // `s` as append() stores it after the segment `last` (null: the first), or throws.
+  [[nodiscard]] Segment joined(const Segment* last, const Segment& s) const;
+  void note_speed(const Segment& added);
+
   double start_position_ = 0.0;
   double peak_speed_ = 0.0;
   Nanos start_time_{0};

@@ -97,7 +97,11 @@ void Smd23e::connect_input(int number, LineInput& line) {
   raw_[static_cast<std::size_t>(number - 1)] = line.level();
   line.on_edge([this, number](const Edge& e) {
     if (p_.input_delay > Nanos{0}) {
-      sched_.after(p_.input_delay, [this, number, level = e.level] { on_input(number - 1, level); });
+      ++deferred_;
+      sched_.after(p_.input_delay, [this, number, level = e.level] {
+        --deferred_;
+        on_input(number - 1, level);
+      });
     } else {
       on_input(number - 1, e.level);
     }

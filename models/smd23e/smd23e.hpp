@@ -84,6 +84,10 @@ public:
   // the present run (and a little of the past, for tests and traces) is ever looked at.
   static constexpr std::size_t kKeptRuns = 64;
   [[nodiscard]] bool moving() const { return run_.has_value(); }
+  // The shaft stays where it is until an outside call (a host write, an input edge, a fault,
+  // power): no run, no pause before the next move, no delayed input or late stop pending.
+  // shaft_steps() is the same at every later time until then.
+  [[nodiscard]] bool at_rest_until_told() const { return !run_ && !pause_event_.valid() && deferred_ == 0; }
   [[nodiscard]] double motor_current_amps() const;
   [[nodiscard]] const Params& params() const { return p_; }
 
@@ -264,6 +268,7 @@ private:
   EventId aux_event_{};
   EventId stall_event_{};
   EventId pause_event_{};
+  int deferred_ = 0;     // delayed inputs and late stops scheduled and not run yet
   EventId home_pause_{}; // pause_event_ when it is a homing pause
 };
 

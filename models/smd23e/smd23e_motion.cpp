@@ -282,7 +282,11 @@ void Smd23e::registration_stop() {
 
 void Smd23e::act(std::function<void()> action, bool stop_like) {
   if (stop_like && p_.fault == Fault::LateStop) {
-    sched_.after(p_.late_stop_delay, std::move(action));
+    ++deferred_;
+    sched_.after(p_.late_stop_delay, [this, action = std::move(action)] {
+      --deferred_;
+      action();
+    });
   } else {
     action();
   }

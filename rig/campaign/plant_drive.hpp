@@ -46,6 +46,8 @@ public:
   [[nodiscard]] std::int64_t count() const { return count_; }
 
   [[nodiscard]] const PlantMotion& motion() const { return motion_; }
+  // The run is over: the shaft's whole trajectory (PlantMotion::take_trajectory).
+  [[nodiscard]] signals::MotionProfile take_trajectory() { return motion_.take_trajectory(); }
   // The board outputs (and rig commands) that acted on the plant, as they changed, and the
   // standstills it located: the events of the report's speed/position plot.
   [[nodiscard]] std::vector<rig::MotionEvent> events() const;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iterator>
 #include <numbers>
+#include <utility>
 
 namespace hilrig::campaign {
 
@@ -25,6 +26,10 @@ PlantMotion::PlantMotion(const PlantSpec& spec, double counts_per_turn, Nanos en
   knots_.push_back(checkpoint_->state());
   keep_knots_ = resume == Resume::AtKnot && checkpoint_->resumes_at_knots();
   horizon_ = knots_.front().time;
+  if (spec.step > Nanos::zero() && end > horizon_) {
+    const auto steps = static_cast<std::size_t>((end - horizon_).count() / spec.step.count());
+    history_.reserve(std::min(steps + steps / 5 + 64, kHistoryReservedMax));
+  }
   input(knots_.front().time, plants::PlantInput::Valve,
         spec.kind != PlantKind::Press || spec.press_start.valve);
 }
@@ -159,6 +164,16 @@ signals::MotionProfile PlantMotion::trajectory() const {
   for (const signals::Segment& s : history_) p.append(s);
   for (const signals::Segment& s : plan_.segments()) p.append(s);
   return p;
+}
+
+signals::MotionProfile PlantMotion::take_trajectory() {
+  plan_all();
+  const double start = history_.empty() ? plan_.position(plan_.start_time()) : history_.front().position;
+  const Nanos t0 = history_.empty() ? plan_.start_time() : history_.front().start;
+  history_.insert(history_.end(), plan_.segments().begin(), plan_.segments().end());
+  signals::MotionProfile whole = signals::MotionProfile::chained(start, t0, std::move(history_));
+  history_.clear();
+  return whole;
 }
 
 std::vector<checks::PositionSample> PlantMotion::samples() const {

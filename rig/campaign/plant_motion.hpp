@@ -55,6 +55,11 @@ public:
 
   // Integration steps a plan reaches ahead of its start.
   static constexpr std::int64_t kPlanSteps = 128;
+  // Segments the history holds room for at the start: one per integration step to the end
+  // and a fifth more (an input splits the step it falls in), at most this many (a plan
+  // integrates the whole run, so the history reaches that length: reserved at once, it is not
+  // copied to a twice larger block as it grows, and memory first touched costs system time).
+  static constexpr std::size_t kHistoryReservedMax = std::size_t{1} << 22;
   // Knots grow() integrates at a time.
   static constexpr int kGrowKnots = 4;
 
@@ -65,6 +70,9 @@ public:
   [[nodiscard]] double velocity(Nanos t) const;
   // The whole trajectory (committed history, then the plan), in counts.
   [[nodiscard]] signals::MotionProfile trajectory() const;
+  // The same, made in the history's own storage, once the run is over: after it, position(),
+  // velocity(), samples() and trajectory() no longer see the history (standstills() does).
+  [[nodiscard]] signals::MotionProfile take_trajectory();
   // Its knots as the brake check reads the shaft: position changes up to the last one,
   // which is the plant's located standstill when the shaft came to rest.
   [[nodiscard]] std::vector<checks::PositionSample> samples() const;

@@ -99,7 +99,7 @@ public:
       // The shaft as the plant moved it: its last change is the located standstill.
       out_.motion = plant_->motion().samples();
       out_.counts = plant_->counts();
-      out_.profile = plant_->motion().trajectory();
+      out_.profile = plant_->take_trajectory();
       out_.motion_events = plant_->events();
     } else {
       out_.motion = std::move(drive_.motion());

@@ -20,6 +20,10 @@ namespace m = hilrig::models::smd23e;
 
 // While idle the shaft sensor looks for a new motion this often (motion started by the
 // model itself, e.g. after a homing pause). While moving it wakes at each step's exact time.
+// When the model has nothing pending that could move the shaft (Smd23e::at_rest_until_told)
+// it does not look until an outside call: each such call runs follow(), which starts the looks
+// again from its instant, and the looks skipped in between would each have found the shaft
+// where it was, emitted nothing and scheduled the next (no run: watch_encoder() does nothing).
 constexpr Nanos kIdlePoll{50'000};
 
 class Smd23eDut final : public Dut {
@@ -103,6 +107,10 @@ private:
       emitted_ += cw ? 1 : -1;
     }
     device_.watch_encoder();
+    if (device_.at_rest_until_told()) {
+      wake_ = {};
+      return;
+    }
     wake_ = sched_.at(next_wake(now), [this] { follow(); });
   }
 

@@ -148,6 +148,18 @@ TEST(PlantMotion, PlanGrownAsReadIsThePlanIntegratedWhole) {
       EXPECT_EQ(sa[i].position, sb[i].position);
     }
     EXPECT_EQ(whole.standstills(), grown.standstills());
+    // The run's end: the trajectory made in the history's own storage is trajectory()'s, bit
+    // for bit (positions chained from the segments' closed forms, the peak speed), and the
+    // standstills are still there.
+    const std::vector<Nanos> standstills = grown.standstills();
+    const signals::MotionProfile c = grown.take_trajectory();
+    ASSERT_EQ(c.segments().size(), b.segments().size());
+    for (std::size_t i = 0; i < b.segments().size(); ++i)
+      ASSERT_TRUE(same(c.segments()[i], b.segments()[i])) << "trial " << trial << ", segment " << i;
+    EXPECT_EQ(c.start_time(), b.start_time());
+    EXPECT_EQ(c.peak_speed(), b.peak_speed());
+    EXPECT_EQ(c.position(c.start_time() - Nanos{1}), b.position(b.start_time() - Nanos{1}));
+    EXPECT_EQ(grown.standstills(), standstills);
     EXPECT_GT(compared_edges, 500) << "trial " << trial;
     EXPECT_GT(compared_knots, 1000) << "trial " << trial;
   }

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "core/scheduler.hpp"
 #include "core/trace.hpp"
@@ -24,9 +25,9 @@ struct Bench {
   virt::VirtualBus bus{sched, &trace};
   std::unique_ptr<Dut> dut;
 
-  explicit Bench(const std::string& variant = "nominal") {
+  explicit Bench(const std::string& variant = "nominal", Nanos input_delay = Nanos{0}) {
     const DutInfo info = smd23e_info();
-    dut = info.make(sched, info.with_defaults({}), variant, 0);
+    dut = info.make(sched, info.with_defaults({{"input_delay", input_delay}}), variant, 0);
     dut->attach(bus, {{"STEP", "step"}, {"DIR", "dir"}, {"IN1", "in1"}});
   }
   // As the executive writes: words 9..1, then word 0.
@@ -74,6 +75,32 @@ TEST(Smd23eDut, ShaftSensorShowsATrapezoidMove) {
   ASSERT_EQ(dir.size(), 1U);
   EXPECT_EQ(dir[0].level, Level::High);
   EXPECT_EQ(dir[0].time, step[0].time);
+}
+
+// Idle with nothing pending in the model, the shaft sensor does not look every 50 us: no
+// event at all is left in the scheduler. An input whose effect is delayed (input_delay
+// 120 us) and starts an armed indexed move while idle is still looked for from the edge on
+// (the looks at the edge + 50, 100, 150 us: the third finds the move) and every step shows on
+// STEP; after the move the sensor sleeps again.
+TEST(Smd23eDut, IdleSensorSleepsUntilTheModelCanMoveTheShaft) {
+  Bench b("nominal", 120_us);
+  // Configuration Mode with input 1 Start Indexed Move (control bits 0-2 = 3), then Command Mode.
+  b.at(0_ms, Block{0x8000 | 0x0003, 0x8007, 1, 0, 2048, 0, 1024, 50, 20, 0});
+  b.at(1_ms, Block{0, 0x8000, 0, 0, 0, 0, 0, 0, 0, 0});
+  // A relative indexed move of 1000 steps (MSW bit 1, LSW bit 8), armed, not run.
+  b.at(10_ms, Block{2, 0x8000 | 0x0100, 1, 0, 10, 0, 100, 100, 0, 0});
+  b.sched.run_until(20_ms);
+  EXPECT_EQ(b.sched.pending_count(), 0U);
+  EXPECT_TRUE(b.trace.edges_of("step").empty());
+  const Nanos edge = 20_ms + 7_us;
+  b.sched.at(edge, [&b] { b.bus.line("in1").driver().set(Level::High); });
+  b.sched.run_until(edge + 119_us); // the delayed input still pending: the sensor looks
+  EXPECT_GE(b.sched.pending_count(), 2U);
+  b.sched.run_until(600_ms);
+  const std::vector<Edge> step = b.trace.edges_of("step");
+  ASSERT_EQ(step.size(), 1000U);
+  EXPECT_GT(step.front().time, edge + 120_us);
+  EXPECT_EQ(b.sched.pending_count(), 0U);
 }
 
 TEST(Smd23eDut, CcwMoveKeepsDirLow) {

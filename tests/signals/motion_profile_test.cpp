@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 using namespace hilrig;
 using namespace hilrig::literals;
@@ -174,4 +176,47 @@ TEST(MoveBuilders, PressStrokeBrakesToStandstill) {
   EXPECT_TRUE(p.at_rest());
   p.dwell(10_ms); // standing still: a dwell is allowed
   EXPECT_EQ(p.end_time(), 160_ms);
+}
+
+// chained() is the profile of append() one segment at a time, in the vector's own storage.
+// The segments given carry positions off by up to 1e-10 (within append's continuity
+// tolerance): the profile's are the closed-form ends of the segment before, as append() stores
+// them (the first one the start position), each to the bit; the peak speed is the largest
+// |velocity| at either end of a segment: here the second segment's end, 3 + 2 * 1.5 = 6.
+TEST(MotionProfile, ChainedIsAppendOneByOne) {
+  const std::vector<Segment> given = {
+      Segment{1_s, 1_s, 10.0 + 1e-10, 3.0, 0.0},
+      Segment{2_s, 1500_ms, 13.0 - 1e-10, 3.0, 2.0},
+      Segment{3500_ms, 250_ms, 19.75 + 1e-10, -1.0, 0.5},
+  };
+  MotionProfile appended(10.0, 1_s);
+  for (const Segment& s : given) appended.append(s);
+  std::vector<Segment> storage = given;
+  const Segment* block = storage.data();
+  const MotionProfile chained = MotionProfile::chained(10.0, 1_s, std::move(storage));
+  EXPECT_EQ(chained.segments().data(), block); // not copied
+  ASSERT_EQ(chained.segments().size(), given.size());
+  EXPECT_EQ(chained.segments()[0].position, 10.0);
+  EXPECT_EQ(chained.segments()[1].position, 10.0 + 3.0 * 1.0);
+  EXPECT_EQ(chained.segments()[2].position, 13.0 + (3.0 + 0.5 * 2.0 * 1.5) * 1.5);
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    const Segment& a = chained.segments()[i];
+    const Segment& b = appended.segments()[i];
+    EXPECT_EQ(a.start, b.start);
+    EXPECT_EQ(a.duration, b.duration);
+    EXPECT_EQ(a.position, b.position);
+    EXPECT_EQ(a.velocity, b.velocity);
+    EXPECT_EQ(a.acceleration, b.acceleration);
+    EXPECT_FALSE(a.settled_end.has_value());
+  }
+  EXPECT_EQ(chained.peak_speed(), 6.0);
+  EXPECT_EQ(chained.peak_speed(), appended.peak_speed());
+  EXPECT_EQ(chained.end_position(), appended.end_position());
+  // What append() refuses, chained() refuses.
+  EXPECT_THROW((void)MotionProfile::chained(10.0, 1_s, {Segment{1_s, 1_s, 10.1, 0.0, 0.0}}),
+               std::invalid_argument);
+  EXPECT_THROW((void)MotionProfile::chained(10.0, 1_s, {Segment{2_s, 1_s, 10.0, 0.0, 0.0}}),
+               std::invalid_argument);
+  EXPECT_THROW((void)MotionProfile::chained(10.0, 1_s, {Segment{1_s, 0_s, 10.0, 0.0, 0.0}}),
+               std::invalid_argument);
 }
