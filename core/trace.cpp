@@ -191,6 +191,13 @@ void TraceRecorder::spill() {
 }
 
 void TraceRecorder::visit_samples(std::size_t from, const SampleChunk& chunk) const {
+  visit_samples_while(from, [&](std::span<const TraceSample> samples) {
+    chunk(samples);
+    return true;
+  });
+}
+
+void TraceRecorder::visit_samples_while(std::size_t from, const SampleChunkWhile& chunk) const {
   if (from < spilled_) {
     // The block holding `from`, then each block after it, decoded a chunk at a time.
     auto block = std::upper_bound(spill_blocks_.begin(), spill_blocks_.end(), from,
@@ -215,7 +222,7 @@ void TraceRecorder::visit_samples(std::size_t from, const SampleChunk& chunk) co
       while (const std::size_t n = decoder.next(decoded)) {
         if (index + n > from) {
           const std::size_t skip = from > index ? from - index : 0;
-          chunk(std::span<const TraceSample>(decoded.data() + skip, n - skip));
+          if (!chunk(std::span<const TraceSample>(decoded.data() + skip, n - skip))) return;
         }
         index += n;
       }

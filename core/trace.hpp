@@ -116,6 +116,9 @@ public:
   // Calls `chunk` with the samples from index `from` on, in record order, a span at a time.
   using SampleChunk = std::function<void(std::span<const TraceSample>)>;
   void visit_samples(std::size_t from, const SampleChunk& chunk) const;
+  // The same, until `chunk` returns false: no later chunk is decoded or read back.
+  using SampleChunkWhile = std::function<bool(std::span<const TraceSample>)>;
+  void visit_samples_while(std::size_t from, const SampleChunkWhile& chunk) const;
   [[nodiscard]] const std::vector<TraceCanFrame>& can_frames() const { return can_; }
   [[nodiscard]] const std::vector<TraceSerialByte>& serial_bytes() const { return serial_; }
   // Keeps the samples of the Wire signals of these names (declared now or later) as edges in

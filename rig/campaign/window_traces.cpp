@@ -153,8 +153,15 @@ void feed_in_time_order(const TraceRecorder& trace, const std::vector<std::vecto
     // Every window of a signal starts from the same value (the signal's initial one).
     f.last = cutting[f.waiting.front().cutting].before[f.waiting.front().lane];
   }
-  trace.visit_samples(0, [&](std::span<const TraceSample> chunk) {
+  // Once a sample is past every window's begin and end, so is every later one: it would only
+  // move a signal's windows to open with the last sample before it (what the loop after the
+  // pass does) and move on that last sample, which no window reads any more. The pass stops
+  // there, the rest of the recording not read back.
+  Nanos past = Nanos::min();
+  for (const Cutting& c : cutting) past = std::max({past, c.window->span.begin, c.window->span.end});
+  trace.visit_samples_while(0, [&](std::span<const TraceSample> chunk) {
     for (const TraceSample& s : chunk) {
+      if (s.time > past) return false;
       Feed& f = feeds[s.signal];
       if (f.waiting.empty()) continue;
       for (; f.next < f.waiting.size() && span_of(f.waiting[f.next]).begin <= s.time; ++f.next) {
@@ -171,6 +178,7 @@ void feed_in_time_order(const TraceRecorder& trace, const std::vector<std::vecto
       }
       f.open.resize(kept);
     }
+    return true;
   });
   for (Feed& f : feeds)
     for (; f.next < f.waiting.size(); ++f.next) {

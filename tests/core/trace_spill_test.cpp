@@ -269,6 +269,41 @@ TEST(TraceSpill, RecorderReadsBackWhatWasRecordedAcrossTheSpillLimit) {
   }
 }
 
+// A reader that stops (visit_samples_while's chunk returns false) is handed no chunk after
+// that one: what it saw is the recording's first samples, in order, and no more than the
+// chunk it stopped in; one that never stops sees everything.
+TEST(TraceSpill, AReaderThatStopsIsHandedNoMoreChunks) {
+  for (const std::size_t limit : {std::size_t{0}, std::size_t{13}, std::size_t{512}}) {
+    TraceRecorder t;
+    if (limit > 0) t.spill_beyond(limit);
+    const std::vector<std::uint32_t> signals = declare_all(t);
+    const std::vector<Plain> recorded = record_random(t, signals, 11, 2000, true);
+    for (const std::size_t stop_after :
+         {std::size_t{1}, std::size_t{500}, std::size_t{1999}, std::size_t{5000}}) {
+      std::vector<Plain> seen;
+      std::size_t chunks_after_stop = 0;
+      bool stopped = false;
+      std::size_t last_chunk = 0;
+      t.visit_samples_while(0, [&](std::span<const TraceSample> chunk) {
+        if (stopped) ++chunks_after_stop;
+        for (const TraceSample& s : chunk) seen.push_back(plain(s));
+        last_chunk = chunk.size();
+        stopped = seen.size() >= stop_after;
+        return !stopped;
+      });
+      EXPECT_EQ(chunks_after_stop, 0U) << "limit " << limit << " stop " << stop_after;
+      const std::size_t want = std::min(stop_after, recorded.size());
+      ASSERT_GE(seen.size(), want);
+      EXPECT_LT(seen.size() - want, std::max<std::size_t>(last_chunk, 1)) << "limit " << limit;
+      EXPECT_EQ(seen, std::vector<Plain>(recorded.begin(),
+                                         recorded.begin() + static_cast<std::ptrdiff_t>(seen.size())));
+      if (limit == 13 && stop_after == 500) {
+        EXPECT_LT(seen.size(), 520U); // blocks of 13 read back one by one
+      }
+    }
+  }
+}
+
 // Samples recorded after the recorder was told to spill, and more after that: the limit set
 // later spills what is held at once.
 TEST(TraceSpill, ALimitSetLaterSpillsWhatIsHeld) {
