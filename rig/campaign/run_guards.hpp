@@ -28,9 +28,20 @@ struct RunGuards {
 class ProgressGuard {
 public:
   explicit ProgressGuard(const RunGuards& guards) : guards_(guards) {}
-  [[nodiscard]] std::optional<std::string> check(Nanos event_time, std::size_t trace_samples);
+  // Inline: it runs before every event, and only a tripped guard formats its fault.
+  [[nodiscard]] std::optional<std::string> check(Nanos event_time, std::size_t trace_samples) {
+    if (event_time != instant_) {
+      instant_ = event_time;
+      events_at_instant_ = 0;
+    }
+    if (++events_at_instant_ > guards_.max_events_per_instant || trace_samples > guards_.max_trace_samples)
+      return tripped();
+    return std::nullopt;
+  }
 
 private:
+  [[nodiscard]] std::string tripped() const;
+
   RunGuards guards_;
   Nanos instant_{Nanos::min()};
   std::uint64_t events_at_instant_ = 0;
