@@ -1,5 +1,6 @@
 #include "rig/cli/check_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
 #include <stdexcept>

@@ -1,5 +1,5 @@
 #pragma once
-#include <CLI/CLI.hpp>
+#include "rig/cli/cli_fwd.hpp"
 
 namespace hilrig::cli {
 // `hilrig compare BASE.json NEW.json [--threshold NAME=VALUE[%] ...] [--default-rel 0.05] [--all]`:

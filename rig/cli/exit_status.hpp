@@ -2,7 +2,7 @@
 // How a subcommand ends the program with a status: hilrig's exit codes are part of its
 // interface (0 all passed, 1 a check failed, 2 bad input, 3 a rig fault).
 
-#include <CLI/CLI.hpp>
+#include <CLI/Error.hpp>
 
 namespace hilrig::cli {
 

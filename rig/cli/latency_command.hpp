@@ -1,5 +1,5 @@
 #pragma once
-#include <CLI/CLI.hpp>
+#include "rig/cli/cli_fwd.hpp"
 
 namespace hilrig::cli {
 // `hilrig latency`: the rig's own RT loop measured on this machine, printed like cyclictest.

@@ -1,5 +1,6 @@
 #include "rig/cli/list_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
 #include <variant>

@@ -4,7 +4,7 @@
 
 #include <iosfwd>
 
-#include <CLI/CLI.hpp>
+#include "rig/cli/cli_fwd.hpp"
 
 namespace hilrig::cli {
 

@@ -1,5 +1,6 @@
 #include "rig/cli/merge_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>

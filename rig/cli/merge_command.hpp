@@ -1,5 +1,5 @@
 #pragma once
-#include <CLI/CLI.hpp>
+#include "rig/cli/cli_fwd.hpp"
 
 namespace hilrig::cli {
 // `hilrig merge OUT.json SHARD.json...`: merges the results of every shard of a campaign into

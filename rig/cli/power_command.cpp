@@ -1,5 +1,6 @@
 #include "rig/cli/power_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
 #include <memory>

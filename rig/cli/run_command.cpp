@@ -1,5 +1,6 @@
 #include "rig/cli/run_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <unistd.h>
 
 #include <algorithm>

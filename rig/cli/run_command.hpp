@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+#include "rig/cli/cli_fwd.hpp"
 
 #include "rig/campaign/check_selection.hpp"
 #include "rig/campaign/host_link.hpp"

@@ -1,5 +1,6 @@
 #include "rig/cli/seed_option.hpp"
 
+#include <CLI/CLI.hpp>
 #include <charconv>
 #include <limits>
 

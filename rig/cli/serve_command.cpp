@@ -1,5 +1,6 @@
 #include "rig/cli/serve_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <fstream>
 #include <memory>

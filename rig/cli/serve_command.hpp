@@ -12,7 +12,7 @@
 // The model's scheduler is advanced to the monotonic clock before each request is answered
 // and every poll period. Stops cleanly on SIGINT/SIGTERM.
 
-#include <CLI/CLI.hpp>
+#include "rig/cli/cli_fwd.hpp"
 
 #include <atomic>
 #include <cstdint>

@@ -1,5 +1,6 @@
 #include "rig/cli/synth_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <algorithm>

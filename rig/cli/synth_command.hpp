@@ -10,7 +10,7 @@
 //
 // where add_synth_resolver(CLI::App& synth) calls synth.add_subcommand("resolver", ...).
 
-#include <CLI/CLI.hpp>
+#include "rig/cli/cli_fwd.hpp"
 
 #include <string>
 

@@ -7,6 +7,7 @@
 // the quadrature kind's profile options (trapezoid, S-curve, press), so they are not
 // copied here.
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <cmath>

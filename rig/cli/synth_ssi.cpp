@@ -5,6 +5,7 @@
 // The shaft turns at constant speed from a start angle: synth_command.hpp does not expose
 // the quadrature kind's profile options, so they are not copied here.
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <cstdint>

@@ -1,5 +1,6 @@
 #include "rig/cli/trend_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>

@@ -3,7 +3,7 @@
 // first) as one self-contained HTML page, each measurement's value against its limits over the
 // nights. Exit 2 when a file cannot be read or the files are not one campaign on one device.
 
-#include <CLI/CLI.hpp>
+#include "rig/cli/cli_fwd.hpp"
 
 namespace hilrig::cli {
 

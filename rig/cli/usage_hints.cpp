@@ -1,5 +1,6 @@
 #include "rig/cli/usage_hints.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <charconv>
 #include <string_view>

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include <CLI/CLI.hpp>
+#include "rig/cli/cli_fwd.hpp"
 
 namespace hilrig::cli {
 

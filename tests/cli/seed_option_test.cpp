@@ -2,6 +2,7 @@
 // integer: every value 0..2^64-1 is taken, and nothing else (no sign, no wrap, no clamp).
 #include "rig/cli/seed_option.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <limits>
 #include <optional>

@@ -1,8 +1,10 @@
 // `hilrig synth`: the command writes the solved quadrature / discrete edges to a VCD file.
 // Expected edge counts are worked out by hand from the options.
 
+#include "rig/cli/synth_command.hpp"
 #include "tests/signals/run_synth.hpp"
 
+#include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
 
 #include <fstream>
