@@ -58,6 +58,7 @@ test-vm: build
 FUZZERS := fuzz_campaign fuzz_rig_config fuzz_modbus_tcp fuzz_modbus_rtu fuzz_candump
 build-fuzz: deps
 	@cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
 	  -DHILRIG_FUZZ=ON -DHILRIG_BUILD_TESTS=OFF -DHILRIG_BUILD_BENCH=OFF >/dev/null
 	@cmake --build build-fuzz -j $(JOBS) --target $(FUZZERS)
 
@@ -73,8 +74,16 @@ fuzz: build-fuzz
 disk-check:
 	@bash scripts/check-disk.sh
 
-# Every test, then the sanitizer build's tests, the fuzzers' short run, then the RT VM lane.
-test: disk-check test-unit test-asan format-check fuzz-smoke test-vm
+# Every test, then the sanitizer build's tests, the fuzzers' short run, then the RT VM lane,
+# in that order (one step after another, each timed: a CI log says where the time went).
+TEST_STEPS := disk-check test-unit test-asan format-check fuzz-smoke test-vm
+test:
+	@start=$$(date +%s); \
+	for step in $(TEST_STEPS); do \
+	  t=$$(date +%s); \
+	  $(MAKE) --no-print-directory $$step || { echo "make test: $$step FAILED after $$(( $$(date +%s) - t )) s"; exit 1; }; \
+	  echo "make test: $$step passed in $$(( $$(date +%s) - t )) s ($$(( $$(date +%s) - start )) s so far)"; \
+	done
 	@echo "make test: all suites passed (default and ASan+UBSan builds)"
 	@echo "make test: build trees hold $$(du -scm build build-asan build-fuzz build-gpiod2 build-vm 2>/dev/null | tail -1 | cut -f1) MiB"
 

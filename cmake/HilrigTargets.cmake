@@ -56,9 +56,11 @@ function(hilrig_library name)
   target_link_libraries(${name} PUBLIC hilrig_flags ${ARG_DEPS})
 endfunction()
 
-# hilrig_test(NAME SOURCES ... DEPS ...): one GoogleTest executable, tests discovered by ctest.
+# hilrig_test(NAME SOURCES ... DEPS ... [COST SECONDS]): one GoogleTest executable, tests
+# discovered by ctest. COST: about how long its slowest test takes under ASan, so that a clean
+# tree's ctest (no timings recorded yet) starts it first instead of leaving it for the tail.
 function(hilrig_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "" "COST" "SOURCES;DEPS" ${ARGN})
   if(NOT ARG_SOURCES)
     message(STATUS "hilrig: ${name} has no sources yet; not built")
     return()
@@ -71,7 +73,11 @@ function(hilrig_test name)
     HILRIG_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     HILRIG_BINARY_DIR="${PROJECT_BINARY_DIR}")
   include(GoogleTest)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
+  set(cost 0)
+  if(ARG_COST)
+    set(cost ${ARG_COST})
+  endif()
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300 COST ${cost})
 endfunction()
 
 # hilrig_bench(NAME SOURCES ... DEPS ...)
