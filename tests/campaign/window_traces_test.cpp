@@ -204,6 +204,38 @@ TEST(WindowTraces, ChecksCutTogetherAreEachCutAlone) {
                 "cut " + std::to_string(k));
 }
 
+// One recording made twice, spilled beyond 1,000 samples: an encoder lane and its count every
+// 1 us from 5 us to 3 ms, ls1 every 170 us and `other` every 10 us; `general` also has one
+// sample on `other` out of time order (a signal no lane shows), which sends it to the general
+// pass. `rich` adds an initial level, a count written twice at one time every 3 us and a real
+// lane every 40 us.
+void record_twice(TraceRecorder& ordered, TraceRecorder& general, bool rich) {
+  const auto record = [rich](TraceRecorder& trace, bool out_of_order) {
+    trace.spill_beyond(1'000);
+    const auto a = trace.declare("enc.A");
+    if (rich) trace.set_initial(a, 1);
+    const auto count = trace.declare("shaft.count", SignalKind::Integer, 64);
+    const auto out = trace.declare("ls1");
+    const auto sine = rich ? trace.declare("resolver.sin", SignalKind::Real, 64) : 0U;
+    const auto other = trace.declare("other");
+    Level level = Level::Low;
+    for (std::int64_t t = 5'000; t < 3'000'000; t += 1'000) {
+      level = level == Level::Low ? Level::High : Level::Low;
+      trace.edge(a, Edge{Nanos{t}, level});
+      trace.value(count, Nanos{t}, t / 1'000);
+      if (rich && t % 3'000 == 0) trace.value(count, Nanos{t}, t / 1'000 + 1); // twice at one time
+      if (rich && t % 40'000 == 0) trace.real(sine, Nanos{t}, std::sin(static_cast<double>(t) * 1e-6));
+      if (t % 170'000 == 0) trace.edge(out, Edge{Nanos{t}, level});
+      if (t % 10'000 == 0) trace.edge(other, Edge{Nanos{t}, level});
+    }
+    if (out_of_order) trace.edge(other, Edge{Nanos{2'000}, Level::High});
+  };
+  record(ordered, false);
+  record(general, true);
+  ASSERT_TRUE(ordered.in_time_order());
+  ASSERT_FALSE(general.in_time_order());
+}
+
 // A trace recorded in time order (a scheduler's) is cut by a pass that keeps each signal's
 // last sample once, not once a window, and drops a window once its span has ended: the same
 // cuts as the general pass, which the same samples and one more, out of time order on a
@@ -211,32 +243,9 @@ TEST(WindowTraces, ChecksCutTogetherAreEachCutAlone) {
 // ending on a sample's time, before every sample and after the last; samples at equal times;
 // a spilled recording read back.
 TEST(WindowTraces, ATraceInTimeOrderIsCutAsTheGeneralPassCutsIt) {
-  const auto record = [](TraceRecorder& trace, bool out_of_order) {
-    trace.spill_beyond(1'000);
-    const auto a = trace.declare("enc.A");
-    trace.set_initial(a, 1);
-    const auto count = trace.declare("shaft.count", SignalKind::Integer, 64);
-    const auto out = trace.declare("ls1");
-    const auto sine = trace.declare("resolver.sin", SignalKind::Real, 64);
-    const auto other = trace.declare("other");
-    Level level = Level::Low;
-    for (std::int64_t t = 5'000; t < 3'000'000; t += 1'000) {
-      level = level == Level::Low ? Level::High : Level::Low;
-      trace.edge(a, Edge{Nanos{t}, level});
-      trace.value(count, Nanos{t}, t / 1'000);
-      if (t % 3'000 == 0) trace.value(count, Nanos{t}, t / 1'000 + 1); // twice at one time
-      if (t % 40'000 == 0) trace.real(sine, Nanos{t}, std::sin(static_cast<double>(t) * 1e-6));
-      if (t % 170'000 == 0) trace.edge(out, Edge{Nanos{t}, level});
-      if (t % 10'000 == 0) trace.edge(other, Edge{Nanos{t}, level});
-    }
-    if (out_of_order) trace.edge(other, Edge{Nanos{2'000}, Level::High});
-  };
   TraceRecorder ordered;
-  record(ordered, false);
   TraceRecorder general;
-  record(general, true);
-  ASSERT_TRUE(ordered.in_time_order());
-  ASSERT_FALSE(general.in_time_order());
+  ASSERT_NO_FATAL_FAILURE(record_twice(ordered, general, true));
   ASSERT_GT(ordered.sample_count(), 1'000U); // spilled: read back from the file
   rig::CheckResult many = one_window(Nanos{200'000}, Nanos{1'200'000});
   for (const auto& [b, e] : std::vector<std::pair<std::int64_t, std::int64_t>>{
@@ -267,28 +276,9 @@ TEST(WindowTraces, ATraceInTimeOrderIsCutAsTheGeneralPassCutsIt) {
 // cuts. ls1 changes every 170 us, so its window at 1.21-1.24 ms (its last change before it at
 // 1.19 ms, the next at 1.36 ms, after the pass stopped) begins only in the loop after the pass.
 TEST(WindowTraces, APassThatStopsAfterTheLastWindowCutsAsTheGeneralPass) {
-  const auto record = [](TraceRecorder& trace, bool out_of_order) {
-    trace.spill_beyond(1'000);
-    const auto a = trace.declare("enc.A");
-    const auto count = trace.declare("shaft.count", SignalKind::Integer, 64);
-    const auto out = trace.declare("ls1");
-    const auto other = trace.declare("other");
-    Level level = Level::Low;
-    for (std::int64_t t = 5'000; t < 3'000'000; t += 1'000) {
-      level = level == Level::Low ? Level::High : Level::Low;
-      trace.edge(a, Edge{Nanos{t}, level});
-      trace.value(count, Nanos{t}, t / 1'000);
-      if (t % 170'000 == 0) trace.edge(out, Edge{Nanos{t}, level});
-      if (t % 10'000 == 0) trace.edge(other, Edge{Nanos{t}, level});
-    }
-    if (out_of_order) trace.edge(other, Edge{Nanos{2'000}, Level::High});
-  };
   TraceRecorder ordered;
-  record(ordered, false);
   TraceRecorder general;
-  record(general, true);
-  ASSERT_TRUE(ordered.in_time_order());
-  ASSERT_FALSE(general.in_time_order());
+  ASSERT_NO_FATAL_FAILURE(record_twice(ordered, general, false));
   rig::CheckResult early = one_window(Nanos{1'210'000}, Nanos{1'240'000});
   for (const auto& [b, e] : std::vector<std::pair<std::int64_t, std::int64_t>>{
            {200'000, 250'000}, {1'250'000, 1'250'000}, {0, 1'000}, {1'000'000, 1'189'000}})
