@@ -123,20 +123,41 @@ std::size_t MotionProfile::segment_index(Nanos t) const {
   return static_cast<std::size_t>(it - segments_.begin()) - 1;
 }
 
+// The last segment starting at or before t, as the binary search finds it: starts never
+// decrease, so segment i is it when it starts at or before t and the next starts after t.
+std::size_t MotionProfile::segment_index(Nanos t, std::size_t& hint) const {
+  const auto holds = [&](std::size_t i) {
+    return i < segments_.size() && segments_[i].start <= t &&
+           (i + 1 == segments_.size() || t < segments_[i + 1].start);
+  };
+  if (!holds(hint)) hint = holds(hint + 1) ? hint + 1 : segment_index(t);
+  return hint;
+}
+
 // Outside the profile the shaft stands still: before the start at the start position,
 // after the end at the end position (unless the last segment runs forever).
-double MotionProfile::position(Nanos t) const {
+double MotionProfile::position(Nanos t, std::size_t& hint) const {
   if (segments_.empty() || t < start_time()) return start_position_;
-  const Segment& s = segments_[segment_index(t)];
+  const Segment& s = segments_[segment_index(t, hint)];
   if (t >= s.end()) return s.end_position();
   return s.position_at(t);
 }
 
-double MotionProfile::velocity(Nanos t) const {
+double MotionProfile::velocity(Nanos t, std::size_t& hint) const {
   if (segments_.empty() || t < start_time()) return 0.0;
-  const Segment& s = segments_[segment_index(t)];
+  const Segment& s = segments_[segment_index(t, hint)];
   if (t >= s.end()) return 0.0;
   return s.velocity_at(t);
+}
+
+double MotionProfile::position(Nanos t) const {
+  std::size_t hint = 0;
+  return position(t, hint);
+}
+
+double MotionProfile::velocity(Nanos t) const {
+  std::size_t hint = 0;
+  return velocity(t, hint);
 }
 
 double MotionProfile::acceleration(Nanos t) const {

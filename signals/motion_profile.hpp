@@ -72,6 +72,13 @@ public:
   [[nodiscard]] double acceleration(Nanos t) const;
   // The segment index containing t (binary search).
   [[nodiscard]] std::size_t segment_index(Nanos t) const;
+  // The same values, the segment looked for first at `hint` and the one after it (then by
+  // binary search), and `hint` set to the segment found: a reader asking at nearby times (a
+  // check's scan and its bisections, over a plant's thousands of segments) finds it in a
+  // comparison or two. Any hint gives the same result.
+  [[nodiscard]] double position(Nanos t, std::size_t& hint) const;
+  [[nodiscard]] double velocity(Nanos t, std::size_t& hint) const;
+  [[nodiscard]] std::size_t segment_index(Nanos t, std::size_t& hint) const;
 
   // True when the profile ends at rest: |end velocity| within a relative 1e-9 of the
   // fastest speed seen (builders round durations to the nanosecond, so a stop leaves a

@@ -39,8 +39,10 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
     if (names_line(s, w.rig)) named.push_back(w.rig);
   c.lines = v.trace->edges_of(named);
   const signals::MotionProfile* profile = &v.profile;
-  c.position = [profile](Nanos t) { return profile->position(t); };
-  c.speed = [profile](Nanos t) { return profile->velocity(t); };
+  // Each keeps the segment it last read: a check reads at nearby times (a crossing scan and
+  // its bisections), and a plant's profile has a segment per integration step.
+  c.position = [profile, hint = std::size_t{0}](Nanos t) mutable { return profile->position(t, hint); };
+  c.speed = [profile, hint = std::size_t{0}](Nanos t) mutable { return profile->velocity(t, hint); };
   c.motion = v.motion;
   c.counts = v.counts;
   if (v.exact_motion) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -66,6 +67,36 @@ TEST(MotionProfile, SegmentIndexFindsTheSegmentContainingT) {
   EXPECT_EQ(p.segment_index(1_s), 1U); // a boundary belongs to the later segment
   EXPECT_EQ(p.segment_index(2999_ms), 1U);
   EXPECT_EQ(p.segment_index(3500_ms), 2U);
+}
+
+// The hinted reads are the binary search's, whatever the hint: every hint from the first
+// segment to past the last, at each boundary, a nanosecond either side of it, a midpoint,
+// before the start and after the end; and one hint carried forward, then back, through all.
+TEST(MotionProfile, HintedReadsEqualTheSearchForAnyHint) {
+  MotionProfile p(3.0, 2_ms);
+  for (int k = 1; k <= 12; ++k)
+    p.accelerate(k % 2 == 0 ? -0.5 * k : 1.0 * k, Nanos{1'000'000 + 7 * k}).cruise(Nanos{k});
+  const std::size_t n = p.segments().size();
+  std::vector<Nanos> times{0_ns, p.start_time() - Nanos{1}, p.end_time(), p.end_time() + 1_s};
+  for (const Segment& s : p.segments())
+    for (const Nanos t : {s.start - Nanos{1}, s.start, s.start + Nanos{1}, s.start + s.duration / 2})
+      times.push_back(t);
+  for (const Nanos t : times) {
+    for (std::size_t hint = 0; hint <= n + 1; ++hint) {
+      std::size_t h = hint;
+      EXPECT_EQ(p.segment_index(t, h), p.segment_index(t)) << "t " << t.count() << " hint " << hint;
+      EXPECT_EQ(h, p.segment_index(t));
+      h = hint;
+      EXPECT_EQ(p.position(t, h), p.position(t)) << "t " << t.count() << " hint " << hint;
+      h = hint;
+      EXPECT_EQ(p.velocity(t, h), p.velocity(t)) << "t " << t.count() << " hint " << hint;
+    }
+  }
+  std::size_t carried = 0;
+  std::sort(times.begin(), times.end());
+  for (const Nanos t : times) EXPECT_EQ(p.position(t, carried), p.position(t)) << "forward, t " << t.count();
+  for (auto t = times.rbegin(); t != times.rend(); ++t)
+    EXPECT_EQ(p.velocity(*t, carried), p.velocity(*t)) << "back, t " << t->count();
 }
 
 TEST(MotionProfile, RejectsDwellWhileMovingAndBrokenSegments) {
