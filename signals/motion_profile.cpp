@@ -150,6 +150,30 @@ double MotionProfile::velocity(Nanos t, std::size_t& hint) const {
   return s.velocity_at(t);
 }
 
+// A dwell's closed form is its start position exactly (p + (0 + 0.5 * 0 * dt) * dt == p), so a
+// run of dwells at one position, the start held and the end held are each one value.
+Nanos MotionProfile::held_until(Nanos t, std::size_t& hint) const {
+  if (segments_.empty()) return Nanos::max();
+  const Segment& last = segments_.back();
+  if (last.duration != Nanos::max() && t >= last.end()) return Nanos::max();
+  Nanos held = t;
+  double p = start_position_;
+  std::size_t i = 0;
+  if (t < start_time()) {
+    held = start_time() - Nanos{1};
+  } else {
+    i = segment_index(t, hint);
+    p = segments_[i].position;
+  }
+  for (; i < segments_.size(); ++i) {
+    const Segment& s = segments_[i];
+    if (s.velocity != 0.0 || s.acceleration != 0.0 || s.position != p) return held;
+    if (s.duration == Nanos::max()) return Nanos::max();
+    held = s.end() - Nanos{1};
+  }
+  return last.end_position() == p ? Nanos::max() : held;
+}
+
 double MotionProfile::position(Nanos t) const {
   std::size_t hint = 0;
   return position(t, hint);

@@ -79,6 +79,11 @@ public:
   [[nodiscard]] double position(Nanos t, std::size_t& hint) const;
   [[nodiscard]] double velocity(Nanos t, std::size_t& hint) const;
   [[nodiscard]] std::size_t segment_index(Nanos t, std::size_t& hint) const;
+  // The last instant through which position() stays exactly position(t): the end of the
+  // standstill t is in (dwells at one position, the start held before the first segment, the
+  // end held after the last), Nanos::max() when it lasts for good, t itself when the shaft
+  // moves. A reader sampling the position on a grid steps over a standstill in one go.
+  [[nodiscard]] Nanos held_until(Nanos t, std::size_t& hint) const;
 
   // True when the profile ends at rest: |end velocity| within a relative 1e-9 of the
   // fastest speed seen (builders round durations to the nanosecond, so a stop leaves a

@@ -43,6 +43,7 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
   // its bisections), and a plant's profile has a segment per integration step.
   c.position = [profile, hint = std::size_t{0}](Nanos t) mutable { return profile->position(t, hint); };
   c.speed = [profile, hint = std::size_t{0}](Nanos t) mutable { return profile->velocity(t, hint); };
+  c.held = [profile, hint = std::size_t{0}](Nanos t) mutable { return profile->held_until(t, hint); };
   c.motion = v.motion;
   c.counts = v.counts;
   if (v.exact_motion) {

@@ -36,14 +36,25 @@ std::vector<double> levels_between(double setpoint, double modulus, double lo, d
 } // namespace
 
 std::vector<Nanos> find_crossings(const PositionFn& position, double setpoint, Nanos from, Nanos to,
-                                  Nanos step, Direction direction, double modulus) {
+                                  Nanos step, Direction direction, double modulus, const HeldFn& held) {
   if (step <= Nanos{0}) throw std::invalid_argument("find_crossings: step must be positive");
   std::vector<Nanos> out;
   const bool want_rising = direction != Direction::Falling;
   const bool want_falling = direction != Direction::Rising;
   Nanos a = from;
   double pa = position(a);
+  bool unchanged = false; // the last step's two samples were equal: a standstill may have begun
   while (a < to) {
+    if (held && unchanged) {
+      // The grid's samples up to the end of the standstill all equal pa: the scan goes on from
+      // the last of them (on the grid, not past `to`).
+      unchanged = false;
+      const Nanos still = std::min(held(a), to);
+      if (still - a >= step) {
+        a += step * ((still - a) / step);
+        continue;
+      }
+    }
     const Nanos b = std::min(a + step, to);
     const double pb = position(b);
     for (const double level : levels_between(setpoint, modulus, std::min(pa, pb), std::max(pa, pb))) {
@@ -52,6 +63,7 @@ std::vector<Nanos> find_crossings(const PositionFn& position, double setpoint, N
       if (want_falling && pa > level && pb <= level)
         out.push_back(first_true(a, b, [&](Nanos t) { return position(t) <= level; }));
     }
+    unchanged = pb == pa;
     a = b;
     pa = pb;
   }

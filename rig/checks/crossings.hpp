@@ -17,8 +17,11 @@ enum class Direction { Rising, Falling, Both };
 // be missed: choose step shorter than the shortest dwell on either side of the setpoint.
 // With a modulus > 0 (a board's full-scale count, a shaft that keeps turning) the setpoint
 // is on the circle: every setpoint + k * modulus is crossed. Returned in time order.
+// With `held` (how long the position holds still from a time), the samples of a standstill are
+// not taken one by one: they all equal the one before it, so no crossing lies between them, and
+// the result is the same as without it.
 [[nodiscard]] std::vector<Nanos> find_crossings(const PositionFn& position, double setpoint, Nanos from,
                                                 Nanos to, Nanos step, Direction direction = Direction::Both,
-                                                double modulus = 0.0);
+                                                double modulus = 0.0, const HeldFn& held = {});
 
 } // namespace hilrig::checks

@@ -477,7 +477,7 @@ CheckResult run(const ThroughputParams& p, const Capture& c) {
   } else {
     const auto& s = std::get<CrossingScan>(p.crossings);
     crossings = find_crossings(position_fn(c), s.setpoint, s.from.value_or(c.begin), s.to.value_or(c.end),
-                               s.step, s.direction, s.modulus);
+                               s.step, s.direction, s.modulus, c.held);
   }
   CheckResult r = check_throughput(crossings, line(c, p.output), p.spec);
   if (p.phase)

@@ -23,8 +23,11 @@ namespace hilrig::checks {
 // What one run captured, as plain data the executive fills from its trace.
 struct Capture {
   std::map<std::string, std::vector<Edge>, std::less<>> lines; // every captured line, by trace name
-  PositionFn position;                  // stimulus position, counts (e.g. the motion profile)
-  PositionFn speed;                     // counts/s
+  PositionFn position; // stimulus position, counts (e.g. the motion profile)
+  PositionFn speed;    // counts/s
+  // When the rig knows the trajectory (virtual time): how long `position` holds still from a
+  // time, so a crossing scan steps over a standstill (empty: sample every step).
+  HeldFn held{};
   std::vector<PositionSample> motion{}; // the shaft's position trace (brake checks)
   // The encoder count's changes as the board saw them (append_motion-compacted; brake report
   // window). Empty: `motion` is the count changes.

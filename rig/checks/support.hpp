@@ -20,6 +20,9 @@ using rig::CheckResult;
 
 // Position of the stimulus (counts) as a function of time, e.g. MotionProfile::position.
 using PositionFn = std::function<double(Nanos)>;
+// The last instant through which a PositionFn stays exactly what it is at t (t itself when it
+// moves), e.g. MotionProfile::held_until.
+using HeldFn = std::function<Nanos(Nanos)>;
 
 // Nearest-rank percentile (p in (0, 100]) of sorted values: the smallest sample with at least
 // p% of the samples at or below it. Always an observed value, so its trace window exists.

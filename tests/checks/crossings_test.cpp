@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cstddef>
+#include <vector>
+
 #include "rig/checks/crossings.hpp"
 
 namespace hilrig::checks {
@@ -50,6 +53,56 @@ TEST(Crossings, WithAModulusEveryTurnCrossesTheSetpoint) {
   EXPECT_EQ(f[0], 6_ms);
   EXPECT_EQ(f[1], 16_ms);
   EXPECT_EQ(f[2], 26_ms);
+}
+
+// Up 1 count/ms to 2 counts at 2 ms, standing at exactly 2 until 7 ms, up to 4 at 9 ms,
+// standing at 4 until 109 ms, then down 1 count/ms. held() tells where each standstill ends.
+double stands(Nanos t) {
+  const double ms = static_cast<double>(t.count()) / 1e6;
+  if (t < 2_ms) return ms;
+  if (t < 7_ms) return 2.0;
+  if (t < 9_ms) return 2.0 + (ms - 7.0);
+  if (t < 109_ms) return 4.0;
+  return 4.0 - (ms - 109.0);
+}
+Nanos stands_held(Nanos t) {
+  if (t >= 2_ms && t < 7_ms) return 7_ms - 1_ns;
+  if (t >= 9_ms && t < 109_ms) return 109_ms - 1_ns;
+  return t;
+}
+
+// Stepping over a standstill finds what sampling every step finds: levels at a standstill
+// (2, 4), a hair either side of them (a crossing right where a standstill begins or ends),
+// between them, and on a circle; every direction; steps that do and do not divide the
+// standstills.
+TEST(Crossings, HeldStandstillsGiveTheSameCrossingsAsEveryStep) {
+  for (const double level : {2.0, 2.0 + 1e-9, 2.0 - 1e-9, 4.0, 4.0 + 1e-9, 4.0 - 1e-9, 3.0, 0.5}) {
+    for (const Direction d : {Direction::Rising, Direction::Falling, Direction::Both}) {
+      for (const Nanos step : {1_ms, 300_us, 7_us}) {
+        for (const double modulus : {0.0, 1.5}) {
+          const auto every = find_crossings(stands, level, 0_ms, 115_ms, step, d, modulus);
+          const auto held = find_crossings(stands, level, 0_ms, 115_ms, step, d, modulus, stands_held);
+          EXPECT_EQ(held, every) << "level " << level << " step " << step.count() << " modulus " << modulus;
+        }
+      }
+    }
+  }
+  // The scan does find crossings here (the comparison above is not of empty lists).
+  EXPECT_EQ(find_crossings(stands, 3.0, 0_ms, 115_ms, 7_us, Direction::Both, 0.0, stands_held),
+            (std::vector<Nanos>{8_ms, 110_ms}));
+}
+
+// A standstill costs the scan a few reads, however long: 1,000 s at a 10 us step would be
+// 10^8 samples.
+TEST(Crossings, AHeldStandstillIsSteppedOverInOneGo) {
+  std::size_t reads = 0;
+  const auto still = [&](Nanos) {
+    ++reads;
+    return 7.0;
+  };
+  const auto forever = [](Nanos) { return Nanos::max(); };
+  EXPECT_TRUE(find_crossings(still, 7.5, 0_ms, 1000_s, 10_us, Direction::Both, 0.0, forever).empty());
+  EXPECT_LE(reads, 3U);
 }
 
 } // namespace

@@ -99,6 +99,36 @@ TEST(MotionProfile, HintedReadsEqualTheSearchForAnyHint) {
     EXPECT_EQ(p.velocity(*t, carried), p.velocity(*t)) << "back, t " << t->count();
 }
 
+// The start held until 1 s, a dwell to 3 s, a move 3..6 s (up 1 count/s², cruise, down to
+// speed 0 exactly), two dwells to 8 s and the end held: held_until() gives each standstill's
+// last instant, and the position is the same through it.
+TEST(MotionProfile, HeldUntilTheEndOfEachStandstill) {
+  MotionProfile p(5.0, 1_s);
+  p.dwell(2_s).accelerate(1.0, 1_s).cruise(1_s).accelerate(-1.0, 1_s).dwell(1_s).dwell(1_s);
+  std::size_t hint = 0;
+  EXPECT_EQ(p.held_until(0_s, hint), 3_s - 1_ns);
+  EXPECT_EQ(p.held_until(1_s, hint), 3_s - 1_ns);
+  EXPECT_EQ(p.held_until(3_s - 1_ns, hint), 3_s - 1_ns);
+  EXPECT_EQ(p.held_until(3_s, hint), 3_s); // the move begins
+  EXPECT_EQ(p.held_until(4500_ms, hint), 4500_ms);
+  EXPECT_EQ(p.held_until(6_s - 1_ns, hint), 6_s - 1_ns);
+  EXPECT_EQ(p.held_until(6_s, hint), Nanos::max()); // 2 dwells, then the end held for good
+  EXPECT_EQ(p.held_until(20_s, hint), Nanos::max());
+  for (const Nanos t : {0_s, 1_s, 2_s, 6_s, 7_s + 1_ns}) {
+    const Nanos held = p.held_until(t, hint);
+    const Nanos last = held == Nanos::max() ? 100_s : held;
+    for (const Nanos u : {t + 1_ns, t + (last - t) / 2, last})
+      EXPECT_EQ(p.position(u), p.position(t)) << "t " << t.count() << " u " << u.count();
+  }
+  // A profile that ends moving holds its end position after its end; one that starts moving
+  // holds nothing at its start; no segment at all holds for good.
+  MotionProfile moving(0.0, 0_s);
+  moving.accelerate(2.0, 1_s);
+  EXPECT_EQ(moving.held_until(0_s, hint), 0_s);
+  EXPECT_EQ(moving.held_until(1_s, hint), Nanos::max());
+  EXPECT_EQ(MotionProfile(3.0, 1_s).held_until(0_s, hint), Nanos::max());
+}
+
 TEST(MotionProfile, RejectsDwellWhileMovingAndBrokenSegments) {
   MotionProfile p;
   p.accelerate(1.0, 1_s);
