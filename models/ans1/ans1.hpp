@@ -171,7 +171,7 @@ private:
   [[nodiscard]] ScanSnapshot snapshot() const;
   // The earliest time at which a scan with unchanged inputs can change the state: the one
   // place every time-driven behaviour declares itself.
-  [[nodiscard]] Nanos next_change() const;
+  [[nodiscard]] Nanos next_change(bool idle_ticks_recorded) const;
   // The first scan of the period grid at or after t (max for max).
   [[nodiscard]] Nanos grid_at_or_after(Nanos t) const;
   // Schedules the next scan of the grid if it is earlier than the pending one.

@@ -76,6 +76,11 @@ public:
   [[nodiscard]] const BrakeStatus& status() const { return status_; }
   [[nodiscard]] Phase phase() const { return phase_; }
   [[nodiscard]] bool released() const { return released_; }
+  // A tick of a monitor that is set up, primed, with no cycle running and its input at the
+  // level the last tick saw finds no edge: it only records the position history.
+  [[nodiscard]] bool tick_records_only(bool released) const {
+    return setup_.input == 0 || (primed_ && phase_ == Phase::Idle && released == released_);
+  }
   [[nodiscard]] bool start_fault() const { return start_fault_; }
   [[nodiscard]] bool stop_fault() const { return stop_fault_; }
 

@@ -53,8 +53,9 @@ void Monitors::scan(Nanos now, const MonitorInputs& in) {
   }
 }
 
-Nanos Monitors::next_change() const {
-  const Nanos brake = brake_.setup().input != 0 ? std::min(next_tick_, brake_.next_sample()) : Nanos::max();
+Nanos Monitors::next_change(bool idle_ticks_recorded) const {
+  const bool deadlines = brake_.setup().input != 0 && !(idle_ticks_recorded && brake_ticks_idle());
+  const Nanos brake = deadlines ? std::min(next_tick_, brake_.next_sample()) : Nanos::max();
   return std::min(brake, die_.next_change());
 }
 

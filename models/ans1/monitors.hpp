@@ -43,7 +43,7 @@ public:
 
   // Exact scan skipping while the encoder moves (quiet_interval.hpp): where a scan's die
   // windows or part-cycle mark make a difference, and the position a skipped scan would have
-  // left (the brake monitor's ticks are deadlines of next_change(), never skipped).
+  // left (the brake monitor's ticks that can find an edge are deadlines of next_change()).
   void keep_quiet(QuietInterval& quiet, std::uint16_t gmp) const {
     die_.keep_quiet(quiet, gmp);
     counters_.keep_quiet(quiet, gmp);
@@ -52,14 +52,14 @@ public:
     if (started_) gmp_ = gmp;
     counters_.settle(gmp);
   }
-  // The next 1 ms tick of an unused brake monitor, which only records the position history
-  // (max once the monitor is set up: its ticks are next_change() deadlines, or before the
-  // first scan). idle_tick() records it with the position a scan at its grid point read.
-  [[nodiscard]] Nanos next_idle_tick() const {
-    return started_ && brake_.setup().input == 0 ? next_tick_ : Nanos::max();
-  }
+  // The next 1 ms tick that only records the position history: an unused brake monitor's, or
+  // an idle one's whose input is as the last scan read it (BrakeMonitor::tick_records_only);
+  // max otherwise (its ticks are next_change() deadlines) and before the first scan.
+  // idle_tick() records it with the position a scan at its grid point read: a caller that
+  // records every idle tick before a scan reads an input that changed (Ans1::settle_position).
+  [[nodiscard]] Nanos next_idle_tick() const { return brake_ticks_idle() ? next_tick_ : Nanos::max(); }
   void idle_tick(std::int64_t pos4096) {
-    brake_.tick(next_tick_, false, pos4096, gmp_);
+    brake_.tick(next_tick_, brake_.released(), pos4096, gmp_);
     next_tick_ += BrakeMonitor::kTick;
   }
   // `copy` is a copy of this that ran scan(): it left everything as it was. scan() never
@@ -72,10 +72,12 @@ public:
   }
   [[nodiscard]] OutputClaims claims() const;
   // The earliest time at which scan() with unchanged inputs can change what the monitors
-  // report: a brake monitor tick while one is set up, a die-protection level qualifying.
+  // report: a brake monitor's tick or debounce sample while one is set up (not an idle tick
+  // when `idle_ticks_recorded`), a die-protection level qualifying.
   // Ticks of an unused brake monitor only record position history, which nothing reads
-  // before the monitor is set up, so they are caught up at the next scan.
-  [[nodiscard]] Nanos next_change() const;
+  // before the monitor is set up, so they are caught up at the next scan. An idle set-up
+  // monitor's ticks are deadlines unless `idle_ticks_recorded` (next_idle_tick()).
+  [[nodiscard]] Nanos next_change(bool idle_ticks_recorded) const;
   [[nodiscard]] const MonitorSetup& setup() const { return setup_; }
   [[nodiscard]] const BrakeMonitor& brake() const { return brake_; }
   [[nodiscard]] const DieProtection& die() const { return die_; }
@@ -90,6 +92,11 @@ public:
   }
 
 private:
+  [[nodiscard]] bool brake_ticks_idle() const {
+    const int input = brake_.setup().input;
+    return started_ && brake_.tick_records_only(input != 0 && (inputs_ & (1U << (input - 1))) != 0);
+  }
+
   MonitorSetup setup_{};
   BrakeMonitor brake_;
   DieProtection die_;

@@ -53,8 +53,8 @@ Ans1::ScanSnapshot Ans1::snapshot() const {
   };
 }
 
-Nanos Ans1::next_change() const {
-  Nanos next = monitors_.next_change();
+Nanos Ans1::next_change(bool idle_ticks_recorded) const {
+  Nanos next = monitors_.next_change(idle_ticks_recorded);
   for (const OutputChannel& channel : channels_) {
     next = std::min(next, channel.next_change());
   }
@@ -153,7 +153,7 @@ void Ans1::run_scan() {
       quiet_armed_ = true;
       edge_grid_ = now;
       count_at_edge_grid_ = transducer_count();
-      next = grid_at_or_after(next_change());
+      next = grid_at_or_after(next_change(true)); // quiet_armed_: settle_position records them
       if (walking_peaks_) {
         walk_peaks(revision_expected());
       } else {
@@ -161,7 +161,7 @@ void Ans1::run_scan() {
       }
     }
   } else if (before && !changed_outside_ && *before == snapshot()) {
-    next = grid_at_or_after(next_change()); // asleep until then, or until wake()
+    next = grid_at_or_after(next_change(false)); // asleep until then, or until wake()
   }
   if (next != Nanos::max()) {
     schedule_scan(next);

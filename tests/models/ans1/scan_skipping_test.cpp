@@ -75,5 +75,60 @@ TEST(ScanSkipping, AResolverIsReadAtEveryExcitationPeakEvenAtStandstill) {
   EXPECT_EQ(oracle.device().resolver_fault(), skipping.device().resolver_fault());
 }
 
+// The brake monitor (spec §4.0, manual L1030-L1056) runs on a 1 ms tick. While no cycle runs
+// and its input stays as the last tick saw it, a tick only records the position history, so the
+// skipping scan sleeps through it and records it later with the count at its grid point. Brake
+// edges a hair before, at and after a tick and its scan, motion while idle (the history the
+// 125 ms stop window reads), a start, a stop and a rejected application: the same status,
+// faults and outputs as scanning every period, at every 10 us.
+TEST(ScanSkipping, AnIdleBrakeMonitorsTicksAreSkippedAndRecordedAsEveryPeriod) {
+  MonitorSetup setup;
+  setup.brake = BrakeSetup{2, 10, 40, 5, 90, 6}; // input 2, CSC 10, start 40 ms -> OUT5, stop 90 ms -> OUT6
+  for (const Nanos d : {-1_us, 0_us, 3_us, 10_us}) {
+    SCOPED_TRACE(d.count());
+    Bench oracle(every_period());
+    Bench skipping;
+    for (Bench* b : {&oracle, &skipping}) {
+      use_encoder(*b);
+      b->device().configure_monitors(setup);
+      b->quadrature_run(5_ms, 70_us, 40, +1);   // history while idle
+      b->input_at(20_ms + d, 2, true);          // released: a start
+      b->quadrature_run(30_ms, 100_us, 30, +1); // 30 counts > 2 * CSC: the start ends
+      b->input_at(80_ms + d, 2, false);         // applied: debounced, then a stop
+      b->quadrature_run(85_ms, 300_us, 12, +1); // coasting to a stop
+      b->input_at(400_ms + d, 2, true);         // released, never moves: start overrun
+      b->input_at(470_ms + d, 2, false);        // applied
+      b->input_at(480_ms + d, 2, true);         // released again during the debounce: noise
+      b->input_at(520_ms + d, 2, false);        // applied for good
+      b->quadrature_run(600_ms, 50_us, 25, -1); // idle motion again
+    }
+    for (Nanos t = 0_ms; t <= 800_ms; t += 10_us) {
+      oracle.run_until(t);
+      skipping.run_until(t);
+      const BrakeMonitor& a = oracle.device().monitors().brake();
+      const BrakeMonitor& b = skipping.device().monitors().brake();
+      ASSERT_EQ(a.status(), b.status()) << t.count();
+      ASSERT_EQ(a.phase(), b.phase()) << t.count();
+      ASSERT_EQ(a.start_fault(), b.start_fault()) << t.count();
+      ASSERT_EQ(a.stop_fault(), b.stop_fault()) << t.count();
+      ASSERT_EQ(oracle.device().output_states(), skipping.device().output_states()) << t.count();
+    }
+    // The cycles did happen: a start, a stop, a rejected application, an overrun.
+    const BrakeStatus& st = skipping.device().monitors().brake().status();
+    EXPECT_EQ(st.completed_starts, 1U);
+    EXPECT_GE(st.completed_stops, 1U);
+    EXPECT_EQ(st.noise_rejections, 1U);
+    EXPECT_TRUE(skipping.device().monitors().brake().start_fault());
+    // Idle and standing still, once the last stop is measured and the speed filter (S = k S
+    // every 14.6 ms, spec §4.2) has decayed to 0 exactly (~1,600 updates: each change wakes a
+    // scan): no brake tick wakes the scan, where each of the 60,000 did.
+    skipping.run_until(40_s);
+    ASSERT_EQ(skipping.device().monitors().brake().phase(), BrakeMonitor::Phase::Idle);
+    const std::uint64_t at_40s = skipping.device().scans();
+    skipping.run_until(100_s);
+    EXPECT_LE(skipping.device().scans() - at_40s, 2U);
+  }
+}
+
 } // namespace
 } // namespace hilrig::models::ans1
