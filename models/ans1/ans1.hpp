@@ -245,6 +245,14 @@ private:
   [[nodiscard]] ResolverTrack track_at(Nanos g) const;
   [[nodiscard]] Nanos peak_at_or_before(Nanos t) const;
   void speed_update();
+  struct SpeedAsScanned {
+    int sign = 0;
+    std::int16_t reported = 0;
+    bool clamped = false;
+    std::array<AdvanceCounts, kOutputCount> advances{};
+    friend bool operator==(const SpeedAsScanned&, const SpeedAsScanned&) = default;
+  };
+  [[nodiscard]] SpeedAsScanned speed_as_scanned() const;
   void sample_resolver(Nanos now);
   void read_inputs();
   void queue_outputs(Nanos now, std::uint16_t levels);
