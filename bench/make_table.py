@@ -205,6 +205,12 @@ def main():
         row(f"{fig}. plant campaign, {pathlib.Path(rel).name} ({sim:g} s simulated in {runs} runs, exit {status})",
             f"{sim:g} s in {cpu:.2f} CPU s" if cpu is not None else "n/a", "real time (1 s per s)", sp,
             "(simulated s per CPU s, for reading)", None)
+    # 4e. standstill: a 10x longer standstill should cost ~nothing (issue 20)
+    c1, c10 = cpu_seconds(work / "time-suite-x1.txt"), cpu_seconds(work / "time-suite-x10.txt")
+    sr = ratio(c10, c1)
+    row("4e. standstill: the shipped suite with every campaign.end 10x (motion as shipped) vs as shipped, CPU s",
+        f"{c10:.2f} CPU s (end 10x)" if c10 is not None else "n/a", f"{c1:.2f} CPU s (1x)" if c1 is not None else "n/a",
+        sr, "<= 1.1 (~nothing)", None if sr is None else sr <= 1.1)
     rr = ratio(rss10, rss1)
     row("5. peak RSS (maxresident), 10x longer vs 1x", f"{rss10 / 1024:.1f} MiB (10x)",
         f"{rss1 / 1024:.1f} MiB (1x)", rr, "<= 1.2 (no growth)", None if rr is None else rr <= 1.2)

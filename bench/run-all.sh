@@ -108,6 +108,21 @@ for v in ans1/ans1_press_plant smd23e/smd23e_load_too_fast; do
     2>"$WORK/time-$name.txt" || echo "$?" >"$WORK/exit-$name"
 done
 
+# --- 4e. standstill: the shipped suite with every campaign.end 10x, the motion as shipped ----
+# (the shaft then stands still), against the suite as shipped: one process each, CPU s.
+# The RT VM lane's campaigns (campaigns/lane) need the lane's kernel devices: not here.
+for v in x1 x10; do
+  rm -rf "$WORK/suite-$v" && mkdir -p "$WORK/suite-$v"
+  for c in "$ROOT"/campaigns/*/*.toml; do
+    [[ $c == */campaigns/lane/* ]] && continue
+    d=$WORK/suite-$v/$(basename "$(dirname "$c")") && mkdir -p "$d"
+    if [[ $v == x1 ]]; then cp "$c" "$d/"; else python3 "$ROOT/bench/lengthen_campaign.py" --standstill "$c" 10 >"$d/$(basename "$c")"; fi
+  done
+  say "suite, campaign.end $v (standstill after the motion)"
+  /usr/bin/time -v "$HILRIG" run "$WORK/suite-$v" --out "$WORK/out-suite-$v" >"$WORK/run-suite-$v.txt" \
+    2>"$WORK/time-suite-$v.txt" || echo "$?" >"$WORK/exit-suite-$v"
+done
+
 # --- 6a./6b. CAN frames and GPIO edges: SocketCAN and gpio-sim exist only in the RT VM lane --
 # rt-config/vm/payload-bench.sh runs bench_can_frames next to cangen -> candump on vcan0 and
 # bench_gpio_edges (gpiod backend vs bare libgpiod) on a gpio-sim line, inside the guest.
