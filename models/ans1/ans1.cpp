@@ -501,15 +501,15 @@ ScanState Ans1::scan_state(Nanos now) const {
 // ---------------------------------------------------------------- speed
 
 // What a scan reads of the speed: its sign (edge_shift), its rounded RPM (DA16 w2, the RPM
-// window) and the advances and clamp it sets. A scan that reads the same of it does the same,
-// so the filter's tail after a stop (S = k S each update, ~1,600 of them before S sticks at the
-// least subnormal, at a reported 0 RPM and advances of 0 counts) wakes no scan.
+// window) and the advances it sets (their clamps make status bit 7). A scan that reads the same
+// of it does the same, so the filter's tail after a stop (S = k S each update, ~1,600 of them
+// before S sticks at the least subnormal, at a reported 0 RPM and advances of 0 counts) wakes
+// no scan.
 auto Ans1::speed_as_scanned() const -> SpeedAsScanned {
   SpeedAsScanned seen;
   const double s = speed_.value();
   seen.sign = s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
   seen.reported = speed_.reported();
-  seen.clamped = rpm_clamped_;
   for (std::size_t i = 0; i < channels_.size(); ++i) seen.advances[i] = channels_[i].advances();
   return seen;
 }

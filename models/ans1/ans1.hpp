@@ -248,7 +248,6 @@ private:
   struct SpeedAsScanned {
     int sign = 0;
     std::int16_t reported = 0;
-    bool clamped = false;
     std::array<AdvanceCounts, kOutputCount> advances{};
     friend bool operator==(const SpeedAsScanned&, const SpeedAsScanned&) = default;
   };

@@ -18,6 +18,11 @@ void Monitors::configure(const MonitorSetup& setup, std::uint16_t full_scale_cou
   counters_.configure(setup.production, full_scale_count);
 }
 
+bool Monitors::brake_ticks_idle() const {
+  const int input = brake_.setup().input;
+  return started_ && brake_.tick_records_only(input != 0 && (inputs_ & bit(input)) != 0);
+}
+
 void Monitors::scan(Nanos now, const MonitorInputs& in) {
   if (started_) {
     const auto changed = static_cast<std::uint16_t>(in.inputs ^ inputs_);

@@ -92,10 +92,7 @@ public:
   }
 
 private:
-  [[nodiscard]] bool brake_ticks_idle() const {
-    const int input = brake_.setup().input;
-    return started_ && brake_.tick_records_only(input != 0 && (inputs_ & (1U << (input - 1))) != 0);
-  }
+  [[nodiscard]] bool brake_ticks_idle() const;
 
   MonitorSetup setup_{};
   BrakeMonitor brake_;
