@@ -67,6 +67,9 @@ function(hilrig_test name)
   endif()
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE hilrig_flags ${ARG_DEPS} GTest::gtest GTest::gtest_main GTest::gmock)
+  if(HILRIG_UNITY_TESTS)
+    set_target_properties(${name} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${HILRIG_UNITY_TEST_BATCH})
+  endif()
   # Project root and shared/ (the spec digests) are visible to tests as compile-time paths,
   # never hard-coded machine paths.
   target_compile_definitions(${name} PRIVATE

@@ -30,6 +30,7 @@
 #include "rig/campaign/modbus_host_link.hpp"
 #include "rig/cli/run_command.hpp"
 #include "rig/results/results_json.hpp"
+#include "tests/tools/scratch_files.hpp"
 #include "vcd_last_values.hpp"
 
 namespace hilrig::campaign {
@@ -50,13 +51,6 @@ fs::path scratch(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 int run(cli::RunOptions o, const fs::path& out, std::string* err_text = nullptr) {
@@ -88,14 +82,16 @@ TEST(HostLink, ModbusRtuOverAPtyGivesTheSameResultsAsInProcess) {
   // Byte for byte (the start time pinned by --epoch, the host this machine in both) but for
   // the link each names (traceability).
   const auto without_host_link = [](const fs::path& file) {
-    nlohmann::json j = nlohmann::json::parse(slurp(file));
+    nlohmann::json j = nlohmann::json::parse(hilrig::test::read_file(file));
     j.erase("host_link");
     return j.dump();
   };
-  EXPECT_EQ(nlohmann::json::parse(slurp(in_process / "results.json"))["host_link"], "in-process");
-  EXPECT_EQ(nlohmann::json::parse(slurp(modbus / "results.json"))["host_link"], "modbus-rtu-pty");
+  EXPECT_EQ(nlohmann::json::parse(hilrig::test::read_file(in_process / "results.json"))["host_link"],
+            "in-process");
+  EXPECT_EQ(nlohmann::json::parse(hilrig::test::read_file(modbus / "results.json"))["host_link"],
+            "modbus-rtu-pty");
   EXPECT_EQ(without_host_link(in_process / "results.json"), without_host_link(modbus / "results.json"));
-  EXPECT_EQ(slurp(in_process / "trace.vcd"), slurp(modbus / "trace.vcd"));
+  EXPECT_EQ(hilrig::test::read_file(in_process / "trace.vcd"), hilrig::test::read_file(modbus / "trace.vcd"));
   // And they are the right results: the counts the campaign derives from the manual, read
   // over the link (part cycles floor(10 * 3 / 2) = 15, ten revolutions).
   const rig::CampaignResult r = rig::read_results_file(modbus / "results.json");

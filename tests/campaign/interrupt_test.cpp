@@ -23,6 +23,7 @@
 
 #include "../results/json_schema_subset.hpp"
 #include "rig/results/results_json.hpp"
+#include "tests/tools/scratch_files.hpp"
 #include "vcd_last_values.hpp"
 
 extern char** environ;
@@ -79,13 +80,6 @@ name = "revolutions"
 observation = "revolutions"
 value = 983
 )";
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Starts `hilrig run FILE --out DIR --progress` with stderr on a pipe.
 struct Hilrig {
@@ -161,9 +155,9 @@ TEST(Interrupt, SigtermLeavesEveryOutputInactiveAndAReadablePartialReport) {
   EXPECT_NE(said.find("interrupted by SIGTERM"), std::string::npos) << said;
 
   // results.json: valid against the published schema, naming the interruption.
-  const nlohmann::json results = nlohmann::json::parse(slurp(out / "results.json"));
-  const nlohmann::json schema =
-      nlohmann::json::parse(slurp(fs::path(HILRIG_SOURCE_DIR) / "docs" / "results.schema.json"));
+  const nlohmann::json results = nlohmann::json::parse(hilrig::test::read_file(out / "results.json"));
+  const nlohmann::json schema = nlohmann::json::parse(
+      hilrig::test::read_file(fs::path(HILRIG_SOURCE_DIR) / "docs" / "results.schema.json"));
   const std::vector<std::string> problems = rig::test::validate_json_schema(schema, results);
   EXPECT_TRUE(problems.empty()) << problems.front();
   EXPECT_EQ(results.at("interrupted"), "SIGTERM");
@@ -175,8 +169,8 @@ TEST(Interrupt, SigtermLeavesEveryOutputInactiveAndAReadablePartialReport) {
   EXPECT_EQ(run.at("error").get<std::string>().rfind("interrupted by SIGTERM at ", 0), 0U) << run.at("error");
   EXPECT_EQ(rig::read_results_file(out / "results.json").interrupted.value_or(""), "SIGTERM");
 
-  EXPECT_NE(slurp(out / "report.html").find("Interrupted by SIGTERM"), std::string::npos);
-  EXPECT_NE(slurp(out / "junit.xml").find("interrupted by SIGTERM"), std::string::npos);
+  EXPECT_NE(hilrig::test::read_file(out / "report.html").find("Interrupted by SIGTERM"), std::string::npos);
+  EXPECT_NE(hilrig::test::read_file(out / "junit.xml").find("interrupted by SIGTERM"), std::string::npos);
   for (const char* f : {"results.json.tmp", "trace.vcd.tmp"}) EXPECT_FALSE(fs::exists(out / f)) << f;
 
   // Every line the rig drives ends at its inactive level (low) in the trace.
@@ -215,15 +209,15 @@ TEST(Interrupt, SigkillAfterARunLeavesTheRunsDoneReadable) {
   const int status = hilrig.wait();
   ASSERT_TRUE(WIFSIGNALED(status));
   EXPECT_FALSE(fs::exists(out / "results.json")); // written at the end only
-  const std::string log = slurp(out / "runs.jsonl");
+  const std::string log = hilrig::test::read_file(out / "runs.jsonl");
   EXPECT_EQ(std::count(log.begin(), log.end(), '\n'), 2); // the header and run 0's record
 
   const std::string merge = std::string(HILRIG_EXE) + " merge " + (out / "results.json").string() + " " +
                             (out / "runs.jsonl").string() + " >/dev/null";
   ASSERT_EQ(std::system(merge.c_str()), 0) << merge;
-  const nlohmann::json results = nlohmann::json::parse(slurp(out / "results.json"));
-  const nlohmann::json schema =
-      nlohmann::json::parse(slurp(fs::path(HILRIG_SOURCE_DIR) / "docs" / "results.schema.json"));
+  const nlohmann::json results = nlohmann::json::parse(hilrig::test::read_file(out / "results.json"));
+  const nlohmann::json schema = nlohmann::json::parse(
+      hilrig::test::read_file(fs::path(HILRIG_SOURCE_DIR) / "docs" / "results.schema.json"));
   const std::vector<std::string> problems = rig::test::validate_json_schema(schema, results);
   EXPECT_TRUE(problems.empty()) << problems.front();
   EXPECT_EQ(results.at("complete"), false);

@@ -22,12 +22,6 @@ namespace fs = std::filesystem;
 
 using campaign::test::shipped_campaigns;
 
-std::size_t count_of(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 // An attribute of the <testsuites> element.
 std::size_t suites_attr(const std::string& junit, const std::string& name) {
   std::smatch m;
@@ -79,22 +73,23 @@ TEST(OutputsAgree, EveryShippedCampaign) {
     // junit.xml: failures, errors and skips are the fail, error and not-judged words.
     EXPECT_EQ(suites_attr(junit, "failures"), words["fail"]);
     EXPECT_EQ(suites_attr(junit, "errors"), words["error"] + rig_errors);
-    EXPECT_EQ(count_of(junit, "<skipped "), words["not judged"]);
+    EXPECT_EQ(hilrig::test::count_of(junit, "<skipped "), words["not judged"]);
     EXPECT_EQ(suites_attr(junit, "failures") + suites_attr(junit, "errors") == 0, verdict == "pass");
 
     // report.html: the same verdict, the same words, and nothing red in a passing campaign.
     EXPECT_NE(report.find("Verdict: <span class=\"" + verdict + "\">" + verdict + "</span>"),
               std::string::npos);
-    const std::size_t check_sections = count_of(report, "<h4>") - count_of(report, "<h4>observations</h4>");
+    const std::size_t check_sections =
+        hilrig::test::count_of(report, "<h4>") - hilrig::test::count_of(report, "<h4>observations</h4>");
     EXPECT_EQ(check_sections,
               words["pass"] + words["fail"] + words["caught"] + words["not judged"] + words["error"]);
     for (const auto& [word, n] : words) {
       const std::string cls = word == "not judged" ? "not-judged" : word;
-      EXPECT_GE(count_of(report, "<span class=\"" + cls + "\">" + word + "</span>"), n) << word;
+      EXPECT_GE(hilrig::test::count_of(report, "<span class=\"" + cls + "\">" + word + "</span>"), n) << word;
     }
     if (verdict == "pass") {
-      EXPECT_EQ(count_of(report, "class=\"fail\""), 0U);
-      EXPECT_EQ(count_of(report, "class=\"error\""), 0U);
+      EXPECT_EQ(hilrig::test::count_of(report, "class=\"fail\""), 0U);
+      EXPECT_EQ(hilrig::test::count_of(report, "class=\"error\""), 0U);
     }
   }
 }

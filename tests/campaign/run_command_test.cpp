@@ -39,12 +39,6 @@ namespace fs = std::filesystem;
 fs::path scratch(const std::string& name) { return hilrig::test::scratch_dir("campaign", name); }
 using hilrig::test::write_file;
 
-std::size_t count_of(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 int run(const std::string& file, const fs::path& out, std::string* err_text = nullptr,
         const std::string& shard = "0/1") {
   std::ostringstream err;
@@ -454,8 +448,8 @@ TEST(RunCommand, TraceabilityInResultsJunitAndReport) {
         property("campaign_file", file.string()), property("campaign_sha256", c.sha256),
         property("campaign_seed", "99"), property("tool_version", rig::tool_version()),
         property("backend", "virtual"), property("host_link", "in-process")})
-    EXPECT_EQ(count_of(junit, p), 4U) << p; // one per run's testsuite
-  EXPECT_EQ(count_of(junit, "timestamp=\"" + started + "\""), 4U);
+    EXPECT_EQ(hilrig::test::count_of(junit, p), 4U) << p; // one per run's testsuite
+  EXPECT_EQ(hilrig::test::count_of(junit, "timestamp=\"" + started + "\""), 4U);
 
   const std::string report = hilrig::test::read_file(o.out / "report.html");
   for (const std::string& row :
@@ -595,7 +589,7 @@ TEST(RunSuite, DirectoryRunsEveryCampaignSortedIntoItsOwnDirectory) {
       EXPECT_TRUE(fs::exists(dir / "out" / sub / f)) << sub << "/" << f;
   // One testsuite per campaign, in path order ("b_pass" < "sub/a_pass").
   const std::string junit = hilrig::test::read_file(dir / "out" / "junit.xml");
-  EXPECT_EQ(count_of(junit, "<testsuite "), 2U);
+  EXPECT_EQ(hilrig::test::count_of(junit, "<testsuite "), 2U);
   EXPECT_LT(junit.find("<testsuite name=\"b\""), junit.find("<testsuite name=\"a\""));
   // The index links each campaign's own report.
   const std::string index = hilrig::test::read_file(dir / "out" / "report.html");
@@ -733,7 +727,7 @@ TEST(RunSuite, JunitCarriesWallClockOnlyInTimestampHostnameAndTime) {
        ++it)
     names.insert((*it)[1]);
   EXPECT_TRUE(names.count("reference-pls-pass.dut_params_delay=&#39;50us&#39; rep 0")) << *names.begin();
-  for (const std::string& n : names) EXPECT_EQ(count_of(n, "."), 1U) << n;
+  for (const std::string& n : names) EXPECT_EQ(hilrig::test::count_of(n, "."), 1U) << n;
   // The failing campaign's testsuite says so, and the counts agree with exit status 1.
   EXPECT_NE(junit.find("<testsuite name=\"late\" tests=\"1\" failures=\"1\" errors=\"0\""),
             std::string::npos);
@@ -853,7 +847,7 @@ TEST(CheckCommand, ValidatesWithoutRunningWithTheMessagesOfRun) {
   std::ostringstream out2;
   std::ostringstream err2;
   EXPECT_EQ(check_campaigns({campaign::test::campaign_dir("reference")}, out2, err2), 0) << err2.str();
-  EXPECT_EQ(count_of(out2.str(), ": ok ("), 2U);
+  EXPECT_EQ(hilrig::test::count_of(out2.str(), ": ok ("), 2U);
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
@@ -889,7 +883,7 @@ TEST(RunProgressLines, EachRunWithOutcomeWallTimeAndEta) {
                                       "reference-pls-pass:pass", "reference-pls-pass:pass", "late:fail"}))
       << text;
   // Nothing but progress on stderr; the summaries are on stdout.
-  EXPECT_EQ(count_of(text, "\n"), 10U) << text;
+  EXPECT_EQ(hilrig::test::count_of(text, "\n"), 10U) << text;
   EXPECT_EQ(clock_text(7.4), "0:07");
   EXPECT_EQ(clock_text(750), "12:30");
   EXPECT_EQ(clock_text(3723), "1:02:03");

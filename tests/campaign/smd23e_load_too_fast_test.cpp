@@ -22,7 +22,7 @@ namespace {
 
 using rig::Outcome;
 
-const std::string kFile = test::campaign_dir("smd23e") + "/smd23e_load_too_fast.toml";
+const std::string kLoadTooFastFile = test::campaign_dir("smd23e") + "/smd23e_load_too_fast.toml";
 
 constexpr double kJ = 4.8e-5 + 1.0e-2; // kg·m²: rotor + load
 constexpr double kT = 1.69477;         // N·m: 240 oz-in (spec §1)
@@ -72,7 +72,7 @@ double f_safe() {
 }
 
 std::string with_acceleration(int a) {
-  std::string t = test::read_text(kFile);
+  std::string t = test::read_text(kLoadTooFastFile);
   const std::string nominal = "accel = 50\ndecel = 50"; // the move's A and D, steps/ms/s
   const std::size_t at = t.find(nominal);
   EXPECT_NE(at, std::string::npos);
@@ -85,7 +85,7 @@ TEST(Smd23eLoadTooFast, TheNominalRampFollowsAndTheFastOneStalls) {
   EXPECT_NEAR(f_safe(), 0.42227, 1e-5);
   EXPECT_LT(load_ratio(50), f_safe());
   EXPECT_TRUE(loses_within_ramp(500));
-  const Campaign c = load_campaign(kFile);
+  const Campaign c = load_campaign(kLoadTooFastFile);
   const rig::CampaignResult r = test::run_everything(c);
   ASSERT_EQ(r.runs.size(), 2U);
   EXPECT_EQ(r.verdict, Outcome::Pass) << test::failures(r);

@@ -18,7 +18,7 @@ namespace {
 
 using rig::Outcome;
 
-const std::string kFile = test::campaign_dir("ssi7361") + "/ssi7361_plant.toml";
+const std::string kSsiPlantFile = test::campaign_dir("ssi7361") + "/ssi7361_plant.toml";
 
 // By hand (the file's comments): J = 0.01 kg·m², b = 0.1 N·m·s/rad, tau = 0.1 s, w0 = 2 pi rad/s:
 // angle(t) = 0.1 (1 - e^(-t / tau)) turn; a 12-bit single-turn transducer reads
@@ -31,14 +31,14 @@ TEST(SsiPlant, TheShippedCampaignReadsWhatTheClosedFormSays) {
   EXPECT_EQ(std::floor(counts_at(0.0096)), 37.0);
   EXPECT_EQ(std::floor(counts_at(0.0996)), 258.0);
   EXPECT_EQ(std::floor(counts_at(0.9996)), 409.0);
-  const rig::CampaignResult r = test::run_everything(load_campaign(kFile));
+  const rig::CampaignResult r = test::run_everything(load_campaign(kSsiPlantFile));
   ASSERT_EQ(r.runs.size(), 1U);
   EXPECT_EQ(r.verdict, Outcome::Pass) << test::failures(r);
 }
 
 // Every 10 ms over the whole coast: each read is the closed form at its latch, to the count.
 TEST(SsiPlant, EveryReadIsTheAxisAngleAtItsLatch) {
-  std::string text = test::read_text(kFile);
+  std::string text = test::read_text(kSsiPlantFile);
   const std::size_t from = text.find("[[host]]\nat = \"10ms\"");
   const std::size_t to = text.find("[[check]]");
   ASSERT_NE(from, std::string::npos);
@@ -64,7 +64,7 @@ TEST(SsiPlant, EveryReadIsTheAxisAngleAtItsLatch) {
 // Bad input before anything runs: a data line a stimulus also drives, a clock line that is not
 // the board's output, a position that does not fit the data field.
 TEST(SsiPlant, BadSsiTablesAreRefusedWithTheirKey) {
-  const std::string base = test::read_text(kFile);
+  const std::string base = test::read_text(kSsiPlantFile);
   const auto error_of = [&](const std::string& from, const std::string& to) {
     std::string t = base;
     const std::size_t at = t.find(from);

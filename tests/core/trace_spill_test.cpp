@@ -131,7 +131,7 @@ std::vector<Plain> read_back(const TraceRecorder& t, std::size_t from = 0) {
   return out;
 }
 
-std::string vcd_of(const TraceRecorder& t, std::span<const TraceSample> overlay = {}) {
+std::string vcd_with_overlay(const TraceRecorder& t, std::span<const TraceSample> overlay = {}) {
   std::ostringstream out;
   write_vcd(t, out, "", overlay);
   return out.str();
@@ -394,13 +394,13 @@ TEST(TraceSpill, ATinySpillLimitGivesTheSameVcdBytes) {
       EXPECT_EQ(held.in_time_order(), ordered);
       const std::vector<TraceSample> overlay{{Nanos{500}, signals[0], 1, 0.0},
                                              {Nanos{200}, signals[1], 0, 0.0}};
-      const std::string expected = vcd_of(held, overlay);
-      EXPECT_EQ(vcd_of(spilled, overlay), expected) << "seed " << seed;
+      const std::string expected = vcd_with_overlay(held, overlay);
+      EXPECT_EQ(vcd_with_overlay(spilled, overlay), expected) << "seed " << seed;
       EXPECT_EQ(spilled.canonical_text(), held.canonical_text());
       EXPECT_EQ(spilled.edges_of("w.a"), held.edges_of("w.a"));
       if (!ordered) continue;
       stream.update(spilled);
-      EXPECT_EQ(streamed.str(), vcd_of(held)) << "seed " << seed;
+      EXPECT_EQ(streamed.str(), vcd_with_overlay(held)) << "seed " << seed;
     }
   }
 }

@@ -4,15 +4,10 @@
 
 #include "rig/results/junit.hpp"
 #include "sample_campaign.hpp"
+#include "tests/tools/scratch_files.hpp"
 
 namespace hilrig::rig {
 namespace {
-
-std::size_t count_of(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
 
 TEST(Junit, OneTestcasePerCheckPerRunWithCountsThatAddUp) {
   // Runs 0, 1 nominal (pass); run 2 fault caught (throughput passes as a testcase, advance
@@ -24,10 +19,10 @@ TEST(Junit, OneTestcasePerCheckPerRunWithCountsThatAddUp) {
             test::nominal_run(3, 21.0), test::fault_run(4, "slow", false)};
   finalize(c);
   const std::string x = to_junit_xml(c);
-  EXPECT_EQ(count_of(x, "<testcase "), 10U);
-  EXPECT_EQ(count_of(x, "<testsuite "), 5U);
-  EXPECT_EQ(count_of(x, "<failure "), 2U);
-  EXPECT_EQ(count_of(x, "<skipped "), 2U);
+  EXPECT_EQ(hilrig::test::count_of(x, "<testcase "), 10U);
+  EXPECT_EQ(hilrig::test::count_of(x, "<testsuite "), 5U);
+  EXPECT_EQ(hilrig::test::count_of(x, "<failure "), 2U);
+  EXPECT_EQ(hilrig::test::count_of(x, "<skipped "), 2U);
   EXPECT_NE(x.find("<testsuites name=\"ans1 &lt;sample&gt;\" tests=\"10\" failures=\"2\" errors=\"0\""),
             std::string::npos);
   EXPECT_NE(x.find("fault &#39;slow&#39; not caught"), std::string::npos);
@@ -45,8 +40,8 @@ TEST(Junit, AFaultCaughtByOneOfItsCheckersHasNoFailure) {
   ASSERT_EQ(run_outcome(c.runs[0]), Outcome::Pass);
   const std::string x = to_junit_xml(c);
   // Run 1 missed it: both of its must_catch checks passed, both are failures.
-  EXPECT_EQ(count_of(x, "<failure "), 2U);
-  EXPECT_EQ(count_of(x, "<testsuite name=\"x.ls1/run0\" tests=\"2\" failures=\"0\""), 1U) << x;
+  EXPECT_EQ(hilrig::test::count_of(x, "<failure "), 2U);
+  EXPECT_EQ(hilrig::test::count_of(x, "<testsuite name=\"x.ls1/run0\" tests=\"2\" failures=\"0\""), 1U) << x;
 }
 
 TEST(Junit, RigErrorIsAnErrorTestcase) {
@@ -57,7 +52,7 @@ TEST(Junit, RigErrorIsAnErrorTestcase) {
   c.runs[0].error = "CAN bus-off";
   finalize(c);
   const std::string x = to_junit_xml(c);
-  EXPECT_EQ(count_of(x, "<error "), 1U);
+  EXPECT_EQ(hilrig::test::count_of(x, "<error "), 1U);
   EXPECT_NE(x.find("<testcase name=\"rig\""), std::string::npos);
 }
 
@@ -70,20 +65,21 @@ TEST(Junit, TimesAreTheRunsWallTimeOrAbsentWhenNotKnown) {
   JunitClock clock;
   clock.run_seconds = {{0, 0.5}, {1, 0.25}, {2, 1.5}};
   std::string x = to_junit_xml(c, clock);
-  EXPECT_EQ(count_of(x, "<testcase "), 6U);
-  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run0\" time=\"0.250\""), 2U) << x;
-  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run1\" time=\"0.125\""), 2U) << x;
-  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run2\" time=\"0.750\""), 2U) << x;
+  EXPECT_EQ(hilrig::test::count_of(x, "<testcase "), 6U);
+  EXPECT_EQ(hilrig::test::count_of(x, "classname=\"ans1-sample.ls1/run0\" time=\"0.250\""), 2U) << x;
+  EXPECT_EQ(hilrig::test::count_of(x, "classname=\"ans1-sample.ls1/run1\" time=\"0.125\""), 2U) << x;
+  EXPECT_EQ(hilrig::test::count_of(x, "classname=\"ans1-sample.ls1/run2\" time=\"0.750\""), 2U) << x;
   EXPECT_NE(x.find("errors=\"0\" time=\"2.250\">"), std::string::npos) << x; // testsuites: the sum
   clock.run_seconds.erase(1);
   x = to_junit_xml(c, clock);
-  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run0\" time=\"0.250\""), 2U) << x;
-  EXPECT_EQ(count_of(x, "classname=\"ans1-sample.ls1/run1\">"), 2U) << x; // no time
-  EXPECT_EQ(count_of(x, "<testsuite "), 3U);
-  EXPECT_EQ(count_of(x, " time=\""), 6U) << x; // runs 0 and 2: 4 testcases and their 2 testsuites
-  EXPECT_EQ(count_of(x, "time=\"0.000\""), 0U) << x;
+  EXPECT_EQ(hilrig::test::count_of(x, "classname=\"ans1-sample.ls1/run0\" time=\"0.250\""), 2U) << x;
+  EXPECT_EQ(hilrig::test::count_of(x, "classname=\"ans1-sample.ls1/run1\">"), 2U) << x; // no time
+  EXPECT_EQ(hilrig::test::count_of(x, "<testsuite "), 3U);
+  EXPECT_EQ(hilrig::test::count_of(x, " time=\""), 6U)
+      << x; // runs 0 and 2: 4 testcases and their 2 testsuites
+  EXPECT_EQ(hilrig::test::count_of(x, "time=\"0.000\""), 0U) << x;
   x = to_junit_xml(c); // no wall times at all
-  EXPECT_EQ(count_of(x, " time=\""), 0U) << x;
+  EXPECT_EQ(hilrig::test::count_of(x, " time=\""), 0U) << x;
 }
 
 // A suite's junit.xml from each campaign's body made beforehand (junit_suite_body, while its runs
@@ -106,14 +102,14 @@ TEST(Junit, ASuiteFromBodiesMadeBeforehandIsTheTextFromTheRuns) {
   EXPECT_EQ(body_a.counts.tests, 6U);
   EXPECT_TRUE(body_a.counts.timed);
   EXPECT_FALSE(body_b.counts.timed);
-  EXPECT_EQ(count_of(body_a.testcases, "<testcase "), 6U);
+  EXPECT_EQ(hilrig::test::count_of(body_a.testcases, "<testcase "), 6U);
   std::vector<JunitCampaign> from_bodies = from_runs;
   from_bodies[0].body = &body_a;
   from_bodies[1].body = &body_b;
   const std::string x = to_junit_suite_xml("suite", from_runs);
   EXPECT_EQ(to_junit_suite_xml("suite", from_bodies), x);
-  EXPECT_EQ(count_of(x, "<testsuite "), 2U);
-  EXPECT_EQ(count_of(x, " time=\"1.000\" timestamp="), 1U) << x; // campaign a: 0.1 + 0.2 + 0.7
+  EXPECT_EQ(hilrig::test::count_of(x, "<testsuite "), 2U);
+  EXPECT_EQ(hilrig::test::count_of(x, " time=\"1.000\" timestamp="), 1U) << x; // campaign a: 0.1 + 0.2 + 0.7
   // Only one campaign given its body: the same text too.
   from_bodies[1].body = nullptr;
   EXPECT_EQ(to_junit_suite_xml("suite", from_bodies), x);

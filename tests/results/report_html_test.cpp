@@ -14,15 +14,10 @@
 #include "rig/results/results_json.hpp"
 #include "rig/results/timing_figures.hpp"
 #include "sample_campaign.hpp"
+#include "tests/tools/scratch_files.hpp"
 
 namespace hilrig::rig {
 namespace {
-
-std::size_t count_of(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
 
 // The check sections of a report, each with its judgement word and body.
 struct Section {
@@ -68,10 +63,11 @@ TEST(Report, LongCampaignShowsFailuresInFullAndTheRestAsRows) {
   ASSERT_EQ(c.totals.runs_passed, 141U);
   ASSERT_EQ(c.totals.runs_failed, 259U);
   const std::string html = to_report_html(c);
-  EXPECT_EQ(count_of(html, "<details class=\"run\""), 120U);
-  EXPECT_EQ(count_of(html, "<details class=\"run\" id=\"r") - count_of(html, " open>"),
+  EXPECT_EQ(hilrig::test::count_of(html, "<details class=\"run\""), 120U);
+  EXPECT_EQ(hilrig::test::count_of(html, "<details class=\"run\" id=\"r") -
+                hilrig::test::count_of(html, " open>"),
             20U); // collapsed: passed
-  EXPECT_EQ(count_of(html, "<tr id=\"r"), 280U);
+  EXPECT_EQ(hilrig::test::count_of(html, "<tr id=\"r"), 280U);
   EXPECT_NE(html.find("<h3 id=\"more-runs\">280 more runs</h3>"), std::string::npos);
   // The failing run 10 + 100th: runs 11, 12, 13, 15, ... fail; the 100th of them is shown, the 101st is a
   // row.
@@ -104,11 +100,11 @@ TEST(Report, SelfContainedWithAFigureForEveryCheck) {
   for (const auto& s : secs)
     EXPECT_NE(s.body.find("<script type=\"application/json\" class=\"figure-data\">"), std::string::npos)
         << s.body;
-  EXPECT_EQ(count_of(html, "data-kind=\"histogram\""), 3U);
+  EXPECT_EQ(hilrig::test::count_of(html, "data-kind=\"histogram\""), 3U);
   EXPECT_NE(html.find("Fault detection"), std::string::npos);
   // uPlot and the script that draws the figures are in the page, once each.
-  EXPECT_EQ(count_of(html, std::string(report_assets::uplot_js())), 1U);
-  EXPECT_EQ(count_of(html, std::string(report_assets::figures_js())), 1U);
+  EXPECT_EQ(hilrig::test::count_of(html, std::string(report_assets::uplot_js())), 1U);
+  EXPECT_EQ(hilrig::test::count_of(html, std::string(report_assets::figures_js())), 1U);
   // Nothing fetched from elsewhere; links stay inside the page.
   for (const char* external : {"src=", "<link", "@import", "href=\"h", "href=\"f", "fetch("})
     EXPECT_EQ(html.find(external), std::string::npos) << external;

@@ -35,15 +35,8 @@ namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) { return hilrig::test::scratch_dir("results", name); }
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::size_t lines(const fs::path& path) {
-  const std::string text = slurp(path);
+  const std::string text = hilrig::test::read_file(path);
   return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
@@ -68,9 +61,10 @@ TEST(RunLog, FoldIsByteIdenticalToTheWholeFileWriter) {
     EXPECT_EQ(lines(dir / kRunLogName), whole.runs.size() + 1) << n; // header + one line a run
     write_results_file(dir / "whole.json", whole);
     write_results_file(dir / "folded.json", read_run_log(dir / kRunLogName));
-    EXPECT_EQ(slurp(dir / "folded.json"), slurp(dir / "whole.json")) << n;
+    EXPECT_EQ(hilrig::test::read_file(dir / "folded.json"), hilrig::test::read_file(dir / "whole.json")) << n;
     // read_results_file folds a *.jsonl too (what `hilrig merge OUT.json DIR/runs.jsonl` reads).
-    EXPECT_EQ(to_json_text(read_results_file(dir / kRunLogName)), slurp(dir / "whole.json")) << n;
+    EXPECT_EQ(to_json_text(read_results_file(dir / kRunLogName)), hilrig::test::read_file(dir / "whole.json"))
+        << n;
   }
 }
 
@@ -97,9 +91,9 @@ TEST(RunLog, FoldedOutputsAreTheInMemoryWritersBytes) {
     EXPECT_EQ(folded.totals, whole.totals) << n;
     EXPECT_EQ(folded.verdict, whole.verdict) << n;
     EXPECT_EQ(folded.complete, whole.complete) << n;
-    EXPECT_EQ(slurp(dir / "results.json"), to_json_text(whole)) << n;
-    EXPECT_EQ(slurp(dir / "junit.xml"), to_junit_xml(whole, clock)) << n;
-    EXPECT_EQ(slurp(dir / "report.html"), to_report_html(whole)) << n;
+    EXPECT_EQ(hilrig::test::read_file(dir / "results.json"), to_json_text(whole)) << n;
+    EXPECT_EQ(hilrig::test::read_file(dir / "junit.xml"), to_junit_xml(whole, clock)) << n;
+    EXPECT_EQ(hilrig::test::read_file(dir / "report.html"), to_report_html(whole)) << n;
     for (const auto& e : fs::directory_iterator(dir)) EXPECT_NE(e.path().extension(), ".tmp") << n;
   }
 }
@@ -176,7 +170,7 @@ TEST(RunLog, WritersFoldIsTheFilesFold) {
 
       // Each record is {"run": the judged run's object} dumped compact, whether the writer
       // made it from the indented dump it holds or dumped it itself (past its budget).
-      std::istringstream lines(slurp(held / kRunLogName));
+      std::istringstream lines(hilrig::test::read_file(held / kRunLogName));
       std::string line;
       std::getline(lines, line); // the header
       for (const RunResult& run : whole.runs) {
@@ -195,7 +189,8 @@ TEST(RunLog, WritersFoldIsTheFilesFold) {
       EXPECT_EQ(from_writer.complete, from_file.complete) << what;
       EXPECT_EQ(to_json_text(from_writer), to_json_text(from_file)) << what; // the summaries
       for (const char* file : {"results.json", "junit.xml", "report.html"})
-        EXPECT_EQ(slurp(held / file), slurp(read / file)) << what << ": " << file;
+        EXPECT_EQ(hilrig::test::read_file(held / file), hilrig::test::read_file(read / file))
+            << what << ": " << file;
     }
   }
 }
@@ -285,7 +280,7 @@ TEST(RunLog, TornLastRecordIsIgnored) {
   const fs::path dir = scratch("torn");
   const CampaignResult whole = test::sample_campaign(3);
   log_campaign(dir / kRunLogName, whole);
-  const std::string text = slurp(dir / kRunLogName);
+  const std::string text = hilrig::test::read_file(dir / kRunLogName);
   const std::size_t last = text.rfind('\n', text.size() - 2) + 1; // start of the last record
   for (std::size_t cut : {last + 1, last + 10, text.size() - 1}) {
     std::ofstream(dir / "cut.jsonl", std::ios::binary) << text.substr(0, cut);
@@ -328,7 +323,7 @@ TEST(RunLog, FileSizeLimitKeepsWholeRecordsAndSaysWhy) {
   const fs::path dir = scratch("efbig");
   const CampaignResult whole = test::sample_campaign(5);
   log_campaign(dir / "full.jsonl", whole);
-  const std::string text = slurp(dir / "full.jsonl");
+  const std::string text = hilrig::test::read_file(dir / "full.jsonl");
   // Room for the header and two records, and part of the third.
   std::size_t end = 0;
   for (int i = 0; i < 3; ++i) end = text.find('\n', end) + 1;
@@ -342,7 +337,7 @@ TEST(RunLog, FileSizeLimitKeepsWholeRecordsAndSaysWhy) {
     }
   });
   EXPECT_EQ(status, 0);
-  EXPECT_EQ(slurp(path), text.substr(0, end)); // exactly the whole records
+  EXPECT_EQ(hilrig::test::read_file(path), text.substr(0, end)); // exactly the whole records
   EXPECT_EQ(read_run_log(path).runs.size(), 2U);
 }
 
@@ -372,7 +367,7 @@ TEST(WriteFileAtomically, FullDiskOrSizeLimitLeavesNoTmp) {
     EXPECT_TRUE(says(e, ENOSPC)) << e.what();
   }
   EXPECT_FALSE(fs::exists(fs::symlink_status(dir / "results.json.tmp")));
-  EXPECT_EQ(slurp(path), "previous\n");
+  EXPECT_EQ(hilrig::test::read_file(path), "previous\n");
 
   const int status = with_file_size_limit(50, [&] {
     try {
@@ -384,7 +379,7 @@ TEST(WriteFileAtomically, FullDiskOrSizeLimitLeavesNoTmp) {
   });
   EXPECT_EQ(status, 0);
   EXPECT_FALSE(fs::exists(dir / "results.json.tmp"));
-  EXPECT_EQ(slurp(path), "previous\n");
+  EXPECT_EQ(hilrig::test::read_file(path), "previous\n");
 }
 
 // Streamed: a file larger than the 1 MiB buffer, written in pieces of every size, arrives
@@ -407,10 +402,10 @@ TEST(WriteFileAtomically, StreamedWritesEveryByteAndLinksTheSameBytes) {
       at += n;
     }
   });
-  EXPECT_EQ(slurp(dir / "big.vcd"), expected);
+  EXPECT_EQ(hilrig::test::read_file(dir / "big.vcd"), expected);
   EXPECT_FALSE(fs::exists(dir / "big.vcd.tmp"));
   link_file_atomically(dir / "big.vcd", dir / "copy.vcd");
-  EXPECT_EQ(slurp(dir / "copy.vcd"), expected);
+  EXPECT_EQ(hilrig::test::read_file(dir / "copy.vcd"), expected);
   EXPECT_FALSE(fs::exists(dir / "copy.vcd.tmp"));
 }
 
@@ -430,7 +425,7 @@ TEST(WriteFileAtomically, StreamedFullDiskOrThrowingWriterLeavesThePreviousFile)
     EXPECT_TRUE(says(e, ENOSPC)) << e.what();
   }
   EXPECT_FALSE(fs::exists(fs::symlink_status(dir / "trace.vcd.tmp")));
-  EXPECT_EQ(slurp(path), "previous\n");
+  EXPECT_EQ(hilrig::test::read_file(path), "previous\n");
   EXPECT_THROW(write_file_atomically(path,
                                      [](std::ostream& out) {
                                        out << "half";
@@ -438,7 +433,7 @@ TEST(WriteFileAtomically, StreamedFullDiskOrThrowingWriterLeavesThePreviousFile)
                                      }),
                std::invalid_argument);
   EXPECT_FALSE(fs::exists(dir / "trace.vcd.tmp"));
-  EXPECT_EQ(slurp(path), "previous\n");
+  EXPECT_EQ(hilrig::test::read_file(path), "previous\n");
 }
 
 } // namespace
@@ -470,7 +465,7 @@ TEST(AppendFile, SizeLimitKeepsTheBlocksBeforeAndSaysWhy) {
       }
     });
     EXPECT_EQ(status, 0);
-    EXPECT_EQ(slurp(path), run1);
+    EXPECT_EQ(hilrig::test::read_file(path), run1);
     // Exactly room for both: both kept.
     EXPECT_EQ(with_file_size_limit(run1.size() + run2.size(),
                                    [&] {
@@ -480,7 +475,7 @@ TEST(AppendFile, SizeLimitKeepsTheBlocksBeforeAndSaysWhy) {
                                      return 0;
                                    }),
               0);
-    EXPECT_EQ(slurp(path), run1 + run2);
+    EXPECT_EQ(hilrig::test::read_file(path), run1 + run2);
   }
 }
 

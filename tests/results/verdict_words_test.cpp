@@ -12,15 +12,10 @@
 #include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
 #include "sample_campaign.hpp"
+#include "tests/tools/scratch_files.hpp"
 
 namespace hilrig::rig {
 namespace {
-
-std::size_t count_of(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
 
 // A fault run whose fault two checks may catch: the throughput check fails (35 us against
 // 20 us), the advance check passes, and a third check nobody named passes too.
@@ -58,17 +53,17 @@ TEST(Verdict, CatchingCheckReadsCaughtTheOthersNotJudged) {
 
   // junit: no failure or error in a passing campaign; the not-judged checks are skipped.
   const std::string x = to_junit_xml(c);
-  EXPECT_EQ(count_of(x, "<failure "), 0U) << x;
-  EXPECT_EQ(count_of(x, "<error "), 0U);
-  EXPECT_EQ(count_of(x, "<skipped "), 2U);
+  EXPECT_EQ(hilrig::test::count_of(x, "<failure "), 0U) << x;
+  EXPECT_EQ(hilrig::test::count_of(x, "<error "), 0U);
+  EXPECT_EQ(hilrig::test::count_of(x, "<skipped "), 2U);
   EXPECT_NE(x.find("failures=\"0\" errors=\"0\""), std::string::npos);
   EXPECT_NE(x.find("not judged: fault &#39;slow&#39; was caught by ls1-throughput"), std::string::npos) << x;
 
   // report: nothing red; the words are caught and not judged.
   const std::string h = to_report_html(c);
-  EXPECT_EQ(count_of(h, "class=\"fail\""), 0U);
+  EXPECT_EQ(hilrig::test::count_of(h, "class=\"fail\""), 0U);
   // No edge drawn in the fail colour either (the histogram's dashed limit line is red by design).
-  EXPECT_EQ(count_of(h, "stroke=\"#cf222e\" stroke-width=\"2\""), 0U);
+  EXPECT_EQ(hilrig::test::count_of(h, "stroke=\"#cf222e\" stroke-width=\"2\""), 0U);
   EXPECT_NE(h.find("<span class=\"caught\">caught</span>"), std::string::npos);
   EXPECT_NE(h.find("<span class=\"not-judged\">not judged</span>"), std::string::npos);
 }
@@ -80,7 +75,7 @@ TEST(Verdict, AFaultNobodyCaughtFailsEveryNamedCheck) {
   EXPECT_EQ(c.runs[1].checks[1].judgement, Judgement::Fail);
   EXPECT_EQ(c.runs[1].checks[2].judgement, Judgement::NotJudged);
   const std::string x = to_junit_xml(c);
-  EXPECT_EQ(count_of(x, "<failure "), 2U);
+  EXPECT_EQ(hilrig::test::count_of(x, "<failure "), 2U);
   EXPECT_NE(x.find("fault &#39;slow&#39; not caught"), std::string::npos);
 }
 
@@ -101,7 +96,7 @@ TEST(Verdict, ACheckWithNoMeasurementIsAnError) {
   finalize(c);
   EXPECT_EQ(c.runs[0].checks[1].judgement, Judgement::Error);
   EXPECT_EQ(c.verdict, Outcome::Error);
-  EXPECT_EQ(count_of(to_junit_xml(c), "<error "), 1U);
+  EXPECT_EQ(hilrig::test::count_of(to_junit_xml(c), "<error "), 1U);
 }
 
 std::vector<CampaignResult> two_shards() {

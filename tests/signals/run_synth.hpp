@@ -8,5 +8,7 @@
 namespace hilrig::test {
 
 void synth(std::vector<std::string> args);
+// Where the synth tests write their VCD files: the build tree.
+inline const std::string kSynthDir = HILRIG_BINARY_DIR;
 
 } // namespace hilrig::test

@@ -22,15 +22,15 @@ using test::synth;
 
 // Value changes per VCD identifier after $dumpvars (each change is one "0<id>"/"1<id>" line),
 // with the names the header gives the identifiers.
-struct Vcd {
+struct VcdCounts {
   std::map<std::string, std::string> id_of; // leaf name -> id
   std::map<std::string, int> changes;       // id -> count
   std::vector<long long> times;
 };
 
-Vcd read_vcd(const std::string& path) {
+VcdCounts count_changes(const std::string& path) {
   std::ifstream in(path);
-  Vcd vcd;
+  VcdCounts vcd;
   std::string line;
   bool in_dumpvars = false;
   bool body = false;
@@ -57,8 +57,6 @@ Vcd read_vcd(const std::string& path) {
   return vcd;
 }
 
-const std::string kDir = HILRIG_BINARY_DIR;
-
 } // namespace
 
 TEST(SynthCommand, ParsesDurations) {
@@ -73,9 +71,9 @@ TEST(SynthCommand, ParsesDurations) {
 TEST(SynthCommand, QuadratureAt600RpmWritesEveryEdge) {
   // 1,024 lines at 600 RPM for 1 ms: 40.96 counts, edges at 0.5 ... 40.5 counts = 41
   // edges, alternating A, B: 21 on A, 20 on B. The first at 12,207 ns (0.5 / 40,960 s).
-  const std::string path = kDir + "/synth_quadrature_test.vcd";
+  const std::string path = test::kSynthDir + "/synth_quadrature_test.vcd";
   synth({"quadrature", "--lines", "1024", "--rpm", "600", "--duration", "1ms", "--out", path});
-  const Vcd vcd = read_vcd(path);
+  const VcdCounts vcd = count_changes(path);
   ASSERT_TRUE(vcd.id_of.count("A") && vcd.id_of.count("B"));
   EXPECT_EQ(vcd.changes.at(vcd.id_of.at("A")), 21);
   EXPECT_EQ(vcd.changes.at(vcd.id_of.at("B")), 20);
@@ -86,10 +84,10 @@ TEST(SynthCommand, QuadratureAt600RpmWritesEveryEdge) {
 TEST(SynthCommand, GlitchFaultAddsTwoEdgesOnItsChannel) {
   // As above (A edges at 12.2, 61.0, 109.9 us ...), plus a 50 ns glitch on A at 100 us,
   // between two A edges: 21 + 2 A changes, B untouched.
-  const std::string path = kDir + "/synth_glitch_test.vcd";
+  const std::string path = test::kSynthDir + "/synth_glitch_test.vcd";
   synth({"quadrature", "--lines", "1024", "--rpm", "600", "--duration", "1ms", "--glitch", "A,100us,50ns",
          "--out", path});
-  const Vcd vcd = read_vcd(path);
+  const VcdCounts vcd = count_changes(path);
   EXPECT_EQ(vcd.changes.at(vcd.id_of.at("A")), 23);
   EXPECT_EQ(vcd.changes.at(vcd.id_of.at("B")), 20);
 }
@@ -98,17 +96,17 @@ TEST(SynthCommand, TrapezoidWithGatedIndex) {
   // 2 turns of a 100-line encoder (400 counts/turn) as a trapezoid: states 1 ... 800, so
   // 800 A/B edges. Z gated to line 0 is high in states 2 and 402 (802 is never reached):
   // 2 pulses, 4 Z edges.
-  const std::string path = kDir + "/synth_trapezoid_test.vcd";
+  const std::string path = test::kSynthDir + "/synth_trapezoid_test.vcd";
   synth({"quadrature", "--profile", "trapezoid", "--lines", "100", "--turns", "2", "--rpm", "600", "--accel",
          "100", "--index-line", "0", "--out", path});
-  const Vcd vcd = read_vcd(path);
+  const VcdCounts vcd = count_changes(path);
   EXPECT_EQ(vcd.changes.at(vcd.id_of.at("A")) + vcd.changes.at(vcd.id_of.at("B")), 800);
   EXPECT_EQ(vcd.changes.at(vcd.id_of.at("Z")), 4);
 }
 
 TEST(SynthCommand, RateLimitFailIsACheckFailure) {
   // 1,024 lines at 20,000 RPM = 341.3 kHz per channel, above 250 kHz: exit status 1.
-  const std::string path = kDir + "/synth_rate_test.vcd";
+  const std::string path = test::kSynthDir + "/synth_rate_test.vcd";
   try {
     synth({"quadrature", "--rpm", "20000", "--duration", "1ms", "--max-input-hz", "250e3", "--rate-action",
            "fail", "--out", path});
@@ -120,9 +118,9 @@ TEST(SynthCommand, RateLimitFailIsACheckFailure) {
 
 TEST(SynthCommand, DiscreteBounceAndTrain) {
   // A 3-pulse train (6 edges) and a 2-bounce closing (5 edges): 11 edges.
-  const std::string path = kDir + "/synth_discrete_test.vcd";
+  const std::string path = test::kSynthDir + "/synth_discrete_test.vcd";
   synth({"discrete", "--name", "rig.start", "--train", "1ms,100us,10us,3", "--bounce", "2ms,1,1ms,2,7",
          "--out", path});
-  const Vcd vcd = read_vcd(path);
+  const VcdCounts vcd = count_changes(path);
   EXPECT_EQ(vcd.changes.at(vcd.id_of.at("start")), 11);
 }

@@ -22,18 +22,18 @@ namespace {
 using test::synth;
 
 // Real and integer value changes per leaf name, after $dumpvars.
-struct Change {
+struct StatorSample {
   long long time;
   double value;
 };
-struct Vcd {
-  std::map<std::string, std::vector<Change>> of; // leaf name -> changes
+struct StatorTrace {
+  std::map<std::string, std::vector<StatorSample>> of; // leaf name -> changes
 };
 
-Vcd read_vcd(const std::string& path) {
+StatorTrace read_stators(const std::string& path) {
   std::ifstream in(path);
   std::map<std::string, std::string> name_of; // id -> leaf
-  Vcd vcd;
+  StatorTrace vcd;
   std::string line;
   bool body = false;
   bool in_dumpvars = false;
@@ -72,15 +72,14 @@ std::vector<std::string> lines_of(const std::string& path) {
   return lines;
 }
 
-const std::string kDir = HILRIG_BINARY_DIR;
 const double kTan30 = 1.0 / std::sqrt(3.0);
 
 } // namespace
 
 TEST(SynthResolver, At30DegreesSinOverCosIsTan30) {
-  const std::string out = kDir + "/synth_resolver_30.vcd";
+  const std::string out = test::kSynthDir + "/synth_resolver_30.vcd";
   synth({"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms"});
-  const Vcd vcd = read_vcd(out);
+  const StatorTrace vcd = read_stators(out);
   const auto& ref = vcd.of.at("ref");
   const auto& sin = vcd.of.at("sin");
   const auto& cos = vcd.of.at("cos");
@@ -108,10 +107,10 @@ TEST(SynthResolver, At30DegreesSinOverCosIsTan30) {
 
 TEST(SynthResolver, TurningShaftEnvelopeFollowsTheAngle) {
   // 600 rpm = 10 turn/s from 0: theta(t) = 2*pi*10*t; TR 0.5, 2 V reference at 4 kHz.
-  const std::string out = kDir + "/synth_resolver_turning.vcd";
+  const std::string out = test::kSynthDir + "/synth_resolver_turning.vcd";
   synth({"resolver", "--out", out, "--rpm", "600", "--rate", "100e3", "--duration", "30ms", "--tr", "0.5",
          "--amplitude", "2", "--excitation-hz", "4000"});
-  const Vcd vcd = read_vcd(out);
+  const StatorTrace vcd = read_stators(out);
   const auto& ref = vcd.of.at("ref");
   const auto& sin = vcd.of.at("sin");
   const auto& cos = vcd.of.at("cos");
@@ -131,45 +130,45 @@ TEST(SynthResolver, TurningShaftEnvelopeFollowsTheAngle) {
 }
 
 TEST(SynthResolver, WindingFaults) {
-  const std::string out = kDir + "/synth_resolver_fault.vcd";
-  auto peak = [](const std::vector<Change>& s) {
+  const std::string out = test::kSynthDir + "/synth_resolver_fault.vcd";
+  auto peak = [](const std::vector<StatorSample>& s) {
     double m = 0.0;
-    for (const Change& c : s) m = std::fmax(m, std::fabs(c.value));
+    for (const StatorSample& c : s) m = std::fmax(m, std::fabs(c.value));
     return m;
   };
   // Open SIN coil: SIN reads zero, COS is untouched (cos 30 deg of a 1 V reference).
   synth({"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms", "--sin-open"});
-  Vcd vcd = read_vcd(out);
+  StatorTrace vcd = read_stators(out);
   EXPECT_EQ(peak(vcd.of.at("sin")), 0.0);
   EXPECT_NEAR(peak(vcd.of.at("cos")), std::sqrt(3.0) / 2.0, 1e-9);
   // Excitation loss: both windings zero, the board's reference still there.
   synth(
       {"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms", "--excitation-loss"});
-  vcd = read_vcd(out);
+  vcd = read_stators(out);
   EXPECT_EQ(peak(vcd.of.at("sin")), 0.0);
   EXPECT_EQ(peak(vcd.of.at("cos")), 0.0);
   EXPECT_NEAR(peak(vcd.of.at("ref")), 1.0, 1e-12);
   // Imbalance: SIN gain 0.9 makes the envelope ratio 0.9 * tan 30.
   synth(
       {"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms", "--sin-gain", "0.9"});
-  vcd = read_vcd(out);
+  vcd = read_stators(out);
   EXPECT_NEAR(peak(vcd.of.at("sin")) / peak(vcd.of.at("cos")), 0.9 * kTan30, 1e-9);
   // Carrier phase shift of 90 deg on SIN: at the reference peak (50 us) SIN's carrier
   // sin(pi/2 + pi/2) = 0, at the reference zero (100 us) it is sin(pi + pi/2) = -1, times sin 30.
   synth(
       {"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms", "--sin-phase", "90"});
-  vcd = read_vcd(out);
+  vcd = read_stators(out);
   EXPECT_NEAR(vcd.of.at("sin")[50].value, 0.0, 1e-9);
   EXPECT_NEAR(vcd.of.at("sin")[100].value, -0.5, 1e-9);
 }
 
 TEST(SynthResolver, EmulatorFramesInTraceAndCandumpLog) {
-  const std::string out = kDir + "/synth_resolver_frames.vcd";
-  const std::string log = kDir + "/synth_resolver_frames.log";
+  const std::string out = test::kSynthDir + "/synth_resolver_frames.vcd";
+  const std::string log = test::kSynthDir + "/synth_resolver_frames.log";
   synth({"resolver", "--out", out, "--rpm", "600", "--duration", "10ms", "--can-frames", "--frame-period",
          "1ms", "--can-log", log});
   // Frames at 0, 1, ..., 10 ms: 11 frames.
-  const Vcd vcd = read_vcd(out);
+  const StatorTrace vcd = read_stators(out);
   const auto& angle = vcd.of.at("angle");
   const auto& sequence = vcd.of.at("sequence");
   ASSERT_EQ(angle.size(), 11u);

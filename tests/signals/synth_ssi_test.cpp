@@ -98,12 +98,10 @@ std::uint32_t read_word(const Vcd& vcd, long long f1, long long period) {
   return word;
 }
 
-const std::string kDir = HILRIG_BINARY_DIR;
-
 } // namespace
 
 TEST(SynthSsi, ClockAt125kHzIs25BitsIn192us) {
-  const std::string out = kDir + "/synth_ssi_125.vcd";
+  const std::string out = test::kSynthDir + "/synth_ssi_125.vcd";
   synth({"ssi", "--out", out, "--frames", "2", "--first", "20us"});
   const Vcd vcd = read_vcd(out);
   EXPECT_EQ(vcd.initial.at("clock"), 1u); // idles high
@@ -121,7 +119,7 @@ TEST(SynthSsi, ClockAt125kHzIs25BitsIn192us) {
 }
 
 TEST(SynthSsi, ClockAt500kHzIs25BitsIn48us) {
-  const std::string out = kDir + "/synth_ssi_500.vcd";
+  const std::string out = test::kSynthDir + "/synth_ssi_500.vcd";
   synth({"ssi", "--out", out, "--clock-khz", "500", "--frames", "3", "--first", "10us"});
   const Vcd vcd = read_vcd(out);
   const auto falling = edges(vcd, "clock", 0);
@@ -137,7 +135,7 @@ TEST(SynthSsi, BinaryAndGrayWordsOfAQuarterTurn) {
   // 0.25 turn at 4096 counts/turn = 1024. Data field N = 24 at M = 1, stream bit 25 unused (0):
   // binary word 1024 << 1 = 2048; Gray(1024) = 1024 ^ 512 = 1536, word 3072. Either decodes to 1024.
   for (const bool gray : {false, true}) {
-    const std::string out = kDir + (gray ? "/synth_ssi_gray.vcd" : "/synth_ssi_bin.vcd");
+    const std::string out = test::kSynthDir + (gray ? "/synth_ssi_gray.vcd" : "/synth_ssi_bin.vcd");
     std::vector<std::string> args{"ssi", "--out", out, "--frames", "2", "--start", "0.25"};
     if (gray) args.emplace_back("--gray");
     synth(args);
@@ -165,7 +163,7 @@ TEST(SynthSsi, BinaryAndGrayWordsOfAQuarterTurn) {
 TEST(SynthSsi, TurningShaftIsLatchedAtEachFrame) {
   // 60 rpm = 1 turn/s, 4096 counts/turn: latched at F1 = 20, 520, 1020, 1520 us ->
   // floor(4096 * t) = 0 (0.08), 2 (2.13), 4 (4.18), 6 (6.23).
-  const std::string out = kDir + "/synth_ssi_turning.vcd";
+  const std::string out = test::kSynthDir + "/synth_ssi_turning.vcd";
   synth({"ssi", "--out", out, "--frames", "4", "--rpm", "60"});
   const Vcd vcd = read_vcd(out);
   const auto& values = vcd.of.at("value");
@@ -178,7 +176,7 @@ TEST(SynthSsi, TurningShaftIsLatchedAtEachFrame) {
 }
 
 TEST(SynthSsi, SlaveFaultsReachTheDecodedWord) {
-  const std::string out = kDir + "/synth_ssi_fault.vcd";
+  const std::string out = test::kSynthDir + "/synth_ssi_fault.vcd";
   // Stream bit 1 (the data MSB, weight 2^24 in the word) inverted on the wire:
   // word 2048 | 2^24, value 1024 + 2^23.
   synth({"ssi", "--out", out, "--frames", "1", "--start", "0.25", "--flip-bit", "1"});
@@ -198,7 +196,7 @@ TEST(SynthSsi, LateDataShiftsTheWordByOneBit) {
   // 125 kHz: the 7361 reads bit k at R_k + 4 us. Data that changes 5 us after each rising
   // edge is read one slot late: slot 1 sees the latch level (0), slot k sees bit k-1. The
   // binary word 2048 (0.25 turn at 4096 counts) reads as 1024, the position as 512.
-  const std::string out = kDir + "/synth_ssi_late.vcd";
+  const std::string out = test::kSynthDir + "/synth_ssi_late.vcd";
   synth({"ssi", "--out", out, "--frames", "1", "--start", "0.25", "--late", "5us"});
   Vcd vcd = read_vcd(out);
   EXPECT_EQ(vcd.of.at("word").at(0).value, 1024u);

@@ -1,7 +1,8 @@
 #pragma once
 // Scratch files for tests that run the command line: a fresh directory under the build tree
-// (never a fixed machine path), and whole-file writes and reads.
+// (never a fixed machine path), whole-file writes and reads, and counting in what was read.
 
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -30,6 +31,13 @@ inline std::string read_file(const std::filesystem::path& p) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// How often `what` occurs in `text` (overlapping occurrences count).
+inline std::size_t count_of(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
 }
 
 } // namespace hilrig::test

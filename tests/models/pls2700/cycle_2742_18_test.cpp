@@ -16,7 +16,7 @@ namespace {
 using namespace hilrig::literals;
 using testing::Bench;
 
-constexpr double kTurnsPerSecond = 32.0 / 8192.0 / 0.0004;
+constexpr double kTurnsPerSecondAt400us = 32.0 / 8192.0 / 0.0004;
 
 std::vector<Nanos> times(const std::vector<Edge>& edges) {
   std::vector<Nanos> t;
@@ -29,7 +29,7 @@ std::vector<Nanos> times(const std::vector<Edge>& edges) {
 class Cycle18 : public ::testing::Test {
 protected:
   Cycle18() {
-    b.shaft(1, signals::angle_at_constant_speed(0.5 / 8192.0, kTurnsPerSecond));
+    b.shaft(1, signals::angle_at_constant_speed(0.5 / 8192.0, kTurnsPerSecondAt400us));
     b.hold(2, 0, 360);
   }
   void program(std::uint16_t tr_word, std::uint16_t advances, std::uint16_t on, std::uint16_t off) {

@@ -11,7 +11,7 @@ namespace {
 using namespace hilrig::literals;
 using testing::Bench;
 
-constexpr double kTurnsPerSecond = 32.0 / 8192.0 / 0.0002; // 16 MP counts per 200 us at SF 4096
+constexpr double kTurnsPerSecondAt200us = 32.0 / 8192.0 / 0.0002; // 16 MP counts per 200 us at SF 4096
 
 TEST(Pls2700Models, NamesRoundTrip) {
   EXPECT_EQ(kModels.size(), 7u);
@@ -59,7 +59,7 @@ TEST(Pls2700Models, UpdatePeriodBtrLengthAndScaleFactorCeiling) {
 std::vector<Edge> run_window(Fault fault, std::uint16_t adv) {
   Bench b(ModelVariant::M2741, {}, fault);
   EXPECT_EQ(b.btw({0x8801, 0x4096, 0xC011, adv, 0x2000, 0x3000}), error::kNone);
-  b.shaft(1, signals::angle_at_constant_speed(0.5 / 8192.0, kTurnsPerSecond));
+  b.shaft(1, signals::angle_at_constant_speed(0.5 / 8192.0, kTurnsPerSecondAt200us));
   b.run_until(50_ms);
   return b.edges(1);
 }

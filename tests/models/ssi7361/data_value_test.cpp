@@ -10,13 +10,13 @@
 namespace hilrig::models::ssi7361::test {
 namespace {
 
-constexpr std::uint16_t kAck = qbit::kTransmit;
+constexpr std::uint16_t kTransmit = qbit::kTransmit;
 
 // Programs a format (and optionally scalars) with no error, or fails the test.
 void setup_format(Rig& rig, std::uint16_t format, std::uint16_t mul = 1, std::uint16_t div = 1) {
   ASSERT_EQ(
       rig.program(qbit::kFormat | qbit::kScalars, {.format = format, .multiplier = mul, .divisor = div}),
-      kAck);
+      kTransmit);
 }
 
 TEST(Ssi7361DataValue, M01_M04_CheckoutFormat266WithoutTransducerGives999) {
@@ -174,13 +174,13 @@ TEST(Ssi7361DataValue, NegativeCountDirectionIsTwoToTheNMinusField) {
   Rig rig;
   rig.attach_word_sensor();
   setup_format(rig, format_word(16, 10));
-  ASSERT_EQ(rig.program(qbit::kProgramDirection | qbit::kCountDirection), kAck);
+  ASSERT_EQ(rig.program(qbit::kProgramDirection | qbit::kCountDirection), kTransmit);
   rig.send(100);
   EXPECT_EQ(rig.dv(), 924); // 1024 - 100 (L1247-1248)
   EXPECT_EQ(rig.raw(), 100u);
   rig.send(0);
-  EXPECT_EQ(rig.dv(), 1024);                             // literally 2^N: outside the N-bit range (A12)
-  ASSERT_EQ(rig.program(qbit::kProgramDirection), kAck); // back to Positive
+  EXPECT_EQ(rig.dv(), 1024);                                  // literally 2^N: outside the N-bit range (A12)
+  ASSERT_EQ(rig.program(qbit::kProgramDirection), kTransmit); // back to Positive
   EXPECT_EQ(rig.dv(), 0);
 }
 
@@ -190,7 +190,7 @@ TEST(Ssi7361DataValue, NegativeCountDirectionWrapsZeroWhenParameterised) {
   Rig rig(p);
   rig.attach_word_sensor();
   setup_format(rig, format_word(16, 10));
-  ASSERT_EQ(rig.program(qbit::kProgramDirection | qbit::kCountDirection), kAck);
+  ASSERT_EQ(rig.program(qbit::kProgramDirection | qbit::kCountDirection), kTransmit);
   rig.send(0);
   EXPECT_EQ(rig.dv(), 0);
   rig.send(1);

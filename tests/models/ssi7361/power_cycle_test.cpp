@@ -17,8 +17,6 @@
 namespace hilrig::models::ssi7361::test {
 namespace {
 
-constexpr std::uint16_t kBlockA =
-    qbit::kFormat | qbit::kScalars | qbit::kPresetValue | qbit::kRut | qbit::kProgramDirection; // 62 (M-02)
 const Aq kAqA{format_word(1, 10), 1000, 1024, 125'420, 500};
 
 Params first_frame_at(Nanos t) {

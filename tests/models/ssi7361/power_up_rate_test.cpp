@@ -18,7 +18,6 @@
 namespace hilrig::models::ssi7361::test {
 namespace {
 
-constexpr std::uint16_t kAck = ibit::kAcknowledge;
 constexpr std::int64_t kOverflowLimit = 64'108'863; // L2024
 
 // Samples the rate and %I every 500 us up to `until`; returns the largest |rate| seen and

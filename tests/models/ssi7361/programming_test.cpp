@@ -8,9 +8,6 @@
 namespace hilrig::models::ssi7361::test {
 namespace {
 
-constexpr std::uint16_t kAck = ibit::kAcknowledge;
-constexpr std::uint16_t kBlockA = 62; // %R1 of the checkout: Format, Scalars, PrstVal, RUT, PgmDir (M-02)
-
 // The checkout's block A (Table 3.1, L860-867): 266, 1000/1024, preset, RUT 500 ms.
 Aq checkout_block(std::int32_t preset) {
   return {.format = 266, .multiplier = 1000, .divisor = 1024, .preset = preset, .rut = 500};

@@ -14,8 +14,6 @@
 namespace hilrig::models::ssi7361::test {
 namespace {
 
-constexpr std::uint16_t kAck = ibit::kAcknowledge;
-
 // A full 25-bit field (M = 1, N = 25, 1/1) so DV = the value the ramp sends, and `rut`.
 void setup_rate(Rig& rig, std::uint16_t rut) {
   ASSERT_EQ(rig.program(qbit::kFormat | qbit::kRut, {.format = format_word(1, 25), .rut = rut}), kAck);

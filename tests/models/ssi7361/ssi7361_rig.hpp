@@ -23,6 +23,13 @@ namespace hilrig::models::ssi7361::test {
 
 using namespace hilrig::literals;
 
+// The status word a programming block that took returns.
+constexpr std::uint16_t kAck = ibit::kAcknowledge;
+// %R1 of the checkout, block A (M-02): Format, Scalars, PrstVal, RUT, PgmDir.
+constexpr std::uint16_t kBlockA = 62;
+static_assert(kBlockA ==
+              (qbit::kFormat | qbit::kScalars | qbit::kPresetValue | qbit::kRut | qbit::kProgramDirection));
+
 // %AQ1 as the examples' notation writes it: (clk500<<15) | (M<<8) | (neg<<7) | (gray<<6) | N.
 constexpr std::uint16_t format_word(unsigned msb, unsigned bits, bool gray = false, bool negative = false,
                                     bool clock500 = false) {

@@ -8,8 +8,6 @@
 namespace hilrig::models::ssi7361::test {
 namespace {
 
-constexpr std::uint16_t kAck = ibit::kAcknowledge;
-
 Params with(Variant v) {
   Params p;
   p.variant = v;
