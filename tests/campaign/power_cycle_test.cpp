@@ -117,7 +117,7 @@ TEST_P(PowerCycleCampaign, PassesAndItsChecksJudgeThePowerCycle) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    ShippedPowerCycle, PowerCycleCampaign,
+    Shipped, PowerCycleCampaign,
     // 7361: CMDErr clears only on a valid cycle (seeds/004 L2037) or a power cycle (L254-256,
     // L921-923). 4501: no non-volatile memory, mode 1 at power-up (seeds/001 L176). SMD23E: after
     // a flash save the unit answers nothing until power is cycled (seeds/003 L2331), and loads the

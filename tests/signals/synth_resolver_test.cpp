@@ -22,18 +22,18 @@ namespace {
 using test::synth;
 
 // Real and integer value changes per leaf name, after $dumpvars.
-struct StatorSample {
+struct WireSample {
   long long time;
   double value;
 };
-struct StatorTrace {
-  std::map<std::string, std::vector<StatorSample>> of; // leaf name -> changes
+struct ResolverTrace {
+  std::map<std::string, std::vector<WireSample>> of; // leaf name -> changes
 };
 
-StatorTrace read_stators(const std::string& path) {
+ResolverTrace read_resolver_vcd(const std::string& path) {
   std::ifstream in(path);
   std::map<std::string, std::string> name_of; // id -> leaf
-  StatorTrace vcd;
+  ResolverTrace vcd;
   std::string line;
   bool body = false;
   bool in_dumpvars = false;
@@ -79,7 +79,7 @@ const double kTan30 = 1.0 / std::sqrt(3.0);
 TEST(SynthResolver, At30DegreesSinOverCosIsTan30) {
   const std::string out = test::kSynthDir + "/synth_resolver_30.vcd";
   synth({"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms"});
-  const StatorTrace vcd = read_stators(out);
+  const ResolverTrace vcd = read_resolver_vcd(out);
   const auto& ref = vcd.of.at("ref");
   const auto& sin = vcd.of.at("sin");
   const auto& cos = vcd.of.at("cos");
@@ -110,7 +110,7 @@ TEST(SynthResolver, TurningShaftEnvelopeFollowsTheAngle) {
   const std::string out = test::kSynthDir + "/synth_resolver_turning.vcd";
   synth({"resolver", "--out", out, "--rpm", "600", "--rate", "100e3", "--duration", "30ms", "--tr", "0.5",
          "--amplitude", "2", "--excitation-hz", "4000"});
-  const StatorTrace vcd = read_stators(out);
+  const ResolverTrace vcd = read_resolver_vcd(out);
   const auto& ref = vcd.of.at("ref");
   const auto& sin = vcd.of.at("sin");
   const auto& cos = vcd.of.at("cos");
@@ -131,33 +131,33 @@ TEST(SynthResolver, TurningShaftEnvelopeFollowsTheAngle) {
 
 TEST(SynthResolver, WindingFaults) {
   const std::string out = test::kSynthDir + "/synth_resolver_fault.vcd";
-  auto peak = [](const std::vector<StatorSample>& s) {
+  auto peak = [](const std::vector<WireSample>& s) {
     double m = 0.0;
-    for (const StatorSample& c : s) m = std::fmax(m, std::fabs(c.value));
+    for (const WireSample& c : s) m = std::fmax(m, std::fabs(c.value));
     return m;
   };
   // Open SIN coil: SIN reads zero, COS is untouched (cos 30 deg of a 1 V reference).
   synth({"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms", "--sin-open"});
-  StatorTrace vcd = read_stators(out);
+  ResolverTrace vcd = read_resolver_vcd(out);
   EXPECT_EQ(peak(vcd.of.at("sin")), 0.0);
   EXPECT_NEAR(peak(vcd.of.at("cos")), std::sqrt(3.0) / 2.0, 1e-9);
   // Excitation loss: both windings zero, the board's reference still there.
   synth(
       {"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms", "--excitation-loss"});
-  vcd = read_stators(out);
+  vcd = read_resolver_vcd(out);
   EXPECT_EQ(peak(vcd.of.at("sin")), 0.0);
   EXPECT_EQ(peak(vcd.of.at("cos")), 0.0);
   EXPECT_NEAR(peak(vcd.of.at("ref")), 1.0, 1e-12);
   // Imbalance: SIN gain 0.9 makes the envelope ratio 0.9 * tan 30.
   synth(
       {"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms", "--sin-gain", "0.9"});
-  vcd = read_stators(out);
+  vcd = read_resolver_vcd(out);
   EXPECT_NEAR(peak(vcd.of.at("sin")) / peak(vcd.of.at("cos")), 0.9 * kTan30, 1e-9);
   // Carrier phase shift of 90 deg on SIN: at the reference peak (50 us) SIN's carrier
   // sin(pi/2 + pi/2) = 0, at the reference zero (100 us) it is sin(pi + pi/2) = -1, times sin 30.
   synth(
       {"resolver", "--out", out, "--start", "30", "--rate", "1e6", "--duration", "1ms", "--sin-phase", "90"});
-  vcd = read_stators(out);
+  vcd = read_resolver_vcd(out);
   EXPECT_NEAR(vcd.of.at("sin")[50].value, 0.0, 1e-9);
   EXPECT_NEAR(vcd.of.at("sin")[100].value, -0.5, 1e-9);
 }
@@ -168,7 +168,7 @@ TEST(SynthResolver, EmulatorFramesInTraceAndCandumpLog) {
   synth({"resolver", "--out", out, "--rpm", "600", "--duration", "10ms", "--can-frames", "--frame-period",
          "1ms", "--can-log", log});
   // Frames at 0, 1, ..., 10 ms: 11 frames.
-  const StatorTrace vcd = read_stators(out);
+  const ResolverTrace vcd = read_resolver_vcd(out);
   const auto& angle = vcd.of.at("angle");
   const auto& sequence = vcd.of.at("sequence");
   ASSERT_EQ(angle.size(), 11u);
