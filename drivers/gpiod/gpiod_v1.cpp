@@ -6,7 +6,9 @@
 #include <cstring>
 
 #include "drivers/gpiod/input_request.hpp"
+#include "drivers/gpiod/line_names.hpp"
 #include "drivers/gpiod/output_request.hpp"
+#include "drivers/gpiod/request_line.hpp"
 
 namespace hilrig::gpiod {
 
@@ -41,20 +43,10 @@ int request_flags(const LineSettings& s) {
   return f;
 }
 
-std::string describe(const std::string& chip, std::span<const unsigned> offsets) {
-  std::string s = chip + " lines";
-  // Appended piecewise: GCC 12 at -O3 warns falsely (-Wrestrict) on " " + std::to_string(o).
-  for (unsigned o : offsets) {
-    s += ' ';
-    s += std::to_string(o);
-  }
-  return s;
-}
-
 // Opens the chip and collects the lines; the caller requests them.
 gpiod_chip* open_lines(const std::string& chip, std::span<const unsigned> offsets, gpiod_line_bulk& bulk) {
   if (offsets.empty() || offsets.size() > GPIOD_LINE_BULK_MAX_LINES) {
-    throw GpioError(describe(chip, offsets) + ": between 1 and 64 lines per request");
+    throw GpioError(line_names(chip, offsets) + ": between 1 and 64 lines per request");
   }
   gpiod_chip* c = gpiod_chip_open_lookup(chip.c_str());
   if (c == nullptr) throw GpioError("cannot open GPIO chip " + chip + ": " + std::strerror(errno));
@@ -63,7 +55,7 @@ gpiod_chip* open_lines(const std::string& chip, std::span<const unsigned> offset
     gpiod_line* line = gpiod_chip_get_line(c, o);
     if (line == nullptr) {
       gpiod_chip_close(c);
-      throw GpioError(describe(chip, offsets) + ": no line " + std::to_string(o) + ": " +
+      throw GpioError(line_names(chip, offsets) + ": no line " + std::to_string(o) + ": " +
                       std::strerror(errno));
     }
     gpiod_line_bulk_add(&bulk, line);
@@ -74,22 +66,6 @@ gpiod_chip* open_lines(const std::string& chip, std::span<const unsigned> offset
 Nanos to_nanos(const timespec& ts) {
   return Nanos{static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec};
 }
-
-// A core LineOutput over one line of a request.
-class RequestLine final : public LineOutput {
-public:
-  RequestLine(OutputRequest& request, std::uint16_t index) : request_(request), index_(index) {}
-  void set(Level level) override {
-    request_.write(index_, level);
-    level_ = level;
-  }
-  [[nodiscard]] Level driven() const override { return level_; }
-
-private:
-  OutputRequest& request_;
-  std::uint16_t index_;
-  Level level_ = Level::Low;
-};
 
 } // namespace
 
@@ -107,7 +83,7 @@ OutputRequest::OutputRequest(const std::string& chip, std::span<const unsigned> 
                                            values_.data()) != 0) {
     const int err = errno;
     gpiod_chip_close(impl_->chip);
-    throw GpioError(describe(chip, offsets) + ": output request refused: " + std::strerror(err));
+    throw GpioError(line_names(chip, offsets) + ": output request refused: " + std::strerror(err));
   }
   for (std::size_t i = 0; i < offsets_.size(); ++i) {
     impl_->views.push_back(std::make_unique<RequestLine>(*this, static_cast<std::uint16_t>(i)));
@@ -158,14 +134,14 @@ InputRequest::InputRequest(const std::string& chip, std::span<const unsigned> of
                            const LineSettings& settings, const std::string& consumer)
     : impl_(std::make_unique<Impl>()), offsets_(offsets.begin(), offsets.end()) {
   if (settings.debounce && !supports_debounce()) {
-    throw GpioError(describe(chip, offsets) + ": debounce asked for, but libgpiod 1.6 cannot set it");
+    throw GpioError(line_names(chip, offsets) + ": debounce asked for, but libgpiod 1.6 cannot set it");
   }
   impl_->chip = open_lines(chip, offsets, impl_->bulk);
   if (gpiod_line_request_bulk_both_edges_events_flags(&impl_->bulk, consumer.c_str(),
                                                       request_flags(settings)) != 0) {
     const int err = errno;
     gpiod_chip_close(impl_->chip);
-    throw GpioError(describe(chip, offsets) + ": edge-event request refused: " + std::strerror(err));
+    throw GpioError(line_names(chip, offsets) + ": edge-event request refused: " + std::strerror(err));
   }
   for (std::size_t i = 0; i < offsets_.size(); ++i) {
     const int fd = gpiod_line_event_get_fd(gpiod_line_bulk_get_line(&impl_->bulk, static_cast<unsigned>(i)));

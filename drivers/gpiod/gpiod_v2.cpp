@@ -11,7 +11,9 @@
 #include <cstring>
 
 #include "drivers/gpiod/input_request.hpp"
+#include "drivers/gpiod/line_names.hpp"
 #include "drivers/gpiod/output_request.hpp"
+#include "drivers/gpiod/request_line.hpp"
 
 namespace hilrig::gpiod {
 
@@ -19,16 +21,6 @@ namespace {
 
 // The kernel's limit on lines in one request (GPIO_V2_LINES_MAX), as in 1.6.
 constexpr std::size_t max_lines = 64;
-
-std::string describe(const std::string& chip, std::span<const unsigned> offsets) {
-  std::string s = chip + " lines";
-  // Appended piecewise: GCC 12 at -O3 warns falsely (-Wrestrict) on " " + std::to_string(o).
-  for (unsigned o : offsets) {
-    s += ' ';
-    s += std::to_string(o);
-  }
-  return s;
-}
 
 bool all_digits(const std::string& s) {
   return !s.empty() &&
@@ -121,14 +113,14 @@ gpiod_line_request* request_lines(const std::string& chip, std::span<const unsig
                                   gpiod_chip*& handle, RequestParts& parts, const std::string& consumer,
                                   const char* what) {
   if (offsets.empty() || offsets.size() > max_lines) {
-    throw GpioError(describe(chip, offsets) + ": between 1 and 64 lines per request");
+    throw GpioError(line_names(chip, offsets) + ": between 1 and 64 lines per request");
   }
   if (parts.settings == nullptr || parts.line_config == nullptr || parts.request_config == nullptr) {
-    throw GpioError(describe(chip, offsets) + ": out of memory");
+    throw GpioError(line_names(chip, offsets) + ": out of memory");
   }
   if (gpiod_line_config_add_line_settings(parts.line_config, offsets.data(), offsets.size(),
                                           parts.settings) != 0) {
-    throw GpioError(describe(chip, offsets) + ": line settings refused: " + std::strerror(errno));
+    throw GpioError(line_names(chip, offsets) + ": line settings refused: " + std::strerror(errno));
   }
   gpiod_request_config_set_consumer(parts.request_config, consumer.c_str());
   handle = open_chip(chip);
@@ -137,7 +129,7 @@ gpiod_line_request* request_lines(const std::string& chip, std::span<const unsig
     const int err = errno;
     gpiod_chip_close(handle);
     handle = nullptr;
-    throw GpioError(describe(chip, offsets) + ": " + what + " request refused: " + std::strerror(err));
+    throw GpioError(line_names(chip, offsets) + ": " + what + " request refused: " + std::strerror(err));
   }
   return r;
 }
@@ -145,22 +137,6 @@ gpiod_line_request* request_lines(const std::string& chip, std::span<const unsig
 gpiod_line_value value_of(Level level) {
   return is_high(level) ? GPIOD_LINE_VALUE_ACTIVE : GPIOD_LINE_VALUE_INACTIVE;
 }
-
-// A core LineOutput over one line of a request.
-class RequestLine final : public LineOutput {
-public:
-  RequestLine(OutputRequest& request, std::uint16_t index) : request_(request), index_(index) {}
-  void set(Level level) override {
-    request_.write(index_, level);
-    level_ = level;
-  }
-  [[nodiscard]] Level driven() const override { return level_; }
-
-private:
-  OutputRequest& request_;
-  std::uint16_t index_;
-  Level level_ = Level::Low;
-};
 
 } // namespace
 
@@ -246,7 +222,7 @@ InputRequest::InputRequest(const std::string& chip, std::span<const unsigned> of
   unsigned long debounce_us = 0;
   if (settings.debounce) {
     if (settings.debounce->count() < 0)
-      throw GpioError(describe(chip, offsets) + ": negative debounce period");
+      throw GpioError(line_names(chip, offsets) + ": negative debounce period");
     // Whole microseconds (the ABI's unit), rounded up so a line is never debounced for less.
     debounce_us = static_cast<unsigned long>((settings.debounce->count() + 999) / 1000);
   }
@@ -261,7 +237,7 @@ InputRequest::InputRequest(const std::string& chip, std::span<const unsigned> of
   }
   gpiod_request_config_set_event_buffer_size(parts.request_config, 16 * offsets.size());
   impl_->events = gpiod_edge_event_buffer_new(event_batch);
-  if (impl_->events == nullptr) throw GpioError(describe(chip, offsets) + ": out of memory");
+  if (impl_->events == nullptr) throw GpioError(line_names(chip, offsets) + ": out of memory");
   impl_->request = request_lines(chip, offsets, impl_->chip, parts, consumer, "edge-event");
   // Non-blocking, so poll() drains what is there and returns.
   const int fd = gpiod_line_request_get_fd(impl_->request);

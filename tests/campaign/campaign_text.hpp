@@ -11,6 +11,45 @@
 
 namespace hilrig::campaign::test {
 
+// A valid campaign up to its one check's setpoint, 27 lines: a reference PLS (on 10, off 20)
+// wired to the rig's encoder, one constant move, one throughput check; the check's table is
+// lines 23..27 and cases append to it.
+inline const std::string kCampaignToSetpoint = R"([campaign]
+name = "t"
+end = "100ms"
+[dut]
+model = "reference_pls"
+[dut.params]
+on = 10
+off = 20
+[[wiring]]
+rig = "enc.A"
+board = "A"
+[[wiring]]
+rig = "enc.B"
+board = "B"
+[[wiring]]
+rig = "ls1"
+board = "OUT"
+[motion]
+[[motion.move]]
+kind = "constant"
+speed_rpm = 60
+duration = "100ms"
+[[check]]
+kind = "throughput"
+name = "on"
+output = "ls1"
+setpoint = 10
+)";
+
+// The same campaign whole, 30 lines: the check's limit and an encoder of 100 lines = 400
+// counts/turn. Cases replace one line (replace_line) or append lines.
+inline const std::string kValidCampaign = kCampaignToSetpoint + R"(limit_us = 250
+[encoder]
+lines = 100
+)";
+
 // TEXT with its 1-based LINE replaced by WITH.
 inline std::string replace_line(const std::string& text, int line, const std::string& with) {
   std::size_t begin = 0;

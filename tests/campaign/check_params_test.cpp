@@ -14,61 +14,32 @@ namespace {
 
 using test::error_of;
 
-// A valid campaign; the check's table is lines 23..27 and cases append to it.
-const std::string kCheckBase = R"([campaign]
-name = "t"
-end = "100ms"
-[dut]
-model = "reference_pls"
-[dut.params]
-on = 10
-off = 20
-[[wiring]]
-rig = "enc.A"
-board = "A"
-[[wiring]]
-rig = "enc.B"
-board = "B"
-[[wiring]]
-rig = "ls1"
-board = "OUT"
-[motion]
-[[motion.move]]
-kind = "constant"
-speed_rpm = 60
-duration = "100ms"
-[[check]]
-kind = "throughput"
-name = "on"
-output = "ls1"
-setpoint = 10
-)";
-
 TEST(CheckParams, AValidLimitIsAccepted) {
-  EXPECT_EQ(error_of(kCheckBase + "limit_us = 20.3\n"), "accepted");
+  EXPECT_EQ(error_of(test::kCampaignToSetpoint + "limit_us = 20.3\n"), "accepted");
 }
 
 TEST(CheckParams, NotFiniteOrNegativeLimitIsBadInputAtItsValue) {
   // Line 28 is the appended key; its value starts at column 12.
   for (const char* bad : {"nan", "+inf", "-inf", "-0.5"}) {
     SCOPED_TRACE(bad);
-    EXPECT_EQ(error_of(kCheckBase + "limit_us = " + bad + "\n"),
+    EXPECT_EQ(error_of(test::kCampaignToSetpoint + "limit_us = " + bad + "\n"),
               "t.toml:28:12: check[0].limit_us: a finite number >= 0");
   }
-  EXPECT_EQ(error_of(kCheckBase + "limit_us = 20\ntimeout_us = 0\n"),
+  EXPECT_EQ(error_of(test::kCampaignToSetpoint + "limit_us = 20\ntimeout_us = 0\n"),
             "t.toml:29:14: check[0].timeout_us: a finite number > 0");
-  EXPECT_EQ(error_of(kCheckBase + "limit_us = 20\nsetpoint_x = nan\n")
+  EXPECT_EQ(error_of(test::kCampaignToSetpoint + "limit_us = 20\nsetpoint_x = nan\n")
                 .rfind("t.toml:29:14: check[0].setpoint_x: a parameter of throughput", 0),
             0U);
 }
 
 TEST(CheckParams, MinimumOfZeroIsBadInput) {
-  EXPECT_EQ(error_of(kCheckBase + "limit_us = 20\nmin_count = 0\n"),
+  EXPECT_EQ(error_of(test::kCampaignToSetpoint + "limit_us = 20\nmin_count = 0\n"),
             "t.toml:29:13: check[0].min_count: an integer >= 1");
 }
 
 TEST(CheckParams, ACampaignWithNoCheckIsBadInput) {
-  const std::string no_check = kCheckBase.substr(0, kCheckBase.find("[[check]]"));
+  const std::string no_check =
+      test::kCampaignToSetpoint.substr(0, test::kCampaignToSetpoint.find("[[check]]"));
   const std::string got = error_of(no_check);
   EXPECT_NE(got.find("check: at least one [[check]]"), std::string::npos) << got;
   EXPECT_EQ(got.rfind("t.toml:", 0), 0U) << got;

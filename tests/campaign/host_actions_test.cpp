@@ -152,7 +152,7 @@ TEST(HostActions, RawWriteTakesNoTimeoutButMaySetTransmit) {
 // The shipped amci4501_acknowledge campaign has status 1 and a registration of 4096 at 46 ms;
 // here the host acknowledges at 50 ms with a raw write of control word 0x0001 alone.
 TEST(HostActions, Amci4501RawControlBit0ActsWithoutAProgrammingCycle) {
-  std::string text = test::read_text(test::campaign_dir("amci4501") + "/amci4501_acknowledge.toml");
+  std::string text = test::read_file(test::campaign_dir("amci4501") + "/amci4501_acknowledge.toml");
   text = replaced(text,
                   "at = \"50ms\"\nprogram = \"mode\"\nmode = 1\ntimeout_ms = 1000\nacknowledge = true\n"
                   "name = \"acknowledge_with_transmit\"",

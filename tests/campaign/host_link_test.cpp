@@ -31,7 +31,7 @@
 #include "rig/cli/run_command.hpp"
 #include "rig/results/results_json.hpp"
 #include "tests/tools/scratch_files.hpp"
-#include "vcd_last_values.hpp"
+#include "tests/tools/vcd_reader.hpp"
 
 namespace hilrig::campaign {
 namespace {
@@ -277,13 +277,15 @@ void expect_named_failure_and_captured_data(FaultyBoard::Fault fault, const std:
   EXPECT_EQ(run0.checks[0].check, "host");
   EXPECT_EQ(run0.checks[0].measurements.size(), 4U); // cb2, cb10, cb11, cb1 acknowledged
 
-  const auto wires = test::read_vcd_wires((out / "trace.vcd").string());
-  ASSERT_TRUE(wires.count("batch1_done")) << "no batch1_done in the trace";
-  const auto& pulse = wires.at("batch1_done").values;
-  EXPECT_EQ(std::count(pulse.begin(), pulse.end(), '1'), 1); // on once, at the 8th part cycle
+  const hilrig::test::Vcd vcd = hilrig::test::read_vcd_file((out / "trace.vcd").string());
+  const hilrig::test::VcdVar* done = vcd.find("batch1_done");
+  ASSERT_NE(done, nullptr) << "no batch1_done in the trace";
+  const std::vector<std::string> pulse = done->values();
+  EXPECT_EQ(std::count(pulse.begin(), pulse.end(), "1"), 1); // on once, at the 8th part cycle
   for (const char* line : {"enc.A", "enc.B"}) {
-    ASSERT_TRUE(wires.count(line)) << line;
-    EXPECT_EQ(wires.at(line).values.back(), '0') << line << " not left inactive";
+    const hilrig::test::VcdVar* wire = vcd.find(line);
+    ASSERT_NE(wire, nullptr) << line;
+    EXPECT_EQ(wire->values().back(), "0") << line << " not left inactive";
   }
 }
 

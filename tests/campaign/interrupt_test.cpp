@@ -24,7 +24,7 @@
 #include "../results/json_schema_subset.hpp"
 #include "rig/results/results_json.hpp"
 #include "tests/tools/scratch_files.hpp"
-#include "vcd_last_values.hpp"
+#include "tests/tools/vcd_reader.hpp"
 
 extern char** environ;
 
@@ -174,11 +174,12 @@ TEST(Interrupt, SigtermLeavesEveryOutputInactiveAndAReadablePartialReport) {
   for (const char* f : {"results.json.tmp", "trace.vcd.tmp"}) EXPECT_FALSE(fs::exists(out / f)) << f;
 
   // Every line the rig drives ends at its inactive level (low) in the trace.
-  const auto wires = test::read_vcd_wires((out / "trace.vcd").string());
+  const hilrig::test::Vcd vcd = hilrig::test::read_vcd_file((out / "trace.vcd").string());
   for (const char* line : {"enc.A", "enc.B", "in1"}) {
-    ASSERT_TRUE(wires.count(line)) << line;
-    ASSERT_FALSE(wires.at(line).values.empty()) << line;
-    EXPECT_EQ(wires.at(line).values.back(), '0') << line;
+    const hilrig::test::VcdVar* wire = vcd.find(line);
+    ASSERT_NE(wire, nullptr) << line;
+    ASSERT_FALSE(wire->values().empty()) << line;
+    EXPECT_EQ(wire->values().back(), "0") << line;
   }
 }
 

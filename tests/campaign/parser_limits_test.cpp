@@ -29,39 +29,6 @@ using test::replace_line;
 
 namespace fs = std::filesystem;
 
-// A valid campaign, 30 lines (reference PLS, encoder of 100 lines = 400 counts/turn).
-const std::string kLimitsBase = R"([campaign]
-name = "t"
-end = "100ms"
-[dut]
-model = "reference_pls"
-[dut.params]
-on = 10
-off = 20
-[[wiring]]
-rig = "enc.A"
-board = "A"
-[[wiring]]
-rig = "enc.B"
-board = "B"
-[[wiring]]
-rig = "ls1"
-board = "OUT"
-[motion]
-[[motion.move]]
-kind = "constant"
-speed_rpm = 60
-duration = "100ms"
-[[check]]
-kind = "throughput"
-name = "on"
-output = "ls1"
-setpoint = 10
-limit_us = 250
-[encoder]
-lines = 100
-)";
-
 ::testing::AssertionResult accepted(const std::string& text) {
   const std::string got = error_of(text);
   if (got == "accepted") return ::testing::AssertionSuccess();
@@ -82,14 +49,15 @@ std::string file_error_of(const std::string& path) {
 TEST(CampaignLimits, NanAndInfAreRefusedWhereverANumberIsExpected) {
   for (const char* v : {"nan", "+nan", "-nan", "inf", "+inf", "-inf"}) {
     // speed_rpm's value starts at column 13.
-    EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 21, fmt::format("speed_rpm = {}", v)),
+    EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 21, fmt::format("speed_rpm = {}", v)),
                             "t.toml:21:13: motion.move[0].speed_rpm: a finite number"))
         << v;
-    EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 18, fmt::format("[motion]\nstart_turns = {}", v)),
-                            "t.toml:19:15: motion.start_turns: a finite number"))
+    EXPECT_TRUE(
+        rejected_at(replace_line(test::kValidCampaign, 18, fmt::format("[motion]\nstart_turns = {}", v)),
+                    "t.toml:19:15: motion.start_turns: a finite number"))
         << v;
     // A press stroke's brake angle passed the old [0, 360) test as nan (every comparison false).
-    EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 20,
+    EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 20,
                                          fmt::format("kind = \"press_stroke\"\ndecel_rpm_s = 100\n"
                                                      "brake_at_deg = {}",
                                                      v)),
@@ -104,45 +72,50 @@ TEST(CampaignLimits, ScanSweptAcrossTheReferencePlsRange) {
   // reference_pls declares scan in 1us .. 100ms (rig/duts/reference_pls.cpp); line 7 col 8.
   const std::string want = "t.toml:7:8: dut.params.scan: a value in 1us .. 100ms";
   for (const char* bad : {"\"-1ms\"", "\"0ns\"", "\"1ns\"", "\"999ns\"", "\"100000001ns\"", "\"1s\""})
-    EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 7, fmt::format("scan = {}\non = 10", bad)), want))
+    EXPECT_TRUE(
+        rejected_at(replace_line(test::kValidCampaign, 7, fmt::format("scan = {}\non = 10", bad)), want))
         << bad;
   for (const char* good : {"\"1us\"", "\"1001ns\"", "\"200us\"", "\"99999999ns\"", "\"100ms\""})
-    EXPECT_TRUE(accepted(replace_line(kLimitsBase, 7, fmt::format("scan = {}\non = 10", good)))) << good;
+    EXPECT_TRUE(accepted(replace_line(test::kValidCampaign, 7, fmt::format("scan = {}\non = 10", good))))
+        << good;
 }
 
 TEST(CampaignLimits, NegativeDelaysAreRefused) {
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 7, "delay = \"-1ns\"\non = 10"),
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 7, "delay = \"-1ns\"\non = 10"),
                           "t.toml:7:9: dut.params.delay: a value in 0s .. 1s"));
-  EXPECT_TRUE(accepted(replace_line(kLimitsBase, 7, "delay = \"0ns\"\non = 10")));
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 7, "filter = \"-5ms\"\non = 10"),
+  EXPECT_TRUE(accepted(replace_line(test::kValidCampaign, 7, "delay = \"0ns\"\non = 10")));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 7, "filter = \"-5ms\"\non = 10"),
                           "t.toml:7:10: dut.params.filter: a value in 0s .. 1s"));
 }
 
 TEST(CampaignLimits, CountsOutsideTheHostWordAreRefused) {
   // The reference PLS's counts travel in 16-bit host words: -32768 .. 32767.
-  EXPECT_TRUE(accepted(replace_line(kLimitsBase, 8, "off = 32767")));
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 8, "off = 32768"),
+  EXPECT_TRUE(accepted(replace_line(test::kValidCampaign, 8, "off = 32767")));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 8, "off = 32768"),
                           "t.toml:8:7: dut.params.off: a value in -32768 .. 32767"));
-  EXPECT_TRUE(accepted(replace_line(kLimitsBase, 7, "on = -32768")));
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 7, "on = -32769"),
+  EXPECT_TRUE(accepted(replace_line(test::kValidCampaign, 7, "on = -32768")));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 7, "on = -32769"),
                           "t.toml:7:6: dut.params.on: a value in -32768 .. 32767"));
 }
 
 TEST(CampaignLimits, CampaignTimesOutsideTheRigsRangeAreRefused) {
   // end: 1 ns .. 1 h (limits::kMaxEnd); line 3 col 7.
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 3, "end = \"3600000000001ns\""),
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"3600000000001ns\""),
                           "t.toml:3:7: campaign.end: a duration in 1ns .. 3600s"));
-  EXPECT_TRUE(accepted(replace_line(kLimitsBase, 3, "end = \"3600s\"")));
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 3, "end = \"-1s\""), "t.toml:3:7: campaign.end:"));
+  EXPECT_TRUE(accepted(replace_line(test::kValidCampaign, 3, "end = \"3600s\"")));
+  EXPECT_TRUE(
+      rejected_at(replace_line(test::kValidCampaign, 3, "end = \"-1s\""), "t.toml:3:7: campaign.end:"));
   // host_poll: 10 us .. 1 s (a 1 ns poll is 10^9 polls per virtual second).
   for (const char* bad : {"\"1ns\"", "\"9999ns\"", "\"0us\"", "\"-1ms\"", "\"1000000001ns\""})
-    EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 3, fmt::format("end = \"100ms\"\nhost_poll = {}", bad)),
-                            "t.toml:4:13: campaign.host_poll: a duration in 10us .. 1s"))
+    EXPECT_TRUE(rejected_at(
+        replace_line(test::kValidCampaign, 3, fmt::format("end = \"100ms\"\nhost_poll = {}", bad)),
+        "t.toml:4:13: campaign.host_poll: a duration in 10us .. 1s"))
         << bad;
   for (const char* good : {"\"10us\"", "\"10001ns\"", "\"1s\""})
-    EXPECT_TRUE(accepted(replace_line(kLimitsBase, 3, fmt::format("end = \"100ms\"\nhost_poll = {}", good))))
+    EXPECT_TRUE(
+        accepted(replace_line(test::kValidCampaign, 3, fmt::format("end = \"100ms\"\nhost_poll = {}", good))))
         << good;
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 3, "end = \"100ms\"\nedge_tolerance = \"-1us\""),
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nedge_tolerance = \"-1us\""),
                           "t.toml:4:18: campaign.edge_tolerance: a duration in 1ns .. 1s"));
 }
 
@@ -153,16 +126,18 @@ TEST(CampaignLimits, SpeedsBeyondTheSpeedWordAreRefused) {
   // counts/s at that speed, under the 10^6 counts/s bound.
   const std::string want = "t.toml:21:13: motion.move[0].speed_rpm: a speed in rpm in -32767 .. 32767";
   for (const char* bad : {"9.2e18", "1e12", "32767.01", "-32767.01", "32768"})
-    EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 21, fmt::format("speed_rpm = {}", bad)), want)) << bad;
+    EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 21, fmt::format("speed_rpm = {}", bad)), want))
+        << bad;
   for (const char* good : {"32767", "-32767", "32766.99", "0"})
-    EXPECT_TRUE(accepted(replace_line(kLimitsBase, 21, fmt::format("speed_rpm = {}", good)))) << good;
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 20, "kind = \"accelerate\"\nto_rpm = 1e12"),
+    EXPECT_TRUE(accepted(replace_line(test::kValidCampaign, 21, fmt::format("speed_rpm = {}", good))))
+        << good;
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 20, "kind = \"accelerate\"\nto_rpm = 1e12"),
                           "t.toml:21:10: motion.move[0].to_rpm: a speed in rpm in -32767 .. 32767"));
 }
 
 TEST(CampaignLimits, EncoderCountRateBoundsTheSpeed) {
   // 1000 lines = 4000 counts/turn; 10^6 counts/s (docs/spec/amci4501.md L292) is 15000 rpm.
-  const std::string lines1000 = replace_line(kLimitsBase, 30, "lines = 1000");
+  const std::string lines1000 = replace_line(test::kValidCampaign, 30, "lines = 1000");
   EXPECT_TRUE(accepted(replace_line(lines1000, 21, "speed_rpm = 15000")));
   EXPECT_TRUE(accepted(replace_line(lines1000, 21, "speed_rpm = -15000")));
   EXPECT_TRUE(rejected_at(replace_line(lines1000, 21, "speed_rpm = 15000.01"),
@@ -172,7 +147,7 @@ TEST(CampaignLimits, EncoderCountRateBoundsTheSpeed) {
 
 TEST(CampaignLimits, TrapezoidAndPressBoundsAreRefused) {
   const std::string trap =
-      replace_line(kLimitsBase, 20, "kind = \"trapezoid\"\naccel_rpm_s = 100\nturns = 1");
+      replace_line(test::kValidCampaign, 20, "kind = \"trapezoid\"\naccel_rpm_s = 100\nturns = 1");
   // Lines 20..24 now: kind, accel, turns, speed_rpm = 60, duration (unknown for a trapezoid).
   const std::string t = replace_line(trap, 24, "");
   EXPECT_TRUE(accepted(t));
@@ -221,7 +196,7 @@ TEST(CampaignLimits, UnknownSeries2700ModelIsBadInputNotARigFault) {
 TEST(CampaignLimits, SweptValuesAreCheckedAgainstTheSameRanges) {
   // The second value of the axis (line 33, col 20) is out of reference_pls's scan range.
   const std::string text =
-      kLimitsBase + "[[sweep]]\nkey = \"dut.params.scan\"\nvalues = [\"200us\", \"1ns\"]\n";
+      test::kValidCampaign + "[[sweep]]\nkey = \"dut.params.scan\"\nvalues = [\"200us\", \"1ns\"]\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:33:20: dut.params.scan: a value in 1us .. 100ms"));
 }
 
@@ -260,22 +235,22 @@ TEST(CampaignLimits, EveryDeviceParameterDeclaresARangeHoldingItsDefault) {
 
 TEST(CampaignLimits, RepeatIsBoundedNotAnOutOfMemory) {
   // repeat = 100000000 died with bad_alloc (exit 3); now line 4 col 10 names the bound.
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 3, "end = \"100ms\"\nrepeat = 100000000"),
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 100000000"),
                           "t.toml:4:10: campaign.repeat: a repetition count in 1 .. 10000"));
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 3, "end = \"100ms\"\nrepeat = 10001"),
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 10001"),
                           "t.toml:4:10: campaign.repeat: a repetition count in 1 .. 10000"));
   const Campaign c =
-      parse_campaign(replace_line(kLimitsBase, 3, "end = \"100ms\"\nrepeat = 10000"), "t.toml");
+      parse_campaign(replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 10000"), "t.toml");
   EXPECT_EQ(c.runs.size(), 10'000U);
 }
 
 TEST(CampaignLimits, PlanOfMoreThanTenThousandRunsIsRefused) {
   // 2 sweep points x 5000 repeats = 10,000 runs: the bound; 5001 repeats is 10,002.
   const std::string sweep = "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", \"60us\"]\n";
-  const Campaign c =
-      parse_campaign(replace_line(kLimitsBase, 3, "end = \"100ms\"\nrepeat = 5000") + sweep, "t.toml");
+  const Campaign c = parse_campaign(
+      replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 5000") + sweep, "t.toml");
   EXPECT_EQ(c.runs.size(), 10'000U);
-  EXPECT_TRUE(rejected_at(replace_line(kLimitsBase, 3, "end = \"100ms\"\nrepeat = 5001") + sweep,
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 5001") + sweep,
                           "t.toml:4:10: campaign.repeat: a plan of at most 10000 runs (2 sweep point(s) x "
                           "(5001 repeat + 0 fault(s)) is 10002)"));
 }
@@ -285,8 +260,8 @@ TEST(CampaignLimits, SweepOfMoreThanAThousandPointsIsRefusedBeforeItIsBuilt) {
   // product if it were computed first. Axis 1's key (line 35) is where the bound is crossed.
   std::string values;
   for (int i = 0; i < 40; ++i) values += fmt::format("{}\"{}us\"", i == 0 ? "" : ", ", 50 + i);
-  const std::string text = kLimitsBase + "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [" + values +
-                           "]\n[[sweep]]\nkey = \"dut.params.filter\"\nvalues = [" + values + "]\n";
+  const std::string text = test::kValidCampaign + "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [" +
+                           values + "]\n[[sweep]]\nkey = \"dut.params.filter\"\nvalues = [" + values + "]\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:35:7: sweep: at most 1000 sweep points"));
   std::string many;
   for (int a = 0; a < 11; ++a) {
@@ -294,18 +269,18 @@ TEST(CampaignLimits, SweepOfMoreThanAThousandPointsIsRefusedBeforeItIsBuilt) {
     for (int i = 0; i < 100; ++i) v += fmt::format("{}{}", i == 0 ? "" : ", ", i);
     many += fmt::format("[[sweep]]\nkey = \"motion.move[0].x{}\"\nvalues = [{}]\n", a, v);
   }
-  EXPECT_TRUE(rejected_at(kLimitsBase + many, "t.toml:35:7: sweep: at most 1000 sweep points"));
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + many, "t.toml:35:7: sweep: at most 1000 sweep points"));
 }
 
 TEST(CampaignLimits, HugeArrayIndexInASweepKeyIsBadInputNotAnUncaughtException) {
   // std::stoull threw std::out_of_range for a 30-digit index, past every catch of `hilrig run`.
-  EXPECT_TRUE(rejected_at(kLimitsBase +
+  EXPECT_TRUE(rejected_at(test::kValidCampaign +
                               "[[sweep]]\nkey = \"motion.move[999999999999999999999999999999].speed_rpm\"\n"
                               "values = [1, 2]\n",
                           "t.toml:32:7: sweep[0].key: a key path in this file"));
-  EXPECT_TRUE(
-      rejected_at(kLimitsBase + "[[sweep]]\nkey = \"motion.move[1000000000].speed_rpm\"\nvalues = [1]\n",
-                  "t.toml:32:7: sweep[0].key: a key path in this file"));
+  EXPECT_TRUE(rejected_at(test::kValidCampaign +
+                              "[[sweep]]\nkey = \"motion.move[1000000000].speed_rpm\"\nvalues = [1]\n",
+                          "t.toml:32:7: sweep[0].key: a key path in this file"));
 }
 
 // ---- adversarial files ----------------------------------------------------------------------
@@ -318,41 +293,44 @@ std::string dotted(std::size_t parts) {
 
 TEST(CampaignLimits, FiftyThousandPartDottedKeyIsRefusedNotACrash) {
   // It overflowed the stack inside toml++ (a table nested per part).
-  EXPECT_TRUE(rejected_at(kLimitsBase + dotted(50'000) + " = 1\n",
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + dotted(50'000) + " = 1\n",
                           "t.toml:31:2: toml: a dotted key or table name of at most 64 parts"));
-  EXPECT_TRUE(rejected_at(kLimitsBase + "[" + dotted(50'000) + "]\n",
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + "[" + dotted(50'000) + "]\n",
                           "t.toml:31:3: toml: a dotted key or table name of at most 64 parts"));
-  EXPECT_TRUE(rejected_at(kLimitsBase + "[[" + dotted(50'000) + "]]\n",
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + "[[" + dotted(50'000) + "]]\n",
                           "t.toml:31:4: toml: a dotted key or table name of at most 64 parts"));
   // Quoted parts count as parts; blanks around the dots do not hide them.
   std::string quoted = "\"a\"";
   for (int i = 1; i < 65; ++i) quoted += " . \"a\"";
-  EXPECT_TRUE(rejected_at(kLimitsBase + quoted + " = 1\n", "t.toml:31:"));
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + quoted + " = 1\n", "t.toml:31:"));
 }
 
 TEST(CampaignLimits, KeyPartBoundIsExactAndIgnoresDotsInValues) {
   // 64 parts pass the bound (and are then an unknown key of [encoder]); 65 do not.
-  EXPECT_TRUE(rejected_at(kLimitsBase + dotted(64) + " = 1\n", "t.toml:31:1: encoder.a: unknown key"));
-  EXPECT_TRUE(rejected_at(kLimitsBase + dotted(65) + " = 1\n", "t.toml:31:2: toml: a dotted key"));
+  EXPECT_TRUE(
+      rejected_at(test::kValidCampaign + dotted(64) + " = 1\n", "t.toml:31:1: encoder.a: unknown key"));
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + dotted(65) + " = 1\n", "t.toml:31:2: toml: a dotted key"));
   // Dots inside strings, comments and a row of floats are no key parts.
   std::string dots(1000, '.');
   std::string floats;
   for (int i = 0; i < 200; ++i) floats += fmt::format("{}{}.5", i == 0 ? "" : ", ", i);
-  EXPECT_EQ(error_of(replace_line(kLimitsBase, 2, "name = \"t" + dots + "\" # " + dots)), "accepted");
-  EXPECT_EQ(
-      error_of(replace_line(kLimitsBase, 2, "description = '''" + dots + "\n" + dots + "'''\nname = \"t\"")),
-      "accepted");
-  EXPECT_EQ(error_of(kLimitsBase + "[[sweep]]\nkey = \"motion.start_turns\"\nvalues = [" + floats + "]\n"),
+  EXPECT_EQ(error_of(replace_line(test::kValidCampaign, 2, "name = \"t" + dots + "\" # " + dots)),
             "accepted");
+  EXPECT_EQ(error_of(replace_line(test::kValidCampaign, 2,
+                                  "description = '''" + dots + "\n" + dots + "'''\nname = \"t\"")),
+            "accepted");
+  EXPECT_EQ(
+      error_of(test::kValidCampaign + "[[sweep]]\nkey = \"motion.start_turns\"\nvalues = [" + floats + "]\n"),
+      "accepted");
 }
 
 TEST(CampaignLimits, DeeplyNestedValuesAreRefusedNotACrash) {
   std::string arrays = "x = " + std::string(10'000, '[') + std::string(10'000, ']') + "\n";
-  EXPECT_TRUE(rejected_at(kLimitsBase + arrays, "t.toml:31:"));
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + arrays, "t.toml:31:"));
   std::string tables = "x = ";
   for (int i = 0; i < 10'000; ++i) tables += "{a = ";
   tables += "1" + std::string(10'000, '}') + "\n";
-  EXPECT_TRUE(rejected_at(kLimitsBase + tables, "t.toml:31:"));
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + tables, "t.toml:31:"));
 }
 
 TEST(CampaignLimits, OnlyARegularFileOfAtMostOneMebibyteIsRead) {
@@ -365,7 +343,7 @@ TEST(CampaignLimits, OnlyARegularFileOfAtMostOneMebibyteIsRead) {
   EXPECT_EQ(file_error_of("/dev/zero"), "file: a regular campaign file (/dev/zero is a device)");
   // Exactly the cap is read; one byte more is refused (a comment pads the valid campaign).
   const std::size_t cap = limits::kMaxFileBytes;
-  std::string text = kLimitsBase + "#";
+  std::string text = test::kValidCampaign + "#";
   text += std::string(cap - text.size() - 1, 'x') + "\n";
   ASSERT_EQ(text.size(), cap);
   EXPECT_EQ(file_error_of(hilrig::test::write_file(dir, "cap.toml", text).string()), "accepted");

@@ -18,41 +18,8 @@ using test::replace_line;
 
 using namespace hilrig::literals;
 
-// A valid campaign, 30 lines; cases replace one line or append lines.
-const std::string kBase = R"([campaign]
-name = "t"
-end = "100ms"
-[dut]
-model = "reference_pls"
-[dut.params]
-on = 10
-off = 20
-[[wiring]]
-rig = "enc.A"
-board = "A"
-[[wiring]]
-rig = "enc.B"
-board = "B"
-[[wiring]]
-rig = "ls1"
-board = "OUT"
-[motion]
-[[motion.move]]
-kind = "constant"
-speed_rpm = 60
-duration = "100ms"
-[[check]]
-kind = "throughput"
-name = "on"
-output = "ls1"
-setpoint = 10
-limit_us = 250
-[encoder]
-lines = 100
-)";
-
 TEST(CampaignParser, BaseCampaignIsAccepted) {
-  const Campaign c = parse_campaign(kBase, "t.toml");
+  const Campaign c = parse_campaign(test::kValidCampaign, "t.toml");
   EXPECT_EQ(c.name, "t");
   ASSERT_EQ(c.points.size(), 1U);
   EXPECT_EQ(c.points[0].end, 100_ms);
@@ -65,12 +32,13 @@ TEST(CampaignParser, BaseCampaignIsAccepted) {
 }
 
 TEST(CampaignParser, EdgeToleranceIsTheCampaignsOwnWhenSet) {
-  EXPECT_FALSE(parse_campaign(kBase, "t.toml").points[0].edge_tolerance.has_value());
-  const Campaign c =
-      parse_campaign(replace_line(kBase, 3, "end = \"100ms\"\nedge_tolerance = \"20us\""), "t.toml");
+  EXPECT_FALSE(parse_campaign(test::kValidCampaign, "t.toml").points[0].edge_tolerance.has_value());
+  const Campaign c = parse_campaign(
+      replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nedge_tolerance = \"20us\""), "t.toml");
   EXPECT_EQ(c.points[0].edge_tolerance, 20_us);
   // Line 4 is the new key; its value starts at column 18.
-  const std::string error = error_of(replace_line(kBase, 3, "end = \"100ms\"\nedge_tolerance = \"0us\""));
+  const std::string error =
+      error_of(replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nedge_tolerance = \"0us\""));
   EXPECT_EQ(error.rfind("t.toml:4:18: campaign.edge_tolerance: ", 0), 0U) << error;
 }
 
@@ -78,9 +46,9 @@ TEST(CampaignParser, EdgeToleranceIsTheCampaignsOwnWhenSet) {
 // outputs carry; anything else is bad input at the value (line 6, column 10: `serial = `).
 TEST(CampaignParser, DutSerialIsALabelOfAtMost64PrintableCharacters) {
   const auto with = [](const std::string& value) {
-    return replace_line(kBase, 5, "model = \"reference_pls\"\nserial = " + value);
+    return replace_line(test::kValidCampaign, 5, "model = \"reference_pls\"\nserial = " + value);
   };
-  EXPECT_EQ(parse_campaign(kBase, "t.toml").points[0].dut.serial, ""); // not given
+  EXPECT_EQ(parse_campaign(test::kValidCampaign, "t.toml").points[0].dut.serial, ""); // not given
   EXPECT_EQ(parse_campaign(with("\"SN 0042/A\""), "t.toml").points[0].dut.serial, "SN 0042/A");
   const std::string range =
       "t.toml:6:10: dut.serial: the board's serial number: 1 .. 64 printable ASCII characters";
@@ -96,79 +64,84 @@ TEST(CampaignParser, DutSerialIsALabelOfAtMost64PrintableCharacters) {
 
 TEST(CampaignParser, TomlSyntaxErrorGivesItsPosition) {
   // Line 7 "on = = 10": toml++ reports the second '=' at column 6.
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 7, "on = = 10"), "t.toml:7:"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 7, "on = = 10"), "t.toml:7:"));
 }
 
 TEST(CampaignParser, UnknownTopLevelKeyIsAnError) {
-  EXPECT_TRUE(rejected_at(kBase + "[motoin]\n", "t.toml:31:2: motoin: unknown key"));
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + "[motoin]\n", "t.toml:31:2: motoin: unknown key"));
 }
 
 TEST(CampaignParser, UnknownKeyInATableIsAnError) {
   // "lenes" instead of "lines" on line 30.
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 30, "lenes = 100"), "t.toml:30:1: encoder.lenes: unknown key"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 30, "lenes = 100"),
+                          "t.toml:30:1: encoder.lenes: unknown key"));
 }
 
 TEST(CampaignParser, UnknownDutParameterIsAnError) {
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 8, "of = 20"), "t.toml:8:1: dut.params.of: unknown key"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 8, "of = 20"),
+                          "t.toml:8:1: dut.params.of: unknown key"));
 }
 
 TEST(CampaignParser, UnknownCheckParameterIsAnError) {
   // The check registry rejects "limit" (it takes limit_us); the error points at the key's value.
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 28, "limit = 250"), "t.toml:28:9: check[0].limit:"));
+  EXPECT_TRUE(
+      rejected_at(replace_line(test::kValidCampaign, 28, "limit = 250"), "t.toml:28:9: check[0].limit:"));
 }
 
 TEST(CampaignParser, MissingRequiredCheckParameterNamesIt) {
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 28, ""), "t.toml:23:1: check[0].limit_us:"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 28, ""), "t.toml:23:1: check[0].limit_us:"));
 }
 
 TEST(CampaignParser, WrongTypeIsAnError) {
-  EXPECT_TRUE(
-      rejected_at(replace_line(kBase, 7, "on = \"ten\""), "t.toml:7:6: dut.params.on: expected an integer"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 7, "on = \"ten\""),
+                          "t.toml:7:6: dut.params.on: expected an integer"));
 }
 
 TEST(CampaignParser, DurationWithoutUnitIsAnError) {
-  EXPECT_TRUE(
-      rejected_at(replace_line(kBase, 3, "end = 100"), "t.toml:3:7: campaign.end: expected a duration"));
-  EXPECT_TRUE(
-      rejected_at(replace_line(kBase, 3, "end = \"100\""), "t.toml:3:7: campaign.end: expected a duration"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = 100"),
+                          "t.toml:3:7: campaign.end: expected a duration"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"100\""),
+                          "t.toml:3:7: campaign.end: expected a duration"));
 }
 
 TEST(CampaignParser, UnknownModelIsAnError) {
-  EXPECT_TRUE(
-      rejected_at(replace_line(kBase, 5, "model = \"pls9000\""), "t.toml:5:9: dut.model: a device model"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 5, "model = \"pls9000\""),
+                          "t.toml:5:9: dut.model: a device model"));
 }
 
 TEST(CampaignParser, UnknownVariantIsAnError) {
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 5, "model = \"reference_pls\"\nvariant = \"early\""),
-                          "t.toml:6:11: dut.variant: a variant of reference_pls"));
+  EXPECT_TRUE(
+      rejected_at(replace_line(test::kValidCampaign, 5, "model = \"reference_pls\"\nvariant = \"early\""),
+                  "t.toml:6:11: dut.variant: a variant of reference_pls"));
 }
 
 TEST(CampaignParser, WiringToAPinTheDutLacksIsAnError) {
-  EXPECT_TRUE(
-      rejected_at(replace_line(kBase, 17, "board = \"OUT2\""), "t.toml:17:9: wiring[2].board: a pin of"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 17, "board = \"OUT2\""),
+                          "t.toml:17:9: wiring[2].board: a pin of"));
 }
 
 TEST(CampaignParser, PinWiredTwiceIsAnError) {
-  EXPECT_TRUE(
-      rejected_at(replace_line(kBase, 17, "board = \"A\""), "t.toml:17:9: wiring[2].board: each board pin"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 17, "board = \"A\""),
+                          "t.toml:17:9: wiring[2].board: each board pin"));
 }
 
 TEST(CampaignParser, EncoderIntoABoardOutputIsAnError) {
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 11, "board = \"OUT\""), "t.toml:11:9: wiring[0].board:"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 11, "board = \"OUT\""),
+                          "t.toml:11:9: wiring[0].board:"));
 }
 
 TEST(CampaignParser, CheckNamingAnUnwiredLineIsAnError) {
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 26, "output = \"ls2\""),
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 26, "output = \"ls2\""),
                           "t.toml:26:10: check[0].output: a wired rig line"));
 }
 
 TEST(CampaignParser, UnknownCheckKindIsAnError) {
-  EXPECT_TRUE(
-      rejected_at(replace_line(kBase, 24, "kind = \"thruput\""), "t.toml:24:8: check[0].kind: a check kind"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 24, "kind = \"thruput\""),
+                          "t.toml:24:8: check[0].kind: a check kind"));
 }
 
 TEST(CampaignParser, StimuliOutOfOrderAreAnError) {
-  const std::string text = kBase + R"([[wiring]]
+  const std::string text = test::kValidCampaign + R"([[wiring]]
 rig = "en"
 board = "EN"
 [[stimulus]]
@@ -186,7 +159,7 @@ level = "low"
 }
 
 TEST(CampaignParser, StimulusOnAnUnwiredLineIsAnError) {
-  const std::string text = kBase + R"([[stimulus]]
+  const std::string text = test::kValidCampaign + R"([[stimulus]]
 kind = "pulse"
 line = "en"
 at = "20ms"
@@ -196,7 +169,7 @@ width = "1ms"
 }
 
 TEST(CampaignParser, StimulusOnABoardOutputIsAnError) {
-  const std::string text = kBase + R"([[stimulus]]
+  const std::string text = test::kValidCampaign + R"([[stimulus]]
 kind = "pulse"
 line = "ls1"
 at = "20ms"
@@ -206,7 +179,7 @@ width = "1ms"
 }
 
 TEST(CampaignParser, StimulusAfterTheEndIsAnError) {
-  const std::string text = kBase + R"([[wiring]]
+  const std::string text = test::kValidCampaign + R"([[wiring]]
 rig = "en"
 board = "EN"
 [[stimulus]]
@@ -220,7 +193,7 @@ level = "high"
 
 TEST(CampaignParser, KeyThatAStimulusKindDoesNotTakeIsAnError) {
   // A level stimulus has no width: a leftover key from a pulse must not be ignored.
-  const std::string text = kBase + R"([[wiring]]
+  const std::string text = test::kValidCampaign + R"([[wiring]]
 rig = "en"
 board = "EN"
 [[stimulus]]
@@ -234,7 +207,7 @@ width = "1ms"
 }
 
 TEST(CampaignParser, HostActionsOutOfOrderAreAnError) {
-  const std::string text = kBase + R"([[host]]
+  const std::string text = test::kValidCampaign + R"([[host]]
 at = "20ms"
 read = 1
 name = "count"
@@ -248,28 +221,30 @@ name = "count2"
 
 TEST(CampaignParser, HostWriteWithTransmitSetIsAnError) {
   // The rig drives Transmit (bit 15) itself.
-  const std::string text = kBase + "[[host]]\nat = \"1ms\"\nwrite = [0x8001, 5, 6]\n";
+  const std::string text = test::kValidCampaign + "[[host]]\nat = \"1ms\"\nwrite = [0x8001, 5, 6]\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:33:9: host[0].write: word 0 with Transmit"));
 }
 
 TEST(CampaignParser, HostReadPastTheLastInputWordIsAnError) {
   // reference_pls has 4 input words (0..3).
-  const std::string text = kBase + "[[host]]\nat = \"1ms\"\nread = 4\nname = \"x\"\n";
+  const std::string text = test::kValidCampaign + "[[host]]\nat = \"1ms\"\nread = 4\nname = \"x\"\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:33:8: host[0].read: an input word 0 .. 3"));
 }
 
 TEST(CampaignParser, FaultCaughtByAnUnknownCheckIsAnError) {
-  const std::string text = kBase + "[[fault]]\nname = \"f\"\nvariant = \"late\"\ncaught_by = \"of\"\n";
+  const std::string text =
+      test::kValidCampaign + "[[fault]]\nname = \"f\"\nvariant = \"late\"\ncaught_by = \"of\"\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:34:13: fault[0].caught_by: a check of this campaign"));
 }
 
 TEST(CampaignParser, FaultWithAnUnknownVariantIsAnError) {
-  const std::string text = kBase + "[[fault]]\nname = \"f\"\nvariant = \"lat\"\ncaught_by = \"on\"\n";
+  const std::string text =
+      test::kValidCampaign + "[[fault]]\nname = \"f\"\nvariant = \"lat\"\ncaught_by = \"on\"\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:33:11: fault[0].variant: a variant of reference_pls"));
 }
 
 TEST(CampaignParser, DiscreteStimulusAsASignalFaultIsAnError) {
-  const std::string text = kBase +
+  const std::string text = test::kValidCampaign +
                            "[[fault]]\nname = \"f\"\ncaught_by = \"on\"\n"
                            "signal = { kind = \"level\", line = \"enc.A\", at = \"1ms\", level = \"low\" }\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:34:19: fault[0].signal.kind: a signal fault"));
@@ -278,23 +253,25 @@ TEST(CampaignParser, DiscreteStimulusAsASignalFaultIsAnError) {
 TEST(CampaignParser, MoveThatCannotFollowIsAnError) {
   // A dwell while the shaft turns at 60 rpm.
   const std::string text =
-      replace_line(kBase, 22, "duration = \"100ms\"\n[[motion.move]]\nkind = \"dwell\"\nduration = \"1ms\"");
+      replace_line(test::kValidCampaign, 22,
+                   "duration = \"100ms\"\n[[motion.move]]\nkind = \"dwell\"\nduration = \"1ms\"");
   EXPECT_TRUE(rejected_at(text, "t.toml:23:1: motion.move[1]: a move that can follow"));
 }
 
 TEST(CampaignParser, SweepOfAMissingTableIsAnError) {
-  const std::string text = kBase + "[[sweep]]\nkey = \"plant.mass\"\nvalues = [1, 2]\n";
+  const std::string text = test::kValidCampaign + "[[sweep]]\nkey = \"plant.mass\"\nvalues = [1, 2]\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:32:7: sweep[0].key: a key path in this file"));
 }
 
 TEST(CampaignParser, BadSweepValueIsCaughtBeforeAnyRun) {
   // The second point sets delay to an integer: rejected at the value in the sweep array.
-  const std::string text = kBase + "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", 7]\n";
+  const std::string text =
+      test::kValidCampaign + "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", 7]\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:33:19: dut.params.delay: expected a duration"));
 }
 
 TEST(CampaignParser, SweepsMakeTheCartesianProductLastAxisFastest) {
-  const std::string text = replace_line(kBase, 3, "end = \"100ms\"\nrepeat = 2") +
+  const std::string text = replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 2") +
                            "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", \"100us\"]\n"
                            "[[sweep]]\nkey = \"motion.move[0].speed_rpm\"\nvalues = [30, 60, 90]\n"
                            "[[fault]]\nname = \"f\"\nvariant = \"late\"\ncaught_by = \"on\"\n";
@@ -319,8 +296,9 @@ TEST(CampaignParser, SweepsMakeTheCartesianProductLastAxisFastest) {
 
 TEST(CampaignParser, ExternalBoardNeedsAHardwareBackendAndItsPins) {
   // backend is not written (it defaults to virtual): the error points at the [dut] table.
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 5, "model = \"external\""), "t.toml:4:1: dut.backend:"));
-  EXPECT_TRUE(rejected_at(replace_line(kBase, 5, "model = \"external\"\nbackend = \"gpiod\""),
+  EXPECT_TRUE(
+      rejected_at(replace_line(test::kValidCampaign, 5, "model = \"external\""), "t.toml:4:1: dut.backend:"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 5, "model = \"external\"\nbackend = \"gpiod\""),
                           "t.toml:4:1: dut.pins: missing"));
 }
 

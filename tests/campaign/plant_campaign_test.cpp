@@ -56,7 +56,7 @@ TEST(Ans1PressPlant, StopsWhenThePhysicsSaysAndTheWornBrakeIsCaught) {
 TEST(Ans1PressPlant, AWornBrakeOverrunsAtTheWearThePhysicsPredicts) {
   const double s_star = 20.0 * std::numbers::pi * 2.0 / 2000.0 * 1e3 / (150.0 - 35.0);
   EXPECT_NEAR(s_star, 0.546364, 1e-6);
-  const std::string text = test::read_text(kPressFile);
+  const std::string text = test::read_file(kPressFile);
   const std::string nominal = "scale = 1.0";
   const std::size_t at = text.find(nominal);
   ASSERT_NE(at, std::string::npos);
@@ -74,7 +74,7 @@ TEST(Ans1PressPlant, AWornBrakeOverrunsAtTheWearThePhysicsPredicts) {
 
 // A sweep over a physical parameter: each point's stop time is the closed form's.
 TEST(Ans1PressPlant, SweepsOverThePlantsParameters) {
-  const std::string text = test::read_text(kPressFile) + R"(
+  const std::string text = test::read_file(kPressFile) + R"(
 [[sweep]]
 key = "plant.brake_torque"
 values = [2000.0, 1500.0, 1000.0]
@@ -170,7 +170,7 @@ struct BadPlant {
 };
 
 TEST(PlantReader, BadPlantParametersPointAtTheirKey) {
-  const std::string text = test::read_text(kPressFile);
+  const std::string text = test::read_file(kPressFile);
   for (const BadPlant& b :
        {BadPlant{"brake_torque = 2000.0", "brake_torque = -1.0", "plant.brake_torque"},
         BadPlant{"brake_torque = 2000.0", "brake_torque = nan", "plant.brake_torque"},
@@ -198,7 +198,7 @@ TEST(PlantReader, BadPlantParametersPointAtTheirKey) {
 }
 
 TEST(PlantReader, InputsChangesAndMotionAreChecked) {
-  const std::string text = test::read_text(kPressFile);
+  const std::string text = test::read_file(kPressFile);
   const auto rejects = [&](const std::string& from, const std::string& to, const std::string& key) {
     std::string t = text;
     const std::size_t at = t.find(from);

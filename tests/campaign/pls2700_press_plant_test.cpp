@@ -44,7 +44,7 @@ double overtravel_counts(double s) {
 constexpr double kLagCounts = 9.0;
 
 std::string with_wear(double s) {
-  std::string t = test::read_text(kFile);
+  std::string t = test::read_file(kFile);
   const std::string nominal = "scale = 1.0";
   const std::size_t at = t.find(nominal);
   EXPECT_NE(at, std::string::npos);
@@ -110,7 +110,7 @@ TEST(Pls2700PressPlant, TheStopPositionLimitFallsAtTheWearThePhysicsPredicts) {
 
 // start_flywheel_speed is checked like every plant key: finite, within ±1e4 rad/s, press only.
 TEST(Pls2700PressPlant, AFlywheelStartSpeedOutOfRangePointsAtItsKey) {
-  const std::string text = test::read_text(kFile);
+  const std::string text = test::read_file(kFile);
   const std::string key = "start_flywheel_speed = 34.55751918948773";
   for (const char* bad : {"start_flywheel_speed = inf", "start_flywheel_speed = 1e5"}) {
     std::string t = text;

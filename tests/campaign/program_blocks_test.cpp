@@ -351,7 +351,7 @@ struct Spelled {
 // The shipped FILE, and the same with every NAMED text replaced by its RAW words.
 std::pair<std::string, std::string> named_and_raw(const std::string& file,
                                                   const std::vector<Spelled>& spelled) {
-  const std::string named = test::read_text(file);
+  const std::string named = test::read_file(file);
   std::string raw = named;
   for (const Spelled& s : spelled) {
     std::size_t at = raw.find(s.named);

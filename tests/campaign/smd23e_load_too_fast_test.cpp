@@ -72,7 +72,7 @@ double f_safe() {
 }
 
 std::string with_acceleration(int a) {
-  std::string t = test::read_text(kLoadTooFastFile);
+  std::string t = test::read_file(kLoadTooFastFile);
   const std::string nominal = "accel = 50\ndecel = 50"; // the move's A and D, steps/ms/s
   const std::size_t at = t.find(nominal);
   EXPECT_NE(at, std::string::npos);

@@ -38,7 +38,7 @@ TEST(SsiPlant, TheShippedCampaignReadsWhatTheClosedFormSays) {
 
 // Every 10 ms over the whole coast: each read is the closed form at its latch, to the count.
 TEST(SsiPlant, EveryReadIsTheAxisAngleAtItsLatch) {
-  std::string text = test::read_text(kSsiPlantFile);
+  std::string text = test::read_file(kSsiPlantFile);
   const std::size_t from = text.find("[[host]]\nat = \"10ms\"");
   const std::size_t to = text.find("[[check]]");
   ASSERT_NE(from, std::string::npos);
@@ -64,7 +64,7 @@ TEST(SsiPlant, EveryReadIsTheAxisAngleAtItsLatch) {
 // Bad input before anything runs: a data line a stimulus also drives, a clock line that is not
 // the board's output, a position that does not fit the data field.
 TEST(SsiPlant, BadSsiTablesAreRefusedWithTheirKey) {
-  const std::string base = test::read_text(kSsiPlantFile);
+  const std::string base = test::read_file(kSsiPlantFile);
   const auto error_of = [&](const std::string& from, const std::string& to) {
     std::string t = base;
     const std::size_t at = t.find(from);

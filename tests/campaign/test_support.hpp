@@ -4,14 +4,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "rig/campaign/campaign.hpp"
 #include "rig/campaign/executive.hpp"
 #include "rig/results/campaign_result.hpp"
+#include "tests/tools/scratch_files.hpp"
 
 namespace hilrig::campaign::test {
 
@@ -112,12 +111,7 @@ inline const rig::Observation* find_observation(const rig::RunResult& run, const
 }
 
 // A file's whole text (a shipped campaign a test edits).
-inline std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using hilrig::test::read_file;
 
 // Every failing measurement of a result, for a failure message.
 inline std::string failures(const rig::CampaignResult& r) {

@@ -1,11 +1,11 @@
 #include "core/trace.hpp"
 #include "core/vcd_stream.hpp"
+#include "tests/tools/vcd_reader.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
-#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -229,61 +229,23 @@ struct Change {
   friend bool operator==(const Change&, const Change&) = default;
 };
 
-// A small VCD reader after IEEE 1364 §18.2 (what this test needs, no more): $var lines name
-// the identifier codes; after $enddefinitions, "#t" sets the time and
-// "0!", "1!", "b101 #", "r1.25 $" are changes. $dumpvars/$end are skipped (the initial values
-// are checked by the hand-written file above).
+// The changes after $dumpvars as the tests' VCD reader (tests/tools/vcd_reader.hpp) reads them,
+// in file order. Each variable's identifier code must be its declaration index in base 94 over
+// '!'..'~', least significant digit first (the writer's documented scheme).
 std::vector<Change> read_vcd(const std::string& text) {
-  std::istringstream in(text);
-  std::map<std::string, std::size_t> ids;
+  const hilrig::test::Vcd vcd = hilrig::test::parse_vcd_text(text);
+  for (const hilrig::test::VcdVar& v : vcd.vars) {
+    std::size_t index = 0;
+    for (auto c = v.id.rbegin(); c != v.id.rend(); ++c)
+      index = index * 94 + static_cast<std::size_t>(*c - '!');
+    EXPECT_EQ(index, v.index) << v.name << " has identifier code " << v.id;
+  }
   std::vector<Change> changes;
-  std::string line;
-  bool body = false;
-  bool dumpvars = false;
-  std::int64_t time = 0;
-  while (std::getline(in, line)) {
-    if (!body) {
-      if (line.starts_with("$var ")) {
-        std::istringstream var(line);
-        std::string tag, type, width, id;
-        var >> tag >> type >> width >> id;
-        // The identifier code is the declaration index in base 94 over '!'..'~', least
-        // significant digit first (the writer's documented scheme).
-        std::size_t index = 0;
-        for (auto c = id.rbegin(); c != id.rend(); ++c)
-          index = index * 94 + static_cast<std::size_t>(*c - '!');
-        ids[id] = index;
-      }
-      if (line == "$enddefinitions $end") body = true;
-      continue;
-    }
-    if (line == "$dumpvars") {
-      dumpvars = true;
-      continue;
-    }
-    if (line == "$end") {
-      dumpvars = false;
-      continue;
-    }
-    if (line.starts_with("#")) {
-      time = std::stoll(line.substr(1));
-      continue;
-    }
-    if (dumpvars) continue;
-    Change c{time, 0, 0, 0.0};
-    if (line[0] == 'b' || line[0] == 'r') {
-      const std::size_t space = line.find(' ');
-      c.signal = ids.at(line.substr(space + 1));
-      if (line[0] == 'b') {
-        for (std::size_t i = 1; i < space; ++i) c.bits = c.bits << 1U | (line[i] == '1' ? 1U : 0U);
-      } else {
-        c.real = std::stod(line.substr(1, space - 1));
-      }
-    } else {
-      c.signal = ids.at(line.substr(1));
-      c.bits = line[0] == '1' ? 1U : 0U;
-    }
-    changes.push_back(c);
+  std::vector<std::size_t> next(vcd.vars.size(), 0); // per var: its next change
+  for (const std::size_t var : vcd.change_of) {
+    const hilrig::test::VcdChange& c = vcd.vars[var].changes[next[var]++];
+    const bool real = c.value[0] == 'r';
+    changes.push_back(Change{c.time, var, real ? 0U : c.bits(), real ? c.number() : 0.0});
   }
   return changes;
 }

@@ -3,15 +3,13 @@
 
 #include "rig/cli/synth_command.hpp"
 #include "tests/signals/run_synth.hpp"
+#include "tests/tools/vcd_reader.hpp"
 
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <map>
-#include <sstream>
+#include <cstddef>
 #include <string>
-#include <vector>
 
 using namespace hilrig;
 using namespace hilrig::literals;
@@ -20,42 +18,8 @@ namespace {
 
 using test::synth;
 
-// Value changes per VCD identifier after $dumpvars (each change is one "0<id>"/"1<id>" line),
-// with the names the header gives the identifiers.
-struct VcdCounts {
-  std::map<std::string, std::string> id_of; // leaf name -> id
-  std::map<std::string, int> changes;       // id -> count
-  std::vector<long long> times;
-};
-
-VcdCounts count_changes(const std::string& path) {
-  std::ifstream in(path);
-  VcdCounts vcd;
-  std::string line;
-  bool in_dumpvars = false;
-  bool body = false;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string w;
-    words >> w;
-    if (w == "$var") {
-      std::string type, width, id, name;
-      words >> type >> width >> id >> name;
-      vcd.id_of[name] = id;
-    } else if (w == "$enddefinitions") {
-      body = true;
-    } else if (body && w == "$dumpvars") {
-      in_dumpvars = true;
-    } else if (body && w == "$end") {
-      in_dumpvars = false;
-    } else if (body && !w.empty() && w[0] == '#') {
-      vcd.times.push_back(std::stoll(w.substr(1)));
-    } else if (body && !in_dumpvars && !w.empty() && (w[0] == '0' || w[0] == '1')) {
-      ++vcd.changes[w.substr(1)];
-    }
-  }
-  return vcd;
-}
+// How often a variable changes after its initial value (each a "0<id>" or "1<id>" line).
+std::size_t change_count(const test::Vcd& vcd, const char* leaf) { return vcd.leaf(leaf).changes.size(); }
 
 } // namespace
 
@@ -73,10 +37,10 @@ TEST(SynthCommand, QuadratureAt600RpmWritesEveryEdge) {
   // edges, alternating A, B: 21 on A, 20 on B. The first at 12,207 ns (0.5 / 40,960 s).
   const std::string path = test::kSynthDir + "/synth_quadrature_test.vcd";
   synth({"quadrature", "--lines", "1024", "--rpm", "600", "--duration", "1ms", "--out", path});
-  const VcdCounts vcd = count_changes(path);
-  ASSERT_TRUE(vcd.id_of.count("A") && vcd.id_of.count("B"));
-  EXPECT_EQ(vcd.changes.at(vcd.id_of.at("A")), 21);
-  EXPECT_EQ(vcd.changes.at(vcd.id_of.at("B")), 20);
+  const test::Vcd vcd = test::read_vcd_file(path);
+  ASSERT_TRUE(vcd.has_leaf("A") && vcd.has_leaf("B"));
+  EXPECT_EQ(change_count(vcd, "A"), 21U);
+  EXPECT_EQ(change_count(vcd, "B"), 20U);
   ASSERT_GE(vcd.times.size(), 2U);
   EXPECT_EQ(vcd.times[1], 12'207);
 }
@@ -87,9 +51,9 @@ TEST(SynthCommand, GlitchFaultAddsTwoEdgesOnItsChannel) {
   const std::string path = test::kSynthDir + "/synth_glitch_test.vcd";
   synth({"quadrature", "--lines", "1024", "--rpm", "600", "--duration", "1ms", "--glitch", "A,100us,50ns",
          "--out", path});
-  const VcdCounts vcd = count_changes(path);
-  EXPECT_EQ(vcd.changes.at(vcd.id_of.at("A")), 23);
-  EXPECT_EQ(vcd.changes.at(vcd.id_of.at("B")), 20);
+  const test::Vcd vcd = test::read_vcd_file(path);
+  EXPECT_EQ(change_count(vcd, "A"), 23U);
+  EXPECT_EQ(change_count(vcd, "B"), 20U);
 }
 
 TEST(SynthCommand, TrapezoidWithGatedIndex) {
@@ -99,9 +63,9 @@ TEST(SynthCommand, TrapezoidWithGatedIndex) {
   const std::string path = test::kSynthDir + "/synth_trapezoid_test.vcd";
   synth({"quadrature", "--profile", "trapezoid", "--lines", "100", "--turns", "2", "--rpm", "600", "--accel",
          "100", "--index-line", "0", "--out", path});
-  const VcdCounts vcd = count_changes(path);
-  EXPECT_EQ(vcd.changes.at(vcd.id_of.at("A")) + vcd.changes.at(vcd.id_of.at("B")), 800);
-  EXPECT_EQ(vcd.changes.at(vcd.id_of.at("Z")), 4);
+  const test::Vcd vcd = test::read_vcd_file(path);
+  EXPECT_EQ(change_count(vcd, "A") + change_count(vcd, "B"), 800U);
+  EXPECT_EQ(change_count(vcd, "Z"), 4U);
 }
 
 TEST(SynthCommand, RateLimitFailIsACheckFailure) {
@@ -121,6 +85,6 @@ TEST(SynthCommand, DiscreteBounceAndTrain) {
   const std::string path = test::kSynthDir + "/synth_discrete_test.vcd";
   synth({"discrete", "--name", "rig.start", "--train", "1ms,100us,10us,3", "--bounce", "2ms,1,1ms,2,7",
          "--out", path});
-  const VcdCounts vcd = count_changes(path);
-  EXPECT_EQ(vcd.changes.at(vcd.id_of.at("start")), 11);
+  const test::Vcd vcd = test::read_vcd_file(path);
+  EXPECT_EQ(change_count(vcd, "start"), 11U);
 }

@@ -6,13 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "tests/signals/run_synth.hpp"
+#include "tests/tools/vcd_reader.hpp"
 
 using namespace hilrig;
 
@@ -20,81 +18,18 @@ namespace {
 
 using test::synth;
 
-struct Change {
-  long long time;
-  std::uint64_t value;
-};
-// Initial values ($dumpvars) and changes after it, per leaf name (wires and integers).
-struct Vcd {
-  std::map<std::string, std::uint64_t> initial;
-  std::map<std::string, std::vector<Change>> of;
-  // Level of a wire at t (changes at t have taken effect).
-  [[nodiscard]] std::uint64_t level_at(const std::string& name, long long t) const {
-    std::uint64_t v = initial.at(name);
-    if (auto it = of.find(name); it != of.end())
-      for (const Change& c : it->second)
-        if (c.time <= t) v = c.value;
-    return v;
-  }
-};
-
-Vcd read_vcd(const std::string& path) {
-  std::ifstream in(path);
-  std::map<std::string, std::string> name_of; // id -> leaf
-  Vcd vcd;
-  std::string line;
-  bool body = false;
-  bool in_dumpvars = false;
-  long long now = 0;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string w;
-    words >> w;
-    if (w.empty()) continue;
-    if (w == "$var") {
-      std::string type, width, id, name;
-      words >> type >> width >> id >> name;
-      name_of[id] = name;
-    } else if (w == "$enddefinitions") {
-      body = true;
-    } else if (body && w == "$dumpvars") {
-      in_dumpvars = true;
-    } else if (body && w == "$end") {
-      in_dumpvars = false;
-    } else if (body && w[0] == '#') {
-      now = std::stoll(w.substr(1));
-    } else if (body && (w[0] == '0' || w[0] == '1' || w[0] == 'b')) {
-      std::string id;
-      std::uint64_t v = 0;
-      if (w[0] == 'b') {
-        words >> id;
-        v = std::stoull(w.substr(1), nullptr, 2);
-      } else {
-        id = w.substr(1);
-        v = w[0] == '1' ? 1 : 0;
-      }
-      const std::string& name = name_of.at(id);
-      if (in_dumpvars)
-        vcd.initial[name] = v;
-      else
-        vcd.of[name].push_back({now, v});
-    }
-  }
-  return vcd;
-}
-
-std::vector<long long> edges(const Vcd& vcd, const std::string& name, std::uint64_t level) {
+std::vector<long long> edges(const test::Vcd& vcd, const std::string& name, std::uint64_t level) {
   std::vector<long long> out;
-  for (const Change& c : vcd.of.at(name))
-    if (c.value == level) out.push_back(c.time);
+  for (const test::VcdChange& c : vcd.leaf(name).changes)
+    if (c.bits() == level) out.push_back(c.time);
   return out;
 }
 
 // Reads the data line as the 7361 does: bit k at F1 + k*T, MSB first, 25 bits.
-std::uint32_t read_word(const Vcd& vcd, long long f1, long long period) {
+std::uint32_t read_word(const test::Vcd& vcd, long long f1, long long period) {
   std::uint32_t word = 0;
   for (long long k = 1; k <= 25; ++k)
-    word = (word << 1) | static_cast<std::uint32_t>(vcd.level_at("data", f1 + k * period));
+    word = (word << 1) | static_cast<std::uint32_t>(vcd.leaf("data").bits_at(f1 + k * period));
   return word;
 }
 
@@ -103,8 +38,8 @@ std::uint32_t read_word(const Vcd& vcd, long long f1, long long period) {
 TEST(SynthSsi, ClockAt125kHzIs25BitsIn192us) {
   const std::string out = test::kSynthDir + "/synth_ssi_125.vcd";
   synth({"ssi", "--out", out, "--frames", "2", "--first", "20us"});
-  const Vcd vcd = read_vcd(out);
-  EXPECT_EQ(vcd.initial.at("clock"), 1u); // idles high
+  const test::Vcd vcd = test::read_vcd_file(out);
+  EXPECT_EQ(vcd.leaf("clock").initial.value().bits(), 1u); // idles high
   const auto falling = edges(vcd, "clock", 0);
   const auto rising = edges(vcd, "clock", 1);
   ASSERT_EQ(falling.size(), 50u);
@@ -121,7 +56,7 @@ TEST(SynthSsi, ClockAt125kHzIs25BitsIn192us) {
 TEST(SynthSsi, ClockAt500kHzIs25BitsIn48us) {
   const std::string out = test::kSynthDir + "/synth_ssi_500.vcd";
   synth({"ssi", "--out", out, "--clock-khz", "500", "--frames", "3", "--first", "10us"});
-  const Vcd vcd = read_vcd(out);
+  const test::Vcd vcd = test::read_vcd_file(out);
   const auto falling = edges(vcd, "clock", 0);
   ASSERT_EQ(falling.size(), 75u);
   // T = 2 us: 24 * 2 = 48 us; TINT 250 us.
@@ -139,24 +74,24 @@ TEST(SynthSsi, BinaryAndGrayWordsOfAQuarterTurn) {
     std::vector<std::string> args{"ssi", "--out", out, "--frames", "2", "--start", "0.25"};
     if (gray) args.emplace_back("--gray");
     synth(args);
-    const Vcd vcd = read_vcd(out);
+    const test::Vcd vcd = test::read_vcd_file(out);
     const std::uint32_t expected = gray ? 3072u : 2048u;
     EXPECT_EQ(read_word(vcd, 20'000, 8'000), expected);
     EXPECT_EQ(read_word(vcd, 520'000, 8'000), expected);
-    const auto& words = vcd.of.at("word");
-    const auto& values = vcd.of.at("value");
+    const auto& words = vcd.leaf("word").changes;
+    const auto& values = vcd.leaf("value").changes;
     ASSERT_EQ(words.size(), 2u);
     ASSERT_EQ(values.size(), 2u);
     // The word appears when bit 25 is read: F1 + 25 * 8 us.
     EXPECT_EQ(words[0].time, 20'000 + 200'000);
-    EXPECT_EQ(words[0].value, expected);
-    EXPECT_EQ(values[0].value, 1024u);
-    EXPECT_EQ(values[1].value, 1024u);
+    EXPECT_EQ(words[0].bits(), expected);
+    EXPECT_EQ(values[0].bits(), 1024u);
+    EXPECT_EQ(values[1].bits(), 1024u);
     // DATA drops at F1, holds bit 25 (unused: 0) after R25 (F1 + 196 us), and returns high
     // TM = 16 us after it.
-    EXPECT_EQ(vcd.of.at("data").front().time, 20'000);
-    EXPECT_EQ(vcd.level_at("data", 20'000 + 196'000 + 16'000 - 1), 0u);
-    EXPECT_EQ(vcd.level_at("data", 20'000 + 196'000 + 16'000), 1u);
+    EXPECT_EQ(vcd.leaf("data").changes.front().time, 20'000);
+    EXPECT_EQ(vcd.leaf("data").bits_at(20'000 + 196'000 + 16'000 - 1), 0u);
+    EXPECT_EQ(vcd.leaf("data").bits_at(20'000 + 196'000 + 16'000), 1u);
   }
 }
 
@@ -165,13 +100,13 @@ TEST(SynthSsi, TurningShaftIsLatchedAtEachFrame) {
   // floor(4096 * t) = 0 (0.08), 2 (2.13), 4 (4.18), 6 (6.23).
   const std::string out = test::kSynthDir + "/synth_ssi_turning.vcd";
   synth({"ssi", "--out", out, "--frames", "4", "--rpm", "60"});
-  const Vcd vcd = read_vcd(out);
-  const auto& values = vcd.of.at("value");
+  const test::Vcd vcd = test::read_vcd_file(out);
+  const auto& values = vcd.leaf("value").changes;
   ASSERT_EQ(values.size(), 4u);
-  EXPECT_EQ(values[0].value, 0u);
-  EXPECT_EQ(values[1].value, 2u);
-  EXPECT_EQ(values[2].value, 4u);
-  EXPECT_EQ(values[3].value, 6u);
+  EXPECT_EQ(values[0].bits(), 0u);
+  EXPECT_EQ(values[1].bits(), 2u);
+  EXPECT_EQ(values[2].bits(), 4u);
+  EXPECT_EQ(values[3].bits(), 6u);
   EXPECT_EQ(read_word(vcd, 1'520'000, 8'000), 6u << 1);
 }
 
@@ -180,16 +115,16 @@ TEST(SynthSsi, SlaveFaultsReachTheDecodedWord) {
   // Stream bit 1 (the data MSB, weight 2^24 in the word) inverted on the wire:
   // word 2048 | 2^24, value 1024 + 2^23.
   synth({"ssi", "--out", out, "--frames", "1", "--start", "0.25", "--flip-bit", "1"});
-  Vcd vcd = read_vcd(out);
-  EXPECT_EQ(vcd.of.at("word").at(0).value, 2048u + (1u << 24));
-  EXPECT_EQ(vcd.of.at("value").at(0).value, 1024u + (1u << 23));
+  test::Vcd vcd = test::read_vcd_file(out);
+  EXPECT_EQ(vcd.leaf("word").changes.at(0).bits(), 2048u + (1u << 24));
+  EXPECT_EQ(vcd.leaf("value").changes.at(0).bits(), 1024u + (1u << 23));
   // Data stuck high: every bit reads 1 (25 ones), the data field all ones.
   synth({"ssi", "--out", out, "--frames", "1", "--start", "0.25", "--stuck", "high"});
-  vcd = read_vcd(out);
-  EXPECT_EQ(vcd.initial.at("data"), 1u);
-  EXPECT_EQ(vcd.of.count("data"), 0u);
-  EXPECT_EQ(vcd.of.at("word").at(0).value, (1u << 25) - 1);
-  EXPECT_EQ(vcd.of.at("value").at(0).value, (1u << 24) - 1);
+  vcd = test::read_vcd_file(out);
+  EXPECT_EQ(vcd.leaf("data").initial.value().bits(), 1u);
+  EXPECT_EQ(vcd.leaf("data").changes.size(), 0u);
+  EXPECT_EQ(vcd.leaf("word").changes.at(0).bits(), (1u << 25) - 1);
+  EXPECT_EQ(vcd.leaf("value").changes.at(0).bits(), (1u << 24) - 1);
 }
 
 TEST(SynthSsi, LateDataShiftsTheWordByOneBit) {
@@ -198,12 +133,12 @@ TEST(SynthSsi, LateDataShiftsTheWordByOneBit) {
   // binary word 2048 (0.25 turn at 4096 counts) reads as 1024, the position as 512.
   const std::string out = test::kSynthDir + "/synth_ssi_late.vcd";
   synth({"ssi", "--out", out, "--frames", "1", "--start", "0.25", "--late", "5us"});
-  Vcd vcd = read_vcd(out);
-  EXPECT_EQ(vcd.of.at("word").at(0).value, 1024u);
-  EXPECT_EQ(vcd.of.at("value").at(0).value, 512u);
+  test::Vcd vcd = test::read_vcd_file(out);
+  EXPECT_EQ(vcd.leaf("word").changes.at(0).bits(), 1024u);
+  EXPECT_EQ(vcd.leaf("value").changes.at(0).bits(), 512u);
   // Data stuck low: the line starts low and every bit reads 0.
   synth({"ssi", "--out", out, "--frames", "1", "--start", "0.25", "--stuck", "low"});
-  vcd = read_vcd(out);
-  EXPECT_EQ(vcd.initial.at("data"), 0u);
-  EXPECT_EQ(vcd.of.at("word").at(0).value, 0u);
+  vcd = test::read_vcd_file(out);
+  EXPECT_EQ(vcd.leaf("data").initial.value().bits(), 0u);
+  EXPECT_EQ(vcd.leaf("word").changes.at(0).bits(), 0u);
 }
