@@ -28,7 +28,9 @@ void AdvanceSpeed::add(int step) {
 }
 
 void AdvanceSpeed::reset() {
-  std::fill(steps_.begin(), steps_.end(), 0);
+  // The ring is not cleared: add() reads a slot only once the window is full, and by then it
+  // has written every slot since this reset. Clearing 1,000 of them at every update of a
+  // faulted transducer was a tenth of a faulted run's time.
   head_ = 0;
   count_ = 0;
   sum_ = 0;
