@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/number_checks.hpp"
 #include "rig/results/compare.hpp"
 #include "rig/results/results_json.hpp"
 
@@ -64,7 +65,7 @@ void add_compare_command(CLI::App& app) {
                   "measurement name or its dotted suffix, e.g. p99=2 or ls1.max=5%");
   cmd->add_option("--default-rel", args->default_rel,
                   "relative threshold for unnamed measurements (0.05 = 5%)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_flag("--all", args->all, "list every measurement, not only drifts and regressions");
   cmd->callback([args] {
     const int code = run_compare(*args);

@@ -12,6 +12,7 @@
 #include "core/clock.hpp"
 #include "rig/campaign/stop_request.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/number_checks.hpp"
 #include "rig/cli/stop_signals.hpp"
 #include "rig/rt/cpu_latency_request.hpp"
 #include "rig/rt/rt_loop.hpp"
@@ -122,10 +123,10 @@ int run_latency(const LatencyOptions& o) {
 void add_latency_command(CLI::App& app) {
   auto opts = std::make_shared<LatencyOptions>();
   CLI::App* cmd = app.add_subcommand("latency", "Measure the RT loop's wake-up latency, like cyclictest");
-  cmd->add_option("--duration", opts->duration_s, "seconds to measure")->check(CLI::PositiveNumber);
+  cmd->add_option("--duration", opts->duration_s, "seconds to measure")->check(positive_number());
   cmd->add_option("--priority", opts->priority, "SCHED_FIFO priority (0 = SCHED_OTHER)")
       ->check(CLI::Range(0, 99));
-  cmd->add_option("--cpu", opts->cpu, "pin to this CPU")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--cpu", opts->cpu, "pin to this CPU")->check(non_negative_number());
   cmd->add_option("--interval", opts->interval_us, "wake-up interval in us")
       ->check(CLI::Range(10, 1'000'000));
   cmd->add_flag("--quiet", opts->quiet_histogram, "omit the histogram");

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/number_checks.hpp"
 #include "signals/discrete_bounce.hpp"
 #include "signals/discrete_input.hpp"
 #include "signals/edge_rate.hpp"
@@ -126,8 +127,13 @@ signals::MotionProfile build_profile(const QuadratureOptions& o) {
   MotionProfile p(o.start_turns);
   const double speed = o.rpm / 60.0; // turns/s
   const double decel = o.decel > 0 ? o.decel : o.accel;
+  const auto duration = [&o] {
+    const Nanos d = parse_duration(o.duration);
+    if (d <= Nanos::zero()) throw CLI::ValidationError("--duration", "must be > 0, got " + o.duration);
+    return d;
+  };
   if (o.profile == "constant") {
-    constant_speed(p, speed, parse_duration(o.duration));
+    constant_speed(p, speed, duration());
   } else if (o.profile == "trapezoid") {
     if (o.accel <= 0) throw CLI::ValidationError("--accel", "a trapezoid needs --accel > 0");
     trapezoid_move(p, o.turns, MoveLimits{std::abs(speed), o.accel, decel});
@@ -137,7 +143,7 @@ signals::MotionProfile build_profile(const QuadratureOptions& o) {
     s_curve_move(p, o.turns, SCurveLimits{std::abs(speed), o.accel, o.jerk, o.steps});
   } else if (o.profile == "press") {
     if (o.brake <= 0) throw CLI::ValidationError("--brake", "a press stroke needs --brake > 0");
-    press_stroke(p, speed, parse_duration(o.duration), o.brake);
+    press_stroke(p, speed, duration(), o.brake);
   } else {
     throw CLI::ValidationError("--profile", "unknown profile '" + o.profile + "'");
   }
@@ -155,6 +161,9 @@ int run_quadrature(const QuadratureOptions& o) {
   using namespace signals;
   const MotionProfile profile = build_profile(o);
   QuadratureEncoder enc;
+  // The rig's placement (rig/campaign/rig_drive.cpp, docs/campaigns.md "[encoder]"): count =
+  // floor(position), so the VCD shows the edges `hilrig run` drives for the same motion.
+  enc.placement = EdgePlacement::WholeCount;
   enc.lines_per_turn = o.lines;
   enc.reversed = o.reversed;
   enc.index_count = o.index_count;
@@ -223,7 +232,7 @@ void add_quadrature(CLI::App& synth) {
   cmd->add_option("--out", o->out, "VCD file to write ('-' for stdout)")->required();
   cmd->add_option("--profile", o->profile, "constant | trapezoid | scurve | press")
       ->check(CLI::IsMember({"constant", "trapezoid", "scurve", "press"}));
-  cmd->add_option("--lines", o->lines, "lines per turn (X4: 4 counts per line)")->check(CLI::PositiveNumber);
+  cmd->add_option("--lines", o->lines, "lines per turn (X4: 4 counts per line)")->check(positive_number());
   cmd->add_option("--rpm", o->rpm, "speed (constant, press) or max speed (trapezoid, scurve), RPM");
   cmd->add_option("--duration", o->duration, "run time (constant, press), e.g. 10ms");
   cmd->add_option("--turns", o->turns, "move distance in turns, signed (trapezoid, scurve)");
@@ -231,7 +240,7 @@ void add_quadrature(CLI::App& synth) {
   cmd->add_option("--decel", o->decel, "deceleration, turns/s² (trapezoid; default = accel)");
   cmd->add_option("--jerk", o->jerk, "jerk, turns/s³ (scurve)");
   cmd->add_option("--steps", o->steps, "constant-acceleration steps per jerk ramp (scurve)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--brake", o->brake, "brake deceleration, turns/s² (press)");
   cmd->add_option("--dwell", o->dwell, "time to hold (or keep turning) after the move");
   cmd->add_option("--start", o->start_turns, "start position, turns");
@@ -252,10 +261,7 @@ void add_quadrature(CLI::App& synth) {
                   "fault: the other channel's next edge moves onto edge INDEX");
   cmd->add_option("--noise", o->noise, "fault: noise burst start,length,pulses,seed[,min_width,max_width]");
   cmd->add_option("--phase-error", o->phase_error, "fault: shift B by this fraction of a quarter period");
-  cmd->callback([o] {
-    const int status = run_quadrature(*o);
-    if (status != kPassed) exit_with(status);
-  });
+  on_run(*cmd, [o] { return run_quadrature(*o); });
 }
 
 // ---- discrete ---------------------------------------------------------------------
@@ -321,7 +327,7 @@ void add_discrete(CLI::App& synth) {
   cmd->add_option("--train", o->trains, "pulses away from the initial level: start,period,width,count");
   cmd->add_option("--bounce", o->bounces,
                   "contact bounce settling at level: time,level,window,bounces,seed[,min_width]");
-  cmd->callback([o] { run_discrete(*o); });
+  on_run(*cmd, [o] { return run_discrete(*o); });
 }
 
 } // namespace
@@ -358,6 +364,18 @@ void write_vcd_file(const TraceRecorder& trace, const std::string& path) {
 bool register_synth_kind(SynthKindAdder add) {
   synth_kinds().push_back(add);
   return true;
+}
+
+void on_run(CLI::App& kind, std::function<int()> run) {
+  kind.callback([name = kind.get_name(), run = std::move(run)] {
+    int status = kPassed;
+    try {
+      status = run();
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError(name, e.what());
+    }
+    if (status != kPassed) exit_with(status);
+  });
 }
 
 void add_synth_command(CLI::App& app) {

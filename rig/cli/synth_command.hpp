@@ -12,6 +12,7 @@
 
 #include "rig/cli/cli_fwd.hpp"
 
+#include <functional>
 #include <string>
 
 #include "core/time.hpp"
@@ -26,6 +27,10 @@ using SynthKindAdder = void (*)(CLI::App& synth);
 bool register_synth_kind(SynthKindAdder add);
 
 // Helpers shared by the synth kinds.
+// Makes `run` the kind's callback: its status other than 0 is the exit status, and a value the
+// signal library refuses (std::invalid_argument: an SSI frame too short for its fields, a pulse
+// as wide as its period, a motion of no duration) is bad input, exit 2, as CLI11's own checks.
+void on_run(CLI::App& kind, std::function<int()> run);
 // "10ms", "24.414us", "1.5s", "250ns", "3" (seconds); throws CLI::ValidationError.
 [[nodiscard]] Nanos parse_duration(const std::string& text);
 // Writes the trace as VCD to `path` ("-" for stdout); throws std::runtime_error on I/O failure.

@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "rig/cli/number_checks.hpp"
 #include "rig/cli/synth_command.hpp"
 #include "signals/move_builders.hpp"
 #include "signals/resolver.hpp"
@@ -149,7 +150,7 @@ void add_synth_resolver(CLI::App& synth) {
   cmd->add_option("--rpm", o->rpm, "shaft speed, RPM (signed)");
   cmd->add_option("--start", o->start_deg, "start angle, degrees");
   cmd->add_option("--duration", o->duration, "run time, e.g. 10ms");
-  cmd->add_option("--rate", o->rate_hz, "sample rate, Hz")->check(CLI::PositiveNumber);
+  cmd->add_option("--rate", o->rate_hz, "sample rate, Hz")->check(positive_number());
   cmd->add_option("--excitation-hz", o->excitation_hz, "reference frequency, 2200..7000 Hz");
   cmd->add_option("--amplitude", o->amplitude, "reference peak, V");
   cmd->add_option("--excitation-phase", o->excitation_phase_deg, "reference phase at t = 0, degrees");
@@ -166,7 +167,10 @@ void add_synth_resolver(CLI::App& synth) {
   cmd->add_option("--channel", o->channel, "resolver channel in the frames, 0..15");
   cmd->add_option("--can-bus", o->can_bus, "bus name in the trace and the candump log");
   cmd->add_option("--can-log", o->can_log, "also write the angle frames as a candump -l log");
-  cmd->callback([o] { run_resolver(*o); });
+  on_run(*cmd, [o] {
+    run_resolver(*o);
+    return 0;
+  });
 }
 
 const bool registered = register_synth_kind(&add_synth_resolver);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "rig/cli/number_checks.hpp"
 #include "rig/cli/synth_command.hpp"
 #include "signals/move_builders.hpp"
 #include "signals/ssi_frame.hpp"
@@ -124,7 +125,7 @@ void add_synth_ssi(CLI::App& synth) {
   cmd->add_option("--bits", o->bits, "data bits (the 7361's N)")->check(CLI::Range(1U, 25U));
   cmd->add_flag("--gray", o->gray, "Gray-coded data (default binary)");
   cmd->add_option("--counts-per-turn", o->counts_per_turn, "transducer counts per turn")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--rpm", o->rpm, "shaft speed, RPM (signed)");
   cmd->add_option("--start", o->start_turns, "start position, turns");
   cmd->add_option("--monoflop", o->monoflop, "transducer monoflop time TM, e.g. 16us");
@@ -134,7 +135,10 @@ void add_synth_ssi(CLI::App& synth) {
   cmd->add_option("--flip-bit", o->flip_bit, "fault: invert this stream bit (1..25) on the wire");
   cmd->add_option("--late", o->late, "fault: extra delay of every data change, e.g. 3us");
   cmd->add_option("--glitch-mask", o->glitch_mask, "fault: XOR this into the coded data field");
-  cmd->callback([o] { run_ssi(*o); });
+  on_run(*cmd, [o] {
+    run_ssi(*o);
+    return 0;
+  });
 }
 
 const bool registered = register_synth_kind(&add_synth_ssi);

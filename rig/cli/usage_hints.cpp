@@ -2,7 +2,6 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <charconv>
 #include <string_view>
 #include <vector>
 
@@ -19,12 +18,11 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
-// A value, not an option: "-" (stdin), a negative number ("-3", "-0.5").
+// A value, not an option: "-" (stdin), a negative number or duration ("-3", "-0.5", "-1ms",
+// "-5us"): no option's name starts with a digit.
 bool is_value(std::string_view word) {
   if (word.size() < 2 || word[0] != '-') return true;
-  double v = 0.0;
-  const auto r = std::from_chars(word.data() + 1, word.data() + word.size(), v);
-  return r.ec == std::errc{} && r.ptr == word.data() + word.size();
+  return (word[1] >= '0' && word[1] <= '9') || word[1] == '.';
 }
 
 std::vector<std::string> option_names(const CLI::App& cmd) {
@@ -39,20 +37,34 @@ std::vector<std::string> option_names(const CLI::App& cmd) {
 } // namespace
 
 std::optional<std::string> unknown_word(const CLI::App& app, int argc, const char* const* argv) {
-  std::vector<std::string> commands;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-    commands.push_back(sub->get_name());
   if (argc < 2) return std::nullopt;
   const std::string first = argv[1];
   if (first.starts_with("-")) return std::nullopt; // --help, --version: CLI11's
-  const CLI::App* cmd = nullptr;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-    if (sub->get_name() == first) cmd = sub;
-  if (cmd == nullptr)
-    return fmt::format("hilrig: {}: no such command{}; commands: {} (hilrig --help)", first,
-                       did_you_mean(first, commands), joined(commands));
+  // The command the words name: "synth quadrature ..." is the quadrature command of synth, and
+  // its options are quadrature's (a command that requires one of its own commands gets the
+  // same hint for a mistyped one as the top level does).
+  const CLI::App* cmd = &app;
+  std::string path;
+  int i = 1;
+  for (; i < argc; ++i) {
+    const std::vector<const CLI::App*> subs = cmd->get_subcommands([](const CLI::App*) { return true; });
+    const std::string_view word = argv[i];
+    if (subs.empty() || word.starts_with("-")) break;
+    const auto named =
+        std::find_if(subs.begin(), subs.end(), [&](const CLI::App* s) { return s->get_name() == word; });
+    if (named == subs.end()) {
+      if (cmd->get_require_subcommand_min() == 0) break; // a positional of this command
+      std::vector<std::string> commands;
+      for (const CLI::App* s : subs) commands.push_back(s->get_name());
+      const std::string here = path.empty() ? "hilrig" : "hilrig " + path;
+      return fmt::format("{}: {}: no such command{}; commands: {} ({} --help)", here, word,
+                         did_you_mean(std::string(word), commands), joined(commands), here);
+    }
+    cmd = *named;
+    path += (path.empty() ? "" : " ") + std::string(word);
+  }
   const std::vector<std::string> options = option_names(*cmd);
-  for (int i = 2; i < argc; ++i) {
+  for (; i < argc; ++i) {
     const std::string_view word = argv[i];
     if (word == "--") break; // what follows is positional
     if (is_value(word)) continue;
@@ -62,8 +74,8 @@ std::optional<std::string> unknown_word(const CLI::App& app, int argc, const cha
                        (!name.starts_with("--") &&
                         std::find(options.begin(), options.end(), name.substr(0, 2)) != options.end());
     if (!known)
-      return fmt::format("hilrig {}: {}: no such option{} (hilrig {} --help lists them)", first, name,
-                         did_you_mean(name, options), first);
+      return fmt::format("hilrig {}: {}: no such option{} (hilrig {} --help lists them)", path, name,
+                         did_you_mean(name, options), path);
   }
   return std::nullopt;
 }

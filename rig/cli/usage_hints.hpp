@@ -12,7 +12,9 @@ namespace hilrig::cli {
 
 // "hilrig: rn: no such command (did you mean \"run\"?); commands: ..." or
 // "hilrig run: --ot: no such option (did you mean \"--out\"?)"; nullopt when the words are
-// all known (CLI11 then parses them and judges the rest).
+// all known (CLI11 then parses them and judges the rest). A command of a command is followed
+// ("synth quadrature --lines": quadrature's options). A word after "-" and a digit or "." is a
+// value ("-3", "-1ms"), not an option.
 [[nodiscard]] std::optional<std::string> unknown_word(const CLI::App& app, int argc, const char* const* argv);
 
 } // namespace hilrig::cli

@@ -33,26 +33,29 @@ TEST(SynthCommand, ParsesDurations) {
 }
 
 TEST(SynthCommand, QuadratureAt600RpmWritesEveryEdge) {
-  // 1,024 lines at 600 RPM for 1 ms: 40.96 counts, edges at 0.5 ... 40.5 counts = 41
-  // edges, alternating A, B: 21 on A, 20 on B. The first at 12,207 ns (0.5 / 40,960 s).
+  // 1,024 lines at 600 RPM for 1 ms: 4,096 counts/turn x 10 turns/s = 40,960 counts/s, 40.96
+  // counts. The rig's placement (docs/campaigns.md "[encoder]": count = floor(position), count
+  // n entered when the motion reaches n): edges at 1 ... 40 counts = 40 edges, alternating A
+  // (states 1, 3, ...: 00 -> 10 -> 11 -> 01) and B: 20 on each. The first at 1 / 40,960 s =
+  // 24,414.06 ns, to the nearest ns.
   const std::string path = test::kSynthDir + "/synth_quadrature_test.vcd";
   synth({"quadrature", "--lines", "1024", "--rpm", "600", "--duration", "1ms", "--out", path});
   const test::Vcd vcd = test::read_vcd_file(path);
   ASSERT_TRUE(vcd.has_leaf("A") && vcd.has_leaf("B"));
-  EXPECT_EQ(change_count(vcd, "A"), 21U);
+  EXPECT_EQ(change_count(vcd, "A"), 20U);
   EXPECT_EQ(change_count(vcd, "B"), 20U);
   ASSERT_GE(vcd.times.size(), 2U);
-  EXPECT_EQ(vcd.times[1], 12'207);
+  EXPECT_EQ(vcd.times[1], 24'414);
 }
 
 TEST(SynthCommand, GlitchFaultAddsTwoEdgesOnItsChannel) {
-  // As above (A edges at 12.2, 61.0, 109.9 us ...), plus a 50 ns glitch on A at 100 us,
-  // between two A edges: 21 + 2 A changes, B untouched.
+  // As above (A edges at counts 1, 3, 5 ...: 24.4, 73.2, 122.1 us ...), plus a 50 ns glitch on
+  // A at 100 us, between two A edges: 20 + 2 A changes, B untouched.
   const std::string path = test::kSynthDir + "/synth_glitch_test.vcd";
   synth({"quadrature", "--lines", "1024", "--rpm", "600", "--duration", "1ms", "--glitch", "A,100us,50ns",
          "--out", path});
   const test::Vcd vcd = test::read_vcd_file(path);
-  EXPECT_EQ(change_count(vcd, "A"), 23U);
+  EXPECT_EQ(change_count(vcd, "A"), 22U);
   EXPECT_EQ(change_count(vcd, "B"), 20U);
 }
 
