@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "core/did_you_mean.hpp"
 #include "rig/campaign/limits.hpp"
 #include "rig/campaign/motion.hpp"
 #include "rig/campaign/stimulus_kinds.hpp"
@@ -737,6 +738,16 @@ private:
            key.ends_with("_line");
   }
 
+  // Which way a check's line must go for the check to judge the board: the lines it watches
+  // for the board's response are board outputs the rig captures; a throughput or debounce
+  // input, whose edges the response is timed from, is a board input the rig drives. A check
+  // timing the rig's own line would pass whatever the board does. A brake line is either: the
+  // rig's brake input to an ANS1, or a board output dropping a press's valve.
+  static std::optional<duts::PinDirection> line_direction(std::string_view key) {
+    if (key == "brake_line") return std::nullopt;
+    return key == "input" ? duts::PinDirection::Input : duts::PinDirection::Output;
+  }
+
   // A shaft_move check's profile_of: the [[host]] write of that name, and the move it starts
   // under the writes before it (duts::planned_move), typed here once.
   std::optional<checks::MoveProfile> profile_of(const Scenario& s, TableReader& r) const {
@@ -801,10 +812,41 @@ private:
           continue;
         (void)r.node(key);
         table[key] = to_json(v);
+        if (key == "observation" || key == "reported") {
+          // A mistyped name would judge a missing word at run time: a fail, and in a fault
+          // run a fault "caught" by a check that never read the board.
+          const auto* name = v.as_string();
+          const bool read =
+              name != nullptr && std::any_of(s.host.begin(), s.host.end(), [&](const HostAction& h) {
+                return h.kind == HostAction::Kind::Read && h.name == name->get();
+              });
+          if (name != nullptr && !read) {
+            std::vector<std::string> names;
+            for (const HostAction& h : s.host)
+              if (h.kind == HostAction::Kind::Read &&
+                  std::find(names.begin(), names.end(), h.name) == names.end())
+                names.push_back(h.name);
+            r.fail(key, names.empty()
+                            ? fmt::format("the name of a [[host]] read (\"{}\": the campaign reads no word)",
+                                          name->get())
+                            : fmt::format("the name of a [[host]] read (\"{}\" is not one{}): one of {}",
+                                          name->get(), did_you_mean(name->get(), names), join(names)));
+          }
+        }
         if (is_line_param(key)) {
           const auto* line = v.as_string();
-          if (line != nullptr && s.wire_for_rig(line->get()) == nullptr)
+          const Wire* w = line != nullptr ? s.wire_for_rig(line->get()) : nullptr;
+          if (line != nullptr && w == nullptr)
             r.fail(key, fmt::format("a wired rig line (\"{}\" is not in [[wiring]])", line->get()));
+          const std::optional<duts::PinDirection> way = line_direction(key);
+          if (w != nullptr && way && w->direction != *way)
+            r.fail(key, *way == duts::PinDirection::Output
+                            ? fmt::format("a line wired to a board output, which the rig captures; \"{}\" is "
+                                          "wired to board input {}, which the rig drives",
+                                          line->get(), w->board)
+                            : fmt::format("a line wired to a board input, which the rig drives; \"{}\" is "
+                                          "wired to board output {}",
+                                          line->get(), w->board));
         }
       }
       try {

@@ -288,6 +288,9 @@ model = "reference_pls"
 [[wiring]]
 rig = "en"
 board = "EN"
+[[wiring]]
+rig = "ls1"
+board = "OUT"
 [[stimulus]]
 kind = "bounce"
 line = "en"
@@ -317,8 +320,8 @@ at = "5ms"
 width = "10us"
 [[check]]
 kind = "pulse_width"
-name = "en"
-line = "en"
+name = "out"
+line = "ls1"
 )",
                                     "t.toml");
   const RunOutput out = Executive(c).run(c.runs[0]);

@@ -135,6 +135,34 @@ TEST(CampaignParser, CheckNamingAnUnwiredLineIsAnError) {
                           "t.toml:26:10: check[0].output: a wired rig line"));
 }
 
+// A check judges the board's response on a line the rig captures (a board output); timed on a
+// line the rig drives itself it would pass whatever the board does.
+TEST(CampaignParser, CheckWatchingALineTheRigDrivesIsAnError) {
+  EXPECT_TRUE(
+      rejected_at(replace_line(test::kValidCampaign, 26, "output = \"enc.A\""),
+                  "t.toml:26:10: check[0].output: a line wired to a board output, which the rig captures; "
+                  "\"enc.A\" is wired to board input A, which the rig drives"));
+  // The same line as a pulse_width check's line.
+  const std::string pulse =
+      test::kValidCampaign + "[[check]]\nkind = \"pulse_width\"\nname = \"p\"\nline = \"enc.B\"\n";
+  EXPECT_TRUE(rejected_at(pulse, "t.toml:34:8: check[1].line: a line wired to a board output"));
+  EXPECT_EQ(error_of(replace_line(pulse, 34, "line = \"ls1\"")), "accepted");
+}
+
+// An observation a check names is a [[host]] read's name: a typo would judge a missing word
+// (a fail, and in a fault run a fault "caught" by a check that read nothing).
+TEST(CampaignParser, CheckNamingAnObservationNoReadMakesIsAnError) {
+  const std::string read = test::kValidCampaign + "[[host]]\nat = \"1ms\"\nread = 0\nname = \"pos\"\n";
+  const std::string check =
+      "[[check]]\nkind = \"word_equals\"\nname = \"w\"\nobservation = \"poss\"\nvalue = 1\n";
+  EXPECT_TRUE(rejected_at(read + check, "t.toml:38:15: check[1].observation: the name of a [[host]] read "
+                                        "(\"poss\" is not one (did you mean \"pos\"?)): one of pos"));
+  EXPECT_TRUE(rejected_at(test::kValidCampaign + check,
+                          "t.toml:34:15: check[1].observation: the name of a [[host]] read (\"poss\": the "
+                          "campaign reads no word)"));
+  EXPECT_EQ(error_of(read + replace_line(check, 4, "observation = \"pos\"")), "accepted");
+}
+
 TEST(CampaignParser, UnknownCheckKindIsAnError) {
   EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 24, "kind = \"thruput\""),
                           "t.toml:24:8: check[0].kind: a check kind"));

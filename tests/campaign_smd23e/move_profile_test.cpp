@@ -218,6 +218,7 @@ TEST(ProfileOf, OnlyAShaftMoveCheckTakesIt) {
   const std::string text = campaign(kRelative);
   const std::string other =
       text.substr(0, text.find("[[check]]")) +
+      "[[host]]\nat = \"500ms\"\nread = 0\nname = \"x\"\n"
       "[[check]]\nkind = \"word_equals\"\nname = \"w\"\nobservation = \"x\"\nvalue = 1\n"
       "profile_of = \"go\"\n";
   EXPECT_NE(error_of(other).find("check[0].profile_of"), std::string::npos) << error_of(other);
