@@ -21,6 +21,13 @@ namespace hilrig::campaign {
 
 namespace {
 
+// A window a check leaves open (no edge after the last crossing, and no timeout) ends where the
+// run does: the evidence (results.json, the trace cut, the .gtkw zoom) stays inside the run.
+void end_windows_at(rig::CheckResult& check, Nanos end) {
+  for (rig::Measurement& m : check.measurements)
+    if (m.window && m.window->end > end) m.window->end = std::max(end, m.window->begin);
+}
+
 // Whether some check reads the rig line `name`.
 bool names_line(const Scenario& s, const std::string& name) {
   for (const CheckSpec& check : s.checks) {
@@ -185,6 +192,7 @@ RunOutput Executive::run(const RunSpec& spec) const {
         if (const auto* debounce = std::get_if<checks::DebounceParams>(&c.params))
           capture.bisections = bisect_phases(in, c, *debounce);
         r.checks.push_back(checks::run_check(c.name, c.params, capture));
+        end_windows_at(r.checks.back(), s.end);
         if (v.trace && !std::holds_alternative<checks::BrakeParams>(c.params))
           drawn.emplace_back(r.checks.size() - 1, lanes_of(c.params, *v.trace));
       }

@@ -411,12 +411,33 @@ private:
         mv.accel_rpm_s = rate("accel_rpm_s");
         mv.turns = number_in(m, "turns", -limits::kMaxTurns, limits::kMaxTurns, "a distance in turns");
         if (mv.turns == 0.0) m.fail("turns", "a distance in turns, not 0 (negative runs backwards)");
+        // Its time in closed form (turns/s, turns/s^2): a trapezoid when the cruise is reached,
+        // else a triangle. Beyond an hour no run sees it end, and a rate near 0 overflows time.
+        const double v = mv.speed_rpm / 60.0;
+        const double a = mv.accel_rpm_s / 60.0;
+        const double d = std::fabs(mv.turns);
+        const double ramps = v / a;
+        const double seconds_taken = d >= v * v / a ? d / v + ramps : 2.0 * std::sqrt(d / a);
+        if (!(seconds_taken <= static_cast<double>(limits::kMaxEnd.count()) / 1e9))
+          m.fail(ramps >= seconds_taken / 2 ? "accel_rpm_s" : "speed_rpm",
+                 fmt::format(
+                     "a move that ends within {} s (this one takes {:.10g} s: {} turns at {} rpm, ramps at "
+                     "{} rpm/s)",
+                     limits::kMaxEnd.count() / 1'000'000'000, seconds_taken, mv.turns, mv.speed_rpm,
+                     mv.accel_rpm_s));
       } else if (kind == "press_stroke") {
         mv.kind = MoveKind::PressStroke;
         mv.speed_rpm = cruise("speed_rpm");
         mv.decel_rpm_s = rate("decel_rpm_s");
         mv.strokes =
             m.has("strokes") ? integer_in(m, "strokes", 0, limits::kMaxStrokes, "a number of strokes") : 0;
+        // At speed for the strokes, then the stop: beyond an hour no run sees it end.
+        const double stroke_seconds = static_cast<double>(mv.strokes + 1) / (std::fabs(mv.speed_rpm) / 60.0) +
+                                      std::fabs(mv.speed_rpm) / mv.decel_rpm_s;
+        if (!(stroke_seconds <= static_cast<double>(limits::kMaxEnd.count()) / 1e9))
+          m.fail(std::fabs(mv.speed_rpm) / mv.decel_rpm_s >= stroke_seconds / 2 ? "decel_rpm_s" : "speed_rpm",
+                 fmt::format("a stroke that ends within {} s (this one takes {:.10g} s)",
+                             limits::kMaxEnd.count() / 1'000'000'000, stroke_seconds));
         mv.brake_at_deg = m.opt_number("brake_at_deg").value_or(0.0);
         if (mv.brake_at_deg < 0.0 || mv.brake_at_deg >= 360.0)
           m.fail("brake_at_deg", "a crank angle in [0, 360)");

@@ -277,6 +277,25 @@ TEST(Executive, DebouncePhasesGiveTheSameBytesOnAnyThreadCount) {
   EXPECT_NE(first.find("\"start_ns\""), std::string::npos); // each probe says when it started
 }
 
+// The last crossing of a throughput check without a timeout has no later crossing to end its
+// window: when its edge never comes, the window ends with the run (300 ms here), not at the
+// end of time (it once reached results.json, trace.vcd and the .gtkw zoom as INT64_MAX).
+TEST(Executive, AWindowLeftOpenEndsWithTheRun) {
+  std::string text = test::kPlsCampaign;
+  const std::size_t second = text.find("[[motion.move]]", text.find("[[motion.move]]") + 1);
+  text.erase(second, text.find("[[check]]") - second); // one forward move: one crossing of 100
+  text.replace(text.find("model = \"reference_pls\""), 23,
+               "model = \"reference_pls\"\nvariant = \"stuck-off\"");
+  const Campaign c = parse_campaign(text, "t.toml");
+  const RunOutput out = Executive(c).run(c.runs[0]);
+  const rig::Measurement* missing = test::find(out.result, "on_latency.missing");
+  ASSERT_NE(missing, nullptr);
+  EXPECT_EQ(missing->outcome, rig::Outcome::Fail);
+  ASSERT_TRUE(missing->window.has_value());
+  EXPECT_LT(missing->window->begin, 300_ms);
+  EXPECT_EQ(missing->window->end, 300_ms);
+}
+
 TEST(Executive, StimuliAppearOnTheBusAsWritten) {
   // Bounce: closes at 2 ms, opens/closes every 100 us for 2 bounces, settles at 2.4 ms.
   // Pulse: high at 3 ms for 250 us. Stuck low from 4 ms to 4.5 ms over a level-high at 4.2 ms.

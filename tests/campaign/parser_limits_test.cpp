@@ -158,7 +158,10 @@ TEST(CampaignLimits, TrapezoidAndPressBoundsAreRefused) {
                   "t.toml:21:15: motion.move[0].accel_rpm_s: a rate in rpm/s above 0, at most 1000000"));
   EXPECT_TRUE(rejected_at(replace_line(t, 22, "turns = 1e9"),
                           "t.toml:22:9: motion.move[0].turns: a distance in turns in -10000 .. 10000"));
-  EXPECT_TRUE(accepted(replace_line(t, 22, "turns = -10000")));
+  // 10000 turns at 600 rpm (10 turns/s) take 1000 s; at 60 rpm 10000 s, more than a run's hour.
+  EXPECT_TRUE(accepted(replace_line(replace_line(t, 23, "speed_rpm = 600"), 22, "turns = -10000")));
+  EXPECT_TRUE(rejected_at(replace_line(t, 22, "turns = -10000"),
+                          "t.toml:23:13: motion.move[0].speed_rpm: a move that ends within 3600 s"));
 }
 
 // ---- values only a run found before: now the parser ------------------------------------------

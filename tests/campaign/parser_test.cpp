@@ -286,6 +286,23 @@ TEST(CampaignParser, MoveThatCannotFollowIsAnError) {
   EXPECT_TRUE(rejected_at(text, "t.toml:23:1: motion.move[1]: a move that can follow"));
 }
 
+// A move that outlasts the longest run (an hour, limits::kMaxEnd) is refused: no run sees it
+// end, and a rate near 0 overflowed its time (accel 1e-300 rpm/s played a turn in 2 ns). At 60
+// rpm = 1 turn/s with 60 rpm/s = 1 turn/s^2 the two ramps take 1 s together, so 3599 turns
+// take exactly 3600 s (accepted) and 3599.001 turns 3600.001 s (refused).
+TEST(CampaignParser, MoveLongerThanAnHourIsAnError) {
+  const auto trapezoid = [](const std::string& turns, const std::string& accel) {
+    return replace_line(replace_line(test::kValidCampaign, 22, "accel_rpm_s = " + accel), 20,
+                        "kind = \"trapezoid\"\nturns = " + turns);
+  };
+  EXPECT_EQ(error_of(trapezoid("3599", "60")), "accepted");
+  EXPECT_TRUE(rejected_at(trapezoid("3599.001", "60"),
+                          "t.toml:22:13: motion.move[0].speed_rpm: a move that ends within 3600 s (this one "
+                          "takes 3600.001 s"));
+  EXPECT_TRUE(rejected_at(trapezoid("1", "1e-300"), "t.toml:23:15: motion.move[0].accel_rpm_s: a move that "
+                                                    "ends within 3600 s"));
+}
+
 TEST(CampaignParser, SweepOfAMissingTableIsAnError) {
   const std::string text = test::kValidCampaign + "[[sweep]]\nkey = \"plant.mass\"\nvalues = [1, 2]\n";
   EXPECT_TRUE(rejected_at(text, "t.toml:32:7: sweep[0].key: a key path in this file"));
