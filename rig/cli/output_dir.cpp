@@ -31,7 +31,17 @@ bool is_run_evidence(const std::string& name) {
 }
 
 OutputDirectory::OutputDirectory(const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
+  // --out naming a file (or a path through one) is the user's to change: bad input, not a rig
+  // fault. Other failures (permissions, a full disk) keep the errno text.
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec == std::errc::not_a_directory || ec == std::errc::file_exists ||
+      (!ec && !std::filesystem::is_directory(dir)))
+    throw ForeignOutput(
+        fmt::format("--out {}: not a directory (it or a path above it is a file): give an empty "
+                    "or new directory",
+                    dir.string()));
+  if (ec) throw std::filesystem::filesystem_error("cannot create --out", dir, ec);
   const std::filesystem::path lock = dir / kLockName;
   lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_fd_ < 0)

@@ -5,10 +5,10 @@
 // The directory is locked with flock() on DIR/.hilrig.lock for the whole run (released when
 // the process ends, however it ends): a second run on the same DIR is refused (OutputBusy,
 // exit 3: the rig cannot run it now; nothing in DIR is touched). A directory holding a file
-// hilrig does not write is refused before anything runs (ForeignOutput, exit 2: choose another
-// --out); otherwise every earlier campaign's evidence is removed (results.json, junit.xml,
-// report.html, runs.jsonl, trace*.vcd, can.log, *.gtkw and their *.tmp), so no trace or CAN
-// log of an earlier campaign is mistaken for this one's.
+// hilrig does not write, or a DIR that is a file (or under one), is refused before anything
+// runs (ForeignOutput, exit 2: choose another --out); otherwise every earlier campaign's evidence is removed
+// (results.json, junit.xml, report.html, runs.jsonl, trace*.vcd, can.log, *.gtkw and their *.tmp), so no
+// trace or CAN log of an earlier campaign is mistaken for this one's.
 
 #include <filesystem>
 #include <stdexcept>

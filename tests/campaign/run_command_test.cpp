@@ -510,6 +510,16 @@ TEST(RunCommand, OutputDirectoryIsCleanLockedAndOnlyHilrigs) {
     EXPECT_THROW(OutputDirectory{busy}, OutputBusy);
   }
   EXPECT_EQ(run(campaign::test::shipped("reference_pls_pass.toml"), busy), 0); // released
+
+  // --out naming a file, or a path through one, is the user's to change: bad input (exit 2),
+  // and the file is left as it was (it was a filesystem error, a rig fault, exit 3).
+  const fs::path file = scratch("a_file") / "notes.txt";
+  write_file(file.parent_path(), "notes.txt", "mine\n");
+  for (const fs::path& given : {file, file / "sub"}) {
+    EXPECT_EQ(run(campaign::test::shipped("reference_pls_pass.toml"), given, &err), 2) << given;
+    EXPECT_NE(err.find("not a directory"), std::string::npos) << err;
+    EXPECT_EQ(hilrig::test::read_file(file), "mine\n");
+  }
 }
 
 TEST(RunCommand, RunEvidenceIsWhatHilrigWrites) {
