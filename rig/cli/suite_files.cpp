@@ -19,7 +19,12 @@ std::vector<SuiteEntry> collect_campaigns(const std::vector<std::string>& paths)
     if (fs::is_directory(st)) {
       std::vector<SuiteEntry> found;
       for (const auto& e : fs::recursive_directory_iterator(path)) {
-        if (!e.is_regular_file() || e.path().extension() != ".toml") continue;
+        if (e.path().extension() != ".toml" || e.is_directory()) continue;
+        // A *.toml that is not a campaign file one can read (a dangling link, a FIFO) would
+        // drop out of the suite unnoticed: the suite would pass without it.
+        if (!e.is_regular_file())
+          throw std::invalid_argument(fmt::format("{}: {}, not a campaign file", e.path().string(),
+                                                  e.exists() ? "not a regular file" : "a link to nothing"));
         const fs::path rel = e.path().lexically_relative(path);
         found.push_back({e.path().string(), fs::path(rel).replace_extension().generic_string()});
       }
@@ -32,6 +37,11 @@ std::vector<SuiteEntry> collect_campaigns(const std::vector<std::string>& paths)
       if (fs::path(path).extension() != ".toml")
         throw std::invalid_argument(fmt::format("{}: a campaign file (*.toml) or a directory of them", path));
       entries.push_back({path, fs::path(path).stem().string()});
+    } else if (fs::exists(st)) {
+      throw std::invalid_argument(
+          fmt::format("{}: not a regular file (a campaign file (*.toml) or a directory of them)", path));
+    } else if (ec && ec != std::errc::no_such_file_or_directory) {
+      throw std::invalid_argument(fmt::format("{}: {}", path, ec.message())); // a link loop, no permission
     } else {
       throw std::invalid_argument(fmt::format("{}: no such file or directory", path));
     }

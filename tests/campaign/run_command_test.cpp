@@ -2,6 +2,8 @@
 // input, 3 rig fault), the files it writes, --shard, suites of campaigns (--jobs), --only and
 // --tag, and `hilrig check`.
 
+#include <sys/stat.h>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -623,11 +625,12 @@ TEST(RunSuite, ExitStatusIsTheWorstOfTheCampaigns) {
   EXPECT_EQ(r.status, 1) << r.err;
   const std::string index = hilrig::test::read_file(dir / "out1" / "report.html");
   EXPECT_LT(index.find("late/report.html"), index.find("pass/report.html"));
-  // + a campaign whose output directory cannot be made (a file is in the way): a rig fault, 3,
-  // and the other two still ran and wrote their results.
-  fs::create_directories(dir / "out3");
-  write_file(dir / "out3", "blocked", "in the way");
-  r = run_suite({late, blocked, pass}, dir / "out3");
+  // + a campaign whose output directory another run holds: a rig fault, 3 (the rig cannot run
+  // it now), and the other two still ran and wrote their results.
+  {
+    const OutputDirectory held(dir / "out3" / "blocked");
+    r = run_suite({late, blocked, pass}, dir / "out3");
+  }
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_TRUE(fs::exists(dir / "out3" / "late" / "results.json"));
   EXPECT_TRUE(fs::exists(dir / "out3" / "pass" / "results.json"));
@@ -650,6 +653,30 @@ TEST(RunSuite, WorstStatusRanksRigFaultOverBadInputOverFailure) {
   EXPECT_EQ(worst_status(2, 1), 2);
   EXPECT_EQ(worst_status(2, 3), 3);
   EXPECT_EQ(worst_status(3, 0), 3);
+}
+
+// A *.toml in a suite that cannot be read as a campaign file is bad input, named: skipped, it
+// would drop out of the suite and the suite would pass without it. A path that exists but is
+// not a regular file is named as such, not as missing.
+TEST(RunSuite, AnUnreadableCampaignInASuiteIsBadInputNotSkipped) {
+  const fs::path dir = scratch("suite_unreadable");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_file(dir, "good.toml", passing_campaign("good"));
+  fs::create_symlink(dir / "gone.toml.target", dir / "gone.toml");
+  SuiteRun r = run_suite({dir.string()}, scratch("suite_unreadable_out"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("gone.toml: a link to nothing, not a campaign file"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(scratch("suite_unreadable_out") / "good" / "results.json"));
+  fs::remove(dir / "gone.toml");
+  ASSERT_EQ(::mkfifo((dir / "pipe.toml").c_str(), 0600), 0);
+  EXPECT_THROW((void)collect_campaigns({dir.string()}), std::invalid_argument);
+  try {
+    (void)collect_campaigns({(dir / "pipe.toml").string()});
+    ADD_FAILURE() << "a FIFO was taken as a campaign file";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("pipe.toml: not a regular file"), std::string::npos) << e.what();
+  }
 }
 
 TEST(RunSuite, TwoCampaignsWritingOneDirectoryAreBadInput) {
