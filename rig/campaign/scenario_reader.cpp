@@ -105,6 +105,7 @@ private:
     if (t == nullptr) fail(root_.where(), "campaign", "missing: a [campaign] table with name and end");
     TableReader r(file_, *t, "campaign");
     out.name = r.string("name");
+    if (!is_label(out.name)) r.fail("name", "the campaign's name: " + label_range());
     out.description = r.opt_string("description").value_or("");
     out.scenario.end = duration_in(r, "end", Nanos{1}, limits::kMaxEnd);
     if (auto s = r.opt_integer("seed")) {
@@ -603,6 +604,7 @@ private:
                                          : std::string("an input word >= 0"));
         h.word = static_cast<std::size_t>(word);
         h.name = r.string("name");
+        if (!is_label(h.name)) r.fail("name", "the observation's name: " + label_range());
         if (names.contains(h.name))
           r.fail("name", fmt::format("a new observation name (\"{}\" is used above)", h.name));
         names.insert(h.name);
@@ -804,6 +806,7 @@ private:
       c.where = r.where();
       c.kind = r.string("kind");
       c.name = r.string("name");
+      if (!is_label(c.name)) r.fail("name", "the check's name: " + label_range());
       if (s.check(c.name) != nullptr)
         r.fail("name", fmt::format("a new check name (\"{}\" is used above)", c.name));
       const checks::CheckKind* kind = checks::find_check_kind(c.kind);
@@ -900,6 +903,7 @@ private:
       FaultSpec f;
       f.where = r.where();
       f.name = r.string("name");
+      if (!is_label(f.name)) r.fail("name", "the fault's name: " + label_range());
       for (const FaultSpec& other : out.faults)
         if (other.name == f.name)
           r.fail("name", fmt::format("a new fault name (\"{}\" is used above)", f.name));

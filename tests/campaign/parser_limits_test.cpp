@@ -317,7 +317,8 @@ TEST(CampaignLimits, KeyPartBoundIsExactAndIgnoresDotsInValues) {
   std::string dots(1000, '.');
   std::string floats;
   for (int i = 0; i < 200; ++i) floats += fmt::format("{}{}.5", i == 0 ? "" : ", ", i);
-  EXPECT_EQ(error_of(replace_line(test::kValidCampaign, 2, "name = \"t" + dots + "\" # " + dots)),
+  EXPECT_EQ(error_of(replace_line(test::kValidCampaign, 2,
+                                  "name = \"t\"\ndescription = \"t" + dots + "\" # " + dots)),
             "accepted");
   EXPECT_EQ(error_of(replace_line(test::kValidCampaign, 2,
                                   "description = '''" + dots + "\n" + dots + "'''\nname = \"t\"")),

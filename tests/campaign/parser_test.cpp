@@ -163,6 +163,21 @@ TEST(CampaignParser, CheckNamingAnObservationNoReadMakesIsAnError) {
   EXPECT_EQ(error_of(read + replace_line(check, 4, "observation = \"pos\"")), "accepted");
 }
 
+// Names are what the outputs carry (junit names, results keys, the report): 1 .. 64 printable
+// ASCII characters, as the traceability labels. An empty one made a summary line ": 1 run(s)";
+// a control character was dropped in junit.xml but kept in results.json.
+TEST(CampaignParser, NamesArePrintableLabels) {
+  EXPECT_TRUE(
+      rejected_at(replace_line(test::kValidCampaign, 2, "name = \"\""),
+                  "t.toml:2:8: campaign.name: the campaign's name: 1 .. 64 printable ASCII characters"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 25, "name = \"o\\u0001n\""),
+                          "t.toml:25:8: check[0].name: the check's name: 1 .. 64"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 25, "name = \"" + std::string(65, 'n') + "\""),
+                          "t.toml:25:8: check[0].name: the check's name: 1 .. 64"));
+  EXPECT_EQ(error_of(replace_line(test::kValidCampaign, 25, "name = \"" + std::string(64, 'n') + "\"")),
+            "accepted");
+}
+
 TEST(CampaignParser, UnknownCheckKindIsAnError) {
   EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 24, "kind = \"thruput\""),
                           "t.toml:24:8: check[0].kind: a check kind"));
