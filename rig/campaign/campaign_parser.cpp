@@ -214,11 +214,27 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
   // Reads a point; an error in a swept or set value (no position of its own) points at
   // the value in the sweep's array or the fault's table.
   auto read_point = [&](std::size_t p, std::optional<std::size_t> fault, std::string* label) {
+    std::string own_label;
+    if (label == nullptr) label = &own_label;
     toml::table doc = point_doc(p, fault, label);
     try {
       return read_scenario_file(file_name, doc);
     } catch (const CampaignError& e) {
-      if (e.where().line != 0 || (axes.empty() && !fault)) throw;
+      if (axes.empty() && !fault) throw;
+      if (e.where().line != 0) {
+        // The line is the file's, but the value there may be fine alone: say which point, or
+        // which fault's set, made it wrong (a swept encoder.lines makes a speed too fast).
+        std::string in;
+        if (!label->empty()) in = "sweep point " + *label;
+        if (fault) {
+          const toml::node* name = doc["fault"][*fault]["name"].node();
+          const auto* fault_name = name != nullptr ? name->as_string() : nullptr;
+          in +=
+              (in.empty() ? "" : ", ") +
+              fmt::format("fault \"{}\"", fault_name != nullptr ? fault_name->get() : std::to_string(*fault));
+        }
+        throw CampaignError(file_name, e.where(), e.key(), fmt::format("{} (in {})", e.expected(), in));
+      }
       if (fault) {
         const toml::table* set = doc["fault"][*fault]["set"].as_table();
         throw CampaignError(file_name, set != nullptr ? pos_of(*set) : SourcePos{},

@@ -330,6 +330,16 @@ TEST(CampaignParser, BadSweepValueIsCaughtBeforeAnyRun) {
   EXPECT_TRUE(rejected_at(text, "t.toml:33:19: dut.params.delay: expected a duration"));
 }
 
+// A value fine alone that a swept key makes wrong is named at its own line, with the point:
+// 60 rpm of a 1,000,000-line encoder is 4,000,000 counts/s, over the 1,000,000 the rig plays.
+TEST(CampaignParser, ErrorThatASweepPointMakesNamesThePoint) {
+  const std::string text =
+      test::kValidCampaign + "[[sweep]]\nkey = \"encoder.lines\"\nvalues = [100, 1000000]\n";
+  const std::string got = error_of(text);
+  EXPECT_EQ(got.rfind("t.toml:21:13: motion.move[0].speed_rpm: a speed in rpm in -15 .. 15", 0), 0U) << got;
+  EXPECT_NE(got.find("(in sweep point encoder.lines=1000000)"), std::string::npos) << got;
+}
+
 TEST(CampaignParser, SweepsMakeTheCartesianProductLastAxisFastest) {
   const std::string text = replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 2") +
                            "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", \"100us\"]\n"
