@@ -118,6 +118,17 @@ RegisterStatus write_bits(RegisterMap& map, std::uint16_t address, std::uint16_t
   return map.write_holding_registers(span.first_reg, view);
 }
 
+// The registers of `read` (from read_address) that the write just set take the written values.
+void overlay_written(std::span<std::uint16_t> read, std::uint16_t read_address,
+                     std::span<const std::uint16_t> written, std::uint16_t write_address) {
+  for (std::size_t i = 0; i < read.size(); ++i) {
+    const std::size_t address = read_address + i;
+    if (address >= write_address && address < write_address + written.size()) {
+      read[i] = written[address - write_address];
+    }
+  }
+}
+
 PduResult echo(std::span<const std::uint8_t> req, std::size_t n) {
   return {RegisterStatus::Ok,
           std::vector<std::uint8_t>(req.begin(), req.begin() + static_cast<std::ptrdiff_t>(n))};
@@ -125,7 +136,7 @@ PduResult echo(std::span<const std::uint8_t> req, std::size_t n) {
 
 } // namespace
 
-PduResult handle_pdu(RegisterMap& map, std::span<const std::uint8_t> req) {
+PduResult handle_pdu(RegisterMap& map, std::span<const std::uint8_t> req, Fc23Read fc23_read) {
   if (req.empty()) {
     return fail(RegisterStatus::IllegalFunction);
   }
@@ -234,7 +245,8 @@ PduResult handle_pdu(RegisterMap& map, std::span<const std::uint8_t> req) {
         std::uint32_t{write_address} + write_count > 0x10000U) {
       return fail(RegisterStatus::IllegalDataAddress);
     }
-    // The read half returns the state from before the write (the SMD23E's lag, L2076).
+    // The read half is read before the write too, so that a read the map refuses refuses the
+    // whole request before anything is written.
     std::array<std::uint16_t, kMaxRegs> regs{};
     const std::span<std::uint16_t> view(regs.data(), read_count);
     if (const RegisterStatus s = map.read_holding_registers(read_address, view); s != RegisterStatus::Ok) {
@@ -248,6 +260,13 @@ PduResult handle_pdu(RegisterMap& map, std::span<const std::uint8_t> req) {
             map.write_holding_registers(write_address, std::span(values.data(), write_count));
         s != RegisterStatus::Ok) {
       return fail(s);
+    }
+    if (fc23_read == Fc23Read::AfterWrite) {
+      if (const RegisterStatus s = map.read_holding_registers(read_address, view); s != RegisterStatus::Ok) {
+        return fail(s);
+      }
+    } else {
+      overlay_written(view, read_address, std::span(values.data(), write_count), write_address);
     }
     PduResult r;
     r.response.push_back(req[0]);

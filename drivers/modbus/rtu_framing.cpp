@@ -80,7 +80,7 @@ RtuFrame next_rtu_frame(std::span<const std::uint8_t> bytes, bool silent) {
 }
 
 RtuAnswer answer_rtu_request(RegisterMap& map, std::uint8_t unit, std::span<const std::uint8_t> frame,
-                             std::vector<std::uint8_t>& response) {
+                             std::vector<std::uint8_t>& response, Fc23Read fc23_read) {
   RtuAnswer a;
   if (frame.size() < 4) {
     return a; // not a frame (unit, function, CRC): nobody is addressed
@@ -91,7 +91,7 @@ RtuAnswer answer_rtu_request(RegisterMap& map, std::uint8_t unit, std::span<cons
     return a;
   }
   const std::span<const std::uint8_t> pdu = frame.subspan(1, frame.size() - 3);
-  const PduResult result = handle_pdu(map, pdu);
+  const PduResult result = handle_pdu(map, pdu, fc23_read);
   a.status = result.status;
   if (a.broadcast) {
     return a; // never answered, not even with an exception

@@ -15,6 +15,7 @@
 #include "core/register_map.hpp"
 #include "core/serial.hpp"
 #include "core/time.hpp"
+#include "drivers/modbus/pdu_handler.hpp"
 
 namespace hilrig::drivers::modbus {
 
@@ -59,7 +60,8 @@ struct RtuAnswer {
 // Carries out one request frame (RtuFrameKind::Request) for unit `unit`: the reply ADU with
 // its CRC is appended to `response` unless the frame was for another unit or a broadcast.
 // Fewer than 4 bytes are not a frame: not addressed, nothing appended.
+// fc23_read: the served device's FC 23 (pdu_handler.hpp).
 RtuAnswer answer_rtu_request(RegisterMap& map, std::uint8_t unit, std::span<const std::uint8_t> frame,
-                             std::vector<std::uint8_t>& response);
+                             std::vector<std::uint8_t>& response, Fc23Read fc23_read = Fc23Read::AfterWrite);
 
 } // namespace hilrig::drivers::modbus

@@ -134,7 +134,7 @@ void RtuServer::take(const RtuFrame& frame) {
       tick_();
     }
     out_.clear();
-    const RtuAnswer a = answer_rtu_request(map_, options_.unit, bytes, out_);
+    const RtuAnswer a = answer_rtu_request(map_, options_.unit, bytes, out_, options_.fc23_read);
     if (!a.addressed) {
       ++stats_.other_unit;
     } else {

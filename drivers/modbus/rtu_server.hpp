@@ -32,6 +32,7 @@ struct RtuServerOptions {
   std::uint8_t unit = 1;                          // 1..247
   bool rs485 = false;                             // ask the port for RS-485 mode
   Nanos poll_period = milliseconds(5);            // how often the tick runs while idle
+  Fc23Read fc23_read = Fc23Read::AfterWrite;      // the served device's FC 23 (pdu_handler.hpp)
 };
 
 // Counters, safe to read from another thread while the server runs.

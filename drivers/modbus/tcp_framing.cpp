@@ -31,12 +31,12 @@ TcpFrame next_tcp_frame(std::span<const std::uint8_t> stream) {
 }
 
 RegisterStatus answer_tcp_request(RegisterMap& map, std::span<const std::uint8_t> frame,
-                                  std::vector<std::uint8_t>& response) {
+                                  std::vector<std::uint8_t>& response, Fc23Read fc23_read) {
   if (frame.size() <= kMbapHeaderLength) {
     return RegisterStatus::IllegalDataValue; // not a request frame: nothing to answer
   }
   const std::span<const std::uint8_t> pdu = frame.subspan(kMbapHeaderLength);
-  const PduResult result = handle_pdu(map, pdu);
+  const PduResult result = handle_pdu(map, pdu, fc23_read);
   const bool ok = result.status == RegisterStatus::Ok;
   const std::size_t pdu_length = ok ? result.response.size() : 2;
   response.insert(response.end(), frame.begin(), frame.begin() + 2); // transaction id

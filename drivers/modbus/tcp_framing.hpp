@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/register_map.hpp"
+#include "drivers/modbus/pdu_handler.hpp"
 
 namespace hilrig::drivers::modbus {
 
@@ -39,7 +40,9 @@ struct TcpFrame {
 // handler cannot parse (a truncated request whose MBAP length is consistent) is answered
 // with exception 03, an unknown function with exception 01. Returns the status sent.
 // Bytes too short to hold a function code are not a frame: nothing is appended.
+// fc23_read: the served device's FC 23 (pdu_handler.hpp).
 RegisterStatus answer_tcp_request(RegisterMap& map, std::span<const std::uint8_t> frame,
-                                  std::vector<std::uint8_t>& response);
+                                  std::vector<std::uint8_t>& response,
+                                  Fc23Read fc23_read = Fc23Read::AfterWrite);
 
 } // namespace hilrig::drivers::modbus

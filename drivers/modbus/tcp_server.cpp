@@ -34,6 +34,7 @@ struct Connection {
   std::vector<std::uint8_t> in_flight; // replies the socket is writing
   bool writing = false;
   bool open = true;
+  bool closing = false; // no more reading: closed once the replies owed are written
   Clock::time_point last_activity;
   std::list<std::shared_ptr<Connection>>::iterator self;
 
@@ -144,14 +145,19 @@ void TcpServer::Impl::read(const ConnectionPtr& c) {
     }
     c->in_length += n;
     c->last_activity = Clock::now();
-    if (take_frames(c)) {
-      write(c);
+    const bool keep_reading = take_frames(c);
+    if (!c->open) {
+      return;
+    }
+    write(c);
+    if (keep_reading) {
       read(c);
     }
   });
 }
 
-// Answers every whole frame in the input buffer; false when the connection had to be closed.
+// Answers every whole frame in the input buffer; false when nothing more is to be read from
+// the connection (it was closed, or is closing once its replies are written).
 bool TcpServer::Impl::take_frames(const ConnectionPtr& c) {
   std::size_t at = 0;
   for (;;) {
@@ -161,8 +167,10 @@ bool TcpServer::Impl::take_frames(const ConnectionPtr& c) {
       break;
     }
     if (frame.kind == TcpFrameKind::Invalid) {
+      // Nothing after it can be framed, but the requests before it were taken: their replies
+      // are owed, so the connection closes once they are written (write()).
       ++stats_.bad_frames;
-      close(c);
+      c->closing = true;
       return false;
     }
     if (frame.kind == TcpFrameKind::Foreign) {
@@ -172,7 +180,8 @@ bool TcpServer::Impl::take_frames(const ConnectionPtr& c) {
         tick_();
       }
       const std::size_t before = c->pending.size();
-      const RegisterStatus status = answer_tcp_request(map_, rest.first(frame.length), c->pending);
+      const RegisterStatus status =
+          answer_tcp_request(map_, rest.first(frame.length), c->pending, options_.fc23_read);
       stats_.buffered_bytes += c->pending.size() - before;
       ++stats_.requests;
       if (status != RegisterStatus::Ok) {
@@ -193,7 +202,13 @@ bool TcpServer::Impl::take_frames(const ConnectionPtr& c) {
 }
 
 void TcpServer::Impl::write(const ConnectionPtr& c) {
-  if (c->writing || c->pending.empty()) {
+  if (c->writing) {
+    return;
+  }
+  if (c->pending.empty()) {
+    if (c->closing) {
+      close(c);
+    }
     return;
   }
   std::swap(c->pending, c->in_flight);

@@ -10,7 +10,8 @@
 //   - a connection whose unsent replies would pass max_output_bytes (a client that sends and
 //     never reads) is closed, so it holds neither memory nor anyone else up.
 // A frame whose MBAP protocol id is not 0 is discarded; a length field no Modbus frame can
-// have closes the connection (the stream cannot be resynced).
+// have closes the connection (the stream cannot be resynced), once the requests that came
+// before it are answered.
 
 #include <atomic>
 #include <cstddef>
@@ -21,6 +22,7 @@
 
 #include "core/register_map.hpp"
 #include "core/time.hpp"
+#include "drivers/modbus/pdu_handler.hpp"
 
 namespace hilrig::drivers::modbus {
 
@@ -34,7 +36,8 @@ struct TcpServerOptions {
   std::string bind = "127.0.0.1"; // dotted IPv4 address
   std::uint16_t port = 502;       // 0: the OS picks a free port (see TcpServer::port())
   TcpLimits limits;
-  Nanos poll_period = milliseconds(5); // how often the tick runs while no request arrives
+  Nanos poll_period = milliseconds(5);       // how often the tick runs while no request arrives
+  Fc23Read fc23_read = Fc23Read::AfterWrite; // the served device's FC 23 (pdu_handler.hpp)
 };
 
 // Counters, safe to read from another thread while the server runs. `open` and

@@ -13,6 +13,7 @@ namespace {
 constexpr std::int32_t kMaxTarget = 8'388'607;
 constexpr std::int32_t kMaxSpeed = 2'999'999;
 constexpr std::int32_t kMaxStartSpeed = 1'999'999;
+// The move commands: the moves Move Complete reports (L2860) and Find Home (L887).
 constexpr std::uint16_t kMoveBits = msw::kAbsolute | msw::kRelative | msw::kHomeCw | msw::kHomeCcw |
                                     msw::kJogCw | msw::kJogCcw | msw::kRunAssembled;
 } // namespace
@@ -587,6 +588,11 @@ void Smd23e::process_command(const Words& previous) {
 void Smd23e::dispatch(std::uint16_t bit, bool indexed_start) {
   (void)indexed_start;
   const std::uint16_t lsw = out_[1];
+  if ((bit & kMoveBits) != 0) {
+    // Move Complete "is reset to '0' when the next move command is written" (L2860): also
+    // when the move is then refused; out-of-range jog or registration parameters set it again.
+    move_complete_ = false;
+  }
   switch (bit) {
   case msw::kHold:
     if (run_ && !run_->stopping) {

@@ -228,6 +228,7 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
     server_options.port = options.port;
     server_options.limits = options.tcp_limits;
     server_options.poll_period = options.tick;
+    server_options.fc23_read = device->fc23_read;
     drivers::modbus::TcpServer server(registers, server_options);
     endpoint.port = server.port();
     endpoint.tcp_stats = &server.stats();
@@ -243,6 +244,7 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
   server_options.unit = options.unit;
   server_options.rs485 = options.rs485;
   server_options.poll_period = options.tick;
+  server_options.fc23_read = device->fc23_read;
   std::optional<drivers::modbus::Pty> pty;
   std::optional<drivers::modbus::RtuServer> server;
   if (options.link == ServeLink::Pty) {

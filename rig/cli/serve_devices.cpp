@@ -221,11 +221,13 @@ const std::vector<ServedDevice>& served_devices() {
        "AMCI 4501 registration: input words I:s.0-7 at input registers 0-7, O:s.0-7 at holding 0-7",
        amci4501_faults,
        {0, 8, 0, 8},
+       drivers::modbus::Fc23Read::AfterWrite,
        build_amci4501},
       {"ans1",
        "ANS1 limit switch: status words at input registers 0-19, command words at holding 1024-1043",
        ans1_faults,
        {1024, 20, 0, 20},
+       drivers::modbus::Fc23Read::AfterWrite,
        build_ans1},
       {"pls2700",
        "Series 2700 limit switch (--param model=2731 .. 2742-18, default 2742; --motion constant:<rpm>rpm "
@@ -233,16 +235,22 @@ const std::vector<ServedDevice>& served_devices() {
        "0-63 (FC16 at 0 = one BTW), error byte at holding 64",
        pls2700_faults,
        {0, 65, 0, 5},
+       drivers::modbus::Fc23Read::AfterWrite,
        build_pls2700},
       {"smd23e",
        "SMD23E stepper: input registers 0-9, output words at holding registers 1024-1033",
        "none, wrong-acceleration, lost-steps, ignored-limit, late-stop",
        {1024, 10, 0, 10},
+       // "the data read with that command will not contain the response to the new
+       // configuration data. The response to the new data will be sent with the next data
+       // read" (its manual, L2076).
+       drivers::modbus::Fc23Read::ResponseFromBeforeWrite,
        build_smd23e},
       {"ssi7361",
        "AMCI 7361 SSI interface: %I, %AI1-6 at input registers 0-6, %Q, %AQ1-6 at holding 0-6",
        ssi7361_faults,
        {0, 7, 0, 7},
+       drivers::modbus::Fc23Read::AfterWrite,
        build_ssi7361},
   };
   return devices;

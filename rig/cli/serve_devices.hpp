@@ -13,6 +13,7 @@
 
 #include "core/register_map.hpp"
 #include "core/scheduler.hpp"
+#include "drivers/modbus/pdu_handler.hpp"
 #include "rig/cli/serve_controls.hpp"
 #include "rig/duts/dut.hpp"
 
@@ -64,6 +65,9 @@ struct ServedDevice {
   std::string_view description; // one line: what is served, where
   std::string_view faults;      // the fault variant names it accepts, for help texts
   HostWordMap words;
+  // What the read half of FC 23 answers (pdu_handler.hpp): the protocol's AfterWrite unless
+  // the device's manual documents otherwise.
+  drivers::modbus::Fc23Read fc23_read = drivers::modbus::Fc23Read::AfterWrite;
   // Builds the model on the scheduler; throws std::invalid_argument for an unknown fault.
   std::function<ServedModel(Scheduler&, const ServeModelOptions&)> build;
 };

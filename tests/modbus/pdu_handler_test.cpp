@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <span>
 #include <vector>
 
 #include "drivers/modbus/pdu_handler.hpp"
@@ -51,14 +52,61 @@ TEST(ModbusPdu, MaskWrite) {
   EXPECT_EQ(m.holding[0], 0x0017);
 }
 
-TEST(ModbusPdu, ReadWriteMultipleReturnsThePreWriteState) {
-  PlainMap m;
-  m.holding[0] = 0x1111;
-  // Read 1024×1, write 1024×1 = 0x2222: the read half answers 0x1111 (SMD23E lag, L2076).
-  const PduResult r = ask(m, {23, 0x04, 0x00, 0x00, 0x01, 0x04, 0x00, 0x00, 0x01, 2, 0x22, 0x22});
+// A device that answers a write: holding register 1024 written v sets 1025 to v + 1.
+class AnsweringMap final : public RegisterMap {
+public:
+  PlainMap plain;
+  RegisterStatus read_input_registers(std::uint16_t a, std::span<std::uint16_t> out) override {
+    return plain.read_input_registers(a, out);
+  }
+  RegisterStatus read_holding_registers(std::uint16_t a, std::span<std::uint16_t> out) override {
+    return plain.read_holding_registers(a, out);
+  }
+  RegisterStatus write_holding_registers(std::uint16_t a, std::span<const std::uint16_t> v) override {
+    const RegisterStatus s = plain.write_holding_registers(a, v);
+    if (s == RegisterStatus::Ok && a == 1024) {
+      plain.holding[1] = static_cast<std::uint16_t>(v[0] + 1);
+    }
+    return s;
+  }
+};
+
+// FC 23 reading 1024×2 and writing 1024×1 = 0x2222.
+const Bytes kReadTwoWriteOne{23, 0x04, 0x00, 0x00, 0x02, 0x04, 0x00, 0x00, 0x01, 2, 0x22, 0x22};
+
+TEST(ModbusPdu, ReadWriteMultipleWritesBeforeItReads) {
+  AnsweringMap m;
+  m.plain.holding[0] = 0x1111;
+  m.plain.holding[1] = 0x1112;
+  // "The write operation is performed before the read" (§6.17): the read sees the write and
+  // the device's answer to it.
+  const PduResult r = handle_pdu(m, kReadTwoWriteOne, Fc23Read::AfterWrite);
   ASSERT_EQ(r.status, RegisterStatus::Ok);
-  EXPECT_EQ(r.response, (Bytes{23, 2, 0x11, 0x11}));
-  EXPECT_EQ(m.holding[0], 0x2222);
+  EXPECT_EQ(r.response, (Bytes{23, 4, 0x22, 0x22, 0x22, 0x23}));
+  EXPECT_EQ(handle_pdu(m, kReadTwoWriteOne).response, r.response); // the protocol's order by default
+}
+
+TEST(ModbusPdu, ReadWriteMultipleCanAnswerWithTheResponseFromBeforeTheWrite) {
+  AnsweringMap m;
+  m.plain.holding[0] = 0x1111;
+  m.plain.holding[1] = 0x1112;
+  // The SMD23E's buffered answer (its manual, L2076): the register written reads as written,
+  // the device's answer to it (1025) as before; the answer comes with the next read.
+  const PduResult r = handle_pdu(m, kReadTwoWriteOne, Fc23Read::ResponseFromBeforeWrite);
+  ASSERT_EQ(r.status, RegisterStatus::Ok);
+  EXPECT_EQ(r.response, (Bytes{23, 4, 0x22, 0x22, 0x11, 0x12}));
+  EXPECT_EQ(m.plain.holding[0], 0x2222);
+  EXPECT_EQ(ask(m, {3, 0x04, 0x00, 0x00, 0x02}).response, (Bytes{3, 4, 0x22, 0x22, 0x22, 0x23}));
+}
+
+TEST(ModbusPdu, ReadWriteMultipleWithARefusedReadWritesNothing) {
+  for (const Fc23Read order : {Fc23Read::AfterWrite, Fc23Read::ResponseFromBeforeWrite}) {
+    PlainMap m;
+    // Read 1034×1 (one past the holding registers), write 1024×1.
+    const Bytes req{23, 0x04, 0x0A, 0x00, 0x01, 0x04, 0x00, 0x00, 0x01, 2, 0x22, 0x22};
+    EXPECT_EQ(handle_pdu(m, req, order).status, RegisterStatus::IllegalDataAddress);
+    EXPECT_EQ(m.writes, 0);
+  }
 }
 
 TEST(ModbusPdu, CoilsAreBitsOfTheHoldingRegisters) {

@@ -66,6 +66,29 @@ TEST(ModbusTcpLimits, ImpossibleLengthClosesOnlyThatConnection) {
   EXPECT_EQ(server.endpoint().tcp_stats->bad_frames.load(), 1U);
 }
 
+// The requests that came before an impossible length in the same read are answered, and only
+// then is the connection closed (docs/serve.md): their replies were lost with it before.
+TEST(ModbusTcpLimits, RequestsBeforeAnImpossibleLengthAreAnsweredThenTheConnectionCloses) {
+  ServeThread server(smd23e_on_tcp());
+  const auto& stats = *server.endpoint().tcp_stats;
+  RawTcpClient c(server.port());
+  ASSERT_TRUE(c.connected());
+  Bytes stream = mbap_frame(6, 0, 1, kReadWord0);
+  const Bytes second = mbap_frame(7, 0, 1, kReadWord0);
+  const Bytes bad = mbap_frame(8, 0, 1, {4}, 0x300); // a 767-byte PDU: over 253
+  stream.insert(stream.end(), second.begin(), second.end());
+  stream.insert(stream.end(), bad.begin(), bad.end());
+  ASSERT_TRUE(c.send(stream)); // one send: the server reads all three frames at once
+  Bytes replies = word0_reply(6);
+  const Bytes reply7 = word0_reply(7);
+  replies.insert(replies.end(), reply7.begin(), reply7.end());
+  EXPECT_EQ(c.receive(22), replies);
+  EXPECT_TRUE(c.closed_by_server());
+  EXPECT_EQ(stats.bad_frames.load(), 1U);
+  wait_for_open(stats, 0);
+  EXPECT_EQ(stats.buffered_bytes.load(), 0U);
+}
+
 TEST(ModbusTcpLimits, SilentConnectionIsClosedAfterTheIdleTimeout) {
   ServeThread server(smd23e_with({.max_connections = 3, .idle_timeout = milliseconds(20)}));
   const auto& stats = *server.endpoint().tcp_stats;

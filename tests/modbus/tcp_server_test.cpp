@@ -1,6 +1,7 @@
 // The Modbus TCP server over a real loopback socket, with a libmodbus client: normal reads
 // and writes, and bad requests answered with the right exception while the server keeps
-// answering. The served device is the virtual SMD23E (unconfigured: SW1 = 0x6408, M-05).
+// answering. The served device is the virtual SMD23E (unconfigured: SW1 = 0x6408, M-05); FC 23
+// is also tried on the ANS1.
 #include <gtest/gtest.h>
 #include <modbus/modbus.h>
 
@@ -122,6 +123,50 @@ TEST(ModbusTcpServer, ServesSeveralClientsAndSurvivesADisconnect) {
   ASSERT_TRUE(a && b);
   expect_still_answering(a.get());
   expect_still_answering(b.get());
+}
+
+// FC 23 performs "the write operation ... before the read" (Modbus Application Protocol
+// v1.1b3, §6.17) on every served device but the SMD23E: the ANS1's command word 19 (holding
+// register 1024 + 19, its README's host register map) reads back as written in the same
+// transaction.
+TEST(ModbusTcpServer, ReadWriteMultipleWritesBeforeItReadsOnTheAns1) {
+  ServeThread server{ans1_on_tcp()};
+  Client c = connect(server.port());
+  ASSERT_TRUE(c);
+  const std::array<std::uint16_t, 1> written{0x1234};
+  std::array<std::uint16_t, 1> read{};
+  ASSERT_EQ(modbus_write_and_read_registers(c.get(), 1043, 1, written.data(), 1043, 1, read.data()), 1)
+      << modbus_strerror(errno);
+  EXPECT_EQ(read[0], 0x1234);
+}
+
+// The SMD23E's FC 23 (its manual, L2076): "If you use the Read/Write Registers function to
+// write configuration data to the unit, then the data read with that command will not contain
+// the response to the new configuration data. The response to the new data will be sent with
+// the next data read." What lags is the unit's response; the write itself is carried out
+// first (§6.17), so the output words written read back as written.
+TEST(ModbusTcpServer, Smd23eReadWriteAnswersWithItsResponseFromBeforeTheWrite) {
+  ServeThread server{smd23e_on_tcp()};
+  Client c = connect(server.port());
+  ASSERT_TRUE(c);
+  // A valid configuration (Table 9.2): Configuration Mode with every input general purpose,
+  // driver enabled, v_s = 0·1000 + 100, 2048 steps/turn, 1024 encoder pulses/turn, 50 % idle
+  // current, 2.0 A.
+  const std::array<std::uint16_t, 10> config{0x8000, 0x8000, 0, 100, 2048, 0, 1024, 50, 20, 0};
+  std::array<std::uint16_t, 1> status{};
+  ASSERT_EQ(modbus_write_and_read_registers(c.get(), 1024, 10, config.data(), 0, 1, status.data()), 1)
+      << modbus_strerror(errno);
+  EXPECT_EQ(status[0], 0x6408); // the unconfigured unit's word 0 (L2372): from before the write
+  std::array<std::uint16_t, 2> next{};
+  ASSERT_EQ(modbus_read_input_registers(c.get(), 0, 2, next.data()), 2);
+  EXPECT_EQ(next[0], 0x8000); // the Control Word, mirrored once accepted (L2372)
+  EXPECT_EQ(next[1], 0x8000); // the Config Word, mirrored (Table 9.4, L2358)
+  // Output word 7 (idle current, holding register 1031) written 40 reads back 40 at once.
+  const std::array<std::uint16_t, 1> idle{40};
+  std::array<std::uint16_t, 1> read{};
+  ASSERT_EQ(modbus_write_and_read_registers(c.get(), 1031, 1, idle.data(), 1031, 1, read.data()), 1)
+      << modbus_strerror(errno);
+  EXPECT_EQ(read[0], 40);
 }
 
 } // namespace

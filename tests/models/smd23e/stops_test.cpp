@@ -261,6 +261,44 @@ TEST_F(Smd23eInvalid, OutOfRangeJogSetsCommandErrorAndMoveComplete) {
   EXPECT_TRUE(bit1(sw1::kStopped));
 }
 
+// Move Complete around a refused command, after a good move set it (L2860): it "is reset to
+// '0' when the next move command is written", refused or not; it "is also set along with the
+// Command Error bit ... when any Jog Move or Registration Move parameters are outside of their
+// valid ranges", and "is not set on a command error for any other type of command". The move
+// commands are the moves L2860 lists (Absolute, Relative, Jog, Registration, Assembled) and
+// Find Home (L887 counts the homing operations among the move commands). Preset Position is
+// not a move: its refusal leaves Move Complete as it was (only a preset done resets it, L2860).
+TEST_F(Smd23eInvalid, RefusedMoveCommandsResetMoveCompleteExceptJogAndRegistration) {
+  configure();
+  struct Refused {
+    const char* what;
+    std::uint16_t msw;
+    std::uint16_t lsw;
+    MoveWords words;
+    bool move_complete;
+  };
+  const Refused cases[] = {
+      {"absolute, target beyond +-8,388,607", msw::kAbsolute, kDrive, {.value = 8'388'608}, false},
+      {"relative, acceleration 0", msw::kRelative, kDrive, {.value = 100, .accel = 0}, false},
+      {"jog, acceleration 0", msw::kJogCw, kDrive, {.accel = 0}, true},
+      {"registration, stopping distance < 0", msw::kJogCw, kDrive | lsw::kRegistration, {.value = -1}, true},
+      {"find home, no Home input", msw::kHomeCw, kDrive, {}, false},
+      {"run assembled, nothing programmed", msw::kRunAssembled, kDrive, {}, false},
+      {"preset position beyond +-8,388,607", msw::kPresetPosition, kDrive, {.value = 8'388'608}, true},
+  };
+  for (const Refused& c : cases) {
+    command(msw::kResetErrors);
+    command(msw::kRelative, kDrive, MoveWords{.value = 100});
+    run_to(sched.now() + 1_s);
+    ASSERT_TRUE(bit1(sw1::kMoveComplete)) << c.what;
+    ASSERT_FALSE(bit1(sw1::kCommandError)) << c.what;
+    command(c.msw, c.lsw, c.words);
+    EXPECT_TRUE(bit1(sw1::kCommandError)) << c.what;
+    EXPECT_EQ(bit1(sw1::kMoveComplete), c.move_complete) << c.what;
+    EXPECT_TRUE(bit1(sw1::kStopped)) << c.what;
+  }
+}
+
 TEST_F(Smd23eInvalid, SeveralCommandBitsAtOnce) {
   configure();
   command(msw::kRelative | msw::kJogCw, kDrive, MoveWords{.value = 100});
