@@ -4,14 +4,19 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <limits>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "rig/campaign/limits.hpp"
 #include "rig/cli/exit_status.hpp"
 #include "rig/cli/number_checks.hpp"
 #include "signals/discrete_bounce.hpp"
@@ -22,6 +27,8 @@
 #include "signals/quadrature_faults.hpp"
 
 namespace hilrig::cli {
+
+namespace limits = campaign::limits;
 
 namespace {
 
@@ -50,6 +57,25 @@ double parse_number(const std::string& text, const std::string& what) {
   throw CLI::ValidationError(what, "'" + text + "' is not a number");
 }
 
+// "10ms" -> 0.01; any number, infinities and NaN too (parse_duration bounds them).
+double seconds_in(const std::string& text, const std::string& option) {
+  static const std::pair<const char*, double> units[] = {
+      {"ns", 1e-9}, {"us", 1e-6}, {"ms", 1e-3}, {"s", 1.0}};
+  for (const auto& [suffix, scale] : units) {
+    const std::string unit(suffix);
+    if (text.size() > unit.size() && text.compare(text.size() - unit.size(), unit.size(), unit) == 0) {
+      const std::string number = text.substr(0, text.size() - unit.size());
+      // "ms" also ends in "s": only accept a suffix whose number part parses fully.
+      try {
+        std::size_t used = 0;
+        const double v = std::stod(number, &used);
+        if (used == number.size()) return v * scale;
+      } catch (const std::exception&) {}
+    }
+  }
+  return parse_number(text, option);
+}
+
 Level parse_level(const std::string& text) {
   if (text == "1" || text == "high" || text == "H") return Level::High;
   if (text == "0" || text == "low" || text == "L") return Level::Low;
@@ -57,6 +83,9 @@ Level parse_level(const std::string& text) {
 }
 
 // ---- quadrature -------------------------------------------------------------------
+
+// --index-line not given (any value given is checked against 0 .. lines - 1).
+constexpr std::int64_t kNoIndexLine = std::numeric_limits<std::int64_t>::min();
 
 struct QuadratureOptions {
   std::string out;
@@ -76,13 +105,13 @@ struct QuadratureOptions {
   bool reversed = false;
   std::int64_t index_count = 0;
   std::int64_t index_width = 0;
-  std::int64_t index_line = -1;
+  std::int64_t index_line = kNoIndexLine;
   bool with_count = false;
   double max_input_hz = 0.0;
   std::string rate_action = "warn";
   // Faults, applied in this order.
   std::vector<std::string> glitches;      // channel,at,width
-  std::vector<std::size_t> missing_edges; // index into the edge list
+  std::vector<std::size_t> missing_edges; // index into the edge list, as before any is lost
   std::vector<std::size_t> simultaneous;  // index into the edge list
   std::vector<std::string> noise;         // start,length,pulses,seed[,min_width,max_width]
   double phase_error = 0.0;               // fraction of a quarter period
@@ -95,31 +124,217 @@ signals::QuadChannel parse_channel(const std::string& text) {
   throw CLI::ValidationError("--glitch", "'" + text + "' is not A, B or Z");
 }
 
+// A time on the trace: the VCD starts at 0, and no run is longer than a campaign's.
+Nanos parse_instant(const std::string& text, const std::string& option) {
+  const Nanos t = parse_duration(text, option);
+  require_duration_within(option, text, t, Nanos::zero(), limits::kMaxEnd);
+  return t;
+}
+
+// A width or a period: some time, at most a campaign's run.
+Nanos parse_positive_duration(const std::string& text, const std::string& option) {
+  const Nanos t = parse_duration(text, option);
+  require_duration_within(option, text, t, Nanos{1}, limits::kMaxEnd);
+  return t;
+}
+
+struct Glitch {
+  signals::QuadChannel channel;
+  Nanos at;
+  Nanos width;
+};
+
+Glitch parse_glitch(const std::string& text) {
+  const auto parts = split(text, ',');
+  if (parts.size() != 3)
+    throw CLI::ValidationError("--glitch", "expected channel,at,width, got '" + text + "'");
+  return Glitch{parse_channel(parts[0]), parse_instant(parts[1], "--glitch"),
+                parse_positive_duration(parts[2], "--glitch")};
+}
+
+// A seed drawn from a double: whole and exact (2^53), so the same text is the same burst.
+constexpr std::int64_t kMaxSeed = std::int64_t{1} << 53;
+
+signals::NoiseBurst parse_noise(const std::string& text) {
+  const auto parts = split(text, ',');
+  if (parts.size() != 4 && parts.size() != 6)
+    throw CLI::ValidationError("--noise",
+                               "expected start,length,pulses,seed[,min_width,max_width], got '" + text + "'");
+  signals::NoiseBurst burst;
+  burst.start = parse_instant(parts[0], "--noise");
+  burst.length = parse_positive_duration(parts[1], "--noise");
+  // Each pulse is two edges; a burst is bounded like a contact bounce stimulus.
+  burst.pulses =
+      static_cast<std::size_t>(parse_whole(parts[2], "--noise", "pulses", 0, limits::kMaxBounceEdges));
+  burst.seed = static_cast<std::uint64_t>(parse_whole(parts[3], "--noise", "a seed", 0, kMaxSeed));
+  if (parts.size() == 6) {
+    burst.min_width = parse_positive_duration(parts[4], "--noise");
+    burst.max_width = parse_positive_duration(parts[5], "--noise");
+    if (burst.max_width < burst.min_width)
+      throw CLI::ValidationError("--noise",
+                                 fmt::format("min_width <= max_width (got {} > {})", parts[4], parts[5]));
+  }
+  return burst;
+}
+
+// An index names an A or B edge of the trace: the limit is the signal's own edge count.
+void require_ab_edge(const signals::QuadratureTrace& trace, std::size_t index, const std::string& option) {
+  const std::size_t edges = trace.edges.size();
+  if (index >= edges)
+    throw CLI::ValidationError(option, edges == 0 ? fmt::format("this motion makes no edges (got {})", index)
+                                                  : fmt::format("an edge index 0 .. {}: this motion makes {} "
+                                                                "edges (got {})",
+                                                                edges - 1, edges, index));
+  if (trace.edges[index].channel == signals::QuadChannel::Z)
+    throw CLI::ValidationError(option, fmt::format("edge {} is a Z edge: name an A or B edge", index));
+}
+
+// Every --missing-edge names an edge as the trace stood before any was lost: losing one
+// renumbers the edges after it, so they are lost from the highest index down, and each lower
+// one still names its own edge. A lost edge takes its channel's next remaining edge with it.
+void lose_edges(signals::QuadratureTrace& trace, std::vector<std::size_t> indices) {
+  std::sort(indices.begin(), indices.end(), std::greater<>());
+  if (const auto twice = std::adjacent_find(indices.begin(), indices.end()); twice != indices.end())
+    throw CLI::ValidationError("--missing-edge", fmt::format("edge {} is named twice", *twice));
+  for (const std::size_t i : indices) require_ab_edge(trace, i, "--missing-edge");
+  for (const std::size_t i : indices) signals::inject_missing_edge(trace, i);
+}
+
+void move_edges_together(signals::QuadratureTrace& trace, const std::vector<std::size_t>& indices) {
+  using signals::QuadChannel;
+  for (const std::size_t i : indices) {
+    require_ab_edge(trace, i, "--simultaneous");
+    const QuadChannel other = trace.edges[i].channel == QuadChannel::A ? QuadChannel::B : QuadChannel::A;
+    const auto later =
+        std::find_if(trace.edges.begin() + static_cast<std::ptrdiff_t>(i) + 1, trace.edges.end(),
+                     [other](const signals::QuadEdge& e) { return e.channel == other; });
+    if (later == trace.edges.end())
+      throw CLI::ValidationError(
+          "--simultaneous", fmt::format("edge {} has no later {} edge to move onto it: this motion makes {} "
+                                        "edges",
+                                        i, other == QuadChannel::A ? "A" : "B", trace.edges.size()));
+    signals::inject_simultaneous_edges(trace, i);
+  }
+}
+
 void apply_faults(signals::QuadratureTrace& trace, const QuadratureOptions& o) {
   using namespace signals;
   for (const std::string& g : o.glitches) {
-    const auto parts = split(g, ',');
-    if (parts.size() != 3) throw CLI::ValidationError("--glitch", "expected channel,at,width");
-    inject_glitch(trace, parse_channel(parts[0]), parse_duration(parts[1]), parse_duration(parts[2]));
+    const Glitch glitch = parse_glitch(g);
+    inject_glitch(trace, glitch.channel, glitch.at, glitch.width);
   }
-  for (const std::size_t i : o.missing_edges) inject_missing_edge(trace, i);
-  for (const std::size_t i : o.simultaneous) inject_simultaneous_edges(trace, i);
-  for (const std::string& n : o.noise) {
-    const auto parts = split(n, ',');
-    if (parts.size() != 4 && parts.size() != 6)
-      throw CLI::ValidationError("--noise", "expected start,length,pulses,seed[,min_width,max_width]");
-    NoiseBurst burst;
-    burst.start = parse_duration(parts[0]);
-    burst.length = parse_duration(parts[1]);
-    burst.pulses = static_cast<std::size_t>(parse_number(parts[2], "--noise"));
-    burst.seed = static_cast<std::uint64_t>(parse_number(parts[3], "--noise"));
-    if (parts.size() == 6) {
-      burst.min_width = parse_duration(parts[4]);
-      burst.max_width = parse_duration(parts[5]);
-    }
-    inject_noise_burst(trace, burst);
-  }
+  lose_edges(trace, o.missing_edges);
+  move_edges_together(trace, o.simultaneous);
+  for (const std::string& n : o.noise) inject_noise_burst(trace, parse_noise(n));
   if (o.phase_error != 0.0) inject_phase_error(trace, o.phase_error);
+}
+
+// ---- the quadrature options' ranges (docs/campaigns.md "Ranges and limits") ------------
+
+// Accelerations in turns/s², as a campaign's rpm/s bound.
+constexpr double kMaxTurnsPerS2 = limits::kMaxRpmPerS / 60.0;
+// A jerk ramp is this many profile segments at most (each is solved for its edges).
+constexpr int kMaxSteps = 1'000;
+// B moved past the next A edge but one is no longer a phase error of one encoder.
+constexpr double kMaxPhaseError = 2.0;
+
+bool moves_to_a_distance(const QuadratureOptions& o) {
+  return o.profile == "trapezoid" || o.profile == "scurve";
+}
+
+void check_speed(const QuadratureOptions& o) {
+  require_within("--rpm", o.rpm, -limits::kMaxRpm, limits::kMaxRpm,
+                 fmt::format("-{0} .. {0} rpm", limits::kMaxRpm));
+  if (o.profile != "constant")
+    require_within(
+        "--rpm", std::abs(o.rpm), limits::kMinCruiseRpm, limits::kMaxRpm,
+        fmt::format("a {} profile needs |rpm| {} .. {}", o.profile, limits::kMinCruiseRpm, limits::kMaxRpm));
+  // The fastest encoder input of the boards (the 4501's 250 kHz a channel, X4).
+  const double counts_per_turn = 4.0 * static_cast<double>(o.lines);
+  const double max_rpm = limits::kMaxCountsPerS / counts_per_turn * 60.0;
+  if (std::abs(o.rpm) > max_rpm)
+    throw CLI::ValidationError("--rpm",
+                               fmt::format("at most {} encoder counts/s (X4): {:.6g} rpm with --lines {} "
+                                           "(got {})",
+                                           limits::kMaxCountsPerS, max_rpm, o.lines, o.rpm));
+}
+
+// A rate (acceleration, brake) the profile needs (> 0) or may leave at 0.
+void check_rate(const std::string& option, double value, bool needed, const std::string& profile) {
+  const std::string range = fmt::format("{:.6g} turns/s² ({} rpm/s)", kMaxTurnsPerS2, limits::kMaxRpmPerS);
+  if (needed && !(value > 0.0))
+    throw CLI::ValidationError(
+        option, fmt::format("a {} needs 0 < {} <= {} (got {})", profile, option.substr(2), range, value));
+  require_within(option, value, 0.0, kMaxTurnsPerS2, "0 .. " + range);
+}
+
+void check_profile(const QuadratureOptions& o) {
+  const auto turns = fmt::format("-{0} .. {0} turns", limits::kMaxTurns);
+  require_within("--start", o.start_turns, -limits::kMaxTurns, limits::kMaxTurns, turns);
+  require_within("--turns", o.turns, -limits::kMaxTurns, limits::kMaxTurns, turns);
+  check_rate("--accel", o.accel, moves_to_a_distance(o), o.profile);
+  check_rate("--decel", o.decel, false, o.profile);
+  check_rate("--brake", o.brake, o.profile == "press", o.profile);
+  if (o.profile == "scurve" && !(o.jerk > 0.0 && std::isfinite(o.jerk)))
+    throw CLI::ValidationError("--jerk",
+                               fmt::format("an scurve needs a finite jerk > 0 turns/s³ (got {})", o.jerk));
+  require_within("--jerk", o.jerk, 0.0, std::numeric_limits<double>::max(), "a finite number >= 0 turns/s³");
+  const Nanos dwell = parse_duration(o.dwell, "--dwell");
+  require_duration_within("--dwell", o.dwell, dwell, Nanos::zero(), limits::kMaxEnd);
+  require_within("--phase-error", o.phase_error, -kMaxPhaseError, kMaxPhaseError,
+                 fmt::format("-{0} .. {0} quarter periods", kMaxPhaseError));
+}
+
+void check_index(const QuadratureOptions& o) {
+  const std::int64_t lines = o.lines;
+  const std::int64_t cpt = 4 * lines;
+  if (o.index_line != kNoIndexLine && (o.index_line < 0 || o.index_line >= lines))
+    throw CLI::ValidationError(
+        "--index-line", fmt::format("a line 0 .. {} of --lines {} (got {})", lines - 1, lines, o.index_line));
+  if (o.index_count < 0 || o.index_count >= cpt)
+    throw CLI::ValidationError("--index-count",
+                               fmt::format("a count within the turn, 0 .. {} ({} counts/turn) "
+                                           "(got {})",
+                                           cpt - 1, cpt, o.index_count));
+  if (o.index_width < 0 || o.index_width > cpt)
+    throw CLI::ValidationError("--index-width",
+                               fmt::format("0 .. {} counts, at most a turn (got {})", cpt, o.index_width));
+}
+
+void check_quadrature(const QuadratureOptions& o) {
+  check_speed(o);
+  check_profile(o);
+  check_index(o);
+  for (const std::string& g : o.glitches) static_cast<void>(parse_glitch(g));
+  for (const std::string& n : o.noise) static_cast<void>(parse_noise(n));
+}
+
+// n in (lo, hi] with n = r (mod m).
+std::int64_t congruent_in(std::int64_t lo, std::int64_t hi, std::int64_t r, std::int64_t m) {
+  const auto floor_div = [m](std::int64_t x) { return x >= 0 ? x / m : -((-x + m - 1) / m); };
+  return floor_div(hi - r) - floor_div(lo - r);
+}
+
+// The edges a motion makes, before solving it. Every profile here turns one way and stops (a
+// constant speed, a rest-to-rest move, a stroke and its brake), so A and B change once for each
+// count between the first and the last; Z rises where the count enters its window and falls
+// where it leaves (QuadratureEncoder::index_high), once a turn each unless it is a whole turn.
+std::int64_t edges_made(const signals::MotionProfile& profile, double start,
+                        const signals::QuadratureEncoder& enc) {
+  const std::int64_t from = enc.count_at(start);
+  const std::int64_t to = enc.count_at(profile.end_position());
+  const std::int64_t lo = std::min(from, to);
+  const std::int64_t hi = std::max(from, to);
+  const std::int64_t cpt = enc.counts_per_turn();
+  if (enc.index_width <= 0 || enc.index_width >= cpt) return hi - lo;
+  return hi - lo + congruent_in(lo, hi, enc.index_count, cpt) +
+         congruent_in(lo, hi, enc.index_count + enc.index_width, cpt);
+}
+
+void require_edges_within_cap(std::int64_t edges, const std::string& kind, const std::string& shorten) {
+  if (edges > kMaxSynthEdges)
+    throw CLI::ValidationError(kind, fmt::format("this motion makes {} edges; synth writes at most {}: {}",
+                                                 edges, kMaxSynthEdges, shorten));
 }
 
 signals::MotionProfile build_profile(const QuadratureOptions& o) {
@@ -128,26 +343,22 @@ signals::MotionProfile build_profile(const QuadratureOptions& o) {
   const double speed = o.rpm / 60.0; // turns/s
   const double decel = o.decel > 0 ? o.decel : o.accel;
   const auto duration = [&o] {
-    const Nanos d = parse_duration(o.duration);
+    const Nanos d = parse_duration(o.duration, "--duration");
     if (d <= Nanos::zero()) throw CLI::ValidationError("--duration", "must be > 0, got " + o.duration);
     return d;
   };
   if (o.profile == "constant") {
     constant_speed(p, speed, duration());
   } else if (o.profile == "trapezoid") {
-    if (o.accel <= 0) throw CLI::ValidationError("--accel", "a trapezoid needs --accel > 0");
     trapezoid_move(p, o.turns, MoveLimits{std::abs(speed), o.accel, decel});
   } else if (o.profile == "scurve") {
-    if (o.accel <= 0 || o.jerk <= 0)
-      throw CLI::ValidationError("--jerk", "an S-curve needs --accel and --jerk > 0");
     s_curve_move(p, o.turns, SCurveLimits{std::abs(speed), o.accel, o.jerk, o.steps});
   } else if (o.profile == "press") {
-    if (o.brake <= 0) throw CLI::ValidationError("--brake", "a press stroke needs --brake > 0");
     press_stroke(p, speed, duration(), o.brake);
   } else {
     throw CLI::ValidationError("--profile", "unknown profile '" + o.profile + "'");
   }
-  const Nanos dwell = parse_duration(o.dwell);
+  const Nanos dwell = parse_duration(o.dwell, "--dwell");
   if (dwell > Nanos::zero()) {
     if (p.at_rest())
       p.dwell(dwell);
@@ -159,6 +370,7 @@ signals::MotionProfile build_profile(const QuadratureOptions& o) {
 
 int run_quadrature(const QuadratureOptions& o) {
   using namespace signals;
+  check_quadrature(o);
   const MotionProfile profile = build_profile(o);
   QuadratureEncoder enc;
   // The rig's placement (rig/campaign/rig_drive.cpp, docs/campaigns.md "[encoder]"): count =
@@ -168,7 +380,9 @@ int run_quadrature(const QuadratureOptions& o) {
   enc.reversed = o.reversed;
   enc.index_count = o.index_count;
   enc.index_width = o.index_width;
-  if (o.index_line >= 0) enc.gate_index_to_line(o.index_line);
+  if (o.index_line != kNoIndexLine) enc.gate_index_to_line(o.index_line);
+  require_edges_within_cap(edges_made(profile, o.start_turns, enc), "quadrature",
+                           "shorten --duration or --turns, or lower --rpm or --lines");
 
   if (o.max_input_hz > 0) {
     const auto action = o.rate_action == "fail" ? RateLimitAction::Fail : RateLimitAction::Warn;
@@ -227,40 +441,61 @@ int run_quadrature(const QuadratureOptions& o) {
 
 void add_quadrature(CLI::App& synth) {
   auto o = std::make_shared<QuadratureOptions>();
-  CLI::App* cmd =
-      synth.add_subcommand("quadrature", "A/B/Z quadrature for a motion profile (positions in turns)");
+  CLI::App* cmd = synth.add_subcommand(
+      "quadrature",
+      fmt::format("A/B/Z quadrature for a motion profile (positions in turns); at most {} edges "
+                  "(A, B and Z: the counts the motion crosses plus Z's), more is refused",
+                  kMaxSynthEdges));
   cmd->add_option("--out", o->out, "VCD file to write ('-' for stdout)")->required();
   cmd->add_option("--profile", o->profile, "constant | trapezoid | scurve | press")
       ->check(CLI::IsMember({"constant", "trapezoid", "scurve", "press"}));
   cmd->add_option("--lines", o->lines, "lines per turn (X4: 4 counts per line)")->check(positive_number());
-  cmd->add_option("--rpm", o->rpm, "speed (constant, press) or max speed (trapezoid, scurve), RPM");
-  cmd->add_option("--duration", o->duration, "run time (constant, press), e.g. 10ms");
-  cmd->add_option("--turns", o->turns, "move distance in turns, signed (trapezoid, scurve)");
-  cmd->add_option("--accel", o->accel, "acceleration, turns/s² (trapezoid, scurve)");
-  cmd->add_option("--decel", o->decel, "deceleration, turns/s² (trapezoid; default = accel)");
-  cmd->add_option("--jerk", o->jerk, "jerk, turns/s³ (scurve)");
+  const std::string rate = fmt::format("0 .. {:.6g} turns/s²", kMaxTurnsPerS2);
+  cmd->add_option("--rpm", o->rpm,
+                  fmt::format("speed (constant, press) or max speed (trapezoid, scurve), RPM: -{0} .. {0}, "
+                              "and at most {1} counts/s (X4); trapezoid, scurve, press: |rpm| >= {2}",
+                              limits::kMaxRpm, limits::kMaxCountsPerS, limits::kMinCruiseRpm));
+  cmd->add_option("--duration", o->duration, "run time (constant, press), e.g. 10ms: 1ns .. 3600s");
+  cmd->add_option(
+      "--turns", o->turns,
+      fmt::format("move distance in turns, signed (trapezoid, scurve): -{0} .. {0}", limits::kMaxTurns));
+  cmd->add_option("--accel", o->accel, "acceleration, turns/s² (trapezoid, scurve: > 0): " + rate);
+  cmd->add_option("--decel", o->decel, "deceleration, turns/s² (trapezoid; 0 = accel): " + rate);
+  cmd->add_option("--jerk", o->jerk, "jerk, turns/s³ (scurve: > 0)");
   cmd->add_option("--steps", o->steps, "constant-acceleration steps per jerk ramp (scurve)")
-      ->check(positive_number());
-  cmd->add_option("--brake", o->brake, "brake deceleration, turns/s² (press)");
-  cmd->add_option("--dwell", o->dwell, "time to hold (or keep turning) after the move");
-  cmd->add_option("--start", o->start_turns, "start position, turns");
+      ->check(CLI::Range(1, kMaxSteps));
+  cmd->add_option("--brake", o->brake, "brake deceleration, turns/s² (press: > 0): " + rate);
+  cmd->add_option("--dwell", o->dwell, "time to hold (or keep turning) after the move: 0 .. 3600s");
+  cmd->add_option("--start", o->start_turns,
+                  fmt::format("start position, turns: -{0} .. {0}", limits::kMaxTurns));
   cmd->add_flag("--reverse-direction", o->reversed, "B leads A for forward motion");
-  cmd->add_option("--index-count", o->index_count, "Z position in counts within a turn");
-  cmd->add_option("--index-width", o->index_width, "Z width in counts (0: no Z)");
-  cmd->add_option("--index-line", o->index_line, "Z gated to A·B high on this line (overrides count/width)");
+  cmd->add_option("--index-count", o->index_count, "Z position in counts within a turn: 0 .. 4 x lines - 1");
+  cmd->add_option("--index-width", o->index_width, "Z width in counts (0: no Z): 0 .. 4 x lines");
+  cmd->add_option("--index-line", o->index_line,
+                  "Z gated to A·B high on this line, 0 .. lines - 1 (overrides count/width)");
   cmd->add_flag("--count", o->with_count, "also record the encoder count as an integer signal");
   cmd->add_option("--name", o->name, "signal name prefix");
   cmd->add_option("--max-input-hz", o->max_input_hz,
-                  "check each channel against this frequency (e.g. 250e3)");
+                  "check each channel against this frequency (e.g. 250e3; 0: no check)")
+      ->check(non_negative_number());
   cmd->add_option("--rate-action", o->rate_action, "warn | fail when --max-input-hz is exceeded")
       ->check(CLI::IsMember({"warn", "fail"}));
-  cmd->add_option("--glitch", o->glitches, "fault: invert a channel for a while: channel,at,width");
+  cmd->add_option("--glitch", o->glitches,
+                  "fault: invert a channel for a while: channel,at,width (A|B|Z, 0 .. 3600s, 1ns .. 3600s)");
   cmd->add_option("--missing-edge", o->missing_edges,
-                  "fault: lose the A/B edge with this index (and its pulse)");
-  cmd->add_option("--simultaneous", o->simultaneous,
-                  "fault: the other channel's next edge moves onto edge INDEX");
-  cmd->add_option("--noise", o->noise, "fault: noise burst start,length,pulses,seed[,min_width,max_width]");
-  cmd->add_option("--phase-error", o->phase_error, "fault: shift B by this fraction of a quarter period");
+                  "fault: lose the A/B edge with this index (and its pulse: the channel's next edge); "
+                  "indices count the edges (A, B, Z in time order, after --glitch) before any is lost, so "
+                  "several all name edges of that one list");
+  cmd->add_option(
+      "--simultaneous", o->simultaneous,
+      "fault: the other channel's next edge moves onto the A/B edge INDEX (after --missing-edge)");
+  cmd->add_option(
+      "--noise", o->noise,
+      fmt::format("fault: noise burst start,length,pulses,seed[,min_width,max_width] (pulses 0 .. {})",
+                  limits::kMaxBounceEdges));
+  cmd->add_option(
+      "--phase-error", o->phase_error,
+      fmt::format("fault: shift B by this fraction of a quarter period, -{0} .. {0}", kMaxPhaseError));
   on_run(*cmd, [o] { return run_quadrature(*o); });
 }
 
@@ -275,36 +510,98 @@ struct DiscreteOptions {
   std::vector<std::string> bounces; // time,level,window,bounces,seed[,min_width]
 };
 
-int run_discrete(const DiscreteOptions& o) {
-  std::vector<Edge> wanted;
-  for (const std::string& s : o.sets) {
+// Level changes by time: the same instant at two levels says nothing about the line.
+std::vector<Edge> parse_sets(const std::vector<std::string>& sets) {
+  std::map<Nanos, std::pair<Level, std::string>> at;
+  std::vector<Edge> edges;
+  for (const std::string& s : sets) {
     const auto parts = split(s, '=');
     if (parts.size() != 2) throw CLI::ValidationError("--set", "expected time=level, got '" + s + "'");
-    wanted.push_back(Edge{parse_duration(parts[0]), parse_level(parts[1])});
+    const Edge e{parse_instant(parts[0], "--set"), parse_level(parts[1])};
+    const auto [it, added] = at.try_emplace(e.time, e.level, s);
+    if (!added && it->second.first != e.level)
+      throw CLI::ValidationError("--set",
+                                 fmt::format("one level at each time (got {} and {})", it->second.second, s));
+    edges.push_back(e);
   }
-  for (const std::string& s : o.trains) {
-    const auto parts = split(s, ',');
-    if (parts.size() != 4) throw CLI::ValidationError("--train", "expected start,period,width,count");
-    signals::DiscreteSignal train(parse_level(o.initial));
-    train.pulse_train(parse_duration(parts[0]), parse_duration(parts[1]), parse_duration(parts[2]),
-                      static_cast<std::size_t>(parse_number(parts[3], "--train")), !parse_level(o.initial));
+  return edges;
+}
+
+struct Train {
+  Nanos start;
+  Nanos period;
+  Nanos width;
+  std::int64_t count = 0;
+};
+
+// Two edges a pulse: a train is bounded by the edge cap, and ends within a campaign's run.
+Train parse_train(const std::string& text) {
+  const auto parts = split(text, ',');
+  if (parts.size() != 4)
+    throw CLI::ValidationError("--train", "expected start,period,width,count, got '" + text + "'");
+  Train t{parse_instant(parts[0], "--train"), parse_positive_duration(parts[1], "--train"),
+          parse_positive_duration(parts[2], "--train"),
+          parse_whole(parts[3], "--train", "a count", 1, kMaxSynthEdges / 2)};
+  if (t.width >= t.period)
+    throw CLI::ValidationError("--train",
+                               fmt::format("a width 0 < width < period {} (got {})", parts[1], parts[2]));
+  const double end = t.start.seconds() + t.period.seconds() * static_cast<double>(t.count);
+  if (end > limits::kMaxEnd.seconds())
+    throw CLI::ValidationError("--train", fmt::format("a train within 0 .. {} (got {}: it ends at {:.6g} s)",
+                                                      duration_words(limits::kMaxEnd), text, end));
+  return t;
+}
+
+struct Bounce {
+  Nanos at;
+  Level level = Level::Low;
+  signals::ContactBounce bounce;
+};
+
+Bounce parse_bounce(const std::string& text) {
+  const auto parts = split(text, ',');
+  if (parts.size() != 5 && parts.size() != 6)
+    throw CLI::ValidationError("--bounce",
+                               "expected time,level,window,bounces,seed[,min_width], got '" + text + "'");
+  Bounce b{parse_instant(parts[0], "--bounce"), parse_level(parts[1]), {}};
+  b.bounce.window = parse_instant(parts[2], "--bounce");
+  b.bounce.bounces =
+      static_cast<std::size_t>(parse_whole(parts[3], "--bounce", "bounces", 0, limits::kMaxBounceEdges));
+  b.bounce.seed = static_cast<std::uint64_t>(parse_whole(parts[4], "--bounce", "a seed", 0, kMaxSeed));
+  if (parts.size() == 6) b.bounce.min_width = parse_positive_duration(parts[5], "--bounce");
+  // Every gap (2 a bounce: reopen, touch again) is at least min_width, all inside the window.
+  const auto gaps = static_cast<std::int64_t>(2 * b.bounce.bounces);
+  if (b.bounce.window < b.bounce.min_width * gaps)
+    throw CLI::ValidationError("--bounce",
+                               fmt::format("a window of at least 2 x bounces x min_width = 2 x {} x {} "
+                                           "= {} (got {})",
+                                           b.bounce.bounces, duration_words(b.bounce.min_width),
+                                           duration_words(b.bounce.min_width * gaps), parts[2]));
+  return b;
+}
+
+int run_discrete(const DiscreteOptions& o) {
+  const Level initial = parse_level(o.initial);
+  std::vector<Edge> wanted = parse_sets(o.sets);
+  std::vector<Train> trains;
+  std::vector<Bounce> bounces;
+  auto edges = static_cast<std::int64_t>(wanted.size());
+  for (const std::string& s : o.trains) edges += 2 * trains.emplace_back(parse_train(s)).count;
+  for (const std::string& s : o.bounces)
+    edges += 2 * static_cast<std::int64_t>(bounces.emplace_back(parse_bounce(s)).bounce.bounces) + 1;
+  require_edges_within_cap(edges, "discrete", "fewer or shorter --train and --bounce");
+  for (const Train& t : trains) {
+    signals::DiscreteSignal train(initial);
+    train.pulse_train(t.start, t.period, t.width, static_cast<std::size_t>(t.count), !initial);
     wanted.insert(wanted.end(), train.edges().begin(), train.edges().end());
   }
-  for (const std::string& s : o.bounces) {
-    const auto parts = split(s, ',');
-    if (parts.size() != 5 && parts.size() != 6)
-      throw CLI::ValidationError("--bounce", "expected time,level,window,bounces,seed[,min_width]");
-    signals::ContactBounce bounce;
-    bounce.window = parse_duration(parts[2]);
-    bounce.bounces = static_cast<std::size_t>(parse_number(parts[3], "--bounce"));
-    bounce.seed = static_cast<std::uint64_t>(parse_number(parts[4], "--bounce"));
-    if (parts.size() == 6) bounce.min_width = parse_duration(parts[5]);
-    const auto edges = signals::bounce_edges(parse_duration(parts[0]), parse_level(parts[1]), bounce);
-    wanted.insert(wanted.end(), edges.begin(), edges.end());
+  for (const Bounce& b : bounces) {
+    const auto bounce = signals::bounce_edges(b.at, b.level, b.bounce);
+    wanted.insert(wanted.end(), bounce.begin(), bounce.end());
   }
   std::stable_sort(wanted.begin(), wanted.end(),
                    [](const Edge& x, const Edge& y) { return x.time < y.time; });
-  signals::DiscreteSignal signal(parse_level(o.initial));
+  signals::DiscreteSignal signal(initial);
   for (const Edge& e : wanted) signal.set(e.time, e.level);
 
   TraceRecorder trace;
@@ -323,31 +620,57 @@ void add_discrete(CLI::App& synth) {
   cmd->add_option("--out", o->out, "VCD file to write ('-' for stdout)")->required();
   cmd->add_option("--name", o->name, "signal name");
   cmd->add_option("--initial", o->initial, "initial level (0/1)");
-  cmd->add_option("--set", o->sets, "a level change: time=level, e.g. 1ms=1 (repeatable)");
-  cmd->add_option("--train", o->trains, "pulses away from the initial level: start,period,width,count");
+  cmd->add_option("--set", o->sets,
+                  "a level change: time=level, e.g. 1ms=1 (repeatable; times 0 .. 3600s, one level a time)");
+  cmd->add_option(
+      "--train", o->trains,
+      fmt::format("pulses away from the initial level: start,period,width,count (0 < width < period, "
+                  "count 1 .. {}, ending by 3600s)",
+                  kMaxSynthEdges / 2));
   cmd->add_option("--bounce", o->bounces,
-                  "contact bounce settling at level: time,level,window,bounces,seed[,min_width]");
+                  fmt::format("contact bounce settling at level: time,level,window,bounces,seed[,min_width] "
+                              "(bounces 0 .. {}, window >= 2 x bounces x min_width, min_width default 1ns)",
+                              limits::kMaxBounceEdges));
   on_run(*cmd, [o] { return run_discrete(*o); });
 }
 
 } // namespace
 
-Nanos parse_duration(const std::string& text) {
-  static const std::pair<const char*, double> units[] = {
-      {"ns", 1e-9}, {"us", 1e-6}, {"ms", 1e-3}, {"s", 1.0}};
-  for (const auto& [suffix, scale] : units) {
-    const std::string unit(suffix);
-    if (text.size() > unit.size() && text.compare(text.size() - unit.size(), unit.size(), unit) == 0) {
-      const std::string number = text.substr(0, text.size() - unit.size());
-      // "ms" also ends in "s": only accept a suffix whose number part parses fully.
-      try {
-        std::size_t used = 0;
-        const double v = std::stod(number, &used);
-        if (used == number.size()) return Nanos::from_seconds(v * scale);
-      } catch (const std::exception&) {}
-    }
-  }
-  return Nanos::from_seconds(parse_number(text, "duration"));
+std::string duration_words(Nanos d) {
+  constexpr std::pair<std::int64_t, const char*> units[] = {
+      {1'000'000'000, "s"}, {1'000'000, "ms"}, {1'000, "us"}};
+  for (const auto& [ns, suffix] : units)
+    if (d.count() != 0 && d.count() % ns == 0) return fmt::format("{}{}", d.count() / ns, suffix);
+  return d.count() == 0 ? std::string("0s") : fmt::format("{}ns", d.count());
+}
+
+void require_within(const std::string& option, double value, double lo, double hi, const std::string& range) {
+  if (!(value >= lo && value <= hi))
+    throw CLI::ValidationError(option, fmt::format("{} (got {})", range, value));
+}
+
+void require_duration_within(const std::string& option, const std::string& text, Nanos value, Nanos lo,
+                             Nanos hi) {
+  if (value < lo || value > hi)
+    throw CLI::ValidationError(
+        option, fmt::format("{} .. {} (got {})", duration_words(lo), duration_words(hi), text));
+}
+
+std::int64_t parse_whole(const std::string& text, const std::string& option, const std::string& what,
+                         std::int64_t lo, std::int64_t hi) {
+  const double v = parse_number(text, option);
+  if (!(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)) || v != std::floor(v))
+    throw CLI::ValidationError(option, fmt::format("{} {} .. {} (got {})", what, lo, hi, text));
+  return static_cast<std::int64_t>(v);
+}
+
+Nanos parse_duration(const std::string& text, const std::string& option) {
+  const double seconds = seconds_in(text, option);
+  const double max = limits::kMaxEnd.seconds();
+  if (!(std::abs(seconds) <= max))
+    throw CLI::ValidationError(
+        option, fmt::format("a time within -{0} .. {0} (got {1})", duration_words(limits::kMaxEnd), text));
+  return Nanos::from_seconds(seconds);
 }
 
 void write_vcd_file(const TraceRecorder& trace, const std::string& path) {

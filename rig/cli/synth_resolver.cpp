@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "rig/campaign/limits.hpp"
 #include "rig/cli/number_checks.hpp"
 #include "rig/cli/synth_command.hpp"
 #include "signals/move_builders.hpp"
@@ -26,7 +27,23 @@
 
 namespace hilrig::cli {
 
+namespace limits = campaign::limits;
+
 namespace {
+
+// The most samples one run writes: each is a reference, a SIN and a COS value in the trace
+// (~130 bytes while it is built, ~60 in the VCD): 5 million is ~650 MB, 25 s at 200 kHz.
+constexpr std::int64_t kMaxSamples = 5'000'000;
+// The most angle frames: a CAN frame and two values each in the trace.
+constexpr std::int64_t kMaxFrames = 1'000'000;
+// The angle frame's speed field: 24 bits signed at 1/4096 turn/s (signals/resolver_frames.hpp,
+// rt-config/can/hilrig-frontend.dbc). It holds every speed --rpm may ask for, so a frame never
+// saturates: encode() clamps silently, and a clamped speed would make the node drift.
+constexpr double kFrameMaxTurnsPerS = 8'388'607.0 / 4096.0;
+static_assert(limits::kMaxRpm / 60.0 <= kFrameMaxTurnsPerS, "--rpm must fit the ResolverAngle speed field");
+// Gains and phase shifts of the winding faults: a fault of one winding, not a second resolver.
+constexpr double kMaxGain = limits::kMaxRatio;
+constexpr double kMaxPhaseDeg = 360.0;
 
 struct ResolverOptions {
   std::string out;
@@ -64,10 +81,66 @@ void write_can_log(const TraceRecorder& trace, const std::string& path) {
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
+void check_phase(const std::string& option, double deg) {
+  require_within(option, deg, -kMaxPhaseDeg, kMaxPhaseDeg, fmt::format("-{0} .. {0} degrees", kMaxPhaseDeg));
+}
+
+// The options against the campaign's limits (docs/campaigns.md "Ranges and limits") and the
+// signal library's resolver (2.2 .. 7 kHz excitation, signals/resolver.hpp).
+void check_resolver(const ResolverOptions& o) {
+  require_within("--rpm", o.rpm, -limits::kMaxRpm, limits::kMaxRpm,
+                 fmt::format("-{0} .. {0} rpm", limits::kMaxRpm));
+  const double max_deg = limits::kMaxTurns * 360.0;
+  require_within("--start", o.start_deg, -max_deg, max_deg,
+                 fmt::format("-{0} .. {0} degrees ({1} turns)", max_deg, limits::kMaxTurns));
+  require_within("--excitation-hz", o.excitation_hz, signals::kMinExcitationHz, signals::kMaxExcitationHz,
+                 fmt::format("{} .. {} Hz", signals::kMinExcitationHz, signals::kMaxExcitationHz));
+  if (!(o.amplitude > 0.0 && o.amplitude <= limits::kMaxAmplitude))
+    throw CLI::ValidationError(
+        "--amplitude", fmt::format("0 < amplitude <= {} (got {})", limits::kMaxAmplitude, o.amplitude));
+  if (!(o.tr > 0.0 && o.tr <= limits::kMaxRatio))
+    throw CLI::ValidationError("--tr", fmt::format("0 < ratio <= {} (got {})", limits::kMaxRatio, o.tr));
+  const auto gain = fmt::format("0 .. {}", kMaxGain);
+  require_within("--sin-gain", o.sin_gain, 0.0, kMaxGain, gain);
+  require_within("--cos-gain", o.cos_gain, 0.0, kMaxGain, gain);
+  check_phase("--excitation-phase", o.excitation_phase_deg);
+  check_phase("--sin-phase", o.sin_phase_deg);
+  check_phase("--cos-phase", o.cos_phase_deg);
+  if (o.channel > 15) throw CLI::ValidationError("--channel", fmt::format("0 .. 15 (got {})", o.channel));
+}
+
+// Sample i at round(i / rate) up to and including the end of the run.
+std::int64_t samples_in(Nanos duration, double rate_hz) {
+  const double samples = std::floor(duration.seconds() * rate_hz + 1e-9) + 1.0;
+  if (samples > static_cast<double>(kMaxSamples))
+    throw CLI::ValidationError("resolver",
+                               fmt::format("--duration x --rate makes {:.0f} samples; synth writes at "
+                                           "most {}: shorten --duration or lower --rate",
+                                           samples, kMaxSamples));
+  return static_cast<std::int64_t>(samples);
+}
+
+// Frame k at k x period up to and including the end of the run.
+Nanos frame_period_of(const ResolverOptions& o, Nanos duration) {
+  const Nanos period = parse_duration(o.frame_period, "--frame-period");
+  require_duration_within("--frame-period", o.frame_period, period, Nanos{1}, limits::kMaxEnd);
+  const std::int64_t frames = duration.count() / period.count() + 1;
+  if (frames > kMaxFrames)
+    throw CLI::ValidationError("--frame-period",
+                               fmt::format("--duration / --frame-period makes {} angle frames; "
+                                           "synth writes at most {}: a longer --frame-period",
+                                           frames, kMaxFrames));
+  return period;
+}
+
 void run_resolver(const ResolverOptions& o) {
   using namespace signals;
-  const Nanos duration = parse_duration(o.duration);
-  if (duration <= Nanos::zero()) throw CLI::ValidationError("--duration", "must be > 0");
+  check_resolver(o);
+  const Nanos duration = parse_duration(o.duration, "--duration");
+  if (duration <= Nanos::zero()) throw CLI::ValidationError("--duration", "must be > 0, got " + o.duration);
+  const auto count = static_cast<std::size_t>(samples_in(duration, o.rate_hz));
+  const bool frames_wanted = o.frames || !o.can_log.empty();
+  const Nanos period = frames_wanted ? frame_period_of(o, duration) : Nanos{0};
   const double speed = o.rpm / 60.0; // turns/s
   MotionProfile profile(o.start_deg / 360.0);
   constant_speed(profile, speed, duration);
@@ -98,8 +171,6 @@ void run_resolver(const ResolverOptions& o) {
   const std::uint32_t ref = trace.declare(o.name + ".ref", SignalKind::Real);
   const std::uint32_t sin_sig = trace.declare(o.name + ".sin", SignalKind::Real);
   const std::uint32_t cos_sig = trace.declare(o.name + ".cos", SignalKind::Real);
-  // Sample i at round(i / rate) up to and including the end of the run.
-  const auto count = static_cast<std::size_t>(std::floor(duration.seconds() * o.rate_hz + 1e-9)) + 1;
   for (const ResolverSample& s : resolver.sample_block(Nanos{0}, o.rate_hz, count)) {
     trace.real(ref, s.time, s.reference);
     trace.real(sin_sig, s.time, s.sin);
@@ -107,10 +178,7 @@ void run_resolver(const ResolverOptions& o) {
   }
 
   std::size_t frames = 0;
-  if (o.frames || !o.can_log.empty()) {
-    const Nanos period = parse_duration(o.frame_period);
-    if (period <= Nanos::zero()) throw CLI::ValidationError("--frame-period", "must be > 0");
-    if (o.channel > 15) throw CLI::ValidationError("--channel", "0..15");
+  if (frames_wanted) {
     // Frame k is stamped at k * period and carries the angle and speed at that instant: the
     // stream as the node should see it (no bus here; on a bus the frame lands ~216..264 us
     // later at 500 kbit/s unless the streamer leads by that, models/resolver_emulator).
@@ -147,23 +215,37 @@ void add_synth_resolver(CLI::App& synth) {
       "Resolver reference and SIN/COS stator signals at constant speed (and the emulator-node CAN stream)");
   cmd->add_option("--out", o->out, "VCD file to write ('-' for stdout)")->required();
   cmd->add_option("--name", o->name, "signal name prefix");
-  cmd->add_option("--rpm", o->rpm, "shaft speed, RPM (signed)");
-  cmd->add_option("--start", o->start_deg, "start angle, degrees");
-  cmd->add_option("--duration", o->duration, "run time, e.g. 10ms");
+  cmd->add_option("--rpm", o->rpm, fmt::format("shaft speed, RPM (signed): -{0} .. {0}", limits::kMaxRpm));
+  cmd->add_option("--start", o->start_deg,
+                  fmt::format("start angle, degrees: -{0} .. {0}", limits::kMaxTurns * 360.0));
+  cmd->add_option(
+      "--duration", o->duration,
+      fmt::format("run time, e.g. 10ms: 1ns .. 3600s, at most {} samples at --rate", kMaxSamples));
   cmd->add_option("--rate", o->rate_hz, "sample rate, Hz")->check(positive_number());
-  cmd->add_option("--excitation-hz", o->excitation_hz, "reference frequency, 2200..7000 Hz");
-  cmd->add_option("--amplitude", o->amplitude, "reference peak, V");
-  cmd->add_option("--excitation-phase", o->excitation_phase_deg, "reference phase at t = 0, degrees");
-  cmd->add_option("--tr", o->tr, "transformation ratio (stator / reference)");
+  cmd->add_option(
+      "--excitation-hz", o->excitation_hz,
+      fmt::format("reference frequency, {} .. {} Hz", signals::kMinExcitationHz, signals::kMaxExcitationHz));
+  cmd->add_option("--amplitude", o->amplitude,
+                  fmt::format("reference peak, V: > 0, <= {}", limits::kMaxAmplitude));
+  cmd->add_option("--excitation-phase", o->excitation_phase_deg,
+                  "reference phase at t = 0, degrees: -360 .. 360");
+  cmd->add_option("--tr", o->tr,
+                  fmt::format("transformation ratio (stator / reference): > 0, <= {}", limits::kMaxRatio));
   cmd->add_flag("--sin-open", o->sin_open, "fault: SIN winding open");
   cmd->add_flag("--cos-open", o->cos_open, "fault: COS winding open");
-  cmd->add_option("--sin-gain", o->sin_gain, "fault: SIN amplitude imbalance (gain)");
-  cmd->add_option("--cos-gain", o->cos_gain, "fault: COS amplitude imbalance (gain)");
-  cmd->add_option("--sin-phase", o->sin_phase_deg, "fault: SIN carrier phase shift, degrees");
-  cmd->add_option("--cos-phase", o->cos_phase_deg, "fault: COS carrier phase shift, degrees");
+  cmd->add_option("--sin-gain", o->sin_gain,
+                  fmt::format("fault: SIN amplitude imbalance (gain), 0 .. {}", kMaxGain));
+  cmd->add_option("--cos-gain", o->cos_gain,
+                  fmt::format("fault: COS amplitude imbalance (gain), 0 .. {}", kMaxGain));
+  cmd->add_option("--sin-phase", o->sin_phase_deg, "fault: SIN carrier phase shift, degrees: -360 .. 360");
+  cmd->add_option("--cos-phase", o->cos_phase_deg, "fault: COS carrier phase shift, degrees: -360 .. 360");
   cmd->add_flag("--excitation-loss", o->excitation_lost, "fault: rotor not excited (stators zero)");
-  cmd->add_flag("--can-frames", o->frames, "add the emulator-node angle frames (0x120) to the trace");
-  cmd->add_option("--frame-period", o->frame_period, "angle frame period, e.g. 1ms");
+  cmd->add_flag(
+      "--can-frames", o->frames,
+      "add the emulator-node angle frames (0x120) to the trace (speed field +-2047.99 turn/s: every --rpm "
+      "fits)");
+  cmd->add_option("--frame-period", o->frame_period,
+                  fmt::format("angle frame period, e.g. 1ms: 1ns .. 3600s, at most {} frames", kMaxFrames));
   cmd->add_option("--channel", o->channel, "resolver channel in the frames, 0..15");
   cmd->add_option("--can-bus", o->can_bus, "bus name in the trace and the candump log");
   cmd->add_option("--can-log", o->can_log, "also write the angle frames as a candump -l log");

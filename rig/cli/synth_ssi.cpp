@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "rig/campaign/limits.hpp"
 #include "rig/cli/number_checks.hpp"
 #include "rig/cli/synth_command.hpp"
 #include "signals/move_builders.hpp"
@@ -23,7 +24,14 @@
 
 namespace hilrig::cli {
 
+namespace limits = campaign::limits;
+
 namespace {
+
+// The 7361's frame: 25 clocks (signals/ssi_master.cpp ssi7361_master).
+constexpr unsigned kFrameBits = 25;
+// Each frame is 50 clock edges and up to 50 data edges: kMaxSynthEdges in all.
+constexpr std::size_t kMaxFrames = static_cast<std::size_t>(kMaxSynthEdges) / 100;
 
 struct SsiOptions {
   std::string out;
@@ -46,14 +54,46 @@ struct SsiOptions {
   std::uint32_t glitch_mask = 0;
 };
 
+// The data field (--msb, --bits) lies inside the frame, stream bits 1 .. 25.
+void check_fields(const SsiOptions& o) {
+  if (o.msb < 1 || o.msb + o.bits - 1 > kFrameBits)
+    throw CLI::ValidationError("--msb", fmt::format("1 .. {0} with --msb + --bits - 1 <= {0} (got {1} + {2})",
+                                                    kFrameBits, o.msb, o.bits));
+  const std::uint64_t max_mask = (std::uint64_t{1} << o.bits) - 1;
+  if (o.glitch_mask > max_mask)
+    throw CLI::ValidationError(
+        "--glitch-mask",
+        fmt::format("0 .. {} (the {}-bit data field of --bits) (got {})", max_mask, o.bits, o.glitch_mask));
+}
+
+// A time of the slave's that may be 0 (monoflop, output delay, a late answer).
+Nanos parse_delay(const std::string& option, const std::string& text) {
+  const Nanos d = parse_duration(text, option);
+  require_duration_within(option, text, d, Nanos::zero(), limits::kMaxEnd);
+  return d;
+}
+
+void check_ssi(const SsiOptions& o) {
+  check_fields(o);
+  if (o.frames < 1 || o.frames > kMaxFrames)
+    throw CLI::ValidationError("--frames", fmt::format("1 .. {} (got {})", kMaxFrames, o.frames));
+  require_within("--rpm", o.rpm, -limits::kMaxRpm, limits::kMaxRpm,
+                 fmt::format("-{0} .. {0} rpm", limits::kMaxRpm));
+  require_within("--start", o.start_turns, -limits::kMaxTurns, limits::kMaxTurns,
+                 fmt::format("-{0} .. {0} turns", limits::kMaxTurns));
+}
+
 void run_ssi(const SsiOptions& o) {
   using namespace signals;
+  check_ssi(o);
   const SsiMasterParams master_params = ssi7361_master(o.clock_khz == 500);
   const SsiMaster master(master_params);
-  const Nanos first = parse_duration(o.first);
+  const Nanos first = parse_duration(o.first, "--first");
   if (first <= Nanos::zero())
-    throw CLI::ValidationError("--first", "must be > 0 (the clock idles high before)");
-  if (o.frames == 0) throw CLI::ValidationError("--frames", "must be > 0");
+    throw CLI::ValidationError("--first", "must be > 0 (the clock idles high before), got " + o.first);
+  const Nanos monoflop = parse_delay("--monoflop", o.monoflop);
+  const Nanos output_delay = parse_delay("--output-delay", o.output_delay);
+  const Nanos late = parse_delay("--late", o.late);
   const Nanos end = first + master.frame_period() * static_cast<std::int64_t>(o.frames);
 
   MotionProfile profile(o.start_turns);
@@ -61,13 +101,13 @@ void run_ssi(const SsiOptions& o) {
 
   SsiSlaveParams slave_params;
   slave_params.format = ssi7361_frame(o.msb, o.bits, o.gray ? SsiCode::Gray : SsiCode::Binary);
-  slave_params.monoflop = parse_duration(o.monoflop);
-  slave_params.output_delay = parse_duration(o.output_delay);
+  slave_params.monoflop = monoflop;
+  slave_params.output_delay = output_delay;
   SsiSlaveFaults faults;
   if (o.stuck == "high") faults.stuck = SsiStuck::High;
   if (o.stuck == "low") faults.stuck = SsiStuck::Low;
   faults.flip_stream_bit = o.flip_bit;
-  faults.late_response = parse_duration(o.late);
+  faults.late_response = late;
   faults.gray_glitch_mask = o.glitch_mask;
 
   std::vector<Edge> clock = master.clock_schedule(first, o.frames);
@@ -119,22 +159,26 @@ void add_synth_ssi(CLI::App& synth) {
   cmd->add_option("--name", o->name, "signal name prefix");
   cmd->add_option("--clock-khz", o->clock_khz, "SSI clock: 125 (TINT 500 us) or 500 (TINT 250 us)")
       ->check(CLI::IsMember({125U, 500U}));
-  cmd->add_option("--frames", o->frames, "frames to clock");
-  cmd->add_option("--first", o->first, "first frame's latching falling edge, e.g. 20us");
-  cmd->add_option("--msb", o->msb, "stream bit of the data MSB (the 7361's M)");
+  cmd->add_option("--frames", o->frames, fmt::format("frames to clock, 1 .. {}", kMaxFrames));
+  cmd->add_option("--first", o->first, "first frame's latching falling edge, e.g. 20us: 1ns .. 3600s");
+  cmd->add_option("--msb", o->msb,
+                  "stream bit of the data MSB (the 7361's M): 1 .. 25, with --msb + --bits - 1 <= 25");
   cmd->add_option("--bits", o->bits, "data bits (the 7361's N)")->check(CLI::Range(1U, 25U));
   cmd->add_flag("--gray", o->gray, "Gray-coded data (default binary)");
   cmd->add_option("--counts-per-turn", o->counts_per_turn, "transducer counts per turn")
       ->check(positive_number());
-  cmd->add_option("--rpm", o->rpm, "shaft speed, RPM (signed)");
-  cmd->add_option("--start", o->start_turns, "start position, turns");
-  cmd->add_option("--monoflop", o->monoflop, "transducer monoflop time TM, e.g. 16us");
-  cmd->add_option("--output-delay", o->output_delay, "clock edge to data change, e.g. 200ns");
+  cmd->add_option("--rpm", o->rpm, fmt::format("shaft speed, RPM (signed): -{0} .. {0}", limits::kMaxRpm));
+  cmd->add_option("--start", o->start_turns,
+                  fmt::format("start position, turns: -{0} .. {0}", limits::kMaxTurns));
+  cmd->add_option("--monoflop", o->monoflop, "transducer monoflop time TM, e.g. 16us: 0 .. 3600s");
+  cmd->add_option("--output-delay", o->output_delay, "clock edge to data change, e.g. 200ns: 0 .. 3600s");
   cmd->add_option("--stuck", o->stuck, "fault: data line stuck none | high | low")
       ->check(CLI::IsMember({"none", "high", "low"}));
-  cmd->add_option("--flip-bit", o->flip_bit, "fault: invert this stream bit (1..25) on the wire");
-  cmd->add_option("--late", o->late, "fault: extra delay of every data change, e.g. 3us");
-  cmd->add_option("--glitch-mask", o->glitch_mask, "fault: XOR this into the coded data field");
+  cmd->add_option("--flip-bit", o->flip_bit, "fault: invert this stream bit (1..25) on the wire")
+      ->check(CLI::Range(1U, kFrameBits));
+  cmd->add_option("--late", o->late, "fault: extra delay of every data change, e.g. 3us: 0 .. 3600s");
+  cmd->add_option("--glitch-mask", o->glitch_mask,
+                  "fault: XOR this into the coded data field: 0 .. 2^bits - 1 (within --bits)");
   on_run(*cmd, [o] {
     run_ssi(*o);
     return 0;

@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "rig/results/results_json.hpp"
 #include "tests/tools/scratch_files.hpp"
@@ -279,8 +281,82 @@ TEST(CommandLine, SynthBadValuesNameTheOptionAndItsRange) {
       {"quadrature --duration 0ms", "--duration: must be > 0, got 0ms"},
       {"quadrature --duration -1ms", "--duration: must be > 0, got -1ms"}, // "-1ms" is a value too
       {"resolver --duration -1ms", "--duration: must be > 0"},
-      {"discrete --train 2ms,1ms,3ms,3", "width must be < period"}, // the pulse as wide as its period
+      {"discrete --train 2ms,1ms,3ms,3", "--train: a width 0 < width < period 1ms (got 3ms)"},
       {"ssi --bits 26", "--bits: Value 26 not in range 1 to 25"},
+      // Non-finite and huge numbers: the campaign's limits (docs/campaigns.md "Ranges and limits").
+      {"quadrature --rpm nan", "--rpm: -32767 .. 32767 rpm (got nan)"},
+      {"quadrature --start inf", "--start: -10000 .. 10000 turns (got inf)"},
+      {"quadrature --rpm 1e300 --duration 1ms", "--rpm: -32767 .. 32767 rpm (got 1e+300)"},
+      // 1,000,000 counts/s over 4096 counts/turn: 244.140625 turn/s = 14648.4375 rpm.
+      {"quadrature --lines 1024 --rpm 15000", "--rpm: at most 1000000 encoder counts/s (X4): 14648.4 rpm"},
+      {"quadrature --duration inf", "--duration: a time within -3600s .. 3600s (got inf)"},
+      {"quadrature --dwell 3601s", "--dwell: a time within -3600s .. 3600s (got 3601s)"},
+      {"quadrature --turns 10001 --profile trapezoid --accel 10",
+       "--turns: -10000 .. 10000 turns (got 10001)"},
+      {"ssi --rpm nan", "--rpm: -32767 .. 32767 rpm (got nan)"},
+      {"ssi --rpm inf", "--rpm: -32767 .. 32767 rpm (got inf)"},
+      {"ssi --start nan", "--start: -10000 .. 10000 turns (got nan)"},
+      {"ssi --start 1e300", "--start: -10000 .. 10000 turns (got 1e+300)"},
+      {"resolver --rpm nan", "--rpm: -32767 .. 32767 rpm (got nan)"},
+      {"resolver --start inf", "--start: -3600000 .. 3600000 degrees (10000 turns) (got inf)"},
+      // Memory: 1000 rpm on 1024 lines for an hour is 1000 / 60 x 4096 x 3600 = 245,760,000 edges.
+      {"quadrature --rpm 1000 --duration 3600s",
+       "quadrature: this motion makes 245760000 edges; synth writes at most 10000000: shorten --duration"},
+      // 1 MHz for 10 s: 10^7 samples and the one at t = 0.
+      {"resolver --rate 1e6 --duration 10s",
+       "--duration x --rate makes 10000001 samples; synth writes at most "
+       "5000000"},
+      // 1 s of 1 us frames: 10^6 and the one at t = 0.
+      {"resolver --can-frames --frame-period 1us --duration 1s",
+       "--frame-period: --duration / --frame-period makes 1000001 angle frames; synth writes at most "
+       "1000000"},
+      {"ssi --frames 100001", "--frames: 1 .. 100000 (got 100001)"},
+      // Values once accepted silently.
+      {"quadrature --index-line 1024", "--index-line: a line 0 .. 1023 of --lines 1024 (got 1024)"},
+      {"quadrature --index-line -1", "--index-line: a line 0 .. 1023 of --lines 1024 (got -1)"},
+      {"quadrature --index-count 4096", "--index-count: a count within the turn, 0 .. 4095"},
+      {"quadrature --index-count -1", "--index-count: a count within the turn, 0 .. 4095"},
+      {"quadrature --index-width -1", "--index-width: 0 .. 4096 counts, at most a turn (got -1)"},
+      {"quadrature --index-width 4097", "--index-width: 0 .. 4096 counts, at most a turn (got 4097)"},
+      {"quadrature --decel -1", "--decel: 0 .. 16666.7 turns/s² (1000000 rpm/s) (got -1)"},
+      {"quadrature --max-input-hz -1", "--max-input-hz: -1 is not >= 0"},
+      {"ssi --flip-bit 0", "--flip-bit: Value 0 not in range 1 to 25"},
+      {"ssi --glitch-mask 1024 --bits 10",
+       "--glitch-mask: 0 .. 1023 (the 10-bit data field of --bits) (got 1024)"},
+      {"discrete --train 1ms,100us,10us,0", "--train: a count 1 .. 5000000 (got 0)"},
+      {"discrete --set 1ms=1 --set 1ms=0", "--set: one level at each time (got 1ms=1 and 1ms=0)"},
+      // The option, not the signal library's identifier.
+      {"ssi --msb 0", "--msb: 1 .. 25 with --msb + --bits - 1 <= 25 (got 0 + 24)"},
+      {"ssi --msb 20 --bits 10", "--msb: 1 .. 25 with --msb + --bits - 1 <= 25 (got 20 + 10)"},
+      {"ssi --flip-bit 26", "--flip-bit: Value 26 not in range 1 to 25"},
+      {"ssi --output-delay -1us", "--output-delay: 0s .. 3600s (got -1us)"},
+      {"ssi --late -1us", "--late: 0s .. 3600s (got -1us)"},
+      {"resolver --excitation-hz 2199", "--excitation-hz: 2200 .. 7000 Hz (got 2199)"},
+      {"resolver --amplitude 0", "--amplitude: 0 < amplitude <= 100 (got 0)"},
+      {"resolver --tr 0", "--tr: 0 < ratio <= 10 (got 0)"},
+      {"quadrature --profile trapezoid --accel 10 --rpm 0",
+       "--rpm: a trapezoid profile needs |rpm| 0.01 .. 32767 (got 0)"},
+      {"quadrature --profile scurve --accel 10 --jerk 10 --rpm 0",
+       "--rpm: a scurve profile needs |rpm| 0.01 .. 32767 (got 0)"},
+      {"quadrature --profile press --brake 10 --rpm 0",
+       "--rpm: a press profile needs |rpm| 0.01 .. 32767 (got 0)"},
+      {"quadrature --profile trapezoid --accel 0",
+       "--accel: a trapezoid needs 0 < accel <= 16666.7 turns/s²"},
+      // The default motion: 1024 lines at 600 rpm for 10 ms is 4096 x 10 x 0.01 = 409.6 counts: 409 edges.
+      {"quadrature --missing-edge 999999",
+       "--missing-edge: an edge index 0 .. 408: this motion makes 409 edges "
+       "(got 999999)"},
+      // 1 line at 600 rpm for 0.26 s: 10.4 counts, edges 0 .. 9 (A B A B ...): edge 9 is the last B.
+      {"quadrature --lines 1 --rpm 600 --duration 0.26s --simultaneous 9",
+       "--simultaneous: edge 9 has no later A edge to move onto it: this motion makes 10 edges"},
+      {"quadrature --lines 1 --rpm 600 --duration 0.26s --simultaneous 11",
+       "--simultaneous: an edge index 0 .. 9: this motion makes 10 edges (got 11)"},
+      {"quadrature --glitch A,-1ms,1us", "--glitch: 0s .. 3600s (got -1ms)"},
+      {"quadrature --glitch A,1ms,0us", "--glitch: 1ns .. 3600s (got 0us)"},
+      {"quadrature --phase-error nan", "--phase-error: -2 .. 2 quarter periods (got nan)"},
+      {"discrete --train 1ms,100us,100us,3", "--train: a width 0 < width < period 100us (got 100us)"},
+      {"discrete --bounce 1ms,1,1us,3,7,1us",
+       "--bounce: a window of at least 2 x bounces x min_width = 2 x 3 x 1us = 6us (got 1us)"},
   };
   for (const Case& c : cases) {
     const Result r = hilrig("synth " + c.args + " --out " + out.string());
@@ -288,6 +364,63 @@ TEST(CommandLine, SynthBadValuesNameTheOptionAndItsRange) {
     EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << ": " << r.err;
     EXPECT_FALSE(fs::exists(out)) << c.args;
   }
+}
+
+// Several --missing-edge name the edges as solved (they once renumbered after each loss, so
+// "3 and 4" lost original edges 3 and 6). 1 line at 600 RPM is 40 counts/s: count k at k x 25 ms,
+// and 0.26 s reaches 10.4 counts, so edges 0 .. 9 at 25 .. 250 ms, A on even indices (counts 1, 3,
+// ...: states 10, 01) and B on odd ones. Losing edge 3 (B at 100 ms) takes B's next (150 ms) with
+// it; edge 4 (A at 125 ms) takes A's next (175 ms). Left: A at 25, 75, 225; B at 50, 200, 250 ms,
+// whichever order the options come in.
+TEST(CommandLine, SynthMissingEdgesNameTheSolvedEdges) {
+  const fs::path dir = test::scratch_dir("campaign", "command_line_synth_missing");
+  for (const std::string& order :
+       {std::string("--missing-edge 3 --missing-edge 4"), std::string("--missing-edge 4 --missing-edge 3")}) {
+    SCOPED_TRACE(order);
+    const std::string out = (dir / "missing.vcd").string();
+    const Result r =
+        hilrig("synth quadrature --lines 1 --rpm 600 --duration 0.26s " + order + " --out " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const test::Vcd vcd = test::read_vcd_file(out);
+    const auto times = [&vcd](const char* leaf) {
+      std::vector<std::int64_t> t;
+      for (const auto& c : vcd.leaf(leaf).changes) t.push_back(c.time);
+      return t;
+    };
+    EXPECT_EQ(times("A"), (std::vector<std::int64_t>{25'000'000, 75'000'000, 225'000'000}));
+    EXPECT_EQ(times("B"), (std::vector<std::int64_t>{50'000'000, 200'000'000, 250'000'000}));
+  }
+  const fs::path never = dir / "never.vcd";
+  const Result twice = hilrig(
+      "synth quadrature --lines 1 --rpm 600 --duration 0.26s --missing-edge 3 --missing-edge 3 --out " +
+      never.string());
+  EXPECT_EQ(twice.status, 2);
+  EXPECT_NE(twice.err.find("--missing-edge: edge 3 is named twice"), std::string::npos) << twice.err;
+  EXPECT_FALSE(fs::exists(never));
+}
+
+// The edge cap counts, before solving, what the motion makes: the counts crossed plus Z's edges.
+TEST(CommandLine, SynthCountsEdgesBeforeSolving) {
+  const fs::path out = test::scratch_dir("campaign", "command_line_synth_cap") / "cap.vcd";
+  // 1 line (4 counts/turn) at 60 RPM (1 turn/s) with Z 1 count wide at count 2 (--index-line 0):
+  // 2.6 s reaches 10.4 counts, so counts 1 .. 10 are 10 A/B edges; Z rises at 2 and 6 and falls at
+  // 3 and 7 (10 is a rise too): 5 Z edges, 15 in all. The summary counts the solved edges.
+  const Result small =
+      hilrig("synth quadrature --lines 1 --rpm 60 --duration 2.6s --index-line 0 --out " + out.string());
+  ASSERT_EQ(small.status, 0) << small.err;
+  EXPECT_NE(small.out.find(": 15 edges over 2.600000 s, count 0 -> 10 (4 counts/turn)"), std::string::npos)
+      << small.out;
+  fs::remove(out);
+  // One edge over the cap, refused by the count alone (nothing is solved): 2500 lines (10^4
+  // counts/turn) at 6000 RPM (100 turn/s: 10^6 counts/s, the rate limit itself) for 10.0000015 s
+  // reaches 10^7 + 1.5 counts, so counts 1 .. 10^7 + 1: 10,000,001 edges.
+  const Result over =
+      hilrig("synth quadrature --lines 2500 --rpm 6000 --duration 10.0000015s --out " + out.string());
+  EXPECT_EQ(over.status, 2);
+  EXPECT_NE(over.err.find("quadrature: this motion makes 10000001 edges; synth writes at most 10000000"),
+            std::string::npos)
+      << over.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 } // namespace

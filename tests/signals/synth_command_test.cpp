@@ -72,10 +72,11 @@ TEST(SynthCommand, TrapezoidWithGatedIndex) {
 }
 
 TEST(SynthCommand, RateLimitFailIsACheckFailure) {
-  // 1,024 lines at 20,000 RPM = 341.3 kHz per channel, above 250 kHz: exit status 1.
+  // 1,024 lines at 14,000 RPM = 238.9 kHz per channel, above 200 kHz: exit status 1. (Within the
+  // rig's 1,000,000 counts/s, 14648 rpm on 1,024 lines: beyond it the command refuses --rpm.)
   const std::string path = test::kSynthDir + "/synth_rate_test.vcd";
   try {
-    synth({"quadrature", "--rpm", "20000", "--duration", "1ms", "--max-input-hz", "250e3", "--rate-action",
+    synth({"quadrature", "--rpm", "14000", "--duration", "1ms", "--max-input-hz", "200e3", "--rate-action",
            "fail", "--out", path});
     FAIL() << "expected a check failure";
   } catch (const CLI::RuntimeError& e) {
