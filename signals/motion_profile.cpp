@@ -17,7 +17,10 @@ Nanos Segment::end() const { return duration == Nanos::max() ? Nanos::max() : st
 
 double Segment::position_at(Nanos t) const {
   const double dt = (t - start).seconds();
-  return position + (velocity + 0.5 * acceleration * dt) * dt;
+  const double closed = position + (velocity + 0.5 * acceleration * dt) * dt;
+  if (!settled_end) return closed;
+  // The closed form rounds a few ulps past the target near the end; the move does not.
+  return *settled_end >= position ? std::min(closed, *settled_end) : std::max(closed, *settled_end);
 }
 
 double Segment::velocity_at(Nanos t) const { return velocity + acceleration * (t - start).seconds(); }
@@ -88,14 +91,20 @@ void MotionProfile::note_speed(const Segment& added) {
   if (!open_ended(added)) peak_speed_ = std::max(peak_speed_, std::abs(added.end_velocity()));
 }
 
-MotionProfile& MotionProfile::settle(double position) {
+MotionProfile& MotionProfile::settle(double from, double distance) {
   if (segments_.empty() || open_ended(segments_.back()))
     throw std::logic_error("MotionProfile::settle: no finite segment to settle");
   Segment& last = segments_.back();
+  const double position = from + distance;
   const double reached = last.position_at(last.end());
   if (std::abs(position - reached) > 1e-9 * (1.0 + std::abs(position)))
     throw std::invalid_argument("MotionProfile::settle: the segment does not end there");
+  // Velocity is linear in a segment: it keeps its sign when both ends share it (or one is 0).
+  if (last.velocity * last.end_velocity() < 0.0)
+    throw std::invalid_argument("MotionProfile::settle: the segment reverses before its end");
   last.settled_end = position;
+  last.settled_from = from;
+  last.settled_distance = distance;
   return *this;
 }
 

@@ -21,11 +21,17 @@ struct Segment {
   double acceleration; // units/s², constant through the segment
   // The end position a move builder aimed at, when it settled the segment there (see
   // MotionProfile::settle): the closed form lands within a few ulps of it, and a count
-  // boundary must not fall into that gap.
+  // boundary must not fall into that gap. settled_from + settled_distance is the move's
+  // start and signed distance as the builder was given them, so that an edge solver can add
+  // them in its own unit (counts) instead of converting their rounded sum.
   std::optional<double> settled_end = std::nullopt;
+  double settled_from = 0.0;
+  double settled_distance = 0.0;
 
   [[nodiscard]] Nanos end() const;
-  [[nodiscard]] double position_at(Nanos t) const; // t measured absolutely
+  // t measured absolutely. A settled segment never passes its settled end: the closed form
+  // of a chain of steps may land a few ulps beyond it, and a move never overshoots.
+  [[nodiscard]] double position_at(Nanos t) const;
   [[nodiscard]] double velocity_at(Nanos t) const;
   [[nodiscard]] double end_position() const;
   [[nodiscard]] double end_velocity() const;
@@ -53,10 +59,12 @@ public:
   // is not copied to a second block of memory.
   [[nodiscard]] static MotionProfile chained(double start_position, Nanos start_time,
                                              std::vector<Segment>&& segments);
-  // Declares that the last segment ends exactly at `position` (within the closed form's
-  // rounding, a relative 1e-9; throws otherwise): a move to count 2000 then ends on 2000,
-  // not on 1999.9999999999998, and the next segment starts there.
-  MotionProfile& settle(double position);
+  // Declares that the last segment ends exactly at from + distance, the target of a move
+  // that started at `from` (within the closed form's rounding, a relative 1e-9; throws
+  // otherwise): a move to count 2000 then ends on 2000, not on 1999.9999999999998, and the
+  // next segment starts there. The segment must not reverse (its velocity keeps one sign or
+  // reaches 0; throws otherwise): a settled segment is one monotonic approach to its end.
+  MotionProfile& settle(double from, double distance);
 
   [[nodiscard]] const std::vector<Segment>& segments() const { return segments_; }
   [[nodiscard]] Nanos start_time() const;

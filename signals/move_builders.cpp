@@ -36,18 +36,37 @@ double distance_from_rest(const std::vector<Step>& steps) {
   return d;
 }
 
+// The acceleration that brings `velocity` to rest over `duration` without passing through
+// zero: -velocity / duration, made smaller by an ulp at a time until velocity + a·duration (as
+// Segment::end_velocity() evaluates it) keeps velocity's sign or is 0. Each step's velocity
+// is the previous one's end, rounded once per step; a last step taken from the plan's
+// acceleration would end on a residue of either sign (1.5e-13 counts/s after the 35 steps
+// of an S-curve) and so turn round, a few ulps past the target, just before its end.
+double stopping_acceleration(double velocity, Nanos duration) {
+  const double dt = duration.seconds();
+  double a = -velocity / dt;
+  while (velocity * (velocity + a * dt) < 0.0) a = std::nextafter(a, 0.0);
+  return a;
+}
+
 // Rescales the accelerations so the steps cover exactly `distance` (from rest, every
 // velocity and distance is linear in the accelerations), appends them and settles the move
-// on its target. Returns the scale applied.
+// on its target. The last step (it ends at rest in the plan) is the one that stops the
+// velocity the chain reached, so the move never reverses. Returns the scale applied.
 double append_exact(MotionProfile& profile, std::vector<Step>& steps, double distance) {
-  const double target = profile.end_position() + distance;
+  const double from = profile.end_position();
   const double covered = distance_from_rest(steps);
   const double scale = distance / covered;
-  for (Step& s : steps) {
-    if (s.duration <= Nanos::zero()) continue;
-    profile.accelerate(s.acceleration * scale, s.duration);
+  std::size_t last = steps.size();
+  for (std::size_t i = 0; i < steps.size(); ++i)
+    if (steps[i].duration > Nanos::zero()) last = i;
+  for (std::size_t i = 0; i < last; ++i) {
+    if (steps[i].duration <= Nanos::zero()) continue;
+    profile.accelerate(steps[i].acceleration * scale, steps[i].duration);
   }
-  profile.settle(target);
+  profile.accelerate(stopping_acceleration(profile.end_velocity(), steps[last].duration),
+                     steps[last].duration);
+  profile.settle(from, distance);
   return scale;
 }
 

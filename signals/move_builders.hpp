@@ -4,7 +4,9 @@
 //
 // Durations are rounded to the nanosecond, and the accelerations are then rescaled (by a
 // relative ~1e-9) so the move covers its distance exactly and ends at rest: a move to an
-// integer count stops on that count, never a hair short of it.
+// integer count stops on that count, never a hair short of it. The last step stops the
+// velocity the chain of steps actually reached, without letting it change sign, so a move is
+// monotonic: it never passes its target and comes back (MotionProfile::settle checks it).
 
 #include <cstdint>
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace hilrig::signals {
@@ -28,6 +29,8 @@ void QuadratureEdgeSolver::restart() {
   pieces_ = 0;
   piece_ = 0;
   initial_count_ = encoder_.count_at(profile_->position(profile_->start_time()));
+  last_end_ns_ = std::numeric_limits<std::int64_t>::min();
+  last_cend_ = 0.0;
   count_ = initial_count_;
   index_phase_ = (count_ - encoder_.index_count) % counts_per_turn_;
   if (index_phase_ < 0) index_phase_ += counts_per_turn_;
@@ -46,15 +49,21 @@ bool QuadratureEdgeSolver::load_segment(std::size_t i) {
   // Work in counts and nanoseconds: per-edge arithmetic then needs no unit conversion.
   seg_start_ns_ = s.start.count();
   seg_end_ = static_cast<double>((end - s.start).count());
-  seg_c0_ = counts_per_unit_ * s.position;
+  // A segment starts where the one before it ended (MotionProfile joins them exactly), so it
+  // starts on the count position that one ended on: one value, snapped once.
+  const bool joined = s.start.count() == last_end_ns_;
+  seg_c0_ = joined ? last_cend_ : QuadratureEncoder::snap_to_count(counts_per_unit_ * s.position);
   seg_v_ = counts_per_unit_ * s.velocity * 1e-9;
   seg_a_ = counts_per_unit_ * s.acceleration * 1e-18;
-  // The end count as the profile states it (settled or closed form), so the edges take the
-  // count exactly to encoder.count_at(profile.position(end)).
-  seg_cend_ = counts_per_unit_ * (end == s.end() ? s.end_position() : s.position_at(end));
+  seg_cend_ = end_counts(s, end);
+  last_end_ns_ = end.count();
+  last_cend_ = seg_cend_;
   if (seg_v_ == 0.0 && seg_a_ == 0.0) return false;
   pieces_ = 1;
-  if (seg_a_ != 0.0) {
+  // A settled segment does not reverse (MotionProfile::settle checks it in the profile's
+  // units); a turning point that the conversion to counts and nanoseconds puts a hair
+  // before its end is that rounding, not a reversal.
+  if (seg_a_ != 0.0 && !s.settled_end) {
     const double tv = -seg_v_ / seg_a_;
     if (tv > 0.0 && tv < seg_end_) { // the velocity crosses zero: split at the turning point
       pieces_ = 2;
@@ -63,6 +72,26 @@ bool QuadratureEdgeSolver::load_segment(std::size_t i) {
     }
   }
   return true;
+}
+
+// The segment's position at `end` in counts, the snapping rule of QuadratureEncoder applied
+// to the values it is computed from: a settled end is the move's start plus its distance,
+// each converted to counts (0.3 - 0.1 turns at 40 counts/turn is 12 - 4 = 8, where
+// (0.3 - 0.1)·40 is 7.999999999999999); any other end is the segment's start plus its travel
+// in counts. Either way the edges take the count exactly to count_at() of that end.
+double QuadratureEdgeSolver::end_counts(const Segment& s, Nanos end) const {
+  const double dt = (end - s.start).seconds();
+  const double travel = counts_per_unit_ * ((s.velocity + 0.5 * s.acceleration * dt) * dt);
+  const double reached =
+      QuadratureEncoder::snap_to_count(seg_c0_ + travel, std::max(std::abs(seg_c0_), std::abs(travel)));
+  if (!s.settled_end) return reached;
+  const double from = counts_per_unit_ * s.settled_from;
+  const double distance = counts_per_unit_ * s.settled_distance;
+  const double target =
+      QuadratureEncoder::snap_to_count(from + distance, std::max(std::abs(from), std::abs(distance)));
+  if (end == s.end()) return target;
+  // Cut short by `until`: where the closed form is, but never past the target (Segment::position_at).
+  return target >= seg_c0_ ? std::min(reached, target) : std::max(reached, target);
 }
 
 void QuadratureEdgeSolver::start_piece(int piece) {

@@ -5,7 +5,17 @@
 // position) to count_at(end position) exactly, one edge per count, wherever the profile
 // starts and ends (fractional positions, a move settled on a count boundary). A segment whose
 // velocity crosses zero is split at the turning point, so reversals inside a segment give
-// the right edges in the right order.
+// the right edges in the right order; a settled segment (the last step of a move) does not
+// reverse, so it is one monotonic piece to its target.
+//
+// Positions in counts follow QuadratureEncoder's whole-count rule (snapped_counts(): within 8
+// ulps of an integer is that integer), applied to the values each is computed from: the
+// profile's start; a segment's start is the count position the segment before it ended on; a
+// settled end is the move's start plus its distance, each converted to counts; any other end
+// is the segment's start plus its travel in counts. A move from 0.3 turn by -0.1 at 40
+// counts/turn thus ends on count 8 (12 - 4), as written. Where a target is computed with
+// cancellation from much larger values, the solver's end (the move's start and distance in
+// counts) is the one to trust over count_at() of the rounded sum.
 //
 // The solver streams: fill() writes into a caller's buffer and resumes where it stopped,
 // and for_each_quadrature_edge() hands edges to a callback through a stack buffer. Neither
@@ -57,6 +67,7 @@ private:
   bool advance();                   // sets up the next monotonic piece; false when none is left (yet)
   bool load_segment(std::size_t i); // false when segment i does not move
   void start_piece(int piece);
+  [[nodiscard]] double end_counts(const Segment& s, Nanos end) const; // needs seg_c0_
 
   const MotionProfile* profile_;
   const std::vector<Segment>* segments_;
@@ -79,6 +90,9 @@ private:
   std::int64_t seg_start_ns_ = 0;
   double seg_c0_ = 0, seg_v_ = 0, seg_a_ = 0, seg_end_ = 0, seg_cend_ = 0;
   double vertex_t_ = 0, vertex_c_ = 0; // turning point inside the segment
+  // Where (ns) and on what count position the last segment loaded ended.
+  std::int64_t last_end_ns_ = 0;
+  double last_cend_ = 0;
   int pieces_ = 0, piece_ = 0;
   // The current monotonic piece: origin time/count/velocity, its end and direction.
   double p_t0_ = 0, p_c0_ = 0, p_v0_ = 0, p_end_ = 0, p_cend_ = 0, p_inv_v_ = 0;

@@ -1,5 +1,6 @@
 #include "signals/quadrature_encoder.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hilrig::signals {
@@ -10,7 +11,13 @@ double QuadratureEncoder::counts_per_unit() const {
 }
 
 std::int64_t QuadratureEncoder::count_at(double position) const {
-  return static_cast<std::int64_t>(std::floor(counts(position) + 1.0 - edge_offset()));
+  return static_cast<std::int64_t>(std::floor(snapped_counts(position) + 1.0 - edge_offset()));
+}
+
+double QuadratureEncoder::snap_to_count(double c, double magnitude) {
+  const double whole = std::nearbyint(c);
+  const double scale = std::max({std::abs(magnitude), std::abs(c), 1.0});
+  return std::abs(c - whole) <= std::ldexp(scale, -49) ? whole : c;
 }
 
 bool QuadratureEncoder::index_high(std::int64_t count) const {

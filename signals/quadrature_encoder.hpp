@@ -11,6 +11,18 @@
 //              position reaches n; going down, count n-1 when it falls below n).
 // Either way the count at a position is count_at(), and the edges the solver emits always
 // take the count from count_at(start) to count_at(end).
+//
+// Whole counts survive floating point (snapped_counts()): a position in counts that lies
+// within 8 ulps (2^-49, about 1.8e-15, relative) of an integer is that integer. A user writes
+// decimals, and 0.3 - 0.1 turns is 0.19999999999999998, 7.999999999999999 counts at 40
+// counts/turn: without the rule a move from 0.3 by -0.1 would end on count 7, not 8. The
+// tolerance is relative to the larger of the values the position was computed from (a move's
+// start and distance in counts, a segment's start and travel, or the position itself), at
+// least 1 count. It cannot change a position a user can write: a count value that is a
+// decimal of at most 14 digits in all (123456.12345678, 0.00000000000001) and not an integer
+// is at least 1e-14 of its magnitude (and at least 1e-14 counts) from every integer, more than
+// 5 times the tolerance; a position of up to 7 digits in turns is such a count value at any
+// encoder up to 1,000,000 lines (4,000,000 counts/turn: 7 more digits).
 
 #include <cstdint>
 
@@ -44,7 +56,11 @@ struct QuadratureEncoder {
   [[nodiscard]] double counts_per_unit() const;
   // Continuous count at a profile position; the encoder state there is count_at().
   [[nodiscard]] double counts(double position) const { return position * counts_per_unit(); }
-  [[nodiscard]] std::int64_t count_at(double position) const;
+  [[nodiscard]] std::int64_t count_at(double position) const; // of snapped_counts(position)
+  // counts(position), an integer when it is within the tolerance of one (see the top).
+  [[nodiscard]] double snapped_counts(double position) const { return snap_to_count(counts(position)); }
+  // `c`, or the integer within 8 ulps of max(|magnitude|, |c|, 1) of it.
+  [[nodiscard]] static double snap_to_count(double c, double magnitude = 0.0);
   // Where, in continuous counts, the edge from state n to n+1 sits, relative to n (0.5 or 1).
   [[nodiscard]] double edge_offset() const { return placement == EdgePlacement::HalfCount ? 0.5 : 1.0; }
   [[nodiscard]] bool index_high(std::int64_t count) const;
