@@ -1,5 +1,7 @@
 #include "drivers/modbus/tcp_server.hpp"
 
+#include <fmt/format.h>
+
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/write.hpp>
@@ -37,6 +39,8 @@ struct Connection {
   bool closing = false; // no more reading: closed once the replies owed are written
   Clock::time_point last_activity;
   std::list<std::shared_ptr<Connection>>::iterator self;
+  std::string peer;         // "address:port", for the reason a server's close gives
+  std::string close_reason; // set when the server decided to close (closing, or at once)
 
   [[nodiscard]] std::size_t held() const { return pending.size() + in_flight.size(); }
 };
@@ -66,6 +70,8 @@ private:
   bool take_frames(const ConnectionPtr& c);
   void write(const ConnectionPtr& c);
   void close(const ConnectionPtr& c);
+  // The server closes: `reason` goes to options_.on_close.
+  void close_for(const ConnectionPtr& c, std::string reason);
   void arm_ticker();
   void close_idle();
   void count_open();
@@ -120,12 +126,16 @@ void TcpServer::Impl::admit(tcp::socket socket) {
         [](const ConnectionPtr& a, const ConnectionPtr& b) { return a->last_activity < b->last_activity; });
     if (longest_idle != connections_.end()) {
       ++stats_.replaced;
-      close(ConnectionPtr(*longest_idle));
+      close_for(ConnectionPtr(*longest_idle),
+                fmt::format("replaced by a newcomer: {} connections at once at most (--max-connections)",
+                            options_.limits.max_connections));
     }
   }
   error_code ignored;
   socket.set_option(tcp::no_delay(true), ignored); // a reply is one small segment: send it now
   auto c = std::make_shared<Connection>(std::move(socket));
+  const tcp::endpoint peer = c->socket.remote_endpoint(ignored);
+  c->peer = fmt::format("{}:{}", peer.address().to_string(), peer.port());
   c->last_activity = Clock::now();
   c->self = connections_.insert(connections_.end(), c);
   ++stats_.connections;
@@ -171,6 +181,8 @@ bool TcpServer::Impl::take_frames(const ConnectionPtr& c) {
       // are owed, so the connection closes once they are written (write()).
       ++stats_.bad_frames;
       c->closing = true;
+      c->close_reason = fmt::format("MBAP length {} outside 2 .. {} (unit id + a PDU of at most {} bytes)",
+                                    (std::size_t{rest[4]} << 8U) | rest[5], 1 + kMaxTcpPdu, kMaxTcpPdu);
       return false;
     }
     if (frame.kind == TcpFrameKind::Foreign) {
@@ -189,7 +201,8 @@ bool TcpServer::Impl::take_frames(const ConnectionPtr& c) {
       }
       if (c->held() > options_.limits.max_output_bytes) {
         ++stats_.overflowed; // it sends and does not read: it may not hold the server's memory
-        close(c);
+        close_for(c, fmt::format("more than {} reply bytes unread (--max-output)",
+                                 options_.limits.max_output_bytes));
         return false;
       }
     }
@@ -207,7 +220,7 @@ void TcpServer::Impl::write(const ConnectionPtr& c) {
   }
   if (c->pending.empty()) {
     if (c->closing) {
-      close(c);
+      close_for(c, c->close_reason);
     }
     return;
   }
@@ -227,6 +240,16 @@ void TcpServer::Impl::write(const ConnectionPtr& c) {
     c->last_activity = Clock::now();
     write(c);
   });
+}
+
+void TcpServer::Impl::close_for(const ConnectionPtr& c, std::string reason) {
+  if (!c->open) {
+    return;
+  }
+  if (options_.on_close) {
+    options_.on_close(c->peer, reason);
+  }
+  close(c);
 }
 
 // Closes at once; the handlers still queued for it see `open` false and return.
@@ -280,7 +303,8 @@ void TcpServer::Impl::close_idle() {
     const ConnectionPtr c = *it++;
     if (now - c->last_activity >= timeout) {
       ++stats_.timed_out;
-      close(c);
+      close_for(c, fmt::format("no byte either way for {} ms (--idle-timeout)",
+                               options_.limits.idle_timeout.count() / 1'000'000));
     }
   }
 }

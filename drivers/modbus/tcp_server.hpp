@@ -38,6 +38,10 @@ struct TcpServerOptions {
   TcpLimits limits;
   Nanos poll_period = milliseconds(5);       // how often the tick runs while no request arrives
   Fc23Read fc23_read = Fc23Read::AfterWrite; // the served device's FC 23 (pdu_handler.hpp)
+  // Told each time the server closes a connection itself, with the client's address and the
+  // reason (an impossible length, idle, unread replies, replaced at the limit), so a lab sees
+  // why a client lost its link; a client that leaves is not a server's close.
+  std::function<void(const std::string& peer, const std::string& reason)> on_close;
 };
 
 // Counters, safe to read from another thread while the server runs. `open` and

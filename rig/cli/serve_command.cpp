@@ -229,6 +229,9 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
     server_options.limits = options.tcp_limits;
     server_options.poll_period = options.tick;
     server_options.fc23_read = device->fc23_read;
+    server_options.on_close = [](const std::string& peer, const std::string& reason) {
+      std::fprintf(stderr, "hilrig serve: closed %s: %s\n", peer.c_str(), reason.c_str());
+    };
     drivers::modbus::TcpServer server(registers, server_options);
     endpoint.port = server.port();
     endpoint.tcp_stats = &server.stats();

@@ -3,9 +3,12 @@
 // 127.0.0.1:0, told back through --port-file) and this test talks to it with libmodbus.
 // Waits are polls with a bounded deadline, never a fixed sleep standing for a time.
 
+#include <arpa/inet.h>
 #include <fcntl.h>
 #include <modbus.h>
+#include <netinet/in.h>
 #include <spawn.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -85,6 +88,7 @@ public:
   }
 
   [[nodiscard]] std::string why_not() const { return test::read_file(dir_ / "stderr"); }
+  [[nodiscard]] int port() const { return port_; }
 
   // Sends `signal` and waits (bounded) for the server to end: its wait status, or nullopt if it
   // had not started or was still running at the deadline (then it is killed).
@@ -317,6 +321,33 @@ TEST(ServeCli, SigtermOrSigintStopsTheServerCleanly) {
     EXPECT_TRUE(WIFEXITED(*status)) << "killed by signal " << (WIFSIGNALED(*status) ? WTERMSIG(*status) : 0);
     EXPECT_EQ(WIFEXITED(*status) ? WEXITSTATUS(*status) : -1, 0) << s.why_not();
   }
+}
+
+// A connection the server closes itself is named on stderr with its reason: here a length
+// field of 0x300 = 768, where a Modbus TCP frame's MBAP length (unit id + PDU) is 2 .. 254, a
+// PDU being at most 253 bytes (Modbus Application Protocol V1.1b3, §4.1; Messaging on TCP/IP
+// Implementation Guide, §3.1.3).
+TEST(ServeCli, AConnectionTheServerClosesIsNamedWithItsReason) {
+  Served served("close_reason", {}, "ans1");
+  ASSERT_GT(served.port(), 0) << served.why_not();
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_in at{};
+  at.sin_family = AF_INET;
+  at.sin_port = htons(static_cast<std::uint16_t>(served.port()));
+  at.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::connect(fd, reinterpret_cast<const sockaddr*>(&at), sizeof at), 0);
+  const std::array<std::uint8_t, 8> bad{0, 8, 0, 0, 0x03, 0x00, 1, 4}; // tid 8, protocol 0, length 768
+  ASSERT_EQ(::send(fd, bad.data(), bad.size(), 0), static_cast<ssize_t>(bad.size()));
+  std::array<std::uint8_t, 16> none{};
+  EXPECT_EQ(::recv(fd, none.data(), none.size(), 0), 0); // the server closed it
+  ::close(fd);
+  const std::string said = "MBAP length 768 outside 2 .. 254 (unit id + a PDU of at most 253 bytes)";
+  for (const auto until = Clock::now() + kDeadline;
+       served.why_not().find(said) == std::string::npos && Clock::now() < until;)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_NE(served.why_not().find("hilrig serve: closed 127.0.0.1:"), std::string::npos) << served.why_not();
+  EXPECT_NE(served.why_not().find(said), std::string::npos) << served.why_not();
 }
 
 TEST(ServeCli, BadMotionOrParamIsRefusedBeforeServing) {
