@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/did_you_mean.hpp"
+#include "rig/campaign/check_times.hpp"
 #include "rig/campaign/limits.hpp"
 #include "rig/campaign/motion.hpp"
 #include "rig/campaign/stimulus_kinds.hpp"
@@ -879,6 +880,7 @@ private:
         if (e.key().empty()) fail(c.where, path, e.what());
         r.fail(e.key(), e.what());
       }
+      if (const auto problem = check_time_problem(s, *kind, table)) r.fail(problem->key, problem->expected);
       if (auto* move = std::get_if<checks::ShaftMoveParams>(&c.params)) move->spec.profile = profile_of(s, r);
       if (const auto* d = std::get_if<checks::DebounceParams>(&c.params)) {
         // Every start phase's probe pulse begins within the run.

@@ -78,6 +78,13 @@ ParamRange between(double lo, double hi) { return {lo, false, hi}; }
 ParamSpec P(std::string name, ParamType t, bool required, std::string help, ParamRange range = any()) {
   return ParamSpec{std::move(name), t, required, std::move(help), range};
 }
+// An instant of the run, in a unit of ns_per_unit nanoseconds (ParamSpec::instant_ns).
+ParamSpec instant(ParamSpec p, double ns_per_unit) {
+  p.instant_ns = ns_per_unit;
+  return p;
+}
+constexpr double kUs = 1e3;
+constexpr double kMs = 1e6;
 constexpr auto Num = ParamType::Number;
 constexpr auto Int = ParamType::Integer;
 constexpr auto Str = ParamType::String;
@@ -313,13 +320,14 @@ std::vector<CheckKind> make_kinds() {
        P("timeout_us", Num, false, "longest wait for an edge, inclusive (default: until the next crossing)",
          width),
        P("min_count", Int, false, "fewest latencies (1)", counts),
-       P("crossings_us", ParamType::NumberList, false, "stimulus crossing times; or setpoint", time),
+       instant(P("crossings_us", ParamType::NumberList, false, "stimulus crossing times; or setpoint", time),
+               kUs),
        P("setpoint", Num, false, "counts: crossings derived from the position function"),
        P("direction", Str, false, "rising, falling or both (both)"),
        P("step_us", Num, false, "scan step for crossings (100); shorter than the shortest dwell", width),
        P("modulus", Num, false, "full-scale count: setpoint + k * modulus are crossings too (0: none)", time),
-       P("from_us", Num, false, "scan start", time), P("to_us", Num, false, "scan end", time),
-       phase_param("crossings"), bins_param()},
+       instant(P("from_us", Num, false, "scan start", time), kUs),
+       instant(P("to_us", Num, false, "scan end", time), kUs), phase_param("crossings"), bins_param()},
       throughput));
   k.push_back(kind(
       "debounce", "pulses shorter than the filter rejected, longer accepted; boundary by bisection",
@@ -351,7 +359,7 @@ std::vector<CheckKind> make_kinds() {
       {P("limit_ms", Num, true, "stop time limit (inclusive)", time),
        P("brake_line", Str, false, "the brake input line; or applied_ms"),
        P("applied_level", Lvl, false, "level of brake_line that applies the brake (low)"),
-       P("applied_ms", Num, false, "when the brake was applied", time),
+       instant(P("applied_ms", Num, false, "when the brake was applied", time), kMs),
        P("reported", Str, false, "observation holding the board's stop time, ms"),
        P("report_tolerance_ms", Num, false, "|reported - measured| allowed (2)", time),
        P("report_tick_ms", Num, false,
@@ -361,16 +369,18 @@ std::vector<CheckKind> make_kinds() {
        P("fault_level", Lvl, false, "the fault output's level on a fault (low)"),
        P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time")},
       brake));
-  k.push_back(
-      kind("edge_at_position", "every edge of an output at a position, within a tolerance",
-           {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
-            P("position", Num, true, "counts"),
-            P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
-            P("modulus", Num, false, "full-scale count (0: none)", time),
-            P("min_edges", Int, false, "fewest edges (1)", counts),
-            P("from_us", Num, false, "judge the edges from this time (inclusive; default: all)", time),
-            P("to_us", Num, false, "judge the edges up to this time (inclusive; default: all)", time)},
-           edge_at));
+  k.push_back(kind(
+      "edge_at_position", "every edge of an output at a position, within a tolerance",
+      {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
+       P("position", Num, true, "counts"),
+       P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
+       P("modulus", Num, false, "full-scale count (0: none)", time),
+       P("min_edges", Int, false, "fewest edges (1)", counts),
+       instant(P("from_us", Num, false, "judge the edges from this time (inclusive; default: all)", time),
+               kUs),
+       instant(P("to_us", Num, false, "judge the edges up to this time (inclusive; default: all)", time),
+               kUs)},
+      edge_at));
   k.push_back(kind("pulse_width", "every pulse on a line between a minimum and a maximum width",
                    {P("line", Str, true, "the line"), P("level", Lvl, false, "the pulse level (high)"),
                     P("min_us", Num, false, "shortest allowed (inclusive)", time),
@@ -381,43 +391,48 @@ std::vector<CheckKind> make_kinds() {
   k.push_back(
       kind("word_equals", "an observed word equals a value",
            {P("observation", Str, true, "the observation's name"), P("value", Num, true, "expected value"),
-            P("at_ms", Num, false, "judge the latest observation by then (default: the last)", time)},
+            instant(P("at_ms", Num, false, "judge the latest observation by then (default: the last)", time),
+                    kMs)},
            word_equals));
   k.push_back(kind("word_within", "an observed word within limits",
                    {P("observation", Str, true, "the observation's name"),
                     P("lower", Num, false, "inclusive"), P("upper", Num, false, "inclusive"),
-                    P("at_ms", Num, false, "judge the latest observation by then", time)},
+                    instant(P("at_ms", Num, false, "judge the latest observation by then", time), kMs)},
                    word_within));
   k.push_back(kind("frame_decodes", "every captured CAN frame or serial message decodes with no named error",
                    {P("source", Str, true, "the bus or link"), P("decoder", Str, true, "the decoder's name"),
                     P("id", Int, false, "only frames with this id", between(0, 0x1FFFFFFF)),
                     P("min_frames", Int, false, "fewest frames (1)", counts)},
                    frames));
-  k.push_back(kind(
-      "shaft_move",
-      "a stepper shaft seen by its step and direction lines: net steps, duration, peak speed, reversals",
-      {P("step_line", Str, true, "one edge per step"), P("dir_line", Str, true, "High = CW"),
-       P("dir_initial", Lvl, false, "dir_line before its first edge (low)"),
-       P("from_ms", Num, true, "window start: the command or the stop trigger; steps after it count", time),
-       P("to_ms", Num, false, "window end (the run's end)", time),
-       P("steps", Num, false, "expected net steps, CW +"),
-       P("steps_tolerance", Num, false, "either side, inclusive (0)", time),
-       P("duration_min_ms", Num, false, "from from_ms to the last step (0 with no step)", time),
-       P("duration_max_ms", Num, false, "upper limit on that", time),
-       P("peak_min", Num, false, "steps/s: 1 / shortest step interval, lower limit", time),
-       P("peak_max", Num, false, "steps/s: upper limit", time),
-       P("reversals", Int, false, "exact count of direction changes", at_least(0)),
-       P("profile_of", Str, false,
-         "the [[host]] write (its name) of the move whose profile the step rate is drawn against: a "
-         "relative move, jerk 0, after a configuration; evidence, not judged")},
-      shaft));
-  k.push_back(kind("word_bits", "an observed word's bits under a mask equal a value",
-                   {P("observation", Str, true, "the observation's name"),
-                    P("mask", Int, true, "bits judged, never none", between(1, 0xFFFF)),
-                    P("value", Int, true, "expected (word & mask); a negative one is a two's complement INT",
-                      between(-32768, 0xFFFF)),
-                    P("at_ms", Num, false, "judge the latest observation by then (default: the last)", time)},
-                   word_bits));
+  k.push_back(
+      kind("shaft_move",
+           "a stepper shaft seen by its step and direction lines: net steps, duration, peak speed, reversals",
+           {P("step_line", Str, true, "one edge per step"), P("dir_line", Str, true, "High = CW"),
+            P("dir_initial", Lvl, false, "dir_line before its first edge (low)"),
+            instant(P("from_ms", Num, true,
+                      "window start: the command or the stop trigger; steps after it count", time),
+                    kMs),
+            instant(P("to_ms", Num, false, "window end (the run's end)", time), kMs),
+            P("steps", Num, false, "expected net steps, CW +"),
+            P("steps_tolerance", Num, false, "either side, inclusive (0)", time),
+            P("duration_min_ms", Num, false, "from from_ms to the last step (0 with no step)", time),
+            P("duration_max_ms", Num, false, "upper limit on that", time),
+            P("peak_min", Num, false, "steps/s: 1 / shortest step interval, lower limit", time),
+            P("peak_max", Num, false, "steps/s: upper limit", time),
+            P("reversals", Int, false, "exact count of direction changes", at_least(0)),
+            P("profile_of", Str, false,
+              "the [[host]] write (its name) of the move whose profile the step rate is drawn against: a "
+              "relative move, jerk 0, after a configuration; evidence, not judged")},
+           shaft));
+  k.push_back(
+      kind("word_bits", "an observed word's bits under a mask equal a value",
+           {P("observation", Str, true, "the observation's name"),
+            P("mask", Int, true, "bits judged, never none", between(1, 0xFFFF)),
+            P("value", Int, true, "expected (word & mask); a negative one is a two's complement INT",
+              between(-32768, 0xFFFF)),
+            instant(P("at_ms", Num, false, "judge the latest observation by then (default: the last)", time),
+                    kMs)},
+           word_bits));
   return k;
 }
 

@@ -64,6 +64,10 @@ struct ParamSpec {
   bool required = false;
   std::string help{}; // one line, with the default
   ParamRange range{};
+  // An instant of the run (from_us, at_ms, crossings_us, ...), in ns per unit of the number;
+  // 0 for a number that is not one (a limit, a width). The campaign reader holds an instant
+  // to 0 .. campaign.end, so a window past the run's end is refused before anything runs.
+  double instant_ns = 0.0;
 };
 
 // A problem with one check parameter: the key ("" for the check as a whole) and the valid
