@@ -29,7 +29,7 @@ int run_trend(const TrendArgs& a) {
     for (const std::string& f : a.files) results.push_back(rig::read_results_file(f));
     for (std::size_t i = 0; i < results.size(); ++i)
       // A night is named by when it ran, when its results say so; else by its file.
-      nights.push_back(rig::Night{&results[i], results[i].started_at.value_or(a.files[i])});
+      nights.push_back(rig::Night{&results[i], results[i].started_at.value_or(a.files[i]), a.files[i]});
     rig::write_file_atomically(a.out, rig::to_trend_html(nights));
   } catch (const std::exception& e) {
     std::fputs(fmt::format("hilrig trend: {}\n", e.what()).c_str(), stderr);

@@ -21,6 +21,11 @@ struct MeasurementTrend {
   std::vector<TrendPoint> points;     // one per night
 };
 
+// A night in a message: its file and its label, or the label alone.
+std::string where(const Night& n) {
+  return n.file.empty() ? n.label : fmt::format("{} ({})", n.file, n.label);
+}
+
 } // namespace
 
 std::string to_trend_html(std::span<const Night> nights) {
@@ -30,7 +35,8 @@ std::string to_trend_html(std::span<const Night> nights) {
     if (n.result->campaign != first.campaign || n.result->device != first.device)
       throw std::invalid_argument(fmt::format(
           "{} is campaign \"{}\" on {}, {} is campaign \"{}\" on {}: a trend is one campaign on one device",
-          nights.front().label, first.campaign, first.device, n.label, n.result->campaign, n.result->device));
+          where(nights.front()), first.campaign, first.device, where(n), n.result->campaign,
+          n.result->device));
   // MeasurementTrend in the order they first appear, each with a point per night.
   std::vector<MeasurementTrend> series;
   std::map<std::pair<std::string, std::string>, std::size_t> index;

@@ -13,6 +13,7 @@ namespace hilrig::rig {
 struct Night {
   const CampaignResult* result = nullptr;
   std::string label;
+  std::string file{}; // where it was read from: messages name it (nights can share a label)
 };
 
 // The page for `nights`, oldest first. A measurement is named by its run and its name; a night

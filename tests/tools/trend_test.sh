@@ -74,6 +74,8 @@ status=0
 "$hilrig" trend n1/results.json other/results.json --out stranger.html 2>stranger.log || status=$?
 [ "$status" = 2 ] || fail "a stranger's results exited $status, not 2"
 grep -q "a trend is one campaign on one device" stranger.log || fail "no reason given: $(cat stranger.log)"
+# Both files named: nights run at the same epoch share a label.
+grep -q "n1/results.json (.*other/results.json (" stranger.log || fail "the files are not named: $(cat stranger.log)"
 [ ! -e stranger.html ] || fail "a page was written for a stranger"
 status=0
 "$hilrig" trend n1/results.json missing.json --out missing.html 2>/dev/null || status=$?
