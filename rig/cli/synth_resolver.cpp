@@ -81,6 +81,8 @@ void write_can_log(const TraceRecorder& trace, const std::string& path) {
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
+constexpr double kMaxRateHz = 1e9; // the trace's resolution: one sample a nanosecond
+
 void check_phase(const std::string& option, double deg) {
   require_within(option, deg, -kMaxPhaseDeg, kMaxPhaseDeg, fmt::format("-{0} .. {0} degrees", kMaxPhaseDeg));
 }
@@ -107,6 +109,14 @@ void check_resolver(const ResolverOptions& o) {
   check_phase("--sin-phase", o.sin_phase_deg);
   check_phase("--cos-phase", o.cos_phase_deg);
   if (o.channel > 15) throw CLI::ValidationError("--channel", fmt::format("0 .. 15 (got {})", o.channel));
+  // Samples of the carrier at or below twice its frequency alias it (at exactly twice they can
+  // all be zero crossings); above 1 GHz two samples share the trace's nanosecond.
+  if (!(o.rate_hz > 2.0 * o.excitation_hz && o.rate_hz <= kMaxRateHz))
+    throw CLI::ValidationError(
+        "--rate",
+        fmt::format("above twice --excitation-hz ({} Hz: the carrier's Nyquist rate) and at most {:.0f} "
+                    "Hz, one sample a nanosecond (got {})",
+                    2.0 * o.excitation_hz, kMaxRateHz, o.rate_hz));
 }
 
 // Sample i at round(i / rate) up to and including the end of the run.
@@ -221,7 +231,8 @@ void add_synth_resolver(CLI::App& synth) {
   cmd->add_option(
       "--duration", o->duration,
       fmt::format("run time, e.g. 10ms: 1ns .. 3600s, at most {} samples at --rate", kMaxSamples));
-  cmd->add_option("--rate", o->rate_hz, "sample rate, Hz")->check(positive_number());
+  cmd->add_option("--rate", o->rate_hz, "sample rate, Hz: above 2 x --excitation-hz, at most 1e9")
+      ->check(positive_number());
   cmd->add_option(
       "--excitation-hz", o->excitation_hz,
       fmt::format("reference frequency, {} .. {} Hz", signals::kMinExcitationHz, signals::kMaxExcitationHz));

@@ -334,6 +334,17 @@ TEST(CommandLine, SynthBadValuesNameTheOptionAndItsRange) {
       {"resolver --excitation-hz 2199", "--excitation-hz: 2200 .. 7000 Hz (got 2199)"},
       {"resolver --amplitude 0", "--amplitude: 0 < amplitude <= 100 (got 0)"},
       {"resolver --tr 0", "--tr: 0 < ratio <= 10 (got 0)"},
+      // A sampled carrier needs more than two samples a period (Nyquist): the 5 kHz default at
+      // 10 kHz, at 9,999 Hz and at 3 % under it aliases; one sample a ns is the trace's limit.
+      {"resolver --rate 10000", "--rate: above twice --excitation-hz (10000 Hz: the carrier's Nyquist rate) "
+                                "and at most 1000000000 Hz, "
+                                "one sample a nanosecond (got 10000)"},
+      {"resolver --rate 9999", "--rate: above twice --excitation-hz (10000 Hz: the carrier's Nyquist rate)"},
+      {"resolver --rate 9700", "--rate: above twice --excitation-hz (10000 Hz: the carrier's Nyquist rate)"},
+      {"resolver --excitation-hz 7000 --rate 14000",
+       "--rate: above twice --excitation-hz (14000 Hz: the carrier's Nyquist rate)"},
+      {"resolver --rate 1.000001e9 --duration 1ns",
+       "--rate: above twice --excitation-hz (10000 Hz: the carrier's"},
       {"quadrature --profile trapezoid --accel 10 --rpm 0",
        "--rpm: a trapezoid profile needs |rpm| 0.01 .. 32767 (got 0)"},
       {"quadrature --profile scurve --accel 10 --jerk 10 --rpm 0",
@@ -363,6 +374,19 @@ TEST(CommandLine, SynthBadValuesNameTheOptionAndItsRange) {
     EXPECT_EQ(r.status, 2) << c.args << ": " << r.err;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << ": " << r.err;
     EXPECT_FALSE(fs::exists(out)) << c.args;
+  }
+}
+
+// The neighbourhood of --rate's bounds: just above twice the 5 kHz carrier and one sample a ns
+// are accepted (the refusals are rows of the table above).
+TEST(CommandLine, SynthResolverRatesInsideTheBoundsAreWritten) {
+  const fs::path out = test::scratch_dir("campaign", "command_line_synth_rate") / "rate.vcd";
+  for (const char* args : {"--rate 10001 --duration 1ms", "--rate 10300 --duration 1ms",
+                           "--excitation-hz 7000 --rate 14001 --duration 1ms", "--rate 1e9 --duration 1us"}) {
+    const Result r = hilrig(std::string("synth resolver ") + args + " --out " + out.string());
+    EXPECT_EQ(r.status, 0) << args << ": " << r.err;
+    EXPECT_TRUE(fs::exists(out)) << args;
+    fs::remove(out);
   }
 }
 
