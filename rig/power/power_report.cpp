@@ -12,12 +12,26 @@ nlohmann::json optional_number(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
-std::string with_unit(const std::optional<double>& v, const std::string& unit) {
-  if (!v) return "-";
-  return unit.empty() ? fmt::format("{:.6g}", *v) : fmt::format("{:.6g} {}", *v, unit);
+// v in 6 significant digits, or as many more (up to 17) as tell it from `beside` when the two
+// differ: a measured 21000.001 us against a limit of 21000 us must not read "21000 us" beside
+// "21000 us" (a board at its limit passes; the reader would see one that failed there).
+std::string number_text(double v, const std::optional<double>& beside) {
+  int digits = 6;
+  if (beside && *beside != v)
+    while (digits < 17 && fmt::format("{:.{}g}", v, digits) == fmt::format("{:.{}g}", *beside, digits))
+      ++digits;
+  return fmt::format("{:.{}g}", v, digits);
 }
 
-std::string percent(const std::optional<double>& pct) { return pct ? fmt::format("{:.4f} %", *pct) : "-"; }
+std::string with_unit(const std::optional<double>& v, const std::string& unit,
+                      const std::optional<double>& beside = std::nullopt) {
+  if (!v) return "-";
+  const std::string number = number_text(*v, beside);
+  return unit.empty() ? number : fmt::format("{} {}", number, unit);
+}
+
+// 4 significant digits: a margin of 4.8e-06 % is beyond the limit, never "0.0000 %".
+std::string percent(const std::optional<double>& pct) { return pct ? fmt::format("{:.4g} %", *pct) : "-"; }
 
 std::string margin_text(const PowerRow& r) { return percent(r.margin_pct); }
 
@@ -84,9 +98,9 @@ std::string to_power_text(const PowerResult& result) {
     if (r.threshold) {
       out += fmt::format("{:<20} {:<17} {:<15} {:>12} {:>14} {:>14} {:>12} {:>10} {:>14} {:>10}\n",
                          check_text(r), r.kind, r.knob, with_unit(r.nominal, r.knob_unit),
-                         with_unit(r.threshold, r.knob_unit), with_unit(r.measured, r.unit),
-                         with_unit(r.limit, r.unit), margin_text(r), with_unit(r.board_worst, r.unit),
-                         percent(r.board_margin_pct));
+                         with_unit(r.threshold, r.knob_unit, r.last_pass),
+                         with_unit(r.measured, r.unit, r.limit), with_unit(r.limit, r.unit), margin_text(r),
+                         with_unit(r.board_worst, r.unit, r.limit), percent(r.board_margin_pct));
       if (!r.margin_pct)
         out += fmt::format("{:<20} fails without a value beyond a limit: {}\n", "", r.detail);
       if (!r.phase_coverage.empty() && !r.phase_coverage_complete)
@@ -118,10 +132,10 @@ std::string to_power_html(const PowerResult& result) {
         "<td>{}</td><td>{}</td><td>{}</td></tr>\n",
         rig::xml_escape(check_text(r)), rig::xml_escape(r.kind), rig::xml_escape(r.knob),
         rig::xml_escape(with_unit(r.nominal, r.knob_unit)),
-        rig::xml_escape(with_unit(r.threshold, r.knob_unit)), rig::xml_escape(with_unit(r.measured, r.unit)),
-        rig::xml_escape(with_unit(r.limit, r.unit)), rig::xml_escape(margin_text(r)),
-        rig::xml_escape(with_unit(r.board_worst, r.unit)), rig::xml_escape(percent(r.board_margin_pct)),
-        rig::xml_escape(reason_text(r)));
+        rig::xml_escape(with_unit(r.threshold, r.knob_unit, r.last_pass)),
+        rig::xml_escape(with_unit(r.measured, r.unit, r.limit)), rig::xml_escape(with_unit(r.limit, r.unit)),
+        rig::xml_escape(margin_text(r)), rig::xml_escape(with_unit(r.board_worst, r.unit, r.limit)),
+        rig::xml_escape(percent(r.board_margin_pct)), rig::xml_escape(reason_text(r)));
   out += "</table>\n</body></html>\n";
   return out;
 }
