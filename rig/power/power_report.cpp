@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "rig/results/number_format.hpp"
 #include "rig/results/xml_escape.hpp"
 
 namespace hilrig::power {
@@ -12,21 +13,11 @@ nlohmann::json optional_number(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
-// v in 6 significant digits, or as many more (up to 17) as tell it from `beside` when the two
-// differ: a measured 21000.001 us against a limit of 21000 us must not read "21000 us" beside
-// "21000 us" (a board at its limit passes; the reader would see one that failed there).
-std::string number_text(double v, const std::optional<double>& beside) {
-  int digits = 6;
-  if (beside && *beside != v)
-    while (digits < 17 && fmt::format("{:.{}g}", v, digits) == fmt::format("{:.{}g}", *beside, digits))
-      ++digits;
-  return fmt::format("{:.{}g}", v, digits);
-}
-
+// `beside`: the number it must not be confused with (its limit, the last passing knob value).
 std::string with_unit(const std::optional<double>& v, const std::string& unit,
                       const std::optional<double>& beside = std::nullopt) {
   if (!v) return "-";
-  const std::string number = number_text(*v, beside);
+  const std::string number = rig::format_number_apart(*v, beside);
   return unit.empty() ? number : fmt::format("{} {}", number, unit);
 }
 

@@ -7,6 +7,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "rig/results/number_format.hpp"
+
 namespace hilrig::rig {
 namespace {
 
@@ -129,6 +131,8 @@ Comparison compare_results(const CampaignResult& base, const CampaignResult& now
       it->second.matched = true;
       const Measurement& nm = *it->second.m;
       row.now = nm.value;
+      row.lower = nm.lower;
+      row.upper = nm.upper;
       row.now_outcome = nm.outcome;
       if (bm.outcome == Outcome::Pass && nm.outcome != Outcome::Pass) {
         row.drift = Drift::NewlyFails;
@@ -148,6 +152,8 @@ Comparison compare_results(const CampaignResult& base, const CampaignResult& now
     row.measurement = k.second;
     row.unit = e.m->unit;
     row.now = e.m->value;
+    row.lower = e.m->lower;
+    row.upper = e.m->upper;
     row.now_outcome = e.m->outcome;
     row.drift = Drift::Added;
     c.rows.push_back(std::move(row));
@@ -155,9 +161,29 @@ Comparison compare_results(const CampaignResult& base, const CampaignResult& now
   return c;
 }
 
+namespace {
+
+// The limit a value broke, if it broke one: the number it must be told apart from.
+std::optional<double> broken_limit(const DriftRow& r) {
+  if (!r.now) return std::nullopt;
+  if (r.upper && *r.now > *r.upper) return r.upper;
+  if (r.lower && *r.now < *r.lower) return r.lower;
+  return std::nullopt;
+}
+
+// A failing value's limits, as junit.xml writes them: "[- .. 21000]".
+std::string limits_text(const DriftRow& r) {
+  const auto end = [](const std::optional<double>& v) {
+    return v ? format_number_apart(*v, std::nullopt) : "-";
+  };
+  return fmt::format("[{} .. {}]", end(r.lower), end(r.upper));
+}
+
+} // namespace
+
 std::string format_comparison(const Comparison& c, bool all) {
-  const auto num = [](const std::optional<double>& v) {
-    return v ? fmt::format("{:.6g}", *v) : std::string("-");
+  const auto num = [](const std::optional<double>& v, const std::optional<double>& beside = std::nullopt) {
+    return v ? format_number_apart(*v, beside) : std::string("-");
   };
   std::string out = fmt::format("{:<40} {:<32} {:>12} {:>12} {:>12} {:>10}  {}\n", "run", "measurement",
                                 "base", "new", "delta", "threshold", "status");
@@ -169,9 +195,12 @@ std::string format_comparison(const Comparison& c, bool all) {
     const std::string thr = r.drift == Drift::Added ? std::string("-")
                             : r.threshold.relative  ? fmt::format("{:g}%", r.threshold.value * 100.0)
                                                     : fmt::format("{:g}", r.threshold.value);
+    const std::optional<double> broken = broken_limit(r);
+    std::string note = r.unit;
+    if (broken) note += (note.empty() ? "" : "; ") + std::string("limits ") + limits_text(r);
     out += fmt::format("{:<40} {:<32} {:>12} {:>12} {:>12} {:>10}  {}{}\n", r.run, r.measurement, num(r.base),
-                       num(r.now), delta, thr, to_string(r.drift),
-                       r.unit.empty() ? std::string() : fmt::format(" ({})", r.unit));
+                       num(r.now, broken), delta, thr, to_string(r.drift),
+                       note.empty() ? std::string() : fmt::format(" ({})", note));
   }
   if (shown == 0) out += "(no measurement drifted)\n";
   out += fmt::format("{} measurements compared, {} regressions; verdict {} -> {}{}\n", c.rows.size(),

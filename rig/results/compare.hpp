@@ -36,6 +36,7 @@ struct DriftRow {
   std::string unit;
   std::optional<double> base;
   std::optional<double> now;
+  std::optional<double> lower, upper; // the new result's limits (a newly failing value is read against them)
   Outcome base_outcome = Outcome::Error;
   Outcome now_outcome = Outcome::Error;
   Threshold threshold; // the one applied (name empty: the default)

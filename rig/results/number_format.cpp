@@ -25,4 +25,11 @@ std::string format_value(double v, const std::string& unit) {
   return format_number(v) + " " + (unit == "us" ? std::string("µs") : unit);
 }
 
+std::string format_number_apart(double v, const std::optional<double>& beside, int digits) {
+  if (beside && *beside != v)
+    while (digits < 17 && fmt::format("{:.{}g}", v, digits) == fmt::format("{:.{}g}", *beside, digits))
+      ++digits;
+  return fmt::format("{:.{}g}", v, digits);
+}
+
 } // namespace hilrig::rig

@@ -2,6 +2,7 @@
 // Numbers as a person reads them in report.html: no float noise (800.0000000000018 reads
 // 800), times in the unit that fits (ns, µs, ms, s) instead of raw nanoseconds.
 
+#include <optional>
 #include <string>
 
 #include "core/time.hpp"
@@ -15,6 +16,10 @@ namespace hilrig::rig {
 // integer part), e.g. "1.5 ms", "750 µs".
 [[nodiscard]] std::string format_ns(double ns);
 [[nodiscard]] inline std::string format_time(Nanos t) { return format_ns(static_cast<double>(t.count())); }
+// v in `digits` significant digits, or as many more (up to 17) as tell it from `beside` when
+// the two differ: a value 1 ns beyond its limit (21000.001 us against 21000 us) must not read
+// as the limit itself, a board failed at its limit to whoever reads it.
+[[nodiscard]] std::string format_number_apart(double v, const std::optional<double>& beside, int digits = 6);
 // A value with its unit ("" for a count of things); "us" reads µs.
 [[nodiscard]] std::string format_value(double v, const std::string& unit);
 

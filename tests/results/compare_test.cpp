@@ -74,6 +74,22 @@ TEST(Compare, NewlyFailingAndDisappearedMeasurementsAreRegressions) {
   EXPECT_NE(table.find("verdict pass -> fail (worse)"), std::string::npos);
 }
 
+// A value 1 ns beyond its limit (20 us) reads beyond it, with the limits it broke: "20 NEWLY
+// FAILS" beside a 20 us limit would read as a board failed at its limit. At the limit itself the
+// value passes and is no regression (the one inclusive rule).
+TEST(Compare, ANewlyFailingValueReadsApartFromTheLimitItBroke) {
+  CompareOptions loose;
+  loose.default_rel = 10.0;
+  const std::string table = format_comparison(compare_results(one_run(19.0), one_run(20.001), loose));
+  EXPECT_NE(table.find(" 20.001 "), std::string::npos) << table;
+  EXPECT_NE(table.find("NEWLY FAILS (us; limits [- .. 20])"), std::string::npos) << table;
+  const std::string nano = format_comparison(compare_results(one_run(19.0), one_run(20.000001), loose));
+  EXPECT_NE(nano.find(" 20.000001 "), std::string::npos) << nano;
+  const Comparison at = compare_results(one_run(19.0), one_run(20.0), loose);
+  EXPECT_EQ(row(at, "ls1-throughput.max").drift, Drift::Within);
+  EXPECT_EQ(format_comparison(at).find("limits"), std::string::npos);
+}
+
 TEST(Compare, RepeatedRunNamesAreComparedOccurrenceByOccurrence) {
   // Two runs both named "ls1/run0" (a repeated point); only the second drifts (10 -> 12 us).
   const auto two = [](double second_max) {
