@@ -165,10 +165,7 @@ namespace {
 
 // The limit a value broke, if it broke one: the number it must be told apart from.
 std::optional<double> broken_limit(const DriftRow& r) {
-  if (!r.now) return std::nullopt;
-  if (r.upper && *r.now > *r.upper) return r.upper;
-  if (r.lower && *r.now < *r.lower) return r.lower;
-  return std::nullopt;
+  return r.now ? limit_beyond(*r.now, r.lower, r.upper) : std::nullopt;
 }
 
 // A failing value's limits, as junit.xml writes them: "[- .. 21000]".

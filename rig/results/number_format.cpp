@@ -20,12 +20,21 @@ std::string format_ns(double ns) {
   return format_number(ns) + " ns";
 }
 
-std::string format_value(double v, const std::string& unit) {
-  if (unit.empty()) return format_number(v);
-  return format_number(v) + " " + (unit == "us" ? std::string("µs") : unit);
+std::string format_value(double v, const std::string& unit, const std::optional<double>& beside) {
+  const std::string number = beside ? format_number_apart(v, beside, 9) : format_number(v);
+  if (unit.empty()) return number;
+  return number + " " + (unit == "us" ? std::string("µs") : unit);
+}
+
+std::optional<double> limit_beyond(double v, const std::optional<double>& lower,
+                                   const std::optional<double>& upper) {
+  if (upper && v > *upper) return upper;
+  if (lower && v < *lower) return lower;
+  return std::nullopt;
 }
 
 std::string format_number_apart(double v, const std::optional<double>& beside, int digits) {
+  if (!std::isfinite(v)) return format_number(v);
   if (beside && *beside != v)
     while (digits < 17 && fmt::format("{:.{}g}", v, digits) == fmt::format("{:.{}g}", *beside, digits))
       ++digits;

@@ -20,7 +20,12 @@ namespace hilrig::rig {
 // the two differ: a value 1 ns beyond its limit (21000.001 us against 21000 us) must not read
 // as the limit itself, a board failed at its limit to whoever reads it.
 [[nodiscard]] std::string format_number_apart(double v, const std::optional<double>& beside, int digits = 6);
-// A value with its unit ("" for a count of things); "us" reads µs.
-[[nodiscard]] std::string format_value(double v, const std::string& unit);
+// The limit v lies beyond (upper first), if any: the number a failing value is told apart from.
+[[nodiscard]] std::optional<double> limit_beyond(double v, const std::optional<double>& lower,
+                                                 const std::optional<double>& upper);
+// A value with its unit ("" for a count of things); "us" reads µs. With `beside` (the limit it
+// broke) its number is told apart from it (format_number_apart).
+[[nodiscard]] std::string format_value(double v, const std::string& unit,
+                                       const std::optional<double>& beside = std::nullopt);
 
 } // namespace hilrig::rig

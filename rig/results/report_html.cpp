@@ -172,7 +172,8 @@ std::string check_section(const RunResult& run, const CheckResult& c, std::size_
             : "&#8212;";
     s += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
                      "<td class=\"num\">{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
-                     xml_escape(m.name), xml_escape(format_value(m.value, m.unit)),
+                     xml_escape(m.name),
+                     xml_escape(format_value(m.value, m.unit, limit_beyond(m.value, m.lower, m.upper))),
                      limit_cell(m.lower, m.unit), limit_cell(m.upper, m.unit), badge(shown(c, m)), window,
                      xml_escape(m.detail));
   }

@@ -137,6 +137,25 @@ TEST(Report, EachRunLinksItsTraceFile) {
   EXPECT_EQ(campaign_from_json(to_json(c)).runs[0].trace, "trace.vcd");
 }
 
+// A value 1 ns beyond its limit reads beyond it in the measurement table: a stop time of
+// 1000.000001 ms against a 1000 ms limit is 10 significant digits, which the table's 9 would
+// print as "1000 ms" beside "1000 ms", a board failed at its limit to the reader. Far from a
+// limit the 9 digits stay (no float noise).
+TEST(Report, AValueJustBeyondItsLimitReadsBeyondIt) {
+  CampaignResult c = test::sample_campaign(1);
+  Measurement late = measured("brake.stop_time", 1000.000001, std::nullopt, 1000.0, Outcome::Fail);
+  late.unit = "ms";
+  Measurement short_of = measured("brake.shortest", 99.9999999999, 100.0, std::nullopt, Outcome::Fail);
+  short_of.unit = "ms";
+  Measurement noisy = measured("brake.count", 800.0000000000018, std::nullopt, 1000.0, Outcome::Pass);
+  c.runs[0].checks[0].measurements = {late, short_of, noisy};
+  finalize(c);
+  const std::string html = to_report_html(c);
+  EXPECT_NE(html.find("<td class=\"num\">1000.000001 ms</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"num\">99.9999999999 ms</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"num\">800 counts</td>"), std::string::npos);
+}
+
 TEST(Report, CheckThatMeasuredNothingStillHasAFigureSayingSo) {
   CampaignResult c = test::sample_campaign(1);
   CheckResult empty;
