@@ -186,8 +186,11 @@ json timing_figure(const Measurement& m, Judgement shown, const WindowTrace* tra
   }
   if (from_start) vlines.push_back(vline(0.0, kGrey, "start " + format_time(origin), "start", false));
   if (m.at)
-    vlines.push_back(vline(rel(*m.at, origin), edge_colour,
-                           fmt::format("edge: {} {}", m.name, format_value(m.value, m.unit)), "edge", false));
+    vlines.push_back(
+        vline(rel(*m.at, origin), edge_colour,
+              fmt::format("edge: {} {}", m.name,
+                          format_value(m.value, m.unit, limit_beyond(m.value, m.lower, m.upper))),
+              "edge", false));
   json charts = json::array();
   std::string notes;
   for (const auto& lane : lanes) {
@@ -253,7 +256,11 @@ json limits_figure(std::span<const ShownMeasurement> rows) {
     charts.push_back(
         {{"measurement", m->name},
          {"height", 70},
-         {"x", {{"label", m->name + ": " + format_value(m->value, m->unit)}, {"min", x0}, {"max", x1}}},
+         {"x",
+          {{"label",
+            m->name + ": " + format_value(m->value, m->unit, limit_beyond(m->value, m->lower, m->upper))},
+           {"min", x0},
+           {"max", x1}}},
          {"y", {{"label", ""}, {"min", 0}, {"max", 2}, {"hidden", true}}},
          {"data", {{v}, {point.is_null() ? json(nullptr) : json(1)}}},
          {"series", {{{"label", m->name}, {"colour", outcome_colour(shown)}, {"draw", "points"}}}},
