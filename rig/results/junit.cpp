@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <optional>
 
+#include "rig/results/number_format.hpp"
 #include "rig/results/xml_escape.hpp"
 
 namespace hilrig::rig {
@@ -28,9 +30,15 @@ std::string measurements_text(const CheckResult& c) {
   return out;
 }
 
+// The first measurement that did not pass, as the one line a CI server shows for the testcase
+// (Jenkins' "Error Message", GitLab's summary): what was measured against which limits, then why.
 std::string first_bad(const CheckResult& c) {
+  const auto limit = [](const std::optional<double>& v) { return v ? format_number(*v) : std::string("-"); };
   for (const auto& m : c.measurements) {
-    if (m.outcome != Outcome::Pass) return fmt::format("{}: {}", m.name, m.detail);
+    if (m.outcome == Outcome::Pass) continue;
+    const std::string unit = m.unit.empty() ? "" : " " + m.unit;
+    return fmt::format("{} = {}{}, limits [{} .. {}]{}, measured {}: {}", m.name, format_number(m.value),
+                       unit, limit(m.lower), limit(m.upper), unit, to_string(m.outcome), m.detail);
   }
   return {};
 }
@@ -201,6 +209,26 @@ Counts counts_of(const RunSource& runs, const JunitClock& clock) {
   return all;
 }
 
+// A campaign that did not run to its end (killed and folded from its run log, or stopped by a
+// signal) has runs with no result. Its runs alone could all pass, so the missing ones are one
+// <error> testcase: a CI server reading only junit.xml must not show the campaign green.
+Counts missing_runs_counts(const CampaignResult& r) {
+  Counts c;
+  if (!r.complete) c.tests = c.errored = 1;
+  return c;
+}
+
+std::string missing_runs_testcase(const CampaignResult& r) {
+  if (r.complete) return {};
+  const std::size_t missing = r.planned_runs > r.totals.runs ? r.planned_runs - r.totals.runs : 0;
+  const std::string message = fmt::format(
+      "incomplete: {} of {} planned runs have no result, the campaign did not run to its end{}", missing,
+      r.planned_runs, r.interrupted ? fmt::format(" (stopped by {})", *r.interrupted) : "");
+  return fmt::format("    <testcase name=\"complete\" classname=\"{}.campaign\" time=\"0.000\">\n"
+                     "      <error message=\"{}\" type=\"error\">{}</error>\n    </testcase>\n",
+                     xml_escape(dotless(r.campaign)), xml_escape(message), xml_escape(message));
+}
+
 RunSource source_of(const JunitCampaign& c) { return c.runs ? c.runs : runs_of(*c.result); }
 
 } // namespace
@@ -215,13 +243,17 @@ JunitSuiteBody junit_suite_body(const CampaignResult& header, const RunSource& r
     Counts counts;
     text += testcases_xml(header, run, clock, counts);
   });
+  all.add(missing_runs_counts(header));
+  text += missing_runs_testcase(header);
   return JunitSuiteBody{all, std::move(text)};
 }
 
 void write_junit_xml(const CampaignResult& r, const RunSource& runs, const JunitClock& clock,
                      const TextSink& out) {
   // Two passes over the runs: the totals the root element opens with, then the text.
-  out(testsuites_open(r.campaign, counts_of(runs, clock)));
+  Counts all = counts_of(runs, clock);
+  all.add(missing_runs_counts(r));
+  out(testsuites_open(r.campaign, all));
   runs([&](const RunResult& run) {
     Counts counts;
     const std::string body = testcases_xml(r, run, clock, counts);
@@ -238,6 +270,11 @@ void write_junit_xml(const CampaignResult& r, const RunSource& runs, const Junit
     suite += "    <system-out/>\n    <system-err/>\n  </testsuite>\n";
     out(suite);
   });
+  if (!r.complete) {
+    out(testsuite_open(dotless(r.campaign) + ".campaign", missing_runs_counts(r), clock, "campaign",
+                       dotless(r.campaign)) +
+        missing_runs_testcase(r) + "    <system-out/>\n    <system-err/>\n  </testsuite>\n");
+  }
   out("</testsuites>\n");
 }
 
@@ -250,7 +287,10 @@ std::string to_junit_xml(const CampaignResult& r, const JunitClock& clock) {
 void write_junit_suite_xml(const std::string& name, const std::vector<JunitCampaign>& campaigns,
                            const TextSink& out) {
   const auto counts_of_campaign = [](const JunitCampaign& c) {
-    return c.body ? c.body->counts : counts_of(source_of(c), c.clock);
+    if (c.body) return c.body->counts;
+    Counts counts = counts_of(source_of(c), c.clock);
+    counts.add(missing_runs_counts(*c.result));
+    return counts;
   };
   Counts all;
   for (const auto& c : campaigns) all.add(counts_of_campaign(c));
@@ -273,6 +313,7 @@ void write_junit_suite_xml(const std::string& name, const std::vector<JunitCampa
         Counts counts;
         out(testcases_xml(r, run, campaigns[i].clock, counts));
       });
+      out(missing_runs_testcase(r));
     }
     out("    <system-out/>\n    <system-err/>\n  </testsuite>\n");
   }

@@ -28,6 +28,50 @@ TEST(Junit, OneTestcasePerCheckPerRunWithCountsThatAddUp) {
   EXPECT_NE(x.find("fault &#39;slow&#39; not caught"), std::string::npos);
 }
 
+TEST(Junit, AFailureMessageNamesTheValueMeasuredAndItsLimits) {
+  // Jenkins shows a testcase's failure `message` as its "Error Message" (the body is the
+  // stack trace, folded away): it must say what was measured against which limit, not only
+  // where. A run at 21.000000000000004 us against the 20 us limit fails, without float noise.
+  CampaignResult c;
+  c.campaign = "x";
+  c.planned_runs = 1;
+  c.runs = {test::nominal_run(0, 21.000000000000004)};
+  finalize(c);
+  const std::string x = to_junit_xml(c);
+  EXPECT_NE(x.find("<failure message=\"ls1-throughput.max = 21 us, limits [- .. 20] us, measured fail: "
+                   "hand-made\""),
+            std::string::npos)
+      << x;
+}
+
+TEST(Junit, AnIncompleteCampaignIsAnErrorThoughEveryRunItHasPassed) {
+  // A run killed after 1 of 3 runs, folded from its run log (docs/campaigns.md, "Run count
+  // scaling"): results.json says complete false, verdict error. junit.xml must not read green
+  // to a CI server that reads only it: the missing runs are one error, in the suite's too.
+  CampaignResult c;
+  c.campaign = "x";
+  c.planned_runs = 3;
+  c.runs = {test::nominal_run(0, 10.0)};
+  finalize(c);
+  ASSERT_FALSE(c.complete);
+  ASSERT_EQ(c.verdict, Outcome::Error);
+  const std::string x = to_junit_xml(c);
+  EXPECT_NE(x.find("<testsuites name=\"x\" tests=\"3\" failures=\"0\" errors=\"1\""), std::string::npos) << x;
+  EXPECT_NE(x.find("<error message=\"incomplete: 2 of 3 planned runs have no result"), std::string::npos)
+      << x;
+  const std::vector<JunitCampaign> suite = {{&c, "x.toml", {}, runs_of(c), nullptr}};
+  const std::string s = to_junit_suite_xml("nightly", suite);
+  EXPECT_NE(s.find("<testsuites name=\"nightly\" tests=\"3\" failures=\"0\" errors=\"1\""), std::string::npos)
+      << s;
+  const JunitSuiteBody body = junit_suite_body(c, runs_of(c), {});
+  EXPECT_EQ(body.counts.errored, 1U);
+  EXPECT_EQ(hilrig::test::count_of(body.testcases, "<error "), 1U);
+
+  c.planned_runs = 1; // the same run, complete: clean
+  finalize(c);
+  EXPECT_EQ(hilrig::test::count_of(to_junit_xml(c), "<error "), 0U);
+}
+
 TEST(Junit, AFaultCaughtByOneOfItsCheckersHasNoFailure) {
   // Caught by ls1-throughput (it failed); ls1-advance, also a must_catch check, passed: the
   // run passes, so junit.xml must be clean (it agrees with the exit status, 0).
