@@ -74,7 +74,8 @@ Threshold parse_threshold(std::string_view text) {
   }
   double value = 0.0;
   const auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), value);
-  if (ec != std::errc{} || p != v.data() + v.size() || value < 0.0) {
+  // from_chars reads "nan" and "inf": a NaN threshold would make every drift pass unnoticed.
+  if (ec != std::errc{} || p != v.data() + v.size() || !std::isfinite(value) || value < 0.0) {
     throw std::invalid_argument(fmt::format("threshold '{}': '{}' is not a non-negative number", text, v));
   }
   t.value = t.relative ? value / 100.0 : value;

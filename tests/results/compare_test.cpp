@@ -114,6 +114,11 @@ TEST(Compare, MalformedThresholdsAreRejected) {
   EXPECT_THROW((void)parse_threshold("=3"), std::invalid_argument);
   EXPECT_THROW((void)parse_threshold("max=abc"), std::invalid_argument);
   EXPECT_THROW((void)parse_threshold("max=-1"), std::invalid_argument);
+  // Not a number or not finite: a NaN threshold judged every drift within it (exit 0), though
+  // --default-rel refuses nan and inf.
+  EXPECT_THROW((void)parse_threshold("max=nan"), std::invalid_argument);
+  EXPECT_THROW((void)parse_threshold("max=inf%"), std::invalid_argument);
+  EXPECT_THROW((void)parse_threshold("max=-nan"), std::invalid_argument);
   const Threshold t = parse_threshold("p99=2.5%");
   EXPECT_EQ(t.name, "p99");
   EXPECT_TRUE(t.relative);
