@@ -37,8 +37,9 @@ std::string first_bad(const CheckResult& c) {
   for (const auto& m : c.measurements) {
     if (m.outcome == Outcome::Pass) continue;
     const std::string unit = m.unit.empty() ? "" : " " + m.unit;
-    return fmt::format("{} = {}{}, limits [{} .. {}]{}, measured {}: {}", m.name, format_number(m.value),
-                       unit, limit(m.lower), limit(m.upper), unit, to_string(m.outcome), m.detail);
+    return fmt::format("{} = {}{}, limits [{} .. {}]{}, measured {}: {}", m.name,
+                       format_number_apart(m.value, limit_beyond(m.value, m.lower, m.upper), 9), unit,
+                       limit(m.lower), limit(m.upper), unit, to_string(m.outcome), m.detail);
   }
   return {};
 }

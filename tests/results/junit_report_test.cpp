@@ -44,6 +44,26 @@ TEST(Junit, AFailureMessageNamesTheValueMeasuredAndItsLimits) {
       << x;
 }
 
+// A value whose excess needs more than 9 significant digits still reads beyond its limit: a
+// stop time of 1000.000001 ms (1 ns over) is not "1000 ms" beside a limit of 1000 ms.
+TEST(Junit, AValueJustBeyondItsLimitReadsBeyondItInTheMessage) {
+  CampaignResult c;
+  c.campaign = "x";
+  c.planned_runs = 1;
+  c.runs = {test::nominal_run(0, 10.0)};
+  Measurement& stop = c.runs[0].checks[0].measurements.back();
+  stop.name = "ls1-throughput.stop";
+  stop.unit = "ms";
+  stop.value = 1000.000001;
+  stop.upper = 1000.0;
+  stop.outcome = Outcome::Fail;
+  finalize(c);
+  const std::string x = to_junit_xml(c);
+  EXPECT_NE(x.find("<failure message=\"ls1-throughput.stop = 1000.000001 ms, limits [- .. 1000] ms"),
+            std::string::npos)
+      << x;
+}
+
 TEST(Junit, AnIncompleteCampaignIsAnErrorThoughEveryRunItHasPassed) {
   // A run killed after 1 of 3 runs, folded from its run log (docs/campaigns.md, "Run count
   // scaling"): results.json says complete false, verdict error. junit.xml must not read green
