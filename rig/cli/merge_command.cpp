@@ -47,6 +47,7 @@ void relink_traces(rig::CampaignResult& shard, const fs::path& shard_file, const
 }
 
 int run_merge(const MergeArgs& a) {
+  int status = kPassed;
   try {
     std::vector<rig::CampaignResult> shards;
     for (const auto& path : a.shards) {
@@ -74,11 +75,14 @@ int run_merge(const MergeArgs& a) {
                            report.string())
                    .c_str(),
                stdout);
+    // The merged verdict is the CI job's, as `hilrig run`'s exit status is the unsharded run's:
+    // a merge step judges the campaign with no glue.
+    if (merged.verdict != rig::Outcome::Pass) status = kCheckFailed;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hilrig merge: %s\n", e.what());
     return kBadInput;
   }
-  return kPassed;
+  return status;
 }
 
 } // namespace
@@ -86,7 +90,9 @@ int run_merge(const MergeArgs& a) {
 void add_merge_command(CLI::App& app) {
   auto args = std::make_shared<MergeArgs>();
   auto* cmd = app.add_subcommand(
-      "merge", "merge the results.json of every shard into one, with its junit.xml and report.html");
+      "merge",
+      "merge the results.json of every shard into one, with its junit.xml and report.html; exit 0 when the "
+      "merged verdict is pass, 1 when not, 2 on bad input");
   cmd->add_option("out", args->out,
                   "the merged results.json to write; junit.xml and report.html go beside it (NAME.json: "
                   "NAME.junit.xml, NAME.report.html)")

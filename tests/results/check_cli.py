@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """`hilrig compare` and `hilrig merge` exit codes on the sample results (written by
-write_sample_results): merge of the one shard equals the input, compare against itself
+write_sample_results): merge of the one shard equals the input and exits by its verdict, compare against itself
 passes (0), a drift beyond 5 % is a regression (1), unreadable input and a baseline of another
 campaign or device are bad input (2)."""
 import json
@@ -26,7 +26,11 @@ def expect(code, *args):
     return r
 
 
-expect(0, "merge", merged, base)
+# The sample's verdict is error (a check errs in it): merge writes the merge and judges it as
+# `hilrig run` would, exit 1 (tests/tools/ci_recipes_test.sh merges a passing campaign: exit 0).
+r = expect(1, "merge", merged, base)
+if "verdict error" not in r.stdout:
+    problems.append(f"merge did not say its verdict: {r.stdout}")
 with open(base) as f:
     doc = json.load(f)
 with open(merged) as f:
