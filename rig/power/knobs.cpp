@@ -23,7 +23,9 @@ constexpr std::array kKnobs{
     Row{"ans1", "throughput", "output_delay", KnobDirection::Up, WorstCase::KnobPlusParam, "scan"},
     Row{"ans1", "edge_at_position", "output_delay", KnobDirection::Up},
     Row{"ans1", "advance_counts", "output_delay", KnobDirection::Up},
-    Row{"ans1", "debounce", "brake_sample_start", KnobDirection::Up},
+    // Both: a debounce's limit is two-sided (filter +- tolerance, docs/campaigns.md "debounce"):
+    // a filter that qualifies too early is as far out of spec as one too late.
+    Row{"ans1", "debounce", "brake_sample_start", KnobDirection::Both},
     Row{"pls2700", "throughput", "output_delay", KnobDirection::Up},
     Row{"pls2700", "advance_counts", "output_delay", KnobDirection::Up},
     // models/amci4501/README.md: every response exactly one throughput after its input edge.

@@ -104,18 +104,31 @@ TEST(PowerAns1, DebounceFailsOnePercentBeyondTheLimitEitherWay) {
     for (const std::int64_t ns : {16'280'000, 16'500'000, 17'000'000, 15'720'000, 15'000'000})
       EXPECT_EQ(probe_param(c, "brake_filter", "brake_sample_start", Nanos{ns}, seed), Probe::Fail) << ns;
   }
+  // The limit is two-sided, so power bisects each way: a row up (against 28 ms) and a row down
+  // (against 27 ms), each within 1 % of its limit.
   const PowerResult r = measure_power(c, PowerOptions{});
-  ASSERT_EQ(r.rows.size(), 1u);
-  const PowerRow& row = r.rows[0];
-  EXPECT_EQ(row.knob, "brake_sample_start");
-  ASSERT_TRUE(row.nominal && row.threshold && row.measured && row.limit && row.margin_pct) << row.reason;
-  EXPECT_EQ(*row.nominal, 16'000.0); // us
-  EXPECT_GT(*row.threshold, 16'000.0);
-  EXPECT_LE(*row.threshold, 16'280.0);
-  EXPECT_DOUBLE_EQ(*row.limit, 28'000.0);
-  EXPECT_GT(*row.measured, 28'000.0);
-  EXPECT_LE(*row.margin_pct, 1.0);
-  EXPECT_TRUE(row.phase_coverage_complete) << row.phase_coverage;
+  ASSERT_EQ(r.rows.size(), 2u);
+  const PowerRow& up = r.rows[0];
+  EXPECT_EQ(up.knob, "brake_sample_start");
+  EXPECT_EQ(up.direction, "up");
+  EXPECT_TRUE(up.two_sided);
+  ASSERT_TRUE(up.nominal && up.threshold && up.measured && up.limit && up.margin_pct) << up.reason;
+  EXPECT_EQ(*up.nominal, 16'000.0); // us
+  EXPECT_GT(*up.threshold, 16'000.0);
+  EXPECT_LE(*up.threshold, 16'280.0);
+  EXPECT_DOUBLE_EQ(*up.limit, 28'000.0);
+  EXPECT_GT(*up.measured, 28'000.0);
+  EXPECT_LE(*up.margin_pct, 1.0);
+  EXPECT_TRUE(up.phase_coverage_complete) << up.phase_coverage;
+  const PowerRow& down = r.rows[1];
+  EXPECT_EQ(down.direction, "down");
+  EXPECT_TRUE(down.two_sided);
+  ASSERT_TRUE(down.threshold && down.measured && down.limit && down.margin_pct) << down.reason;
+  EXPECT_LT(*down.threshold, 16'000.0);
+  EXPECT_GE(*down.threshold, 15'720.0);
+  EXPECT_DOUBLE_EQ(*down.limit, 27'000.0);
+  EXPECT_LT(*down.measured, 27'000.0);
+  EXPECT_LE(*down.margin_pct, 1.0);
 }
 
 // Brake stop time: the knob is the scenario's brake (a press_stroke's decel_rpm_s), down. In
