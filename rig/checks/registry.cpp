@@ -124,6 +124,8 @@ CheckParams throughput(std::string_view name, const Table& t) {
   p.spec.expected = t.level("level", Level::High);
   p.spec.limit = t.us("limit_us");
   p.spec.p99_limit = t.opt_us("p99_limit_us");
+  p.spec.min_limit = t.opt_us("min_limit_us");
+  ordered(t, "min_limit_us", "limit_us");
   p.spec.timeout = t.us("timeout_us", Nanos::max());
   p.spec.min_count = t.count("min_count", 1);
   if (t.has("crossings_us")) {
@@ -317,6 +319,7 @@ std::vector<CheckKind> make_kinds() {
       {P("output", Str, true, "the output line"), P("level", Lvl, false, "expected edge level (high)"),
        P("limit_us", Num, true, "upper limit on the max latency (inclusive)", time),
        P("p99_limit_us", Num, false, "upper limit on p99 (default limit_us)", time),
+       P("min_limit_us", Num, false, "lower limit on the min latency (inclusive; default none)", time),
        P("timeout_us", Num, false, "longest wait for an edge, inclusive (default: until the next crossing)",
          width),
        P("min_count", Int, false, "fewest latencies (1)", counts),

@@ -54,16 +54,17 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
   if (!samples.empty()) {
     std::stable_sort(samples.begin(), samples.end(),
                      [](const Sample& a, const Sample& b) { return a.latency < b.latency; });
-    const auto stat = [&](const std::string& what, std::size_t idx, std::optional<Nanos> upper) {
+    const auto stat = [&](const std::string& what, std::size_t idx, std::optional<Nanos> upper,
+                          std::optional<Nanos> lower = std::nullopt) {
       const Sample& s = samples[idx];
       r.measurements.push_back(measure_time(
-          spec.name + "." + what, s.latency, TimeUnit::Us, std::nullopt, upper,
+          spec.name + "." + what, s.latency, TimeUnit::Us, lower, upper,
           fmt::format("{} latency: crossing at {} ns to {} edge at {} ns", what, s.crossing.count(),
                       level_name(spec.expected), (s.crossing + s.latency).count()),
           TraceWindow{s.crossing, s.crossing + s.latency}, s.crossing + s.latency));
     };
     const std::size_t n = samples.size();
-    stat("min", 0, std::nullopt);
+    stat("min", 0, std::nullopt, spec.min_limit);
     stat("median", nearest_rank_index(n, 50.0), std::nullopt);
     stat("p99", nearest_rank_index(n, 99.0),
          spec.p99_limit ? spec.p99_limit : std::optional<Nanos>{spec.limit});
