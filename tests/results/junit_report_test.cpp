@@ -28,14 +28,21 @@ TEST(Junit, OneTestcasePerCheckPerRunWithCountsThatAddUp) {
   EXPECT_NE(x.find("fault &#39;slow&#39; not caught"), std::string::npos);
 }
 
+// Campaign "x" of `planned` runs with one nominal run, throughput max `max_us` (limit 20 us);
+// not finalized, so a test can change a measurement first.
+CampaignResult junit_campaign(double max_us, std::size_t planned) {
+  CampaignResult c;
+  c.campaign = "x";
+  c.planned_runs = planned;
+  c.runs = {test::nominal_run(0, max_us)};
+  return c;
+}
+
 TEST(Junit, AFailureMessageNamesTheValueMeasuredAndItsLimits) {
   // Jenkins shows a testcase's failure `message` as its "Error Message" (the body is the
   // stack trace, folded away): it must say what was measured against which limit, not only
   // where. A run at 21.000000000000004 us against the 20 us limit fails, without float noise.
-  CampaignResult c;
-  c.campaign = "x";
-  c.planned_runs = 1;
-  c.runs = {test::nominal_run(0, 21.000000000000004)};
+  CampaignResult c = junit_campaign(21.000000000000004, 1);
   finalize(c);
   const std::string x = to_junit_xml(c);
   EXPECT_NE(x.find("<failure message=\"ls1-throughput.max = 21 us, limits [- .. 20] us, measured fail: "
@@ -47,10 +54,7 @@ TEST(Junit, AFailureMessageNamesTheValueMeasuredAndItsLimits) {
 // A value whose excess needs more than 9 significant digits still reads beyond its limit: a
 // stop time of 1000.000001 ms (1 ns over) is not "1000 ms" beside a limit of 1000 ms.
 TEST(Junit, AValueJustBeyondItsLimitReadsBeyondItInTheMessage) {
-  CampaignResult c;
-  c.campaign = "x";
-  c.planned_runs = 1;
-  c.runs = {test::nominal_run(0, 10.0)};
+  CampaignResult c = junit_campaign(10.0, 1);
   Measurement& stop = c.runs[0].checks[0].measurements.back();
   stop.name = "ls1-throughput.stop";
   stop.unit = "ms";
@@ -68,10 +72,7 @@ TEST(Junit, AnIncompleteCampaignIsAnErrorThoughEveryRunItHasPassed) {
   // A run killed after 1 of 3 runs, folded from its run log (docs/campaigns.md, "Run count
   // scaling"): results.json says complete false, verdict error. junit.xml must not read green
   // to a CI server that reads only it: the missing runs are one error, in the suite's too.
-  CampaignResult c;
-  c.campaign = "x";
-  c.planned_runs = 3;
-  c.runs = {test::nominal_run(0, 10.0)};
+  CampaignResult c = junit_campaign(10.0, 3);
   finalize(c);
   ASSERT_FALSE(c.complete);
   ASSERT_EQ(c.verdict, Outcome::Error);
