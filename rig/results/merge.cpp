@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <map>
 #include <nlohmann/json.hpp>
-#include <set>
 #include <stdexcept>
 
 #include "rig/results/results_json.hpp"
@@ -46,7 +46,7 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vecto
   const CampaignResult& first = shards.front();
   const std::string& first_name = sorted_names.front();
   const auto count = first.shard.count;
-  std::set<std::uint32_t> seen;
+  std::map<std::uint32_t, std::string> seen; // shard index -> the shard that holds it
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const CampaignResult& s = shards[i];
     const std::string& name = sorted_names[i];
@@ -80,10 +80,12 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vecto
     }
     if (s.shard.count != count) {
       throw std::invalid_argument(
-          fmt::format("merge: shard counts differ ({} and {})", s.shard.count, count));
+          fmt::format("merge: {} is one of {} shards, {} one of {}: shard counts differ", name, s.shard.count,
+                      first_name, count));
     }
-    if (!seen.insert(s.shard.index).second) {
-      throw std::invalid_argument(fmt::format("merge: shard {} given twice", s.shard.index));
+    if (const auto [at, added] = seen.emplace(s.shard.index, name); !added) {
+      throw std::invalid_argument(
+          fmt::format("merge: shard {} given twice: {} and {}", s.shard.index, at->second, name));
     }
   }
   for (std::uint32_t i = 0; i < count; ++i) {
@@ -105,13 +107,15 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vecto
   out.shard = Shard{0, 1};
   out.started_at = first.started_at;
   out.host = first.host;
-  std::set<std::uint64_t> indices;
-  for (auto& s : shards) {
+  std::map<std::uint64_t, std::string> indices; // run index -> the shard that holds it
+  for (std::size_t i = 0; i < shards.size(); ++i) {
+    CampaignResult& s = shards[i];
     out.planned_runs += s.planned_runs;
     if (s.interrupted && !out.interrupted) out.interrupted = s.interrupted; // a shard stopped early
     for (auto& run : s.runs) {
-      if (!indices.insert(run.index).second) {
-        throw std::invalid_argument(fmt::format("merge: run {} appears in two shards", run.index));
+      if (const auto [at, added] = indices.emplace(run.index, sorted_names[i]); !added) {
+        throw std::invalid_argument(fmt::format("merge: run {} appears in two shards: {} and {}", run.index,
+                                                at->second, sorted_names[i]));
       }
       out.runs.push_back(std::move(run));
     }

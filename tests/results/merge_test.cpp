@@ -143,5 +143,33 @@ TEST(TracePolicy, NamesReadBackAndAnUnknownNameIsNone) {
   EXPECT_FALSE(keeps_trace(TracePolicy::None, false, false));
 }
 
+// Every refusal names the shard files it is about, so a nightly job's log says which artifact to
+// re-fetch: the two holding one shard index, the two holding one run, the two counts that differ.
+TEST(Merge, RefusalsOfDuplicateOverlappingOrMiscountedShardsNameBothFiles) {
+  const CampaignResult whole = test::sample_campaign(9);
+  const auto shards = shard(whole, 3);
+  const std::vector<std::string> files{"a/results.json", "b/results.json", "c/results.json"};
+  EXPECT_EQ(merge_error(shards, files), "merged");
+
+  auto twice = shards;
+  twice[2] = twice[1];
+  std::string why = merge_error(twice, files);
+  for (const char* part : {"shard 1 given twice", "b/results.json", "c/results.json"})
+    EXPECT_NE(why.find(part), std::string::npos) << part << " in: " << why;
+
+  auto overlap = shards;
+  overlap[2].runs.push_back(overlap[0].runs[1]);
+  why = merge_error(overlap, files);
+  const std::string run = "run " + std::to_string(overlap[0].runs[1].index) + " appears in two shards";
+  for (const std::string& part : {run, std::string("a/results.json"), std::string("c/results.json")})
+    EXPECT_NE(why.find(part), std::string::npos) << part << " in: " << why;
+
+  auto miscounted = shards;
+  miscounted[1].shard.count = 4;
+  why = merge_error(miscounted, files);
+  for (const char* part : {"one of 4 shards", "one of 3", "a/results.json", "b/results.json"})
+    EXPECT_NE(why.find(part), std::string::npos) << part << " in: " << why;
+}
+
 } // namespace
 } // namespace hilrig::rig
