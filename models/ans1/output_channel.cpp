@@ -58,13 +58,21 @@ void OutputChannel::keep_quiet(QuietInterval& quiet, const ScanState& scan) cons
     if (!pair.used()) {
       continue;
     }
-    if (pair.stitched()) {
-      quiet.pin(scan.gmp); // [not skipped yet] the stitch pattern's edges
-      return;
-    }
     // p = GMP + LS offset, so the pair's arc of p is an arc of GMP shifted back by the offset.
-    const PairArc arc = pair_arc(pair, scan.fsc, shift, scan.late_wrap_to);
+    // A stitched pair's span is the pair unstitched (scan's inside_pair).
+    const SetpointPair span{pair.from, pair.to, 0, 0};
+    const PairArc arc = pair_arc(span, scan.fsc, shift, scan.late_wrap_to);
     quiet.keep_arc(scan.gmp, arc.start - setup_.ls_offset, arc.length, scan.fsc);
+    if (pair.stitched()) {
+      // pair_on's stitched rule: the pattern at d = p - From + lead, which a GMP step moves by
+      // one; keep the run of d around the present one.
+      const std::uint16_t p = ls_position(scan.gmp, scan.fsc);
+      const auto d =
+          static_cast<std::int32_t>(wrap(static_cast<std::int64_t>(p) - pair.from + shift.lead, scan.fsc));
+      const StitchRun run =
+          stitch_run(d, pair_length(pair, scan.fsc), pair.on_stitch, pair.off_stitch, scan.fsc);
+      quiet.keep_run(scan.gmp, d - run.first, run.last - d);
+    }
   }
   if (window_input_ >= 0) { // in_window: low..high inclusive, wrapping through 0
     quiet.keep_arc(scan.gmp, setup_.window_low,

@@ -43,6 +43,11 @@ struct QuietInterval {
       hi = std::min(hi, static_cast<std::uint16_t>(mark - 1));
     }
   }
+  // Keeps `at - down` .. `at + up`: a run of GMP values found by its distances from `at`.
+  void keep_run(std::uint16_t at, std::int64_t down, std::int64_t up) {
+    lo = static_cast<std::uint16_t>(std::max<std::int64_t>(lo, at - down));
+    hi = static_cast<std::uint16_t>(std::min<std::int64_t>(hi, at + up));
+  }
   // Any count change matters.
   void pin(std::uint16_t at) { lo = hi = at; }
 };

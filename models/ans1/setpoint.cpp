@@ -40,6 +40,23 @@ bool stitch_on(std::int32_t d, std::int32_t length, std::int32_t on, std::int32_
   return 2 * remainder >= on; // at least half an On: on to the end (L872), else off (L873)
 }
 
+StitchRun stitch_run(std::int32_t d, std::int32_t length, std::int32_t on, std::int32_t off,
+                     std::int32_t fsc) {
+  if (d >= length) {
+    return {length, fsc - 1};
+  }
+  const std::int32_t period = on + off;
+  const std::int32_t whole = (length / period) * period;
+  if (d < whole) {
+    const std::int32_t base = d - d % period;
+    return d - base < on ? StitchRun{base, base + on - 1} : StitchRun{base + on, base + period - 1};
+  }
+  if (length - whole >= on) { // stitch_on's full On, then Off to the end
+    return d - whole < on ? StitchRun{whole, whole + on - 1} : StitchRun{whole + on, length - 1};
+  }
+  return {whole, length - 1}; // one value to the end
+}
+
 PairArc pair_arc(const SetpointPair& pair, std::uint16_t fsc, EdgeShift shift, bool late_wrap_to) {
   if (!pair.used()) {
     return {};

@@ -30,6 +30,17 @@ struct EdgeShift {
 // The stitch pattern at distance d (0 <= d < length) from From (§4.5, [MODEL] for A16).
 [[nodiscard]] bool stitch_on(std::int32_t d, std::int32_t length, std::int32_t on, std::int32_t off);
 
+// The run [first, last] of distances around d (0 <= d < FSC) over which stitch_on's pattern
+// (off from length on) keeps its value at d: one On or Off of the pattern, the short remainder,
+// or the rest of the cycle. It never crosses d = 0, where the pattern starts again. Exact scan
+// skipping narrows its quiet interval to it.
+struct StitchRun {
+  std::int32_t first = 0;
+  std::int32_t last = 0;
+};
+[[nodiscard]] StitchRun stitch_run(std::int32_t d, std::int32_t length, std::int32_t on, std::int32_t off,
+                                   std::int32_t fsc);
+
 // The pair's state at p with advanced edges. A stitched pair moves as a whole by the lead
 // shift ([MODEL], A38). When the trail edge is advanced to or past the lead edge the pair is
 // off (L890); when the advanced pair covers a whole cycle it is on everywhere.

@@ -353,27 +353,34 @@ TEST(ScanSkippingMotion, SampledEncoderGivesTheOraclesEdgesAndWords) {
   }
 }
 
+// A quadrature master of 4,096 counts a turn, programmed by `program`, turned 3 turns at 1,800
+// RPM (a 1,024-line encoder: one count per 8.14 us, more than one per 10 us scan) from 1 ms on,
+// 100 ms, and run to 102 ms.
+template <class Program> void three_turns_at_1800_rpm(Bench& b, const Program& program) {
+  PositionSetup p = b.device().position_setup();
+  p.sensor = SensorType::Quadrature;
+  p.counts_per_cycle = 4096;
+  p.full_scale_count = 4096;
+  b.device().configure_position(p);
+  program(b.device());
+  b.quadrature_run(1_ms, 8'138_ns, 12'288, 1);
+  b.run_until(102_ms);
+}
+
 TEST(ScanSkippingMotion, SteadyMotionScansAtOutputChangesNotEveryPeriod) {
-  // 1,800 RPM on a 1,024-line encoder (4,096 counts/turn: one count per 8.14 us, more than
-  // one per 10 us scan), 16 outputs each on for 200 of every 4,096 counts, no advance: 32
-  // output changes per turn, 30 turns per second.
+  // 16 outputs each on for 200 of every 4,096 counts, no advance: 32 output changes per turn.
   Bench oracle(every_period());
   Bench skipping;
   for (Bench* b : {&oracle, &skipping}) {
-    PositionSetup p = b->device().position_setup();
-    p.sensor = SensorType::Quadrature;
-    p.counts_per_cycle = 4096;
-    p.full_scale_count = 4096;
-    b->device().configure_position(p);
-    for (int n = 1; n <= kOutputCount; ++n) {
-      OutputSetup o;
-      o.pairs[0] = SetpointPair{static_cast<std::uint16_t>(256 * (n - 1) + 1),
-                                static_cast<std::uint16_t>(256 * (n - 1) + 201), 0, 0};
-      o.ls_offset = n % 2 == 1 ? 4000 : 0; // odd outputs 96 counts late: LS = GMP + 4000 mod 4096
-      b->device().configure_output(n, o);
-    }
-    b->quadrature_run(1_ms, 8'138_ns, 12'288, 1); // 100 ms: 3 turns
-    b->run_until(102_ms);
+    three_turns_at_1800_rpm(*b, [](auto& device) {
+      for (int n = 1; n <= kOutputCount; ++n) {
+        OutputSetup o;
+        o.pairs[0] = SetpointPair{static_cast<std::uint16_t>(256 * (n - 1) + 1),
+                                  static_cast<std::uint16_t>(256 * (n - 1) + 201), 0, 0};
+        o.ls_offset = n % 2 == 1 ? 4000 : 0; // odd outputs 96 counts late: LS = GMP + 4000 mod 4096
+        device.configure_output(n, o);
+      }
+    });
   }
   for (int n = 1; n <= kOutputCount; ++n) {
     ASSERT_EQ(oracle.edges(n), skipping.edges(n)) << "output " << n;
@@ -384,6 +391,36 @@ TEST(ScanSkippingMotion, SteadyMotionScansAtOutputChangesNotEveryPeriod) {
   EXPECT_EQ(oracle.device().scans(), 10'201U);
   // About one scan per output change and per roll-over, not one per 10 us.
   EXPECT_LT(skipping.device().scans(), 16U * 2U * 3U + 3U + 40U);
+}
+
+// A stitched pair (L862-L873) narrows the quiet interval to the On or Off of its pattern the GMP
+// is in, not to the GMP itself: a scan per stitch edge, not per count. 1,800 RPM on a 1,024-line
+// encoder (one count per 8.14 us), output 1 stitched On 40 Off 24 over [1000, 1640): 10 Ons
+// (L866: L = 64 * 10 = 640) and 20 edges per turn, plus its span's ends; output 2 stitched with a
+// half On left over (On 40 Off 24, L 660: r = 20 >= On/2, on to the end, L872) and an LS offset.
+TEST(ScanSkippingMotion, StitchedPairsScanAtStitchEdgesNotEveryCount) {
+  Bench oracle(every_period());
+  Bench skipping;
+  for (Bench* b : {&oracle, &skipping}) {
+    three_turns_at_1800_rpm(*b, [](auto& device) {
+      OutputSetup one;
+      one.pairs[0] = SetpointPair{1000, 1640, 40, 24};
+      device.configure_output(1, one);
+      OutputSetup two;
+      two.pairs[0] = SetpointPair{3000, 3660, 40, 24};
+      two.ls_offset = 100;
+      device.configure_output(2, two);
+    });
+  }
+  for (int n = 1; n <= 2; ++n) {
+    ASSERT_EQ(oracle.edges(n), skipping.edges(n)) << "output " << n;
+  }
+  EXPECT_EQ(oracle.edges(1).size(), 3U * 20U); // 10 Ons a turn, 3 turns
+  EXPECT_EQ(oracle.edges(2).size(), 3U * 22U); // 10 full Ons and the half On on to the end
+  EXPECT_EQ(oracle.device().scans(), 10'201U);
+  // About one scan per output change and per roll-over: 126 changes, 3 roll-overs. Pinned to
+  // the GMP it scanned at every count: 12,288.
+  EXPECT_LT(skipping.device().scans(), 3U * (20U + 22U) + 3U + 60U);
 }
 
 // Stators as the rig's resolver node drives them (rig/campaign/resolver_link.hpp): each frame

@@ -173,5 +173,50 @@ TEST(Ans1Setpoint, OverlapDetection) {
   EXPECT_FALSE(pairs_overlap(Pairs{pair(350, 10), pair(10, 20), pair(20, 350)}, kFsc));
 }
 
+// Exact scan skipping keeps a stitched pair's GMP inside stitch_run (docs/virtual-time.md, part
+// 4): every distance in the run has the pattern's value at d, and the distances just outside it
+// either have the other value or lie across d = 0 or the run is the whole cycle. Every d of
+// every fitting pattern (L866-L873) up to a short cycle, and the remainder cases of
+// StitchRemainderRules.
+TEST(Ans1Setpoint, StitchRunIsTheStretchOfOneValueAroundD) {
+  const auto value = [](std::int32_t d, std::int32_t length, std::int32_t on, std::int32_t off) {
+    return d < length && stitch_on(d, length, on, off);
+  };
+  int patterns = 0;
+  for (const std::int32_t fsc : {24, 37}) {
+    for (std::int32_t on = 1; on <= 6; ++on) {
+      for (std::int32_t off = 1; off <= 6; ++off) {
+        for (std::int32_t length = 2 * on + off; length <= fsc; ++length) {
+          ++patterns;
+          for (std::int32_t d = 0; d < fsc; ++d) {
+            const StitchRun run = stitch_run(d, length, on, off, fsc);
+            ASSERT_LE(0, run.first);
+            ASSERT_LE(run.first, d);
+            ASSERT_LE(d, run.last);
+            ASSERT_LT(run.last, fsc);
+            for (std::int32_t e = run.first; e <= run.last; ++e) {
+              ASSERT_EQ(value(e, length, on, off), value(d, length, on, off))
+                  << "fsc " << fsc << " on " << on << " off " << off << " length " << length << " d " << d
+                  << " e " << e;
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(patterns, 1000);
+  // On 4 Off 2, L 17: On 12..15 then Off 16, then off to the end of the cycle.
+  EXPECT_EQ(stitch_run(13, 17, 4, 2, kFsc).first, 12);
+  EXPECT_EQ(stitch_run(13, 17, 4, 2, kFsc).last, 15);
+  EXPECT_EQ(stitch_run(16, 17, 4, 2, kFsc).last, 16);
+  EXPECT_EQ(stitch_run(200, 17, 4, 2, kFsc).first, 17);
+  EXPECT_EQ(stitch_run(200, 17, 4, 2, kFsc).last, kFsc - 1);
+  // L 14: r = 2 >= On/2, on from 12 to the end (L872); an Off of the whole part before it.
+  EXPECT_EQ(stitch_run(13, 14, 4, 2, kFsc).first, 12);
+  EXPECT_EQ(stitch_run(13, 14, 4, 2, kFsc).last, 13);
+  EXPECT_EQ(stitch_run(11, 14, 4, 2, kFsc).first, 10);
+  EXPECT_EQ(stitch_run(11, 14, 4, 2, kFsc).last, 11);
+}
+
 } // namespace
 } // namespace hilrig::models::ans1
