@@ -24,10 +24,10 @@ std::string quoted(const std::string& v) { return v.empty() ? "none" : fmt::form
 } // namespace
 
 CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vector<std::string>& files) {
-  if (shards.empty()) throw std::invalid_argument("merge: no shards given");
+  if (shards.empty()) throw std::invalid_argument("no shards given");
   if (!files.empty() && files.size() != shards.size())
     throw std::invalid_argument(
-        fmt::format("merge: {} shard files named for {} shards", files.size(), shards.size()));
+        fmt::format("{} shard files named for {} shards", files.size(), shards.size()));
   std::vector<std::string> names(shards.size());
   for (std::size_t i = 0; i < shards.size(); ++i)
     names[i] = shard_name(shards[i], files.empty() ? "" : files[i]);
@@ -46,18 +46,18 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vecto
   const CampaignResult& first = shards.front();
   const std::string& first_name = sorted_names.front();
   const auto count = first.shard.count;
-  std::map<std::uint32_t, std::string> seen; // shard index -> the shard that holds it
+  std::map<std::uint32_t, std::size_t> seen; // shard index -> the position of the shard that holds it
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const CampaignResult& s = shards[i];
     const std::string& name = sorted_names[i];
     if (s.campaign != first.campaign || s.device != first.device || s.seed != first.seed) {
       throw std::invalid_argument(
-          fmt::format("merge: {} is from campaign '{}' ({}, seed {}), not '{}' ({}, seed {})", name,
-                      s.campaign, s.device, s.seed, first.campaign, first.device, first.seed));
+          fmt::format("{} is from campaign '{}' ({}, seed {}), not '{}' ({}, seed {})", name, s.campaign,
+                      s.device, s.seed, first.campaign, first.device, first.seed));
     }
     if (s.campaign_sha256 != first.campaign_sha256 || s.tool_version != first.tool_version) {
       throw std::invalid_argument(fmt::format(
-          "merge: {} ran campaign file sha256 {} with hilrig {}, {} ran sha256 {} "
+          "{} ran campaign file sha256 {} with hilrig {}, {} ran sha256 {} "
           "with hilrig {}: "
           "shards of different campaign revisions or tool versions do not merge",
           name, s.campaign_sha256, s.tool_version, first_name, first.campaign_sha256, first.tool_version));
@@ -66,31 +66,29 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vecto
     // merged would read as one board's complete campaign.
     if (s.dut_serial != first.dut_serial || s.station != first.station) {
       throw std::invalid_argument(
-          fmt::format("merge: {} ran on DUT serial {} at station {}, {} on DUT serial {} at station {}: "
+          fmt::format("{} ran on DUT serial {} at station {}, {} on DUT serial {} at station {}: "
                       "shards of different boards ([dut] serial) or stations (--station) do not merge",
                       name, quoted(s.dut_serial), quoted(s.station), first_name, quoted(first.dut_serial),
                       quoted(first.station)));
     }
     if (s.trace_policy != first.trace_policy) {
       // The merged result says which runs kept traces: one policy for all, or it would mislead.
-      throw std::invalid_argument(fmt::format("merge: {} ran with --trace {}, {} with --trace {}: "
+      throw std::invalid_argument(fmt::format("{} ran with --trace {}, {} with --trace {}: "
                                               "shards of different trace policies do not merge",
                                               name, to_string(s.trace_policy), first_name,
                                               to_string(first.trace_policy)));
     }
     if (s.shard.count != count) {
-      throw std::invalid_argument(
-          fmt::format("merge: {} is one of {} shards, {} one of {}: shard counts differ", name, s.shard.count,
-                      first_name, count));
+      throw std::invalid_argument(fmt::format("{} is one of {} shards, {} one of {}: shard counts differ",
+                                              name, s.shard.count, first_name, count));
     }
-    if (const auto [at, added] = seen.emplace(s.shard.index, name); !added) {
+    if (const auto [at, added] = seen.emplace(s.shard.index, i); !added) {
       throw std::invalid_argument(
-          fmt::format("merge: shard {} given twice: {} and {}", s.shard.index, at->second, name));
+          fmt::format("shard {} given twice: {} and {}", s.shard.index, sorted_names[at->second], name));
     }
   }
   for (std::uint32_t i = 0; i < count; ++i) {
-    if (!seen.contains(i))
-      throw std::invalid_argument(fmt::format("merge: shard {} of {} is missing", i, count));
+    if (!seen.contains(i)) throw std::invalid_argument(fmt::format("shard {} of {} is missing", i, count));
   }
   CampaignResult out;
   out.campaign = first.campaign;
@@ -107,15 +105,15 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vecto
   out.shard = Shard{0, 1};
   out.started_at = first.started_at;
   out.host = first.host;
-  std::map<std::uint64_t, std::string> indices; // run index -> the shard that holds it
+  std::map<std::uint64_t, std::size_t> indices; // run index -> the position of the shard that holds it
   for (std::size_t i = 0; i < shards.size(); ++i) {
     CampaignResult& s = shards[i];
     out.planned_runs += s.planned_runs;
     if (s.interrupted && !out.interrupted) out.interrupted = s.interrupted; // a shard stopped early
     for (auto& run : s.runs) {
-      if (const auto [at, added] = indices.emplace(run.index, sorted_names[i]); !added) {
-        throw std::invalid_argument(fmt::format("merge: run {} appears in two shards: {} and {}", run.index,
-                                                at->second, sorted_names[i]));
+      if (const auto [at, added] = indices.emplace(run.index, i); !added) {
+        throw std::invalid_argument(fmt::format("run {} appears in two shards: {} and {}", run.index,
+                                                sorted_names[at->second], sorted_names[i]));
       }
       out.runs.push_back(std::move(run));
     }

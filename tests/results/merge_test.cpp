@@ -118,7 +118,7 @@ TEST(Merge, CarriesTheShardsTracePolicyAndRefusesShardsOfAnother) {
     (void)merge_shards(mixed);
     ADD_FAILURE() << "merged shards of different trace policies";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "merge: shard 2 ran with --trace failed, shard 0 with --trace none: shards of "
+    EXPECT_STREQ(e.what(), "shard 2 ran with --trace failed, shard 0 with --trace none: shards of "
                            "different trace policies do not merge");
   }
 }
