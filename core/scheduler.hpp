@@ -64,6 +64,14 @@ public:
   // after it. One pending event per reservation; a place already passed (t == now() and an
   // event after the place running) is a logic error and throws, as a past time does.
   [[nodiscard]] Reservation reserve() { return Reservation{next_seq_++}; }
+  // n places in a row, as n reserve() calls would take them: place k is {first.seq + k}. A
+  // train of events each scheduled by the one before takes its places up front, so one of
+  // them is pending at a time and each runs where scheduling them all at once ran it.
+  [[nodiscard]] Reservation reserve_places(std::uint64_t n) {
+    const Reservation first{next_seq_};
+    next_seq_ += n;
+    return first;
+  }
   EventId at(Nanos t, Action action, Reservation place);
 
   // The stream's next event at t: as at(t, [&] { stream.fire(); }) -- the same time and

@@ -97,6 +97,17 @@ void RigDrive::schedule_edge() {
     sched_.stream_at(*this, next_edge_->time);
 }
 
+void RigDrive::BounceTrain::schedule_next() {
+  const std::int64_t k = next;
+  sched->at(
+      at + period * k,
+      [this] {
+        line->want(next % 2 == 0 ? level : !level);
+        if (++next < edges) schedule_next();
+      },
+      Reservation{first.seq + static_cast<std::uint64_t>(k)});
+}
+
 void RigDrive::schedule(const Stimulus& st) {
   DrivenLine* d = find(st.line);
   if (d == nullptr) throw RigFault("stimulus on a line the rig does not drive: " + st.line);
@@ -109,14 +120,14 @@ void RigDrive::schedule(const Stimulus& st) {
     sched_.at(st.at, [d, l] { d->want(l); });
     sched_.at(st.at + st.width, [d, l] { d->want(!l); });
     break;
-  case StimulusKind::Bounce:
+  case StimulusKind::Bounce: {
     // First contact at `at`; bounce k opens at at + (2k-1)*period and closes at at + 2k*period.
-    sched_.at(st.at, [d, l] { d->want(l); });
-    for (std::int64_t k = 1; k <= st.edges; ++k) {
-      sched_.at(st.at + st.period * (2 * k - 1), [d, l] { d->want(!l); });
-      sched_.at(st.at + st.period * (2 * k), [d, l] { d->want(l); });
-    }
+    const std::int64_t edges = 2 * st.edges + 1;
+    trains_.push_back(BounceTrain{&sched_, d, l, st.at, st.period, edges,
+                                  sched_.reserve_places(static_cast<std::uint64_t>(edges))});
+    trains_.back().schedule_next();
     break;
+  }
   case StimulusKind::Glitch:
     sched_.at(st.at, [d] {
       if (d->forced == 0) d->out->set(!d->intended);

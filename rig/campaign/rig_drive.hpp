@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -72,6 +73,19 @@ private:
     Stimulus fault;
     std::int64_t seen;
   };
+  // A bounce's edges (edge k at `at + k * period`, the level `level` on even k), each scheduled
+  // by the one before in the place it took when all were scheduled at start: one pending event
+  // a train, not thousands in the heap (a die-protection train of 17,747 edges).
+  struct BounceTrain {
+    Scheduler* sched;
+    DrivenLine* line;
+    Level level;
+    Nanos at, period;
+    std::int64_t edges; // 2 * bounces + 1
+    Reservation first;
+    std::int64_t next = 0;
+    void schedule_next();
+  };
 
   DrivenLine* find(std::string_view rig);
   void fire() override { encoder_edge(); }
@@ -96,6 +110,7 @@ private:
   DrivenLine* enc_b_ = nullptr;
   std::optional<signals::QuadEdge> next_edge_;
   std::vector<MissingEdges> missing_;
+  std::deque<BounceTrain> trains_; // stable addresses: their events hold them
   std::int64_t count_ = 0;
   ShaftTrace* shaft_ = nullptr;
   bool record_motion_ = true;
