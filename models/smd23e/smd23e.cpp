@@ -438,7 +438,7 @@ bool Smd23e::may_start(int dir, bool jog) {
     return false;
   }
   if (function_active(InputFunction::EmergencyStop)) {
-    in_err_ = true; // no move of any kind starts while E-Stop is active (L593)
+    set_error(in_err_); // no move of any kind starts while E-Stop is active (L593)
     return false;
   }
   const bool limit_ahead =
@@ -447,7 +447,7 @@ bool Smd23e::may_start(int dir, bool jog) {
       (dir < 0 &&
        ((p_.fault != Fault::IgnoredLimit && function_active(InputFunction::CcwLimit)) || lock_ccw_));
   if (limit_ahead) {
-    in_err_ = true; // L1043, L2835
+    set_error(in_err_); // L1043, L2835
     return false;
   }
   return true;
@@ -495,7 +495,7 @@ void Smd23e::process_command(const Words& previous) {
     const std::uint16_t a = out_[6];
     const std::uint16_t d = out_[7];
     if (!vp || *vp < 1 || *vp > kMaxSpeed || a < 1 || a > 5000 || d < 1 || d > 5000) {
-      inv_par_ = true; // the motor keeps its old values
+      set_error(inv_par_); // the motor keeps its old values
     } else {
       MoveSpec s = run_->spec;
       const double scale = p_.fault == Fault::WrongAcceleration ? p_.wrong_accel_factor : 1.0;

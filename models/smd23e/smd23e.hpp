@@ -128,9 +128,10 @@ private:
     Kind kind = Kind::Position;
     int dir = 1;
     MoveSpec spec;
-    std::int64_t target = 0; // register target for Position/Encoder moves (for Resume)
-    bool stopping = false;   // controlled stop under way
-    bool holding = false;    // the stop is a Hold
+    std::int64_t target = 0;    // register target for Position/Encoder moves (for Resume)
+    bool stopping = false;      // controlled stop under way
+    bool holding = false;       // the stop is a Hold
+    bool error_in_hold = false; // an error came while the Hold brought it to a stop
     bool reg_triggered = false;
     bool reg_hold_pending = false;
     std::int64_t reg_min = 0;
@@ -167,7 +168,11 @@ private:
   void process_config(const Words& previous);
   void process_command(const Words& previous);
   void dispatch(std::uint16_t msw_bit, bool indexed_start);
-  void command_error() { cmd_err_ = true; }
+  void command_error() { set_error(cmd_err_); }
+  // Sets an error flag. A move held, or on its way into the Hold state, cannot be resumed
+  // after an error (L1224, L1239, L1247): it is forgotten, and Resume then reads as one with
+  // nothing held (a Command Error, [A] §3.11). The Hold State bit stays as the Hold left it.
+  void set_error(bool& flag);
   [[nodiscard]] std::optional<MoveSpec> read_spec(bool allow_below_vs) const;
   [[nodiscard]] std::optional<std::int32_t> read_value(std::size_t upper_word, std::int32_t limit) const;
   [[nodiscard]] bool may_start(int dir, bool jog);

@@ -86,7 +86,7 @@ void Smd23e::watch_encoder() {
   const auto lag = static_cast<double>(std::abs(expected - shaft_encoder_->count()));
   if (lag <= p_.stall_threshold_counts) return;
   immediate_stop(); // [A] a stall is an immediate stop
-  stall_ = true;
+  set_error(stall_);
   pos_invalid_ = true;
 }
 
@@ -111,7 +111,7 @@ void Smd23e::over_temperature() {
   if (!drive) {
     return;
   }
-  drv_fault_ = true; // motor power removed (L565, L2892)
+  set_error(drv_fault_); // motor power removed (L565, L2892)
   if (run_ || pause_event_.valid()) {
     immediate_stop();
     pos_invalid_ = true;
@@ -134,7 +134,7 @@ void Smd23e::network_link(bool up) {
     return;
   }
   net_loss_ = true;
-  in_err_ = true;
+  set_error(in_err_);
   pos_invalid_ = true;
 }
 
@@ -300,7 +300,8 @@ void Smd23e::on_motion_end() {
   run_.reset();
   if (r.holding) {
     hold_state_ = true;
-    if (r.kind == Kind::Position || r.kind == Kind::EncoderMove || r.kind == Kind::Jog) {
+    if (!r.error_in_hold &&
+        (r.kind == Kind::Position || r.kind == Kind::EncoderMove || r.kind == Kind::Jog)) {
       held_ = Held{r.kind, r.dir, r.target};
     }
     return;
@@ -384,7 +385,7 @@ void Smd23e::schedule_stall_check() {
   stall_event_ = sched_.at(t, [this] {
     stall_event_ = {};
     immediate_stop(); // [A] a stall is an immediate stop
-    stall_ = true;
+    set_error(stall_);
     pos_invalid_ = true;
   });
 }
@@ -519,6 +520,14 @@ void Smd23e::change_jog(const MoveSpec& spec) {
   continue_motion(std::move(pieces));
 }
 
+void Smd23e::set_error(bool& flag) {
+  flag = true;
+  held_.reset();
+  if (run_ && run_->holding) {
+    run_->error_in_hold = true;
+  }
+}
+
 void Smd23e::resume() {
   if (!held_ || run_) {
     command_error(); // [A] Resume with nothing held
@@ -541,7 +550,10 @@ void Smd23e::resume() {
   r.spec = *spec;
   r.target = h.target;
   if (h.kind == Kind::Jog) {
-    r.command_bit = dir > 0 ? msw::kJogCw : msw::kJogCcw;
+    // [MODEL] A jog moves while its command is active (L1012) and stops when the command bit
+    // returns to 0 (L1033); a resumed jog's command is the Resume bit that restarted it (the
+    // manual does not say how a resumed jog ends; spec §9 #26).
+    r.command_bit = msw::kResume;
     std::vector<Piece> pieces;
     append_ramp(pieces, vs(), spec->vp, spec->a, spec->shape);
     append_cruise(pieces, spec->vp, kInf);
@@ -591,7 +603,7 @@ void Smd23e::start_home(int dir) {
 void Smd23e::homing_error() {
   // "stop all motion and issue a Home Invalid error" (L1365); the bit is Input Error (L2836).
   immediate_stop(); // also ends a homing pause
-  in_err_ = true;
+  set_error(in_err_);
   pos_invalid_ = true;
 }
 
@@ -673,7 +685,7 @@ void Smd23e::run_dwell_segment(std::size_t index, std::uint32_t dwell_ms) {
                      (function_active(dir > 0 ? InputFunction::CwLimit : InputFunction::CcwLimit) ||
                       (dir > 0 ? lock_cw_ : lock_ccw_));
   if (limit || function_active(InputFunction::EmergencyStop)) {
-    in_err_ = true;
+    set_error(in_err_);
     return;
   }
   Run r;
@@ -743,7 +755,7 @@ void Smd23e::on_input(int input, Level level) {
     return;
   case InputFunction::EmergencyStop:
     if (after) {
-      in_err_ = true; // L2833
+      set_error(in_err_); // L2833
       if (run_ || pause_event_.valid()) {
         act(
             [this] {
@@ -838,7 +850,7 @@ void Smd23e::limit_active(int dir) {
           return;
         }
         immediate_stop();
-        in_err_ = true;
+        set_error(in_err_);
         limit_cond_ = true;
         pos_invalid_ = true;
         if (dir == travel) {

@@ -221,6 +221,81 @@ TEST_F(Smd23eMoves, HoldAndResumeAJog) {
   EXPECT_EQ(dut.step_position(2_s) - dut.step_position(1900_ms), 210);
 }
 
+// A held move "can be resumed if an error did not occur while the move was in its Hold state"
+// (L1224; Jog L1239, Absolute/Relative/Encoder L1247): after a programming error (a Relative
+// command out of range, a Resume out of range) or an input error (E-Stop) while held, Resume
+// finds nothing to resume -- a Command Error ([A] spec §3.11), no step -- even once the error
+// is reset; Reset Errors alone is no error, and the move resumes after it.
+enum class DuringHold { Nothing, BadMove, BadResume, EStop };
+class Smd23eErrorWhileHeld : public Smd23eBench, public ::testing::WithParamInterface<DuringHold> {};
+
+TEST_P(Smd23eErrorWhileHeld, ForbidsTheResume) {
+  const DuringHold during = GetParam();
+  configure(ConfigWords{.control = 0b101'000'000}); // input 3: E-Stop
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(500_ms);
+  write(msw::kHold);
+  run_to(600_ms);
+  ASSERT_TRUE(bit1(sw1::kHoldState));
+  ASSERT_EQ(position_word(), 560);
+  switch (during) {
+  case DuringHold::Nothing:
+    break;
+  case DuringHold::BadMove:
+    command(msw::kRelative, kDrive, MoveWords{.value = 100, .vp = 0, .accel = 0}); // L2860
+    EXPECT_TRUE(bit1(sw1::kCommandError));
+    break;
+  case DuringHold::BadResume:
+    command(msw::kResume, kDrive, MoveWords{.vp = 3'000'000}); // v_p above 2,999,999 (L2494)
+    EXPECT_TRUE(bit1(sw1::kCommandError));
+    break;
+  case DuringHold::EStop:
+    at(700_ms, in3, Level::High);
+    at(800_ms, in3, Level::Low);
+    run_to(900_ms);
+    EXPECT_TRUE(bit1(sw1::kInputError));
+    break;
+  }
+  command(msw::kResetErrors);
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+  command(msw::kResume, kDrive, MoveWords{.vp = 1100});
+  run_to(3_s);
+  if (during == DuringHold::Nothing) {
+    EXPECT_FALSE(bit1(sw1::kCommandError));
+    EXPECT_EQ(position_word(), 1000); // the target, as HoldAndResumeARelativeMove
+  } else {
+    EXPECT_TRUE(bit1(sw1::kCommandError)); // nothing held
+    EXPECT_EQ(position_word(), 560);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Errors, Smd23eErrorWhileHeld,
+                         ::testing::Values(DuringHold::Nothing, DuringHold::BadMove, DuringHold::BadResume,
+                                           DuringHold::EStop));
+
+// A jog moves "as long as the command is active" and stops when its bit returns to 0 (L1012,
+// L1033); a resumed jog's command is the Resume bit ([MODEL], spec §9 #26): clearing it stops
+// the jog at D (2,100 -> 100 steps/s at 10,000 steps/s^2: 0.2 s, 220 steps), and it stays
+// stopped.
+TEST_F(Smd23eMoves, AResumedJogStopsWhenTheResumeBitFalls) {
+  configure();
+  command(msw::kJogCw);
+  run_to(1_s);
+  write(msw::kHold);
+  run_to(1200_ms);
+  command(msw::kResume, kDrive, MoveWords{.vp = 2100});
+  run_to(2_s); // at 2,100 steps/s since 1.4 s
+  const std::int64_t at_stop = position_word();
+  write(0, kDrive, MoveWords{.vp = 2100});
+  run_to(2100_ms);
+  EXPECT_TRUE(bit1(sw1::kDecelerating));
+  run_to(2201_ms);
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_EQ(position_word() - at_stop, 220);
+  run_to(3_s);
+  EXPECT_EQ(position_word() - at_stop, 220);
+}
+
 class Smd23eRegistration : public Smd23eBench {
 protected:
   void SetUp() override {
