@@ -82,8 +82,8 @@ struct Move {
   std::int64_t speed = 0;
   std::int64_t accel = 0;
   std::int64_t decel = 0;
-  std::int64_t jerk = 0;
-  std::int64_t min_registration = 0;
+  std::optional<std::int64_t> jerk;             // word 9; not with a registration
+  std::optional<std::int64_t> min_registration; // words 8-9; a registration only
   bool encoder_move = false;
   bool drive_enable = true;
 };
@@ -91,6 +91,20 @@ Words move(const Move& m) {
   static constexpr std::uint16_t kMsw[] = {0x0001, 0x0002, 0x0080, 0x0100, 0x0080,
                                            0x0100, 0x0020, 0x0040, 0x0008};
   const bool registration = m.move == kRegistrationCw || m.move == kRegistrationCcw;
+  // Word 9 is the jerk of every move but a registration, whose words 8-9 are its Minimum
+  // Registration Move Distance (L2636-L2643): a field the block has no word for is refused,
+  // not dropped. A registration's Stopping Distance is 0..8,388,607 (L2636); a deliberately
+  // invalid block is written raw.
+  if (registration && m.jerk)
+    throw ProgramFieldError("jerk",
+                            "no jerk with a registration move: its word 9 is the Minimum Registration "
+                            "Move Distance (L2636-L2643); leave jerk out");
+  if (!registration && m.min_registration)
+    throw ProgramFieldError("min_registration",
+                            "only with a registration move (registration_cw, registration_ccw, L2636-L2643)");
+  if (registration && m.steps < 0)
+    throw ProgramFieldError("steps",
+                            fmt::format("a registration's Stopping Distance: 0..{} (L2636)", kMaxSteps));
   Words w(10, 0);
   w[0] = kMsw[m.move];
   w[1] = static_cast<std::uint16_t>(bit(15, m.drive_enable) | bit(7, registration) | bit(2, m.encoder_move));
@@ -99,9 +113,9 @@ Words move(const Move& m) {
   w[6] = word(m.accel);
   w[7] = word(m.decel);
   if (registration)
-    put_multiword(w, 8, m.min_registration);
+    put_multiword(w, 8, m.min_registration.value_or(0));
   else
-    w[9] = word(m.jerk);
+    w[9] = word(m.jerk.value_or(0));
   return w;
 }
 
@@ -228,14 +242,11 @@ std::vector<ProgramBlockInfo> smd23e_programs() {
                kMaxSpeed},
               {"accel", &Move::accel, "Acceleration, steps/ms/s (word 6)", 1, kMaxRate},
               {"decel", &Move::decel, "Deceleration, steps/ms/s (word 7)", 1, kMaxRate},
-              {"jerk", &Move::jerk, "Acceleration Jerk (word 9; not with a registration)", 0, 5000, {}, true},
-              {"min_registration",
-               &Move::min_registration,
-               "Minimum Registration Move Distance, steps (words 8-9, registration)",
-               0,
-               kMaxSteps,
-               {},
-               true},
+              {"jerk", &Move::jerk, "Acceleration Jerk (word 9, 0 when absent; not with a registration)", 0,
+               5000},
+              {"min_registration", &Move::min_registration,
+               "Minimum Registration Move Distance, steps (words 8-9, 0 when absent; a registration only)", 0,
+               kMaxSteps},
               {"encoder_move", &Move::encoder_move, "an encoder move (LSW bit 2, E units)"},
               {"drive_enable", &Move::drive_enable, "DriveEn (LSW bit 15)"},
           },

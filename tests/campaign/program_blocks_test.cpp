@@ -181,6 +181,25 @@ TEST(ProgramSmd23e, MovesAreTheCommandCodesWithTwoWordValues) {
             (Words{0x0100, 0x8080, 1, 0, 5, 0, 100, 100, 2, 0}));
 }
 
+// A registration's words 8-9 are its Minimum Registration Move Distance, every other move's
+// word 9 its jerk (L2487-L2756): a field the move has no word for is refused where it is
+// written, not dropped; a registration's Stopping Distance is 0..8,388,607 (L2636), its edges
+// accepted. Jerk 0 is still a jerk given: refused with a registration too.
+TEST(ProgramSmd23e, FieldsTheMoveHasNoWordForAreRefused) {
+  const std::string reg =
+      "program = \"move\"\nmove = \"registration_cw\"\nspeed = 5000\naccel = 100\ndecel = 100\n";
+  EXPECT_TRUE(rejected("smd23e", reg + "steps = 10\njerk = 5", 6, 8, "jerk", "Minimum Registration"));
+  EXPECT_TRUE(rejected("smd23e", reg + "steps = 10\njerk = 0", 6, 8, "jerk", "Minimum Registration"));
+  EXPECT_TRUE(rejected("smd23e", reg + "steps = -1", 5, 9, "steps", "0..8388607"));
+  EXPECT_EQ(words_of("smd23e", reg + "steps = 0")[2], 0);
+  EXPECT_EQ(words_of("smd23e", reg + "steps = 8388607"),
+            (Words{0x0080, 0x8080, 8388, 607, 5, 0, 100, 100, 0, 0}));
+  const std::string rel = "program = \"move\"\nmove = \"relative\"\nspeed = 5000\naccel = 100\ndecel = 100\n";
+  EXPECT_TRUE(rejected("smd23e", rel + "steps = -1\nmin_registration = 0", 6, 20, "min_registration",
+                       "only with a registration"));
+  EXPECT_EQ(words_of("smd23e", rel + "steps = -1\njerk = 5000")[9], 5000);
+}
+
 TEST(ProgramSmd23e, CommandsAndTheResetDriverFaultBlock) {
   // M-15 (L2922-L2946): Reset Driver Fault = MSW 0x0400, LSW 0x0400 (DriveEn 0).
   EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"reset_errors\"\ndrive_enable = false\n"
