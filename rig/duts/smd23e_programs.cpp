@@ -123,16 +123,24 @@ Words move(const Move& m) {
 // L2403), Hold, Immediate Stop, Reset Errors, Preset Position or Preset Encoder (words 2-3).
 struct Command {
   std::int64_t command = 0;
-  std::int64_t position = 0;
+  std::optional<std::int64_t> position; // a preset's value (0 when absent)
   bool drive_enable = true;
   bool clear_driver_fault = false;
 };
+// Only the words the command uses are written: a profile-less command leaves words 2-9 as the
+// last block left them, so a Hold (or the cleared command word that stops a jog) written during
+// a jog is not also an on-the-fly change of its speed and ramps to 0 (an Invalid Parameter,
+// L1026, L2890), and a preset writes its value words 2-3 only.
 Words command(const Command& c) {
   static constexpr std::uint16_t kMsw[] = {0x0000, 0x0004, 0x0010, 0x0400, 0x0200, 0x4000};
-  Words w(10, 0);
+  const bool preset = kMsw[c.command] == 0x0200 || kMsw[c.command] == 0x4000;
+  if (!preset && c.position)
+    throw ProgramFieldError("position",
+                            "only with preset_position or preset_encoder (words 2-3, L2685, L2700)");
+  Words w(preset ? 4 : 2, 0);
   w[0] = kMsw[c.command];
   w[1] = static_cast<std::uint16_t>(bit(15, c.drive_enable) | bit(10, c.clear_driver_fault));
-  put_multiword(w, 2, c.position);
+  if (preset) put_multiword(w, 2, c.position.value_or(0));
   return w;
 }
 
@@ -260,13 +268,8 @@ std::vector<ProgramBlockInfo> smd23e_programs() {
                0,
                0,
                {"none", "hold", "immediate_stop", "reset_errors", "preset_position", "preset_encoder"}},
-              {"position",
-               &Command::position,
-               "the preset value, steps (words 2-3)",
-               -kMaxSteps,
-               kMaxSteps,
-               {},
-               true},
+              {"position", &Command::position,
+               "the preset value, steps (words 2-3, 0 when absent; presets only)", -kMaxSteps, kMaxSteps},
               {"drive_enable", &Command::drive_enable, "DriveEn (LSW bit 15)"},
               {"clear_driver_fault", &Command::clear_driver_fault,
                "ClrDrvFlt (LSW bit 10): with reset_errors and drive_enable = false (L2922-L2946)"},

@@ -200,18 +200,28 @@ TEST(ProgramSmd23e, FieldsTheMoveHasNoWordForAreRefused) {
   EXPECT_EQ(words_of("smd23e", rel + "steps = -1\njerk = 5000")[9], 5000);
 }
 
+// A command without a profile writes only the words it uses (L2401-L2481): MSW and LSW, and a
+// preset's value words 2-3; words 2-9 keep what the last block wrote, so a Hold written during
+// a jog is no on-the-fly change of its speed to 0 (L1026, L2890). A position given to a command
+// that has no value word is refused where it is written.
 TEST(ProgramSmd23e, CommandsAndTheResetDriverFaultBlock) {
   // M-15 (L2922-L2946): Reset Driver Fault = MSW 0x0400, LSW 0x0400 (DriveEn 0).
   EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"reset_errors\"\ndrive_enable = false\n"
                                "clear_driver_fault = true"),
-            (Words{0x0400, 0x0400, 0, 0, 0, 0, 0, 0, 0, 0}));
+            (Words{0x0400, 0x0400}));
   // M-16: Hold 0x0004, Immediate Stop 0x0010, Preset Position 0x0200, Preset Encoder 0x4000.
   EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"preset_position\"\nposition = -12"),
-            (Words{0x0200, 0x8000, 0, 0xFFF4, 0, 0, 0, 0, 0, 0}));
+            (Words{0x0200, 0x8000, 0, 0xFFF4}));
   EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"preset_encoder\"\nposition = 12345"),
-            (Words{0x4000, 0x8000, 12, 345, 0, 0, 0, 0, 0, 0}));
-  EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"hold\"")[0], 0x0004);
-  EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"immediate_stop\"")[0], 0x0010);
+            (Words{0x4000, 0x8000, 12, 345}));
+  EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"preset_position\""),
+            (Words{0x0200, 0x8000, 0, 0}));
+  EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"hold\""), (Words{0x0004, 0x8000}));
+  EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"immediate_stop\""),
+            (Words{0x0010, 0x8000}));
+  EXPECT_EQ(words_of("smd23e", "program = \"command\"\ncommand = \"none\""), (Words{0x0000, 0x8000}));
+  EXPECT_TRUE(rejected("smd23e", "program = \"command\"\ncommand = \"hold\"\nposition = 5", 2, 12, "position",
+                       "only with preset_position or preset_encoder"));
 }
 
 TEST(ProgramSmd23e, ConfigurationWordsAndTheirRanges) {
@@ -416,7 +426,7 @@ TEST(ProgramShipped, Smd23eProfileInWordsRunsAsItsRawWords) {
         "50\n"
         "motor_current_x10 = 20",
         "write = [32768, 32775, 1, 0, 2048, 0, 1024, 50, 20, 0]"},
-       {"program = \"command\"\ncommand = \"none\"", "write = [0, 32768, 0, 0, 0, 0, 0, 0, 0, 0]"},
+       {"program = \"command\"\ncommand = \"none\"", "write = [0, 32768]"},
        {"program = \"move\"\nmove = \"relative\"\nsteps = 4000\nspeed = 10000\naccel = 100\ndecel = 100",
         "write = [2, 32768, 4, 0, 10, 0, 100, 100, 0, 0]"},
        {"program = \"move\"\nmove = \"relative\"\nsteps = 600\nspeed = 10000\naccel = 100\ndecel = 100",
