@@ -190,6 +190,17 @@ const checks::PulseWidthSpec* pulse_spec(const campaign::Campaign& c, const std:
   return nullptr;
 }
 
+// A throughput check with a lower limit (min_limit_us: the fastest answer the manual states)
+// is two-sided: a board that answers too fast is as far out of spec as one too slow, so its
+// knob is bisected down as well as up.
+bool throughput_has_min(const campaign::Campaign& c, const std::string& name) {
+  for (const campaign::Scenario& s : c.points)
+    if (const campaign::CheckSpec* k = s.check(name))
+      if (const auto* t = std::get_if<checks::ThroughputParams>(&k->params); t && t->spec.min_limit)
+        return true;
+  return false;
+}
+
 // A pulse-width knob's side that lengthens the judged pulse (an ON pulse when the knob moves
 // up; a pulse at the low level is the gap between ON pulses, shortened) against a check with no
 // max_us, or shortens it against one with no min_us, breaks no width limit: named, not bisected.
@@ -337,10 +348,14 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
       row.margin_pct = at.worst_excess->fraction * 100.0;
     }
   }
+  // The board's own extreme at the threshold: its latest answer (the knob, plus a scan where
+  // an event waits for one) against an upper limit; against a lower limit its earliest, the
+  // knob alone (an event just before a scan waits for nothing).
+  const bool lower = row.measured && row.limit && *row.measured < *row.limit;
   if (duration && row.unit == "us" && row.limit && *row.limit > 0.0 &&
       knob.worst_case != WorstCase::Unknown) {
     double worst_ns = scale.value_at(*b.threshold);
-    if (knob.worst_case == WorstCase::KnobPlusParam) {
+    if (knob.worst_case == WorstCase::KnobPlusParam && !lower) {
       const auto plus = c.points.front().dut.params.find(knob.plus_param);
       const Nanos* ns =
           plus == c.points.front().dut.params.end() ? nullptr : std::get_if<Nanos>(&plus->second.value);
@@ -348,7 +363,8 @@ PowerRow measure_check(const campaign::Campaign& c, const std::string& name, std
     }
     if (std::isfinite(worst_ns)) {
       row.board_worst = worst_ns / 1e3;
-      row.board_margin_pct = (*row.board_worst - *row.limit) / *row.limit * 100.0;
+      row.board_margin_pct =
+          (lower ? *row.limit - *row.board_worst : *row.board_worst - *row.limit) / *row.limit * 100.0;
     }
   }
   return row;
@@ -375,7 +391,9 @@ PowerResult measure_power(const campaign::Campaign& c, const PowerOptions& optio
       continue;
     }
     for (const Knob& knob : knobs_for(out.device, kind_of_check(c, name))) {
-      if (knob.direction == KnobDirection::Both && !knob.param.empty()) {
+      const bool both = knob.direction == KnobDirection::Both ||
+                        (knob.direction == KnobDirection::Up && throughput_has_min(c, name));
+      if (both && !knob.param.empty()) {
         out.rows.push_back(measure_check(c, name, out.seed, options, knob, KnobDirection::Up));
         out.rows.push_back(measure_check(c, name, out.seed, options, knob, KnobDirection::Down));
       } else {

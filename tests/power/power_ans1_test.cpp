@@ -32,9 +32,10 @@ TEST(PowerAns1, ThroughputThresholdOutputDelayIsWhereTheManualsArithmeticPutsIt)
     PowerOptions options;
     options.seed = seed;
     const PowerResult r = measure_power(c, options);
-    ASSERT_EQ(r.rows.size(), 2u);
+    ASSERT_EQ(r.rows.size(), 4u); // on and off, each up (the 20 us max) and down (the 10 us min)
     for (const PowerRow& row : r.rows) {
-      SCOPED_TRACE(row.check + " seed " + std::to_string(seed));
+      SCOPED_TRACE(row.check + " " + row.direction + " seed " + std::to_string(seed));
+      if (row.direction == "down") continue; // ThroughputMinLimitIsBisectedDown
       EXPECT_EQ(row.knob, "output_delay");
       EXPECT_EQ(row.reason, "");
       ASSERT_TRUE(row.nominal && row.threshold && row.last_pass && row.measured && row.limit &&
@@ -63,6 +64,46 @@ TEST(PowerAns1, ThroughputThresholdOutputDelayIsWhereTheManualsArithmeticPutsIt)
   }
 }
 
+// The lower end of the same "10 to 20 microseconds" (L572): min_limit_us = 10. A crossing's
+// latency is its wait for the next scan (0 .. 10 us) + output_delay, and the 100 crossings
+// cover all hundred 0.1 us phase bins, so the shortest wait is under 0.1 us: at output_delay
+// 10 us the fastest answer is at least 10 us and passes; at 9.9 us it is under 10 us and
+// fails. The threshold (bisected down to 1 ns) lies in [9.9, 10) us, read 1 ns under the limit
+// at most, and the board's own fastest answer there is the output delay alone (a crossing just
+// before a scan): within 1 % of the limit.
+TEST(PowerAns1, ThroughputMinLimitIsBisectedDown) {
+  const campaign::Campaign c = campaign::load_campaign(kThroughput);
+  for (const std::uint64_t seed : {1ULL, 2ULL}) {
+    PowerOptions options;
+    options.seed = seed;
+    const PowerResult r = measure_power(c, options);
+    int down = 0;
+    for (const PowerRow& row : r.rows) {
+      if (row.direction != "down") continue;
+      ++down;
+      SCOPED_TRACE(row.check + " seed " + std::to_string(seed));
+      EXPECT_TRUE(row.two_sided);
+      EXPECT_EQ(row.knob, "output_delay");
+      EXPECT_EQ(row.reason, "");
+      ASSERT_TRUE(row.nominal && row.threshold && row.last_pass && row.measured && row.limit &&
+                  row.margin_pct && row.board_worst && row.board_margin_pct);
+      EXPECT_DOUBLE_EQ(*row.nominal, 10.0);
+      EXPECT_LT(*row.threshold, 10.0);
+      EXPECT_GE(*row.threshold, 9.9 - 1e-9);
+      EXPECT_NEAR(*row.last_pass - *row.threshold, 0.001, 1e-9); // one ns apart
+      EXPECT_DOUBLE_EQ(*row.limit, 10.0);
+      EXPECT_LT(*row.measured, 10.0);
+      EXPECT_GE(*row.measured, 10.0 - 0.001 - 1e-9);
+      EXPECT_GT(*row.margin_pct, 0.0);
+      EXPECT_LE(*row.margin_pct, 0.01 + 1e-9); // 1 ns in 10 us
+      EXPECT_NEAR(*row.board_worst, *row.threshold, 1e-9);
+      EXPECT_NEAR(*row.board_margin_pct, (10.0 - *row.threshold) * 10.0, 1e-6);
+      EXPECT_FALSE(over_margin(row, 1.0));
+    }
+    EXPECT_EQ(down, 2);
+  }
+}
+
 // The same inputs and seed give the same row (the bisection runs on virtual time only); another
 // seed puts the board's scan phase elsewhere, and the threshold moves within (10, 10.1] us.
 TEST(PowerAns1, IsDeterministicAndTheSeedMovesTheScanPhase) {
@@ -72,12 +113,15 @@ TEST(PowerAns1, IsDeterministicAndTheSeedMovesTheScanPhase) {
   options.seed = 1;
   const PowerResult a = measure_power(c, options);
   const PowerResult b = measure_power(c, options);
-  ASSERT_EQ(a.rows.size(), 1u);
-  ASSERT_EQ(b.rows.size(), 1u);
-  ASSERT_TRUE(a.rows[0].threshold.has_value());
-  EXPECT_EQ(a.rows[0].threshold, b.rows[0].threshold);
-  EXPECT_EQ(a.rows[0].measured, b.rows[0].measured);
-  EXPECT_EQ(a.rows[0].probes, b.rows[0].probes);
+  ASSERT_EQ(a.rows.size(), 2u); // up, then down (min_limit_us)
+  ASSERT_EQ(b.rows.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    ASSERT_TRUE(a.rows[i].threshold.has_value());
+    EXPECT_EQ(a.rows[i].threshold, b.rows[i].threshold);
+    EXPECT_EQ(a.rows[i].measured, b.rows[i].measured);
+    EXPECT_EQ(a.rows[i].probes, b.rows[i].probes);
+  }
+  EXPECT_EQ(a.rows[0].direction, "up");
   EXPECT_GT(*a.rows[0].threshold, 10.0);
   EXPECT_LE(*a.rows[0].threshold, 10.1 + 1e-9);
 }

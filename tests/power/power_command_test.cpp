@@ -76,8 +76,9 @@ TEST(PowerCommand, MaxMarginGatesTheExitStatusAndPowerJsonIsWritten) {
   const auto doc = nlohmann::json::parse(read(dir / "power.json"));
   EXPECT_EQ(doc.at("format"), "hilrig-power");
   EXPECT_EQ(doc.at("version"), 1);
-  ASSERT_EQ(doc.at("checks").size(), 1u);
+  ASSERT_EQ(doc.at("checks").size(), 2u); // up against limit_us, down against min_limit_us
   EXPECT_EQ(doc.at("checks")[0].at("knob"), "output_delay");
+  EXPECT_EQ(doc.at("checks")[1].at("direction"), "down");
   EXPECT_TRUE(std::filesystem::exists(dir / "power.html"));
 }
 
