@@ -21,9 +21,13 @@ Nanos tach_interval(int code, bool thirty_two_ms) {
 
 std::uint16_t tach_value(std::int64_t counts, Nanos interval, bool tenths) {
   const std::int64_t magnitude = counts < 0 ? -counts : counts;
-  // rpm = counts * 60 / (8192 * T); in integers with T in ns.
+  // rpm = counts * 60 / (8192 * T), rounded to the nearest unit of the resolution; in integers
+  // with T in ns. Rounded, not floored [I]: the spec page gives the range as 1..2000 RPM
+  // (L479-L480), and a steady 1 RPM counts 4.1 counts in 30 ms, 4 or 5 by the phase: floored,
+  // 0.977 would read 0 below the stated range, and a steady 100 RPM 99 every other interval.
   const std::int64_t numerator = magnitude * 60'000'000'000LL * (tenths ? 10 : 1);
-  const std::int64_t value = numerator / (kInternalCounts * interval.count());
+  const std::int64_t denominator = kInternalCounts * interval.count();
+  const std::int64_t value = (2 * numerator + denominator) / (2 * denominator);
   return static_cast<std::uint16_t>(std::min<std::int64_t>(value, kTachMask));
 }
 

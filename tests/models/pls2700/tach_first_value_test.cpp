@@ -6,10 +6,10 @@
 // arrives measures over T + T_upd (999.9 rpm at 0.1 rpm then reads 10007, above the 999.9 rpm
 // maximum of Table 1.3, L386).
 //
-// Expected values: the digest's model [I] (R-T-7) value = floor(count * 60 / (8192 T) / res)
-// with count = the 8192-count motion between the two samples, and the manual's bound: the
-// reading is the shaft speed in units of the resolution (L374, L1613), truncated, from whole
-// 8192-count steps, never above the table's maximum (L382-L386).
+// Expected values: the model [I] (R-T-7) value = count * 60 / (8192 T) / res rounded to the
+// nearest unit, with count = the 8192-count motion between the two samples, and the manual's
+// bound: the reading is the shaft speed in units of the resolution (L374, L1613), to the
+// nearest unit, from whole 8192-count steps, never above the table's maximum (L382-L386).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -52,18 +52,19 @@ void expect_first_value(ModelVariant model, const Code& c, double rpm, Nanos set
   b.run_until(set_at + c.interval); // the first interval has closed, the second not yet
   const auto raw = [&angle](Nanos t) { return static_cast<std::int64_t>(std::floor(angle(t) * 8192.0)); };
   const std::int64_t count = raw(first_sample + c.interval) - raw(first_sample);
-  // rpm = count * 60 / (8192 T), in units of the resolution, in integers (T in ns).
+  // rpm = count * 60 / (8192 T), in units of the resolution, to the nearest (T in ns).
   const std::int64_t per_unit = c.resolution < 1.0 ? 10 : 1;
-  const auto expected = static_cast<int>(count * 60'000'000'000LL * per_unit / (8192 * c.interval.count()));
+  const auto expected = static_cast<int>(std::llround(
+      static_cast<double>(count) * 60.0 * static_cast<double>(per_unit) / (8192.0 * c.interval.seconds())));
   const int value = b.device().tach(1);
   const std::string where = std::string(m.name) + " code " + std::to_string(c.code) + " at " +
                             std::to_string(rpm) + " rpm, set at " + std::to_string(set_at.count()) + " ns";
   EXPECT_EQ(value, expected) << where;
-  // The speed in units of the resolution, truncated (one LSB), from a whole number of 8192-count
-  // steps (one step more or less: 60 / (8192 T) rpm, digest §4.3 "Model [I]").
+  // The speed in units of the resolution, to the nearest (half an LSB), from a whole number of
+  // 8192-count steps (one step more or less: 60 / (8192 T) rpm, digest §4.3 "Model [I]").
   const double step = 60.0 / (8192.0 * c.interval.seconds()) / c.resolution;
-  EXPECT_GE(value, rpm / c.resolution - 1.0 - step) << where;
-  EXPECT_LE(value, rpm / c.resolution + step) << where;
+  EXPECT_GE(value, rpm / c.resolution - 0.5 - step) << where;
+  EXPECT_LE(value, rpm / c.resolution + 0.5 + step) << where;
   EXPECT_LE(value, std::lround(c.max_rpm / c.resolution)) << where;
 }
 

@@ -1,5 +1,5 @@
 // Tachometer (pls2700.md §4.3, R-T-1..R-T-7; W19): transducer-shaft RPM over the response
-// interval, floor(counts * 60 / (8192 * T)) in units of the resolution [I], held between
+// interval, counts * 60 / (8192 * T) rounded to the resolution [I], held between
 // refreshes. Shafts start half a raw count past 0 so every expected count is unambiguous.
 #include <gtest/gtest.h>
 
@@ -124,7 +124,7 @@ TEST(Pls2700Tach, ValueIsHeldUntilTheNextIntervalEnds) {
 
 TEST(Pls2700Tach, ThirtyTwoMillisecondOptionOnSingleChannel) {
   // §7.2 option: 32 ms on 27x1 (L469). 1000 RPM x 32 ms = 0.5333 turn = 4369.07 counts ->
-  // raw 4369 -> 4369 * 60 / 262.144 = 999.98 -> 999.
+  // raw 4369 -> 4369 * 60 / 262.144 = 999.98 -> 1000 (to the nearest RPM).
   Params p;
   p.tach_32ms_on_single_channel = true;
   Bench b(ModelVariant::M2731, p);
@@ -133,7 +133,7 @@ TEST(Pls2700Tach, ThirtyTwoMillisecondOptionOnSingleChannel) {
   b.run_until(31'800_us);
   EXPECT_EQ(b.device().tach(1), 0);
   b.run_until(32_ms);
-  EXPECT_EQ(b.device().tach(1), 999);
+  EXPECT_EQ(b.device().tach(1), 1000);
 }
 
 TEST(Pls2700Tach, TachSettingNeverChangesTheUpdatePeriod) {
@@ -158,6 +158,37 @@ TEST(Pls2700Tach, TransducerFaultGives8000h) {
   r.set_faults(f);
   b.run_until(1_ms);
   EXPECT_EQ(b.btr()[1], 0x8000);
+}
+
+// The spec page's ranges (L479-L480): 1..2000 RPM at codes 0-2 (30, 60, 120 ms), 1..1000 at
+// code 3 (240 ms), 0.1..999.9 at code 4 (240 ms, tenths); resolution 1 or 0.1 RPM (L374,
+// L473-L475). A steady shaft at the range's low end and at a round speed inside reads that
+// speed in every interval, whichever phase the counts fall at: 1 RPM is 4.096 counts in 30 ms
+// (4 or 5: 0.977 or 1.221 RPM), 8.19 / 16.38 / 32.77 in 60 / 120 / 240 ms; 0.1 RPM 3.28 counts
+// in 240 ms (3 or 4: 0.92 or 1.22 tenths); 100 RPM 409.6 counts in 30 ms (99.85 or 100.10).
+// Each rounds to the true value; floored, 1 RPM read 0 and 100 RPM 99 every other interval.
+TEST(Pls2700Tach, SteadySpeedsAtTheRangesLowEndReadTheirValueInEveryInterval) {
+  struct Case {
+    int code;
+    double rpm;
+    std::uint16_t reads;
+  };
+  const Case cases[] = {{0, 1.0, 1},       {1, 1.0, 1},       {2, 1.0, 1},     {3, 1.0, 1},
+                        {4, 0.1, 1},       {4, 1.0, 10},      {0, 100.0, 100}, {1, 100.0, 100},
+                        {0, 2000.0, 2000}, {3, 1000.0, 1000}, {4, 999.9, 9999}};
+  for (const Case& c : cases) {
+    for (const double phase : {0.05, 0.35, 0.65, 0.95}) { // where in a count the shaft starts
+      SCOPED_TRACE(::testing::Message() << "code " << c.code << ", " << c.rpm << " rpm, phase " << phase);
+      Bench b(ModelVariant::M2741);
+      EXPECT_EQ(b.btw({0x8804, static_cast<std::uint16_t>(c.code)}), error::kNone);
+      b.shaft(1, signals::angle_at_constant_speed(phase / 8192.0, c.rpm / 60.0));
+      const Nanos interval = tach_interval(c.code, false);
+      for (int k = 1; k <= 6; ++k) {
+        b.run_until(interval * k);
+        EXPECT_EQ(b.device().tach(1), c.reads) << "interval " << k;
+      }
+    }
+  }
 }
 
 } // namespace
