@@ -408,7 +408,8 @@ int run_quadrature(const QuadratureOptions& o) {
   const std::uint32_t b = trace.declare(o.name + ".B");
   const bool has_z = enc.index_width > 0;
   const std::uint32_t z = has_z ? trace.declare(o.name + ".Z") : 0;
-  const std::uint32_t count = o.with_count ? trace.declare(o.name + ".count", SignalKind::Integer, 32) : 0;
+  // 64 bits, as a run's shaft.count: 10,000 turns of a fine encoder pass 2^31 counts.
+  const std::uint32_t count = o.with_count ? trace.declare(o.name + ".count", SignalKind::Integer, 64) : 0;
   const std::int64_t initial = signal.initial_count;
   trace.set_initial(a, signal.initial_level(QuadChannel::A) ? 1 : 0);
   trace.set_initial(b, signal.initial_level(QuadChannel::B) ? 1 : 0);

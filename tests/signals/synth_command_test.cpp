@@ -48,6 +48,27 @@ TEST(SynthCommand, QuadratureAt600RpmWritesEveryEdge) {
   EXPECT_EQ(vcd.times[1], 24'414);
 }
 
+// The count signal carries the count, however far from 0: 600,000 lines (2,400,000 counts a
+// turn) from 1,000 turns start at 2,400,000,000 (past 2^31) and from -1,000 turns at
+// -2,400,000,000; at 1 RPM (40,000 counts/s: one count per 25 us) 90 us take it 3 counts up.
+TEST(SynthCommand, CountPast2To31IsNotWrapped) {
+  for (const std::int64_t sign : {1, -1}) {
+    SCOPED_TRACE(sign);
+    const std::string path = test::kSynthDir + "/synth_quadrature_count_test.vcd";
+    synth({"quadrature", "--lines", "600000", "--rpm", "1", "--start", sign > 0 ? "1000" : "-1000",
+           "--duration", "90us", "--count", "--out", path});
+    const test::Vcd vcd = test::read_vcd_file(path);
+    ASSERT_TRUE(vcd.has_leaf("count"));
+    const test::VcdVar& count = vcd.leaf("count");
+    EXPECT_EQ(count.width, 64);
+    ASSERT_TRUE(count.initial.has_value());
+    EXPECT_EQ(static_cast<std::int64_t>(count.initial->bits()), sign * 2'400'000'000LL);
+    ASSERT_FALSE(count.changes.empty());
+    EXPECT_EQ(count.changes.size(), 3U);
+    EXPECT_EQ(static_cast<std::int64_t>(count.changes.back().bits()), sign * 2'400'000'000LL + 3);
+  }
+}
+
 TEST(SynthCommand, GlitchFaultAddsTwoEdgesOnItsChannel) {
   // As above (A edges at counts 1, 3, 5 ...: 24.4, 73.2, 122.1 us ...), plus a 50 ns glitch on
   // A at 100 us, between two A edges: 20 + 2 A changes, B untouched.
