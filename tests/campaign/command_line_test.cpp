@@ -290,7 +290,10 @@ TEST(CommandLine, SynthBadValuesNameTheOptionAndItsRange) {
       // 1,000,000 counts/s over 4096 counts/turn: 244.140625 turn/s = 14648.4375 rpm.
       {"quadrature --lines 1024 --rpm 15000", "--rpm: at most 1000000 encoder counts/s (X4): 14648.4 rpm"},
       {"quadrature --duration inf", "--duration: a time within -3600s .. 3600s (got inf)"},
-      {"quadrature --dwell 3601s", "--dwell: a time within -3600s .. 3600s (got 3601s)"},
+      {"quadrature --dwell 3601s", "--dwell: 0s .. 3600s (got 3601s)"},
+      {"quadrature --dwell -1s", "--dwell: 0s .. 3600s (got -1s)"},
+      {"discrete --set 3601s=1", "--set: 0s .. 3600s (got 3601s)"},
+      {"discrete --set -1s=1", "--set: 0s .. 3600s (got -1s)"},
       {"quadrature --turns 10001 --profile trapezoid --accel 10",
        "--turns: -10000 .. 10000 turns (got 10001)"},
       {"ssi --rpm nan", "--rpm: -32767 .. 32767 rpm (got nan)"},
