@@ -118,6 +118,7 @@ private:
   void mode4_latch(Nanos t);
   void on_timeout();
   [[nodiscard]] std::uint16_t latch_count();
+  [[nodiscard]] std::uint16_t mode6_count(std::int64_t c);
 
   // responses
   void arm_timeout(Nanos from);

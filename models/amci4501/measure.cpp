@@ -45,9 +45,7 @@ void Amci4501::start_edge(bool now_active, Nanos t) {
   if (config_.mode == 5) {
     defer(t, Op::Write, false, 1, split(time_value(on_tick_[0], tick(t))));
   } else {
-    const std::int64_t c = decoder_.count() - on_position_[0];
-    if (c < -32768 || c > 32767) ++overflows_; // A24: wraps as int16
-    const std::array<std::uint16_t, 1> w{static_cast<std::uint16_t>(c)};
+    const std::array<std::uint16_t, 1> w{mode6_count(decoder_.count() - on_position_[0])};
     defer(t, Op::Write, false, 1, w);
   }
 }
@@ -105,11 +103,18 @@ void Amci4501::latch_edge(bool now_active, Nanos t) {
   if (config_.mode == 5) {
     defer(t, Op::Write, false, 3, split(time_value(on_tick_[1], tick(t))));
   } else {
-    const std::int64_t c = decoder_.count() - on_position_[1];
-    if (c < -32768 || c > 32767) ++overflows_;
-    const std::array<std::uint16_t, 1> w{static_cast<std::uint16_t>(c)};
+    const std::array<std::uint16_t, 1> w{mode6_count(decoder_.count() - on_position_[1])};
     defer(t, Op::Write, false, 2, w);
   }
+}
+
+// A mode 6 count in its word: "a maximum value of 32,767" (L117), so a longer forward count
+// reads 32,767, not a negative number against its direction (L55); a reverse one stops at
+// -32,768, the word's least (the negative limit is not stated, A24) [MODEL]. Either counts as
+// an overflow.
+std::uint16_t Amci4501::mode6_count(std::int64_t c) {
+  if (c < -32768 || c > 32767) ++overflows_;
+  return static_cast<std::uint16_t>(std::clamp<std::int64_t>(c, -32768, 32767));
 }
 
 // Lx = P(edge) - Son, counted from the window opening (L12); one register each, at most

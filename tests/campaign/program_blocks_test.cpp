@@ -287,6 +287,18 @@ TEST(ProgramAmci4501, ModeWordTimeoutAndTheEnableWindow) {
   EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 0", 1, 8, "mode", "1 .. 6"));
   // A window belongs to mode 2 only.
   EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 3\non = 5", 2, 6, "on", "only with mode = 2"));
+  // "The enable window on setpoint must be less than the enable window off setpoint" (L172):
+  // on = off and on > off are refused where written; on one below off, to the range's top, is
+  // accepted.
+  EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2\non = 5\noff = 5", 3, 7, "off",
+                       "above the on setpoint 5 (L172): 6 .. 65535"));
+  EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2\non = 6\noff = 5", 3, 7, "off", "(L172)"));
+  // Without a window (on = off = 0), at the [[host]] entry (line 6).
+  EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2", -2, 1, "off", "1 .. 65535"));
+  EXPECT_EQ(words_of("amci4501", "program = \"mode\"\nmode = 2\non = 5\noff = 6"),
+            (Words{0x0004, 0, 0, 5, 0, 6}));
+  EXPECT_EQ(words_of("amci4501", "program = \"mode\"\nmode = 2\non = 65534\noff = 65535"),
+            (Words{0x0004, 0, 65, 534, 65, 535}));
 }
 
 // --- 7361 (docs/spec/ssi7361.md §4-§5; manual seeds/004) ---------------------------------

@@ -101,5 +101,29 @@ TEST(Amci4501Mode6, MaximumCount) {
   EXPECT_EQ(b.module->count_overflows(), 0u);
 }
 
+// "The count measurement values in mode 6 have a maximum value of 32,767" (L117): one count
+// more forward reads 32,767, not -32,768 against its direction (L55, A leads B: positive), and
+// far more still 32,767; on the Latch word too. A reverse count stops at -32,768, the word's
+// least (A24 [MODEL]). Each beyond the word counts as an overflow.
+TEST(Amci4501Mode6, CountsBeyondTheMaximumReadTheMaximum) {
+  struct Case {
+    int counts;
+    std::int16_t reads;
+    std::uint64_t overflows;
+  };
+  for (const Case c : {Case{32767, 32767, 0}, Case{32768, 32767, 1}, Case{33000, 32767, 1},
+                       Case{40000, 32767, 1}, Case{-32768, -32768, 0}, Case{-32769, -32768, 1}}) {
+    SCOPED_TRACE(c.counts);
+    Bench b;
+    b.program_mode(6);
+    b.latch_at(us(500), Level::High);
+    b.burst(c.counts, us(1000), us(4)); // at most 160 ms
+    b.latch_at(us(170000), Level::Low);
+    b.run_until(172_ms);
+    EXPECT_EQ(static_cast<std::int16_t>(b.word(2)), c.reads);
+    EXPECT_EQ(b.module->count_overflows(), c.overflows);
+  }
+}
+
 } // namespace
 } // namespace hilrig::models::amci4501::test
