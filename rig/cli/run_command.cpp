@@ -469,10 +469,23 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
     if (!ran[i].result) row.message = "no results: see the command's messages";
     rows.push_back(std::move(row));
   }
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n; ++i) {
     if (rows[i].result)
-      junit.push_back({&*rows[i].result, chosen[i].file, ran[i].clock, rig::run_log_runs(ran[i].log),
-                       ran[i].junit ? &*ran[i].junit : nullptr});
+      junit.push_back({&*rows[i].result,
+                       chosen[i].file,
+                       ran[i].clock,
+                       rig::run_log_runs(ran[i].log),
+                       ran[i].junit ? &*ran[i].junit : nullptr,
+                       {}});
+    else // a campaign without results is an error in junit.xml too, not a missing testsuite
+      junit.push_back(
+          {nullptr,
+           chosen[i].file,
+           ran[i].clock,
+           {},
+           nullptr,
+           fmt::format("no results: {} (see the command's messages)", status_word(ran[i].status))});
+  }
   const std::string title = "hilrig suite: " + [&] {
     std::string names;
     for (const std::string& f : o.files) names += (names.empty() ? "" : " ") + f;

@@ -1,5 +1,7 @@
 #include "rig/results/junit.hpp"
 
+#include <filesystem>
+
 #include <algorithm>
 #include <fmt/format.h>
 #include <optional>
@@ -288,6 +290,11 @@ std::string to_junit_xml(const CampaignResult& r, const JunitClock& clock) {
 void write_junit_suite_xml(const std::string& name, const std::vector<JunitCampaign>& campaigns,
                            const TextSink& out) {
   const auto counts_of_campaign = [](const JunitCampaign& c) {
+    if (c.result == nullptr) {
+      Counts none;
+      none.tests = none.errored = 1;
+      return none;
+    }
     if (c.body) return c.body->counts;
     Counts counts = counts_of(source_of(c), c.clock);
     counts.add(missing_runs_counts(*c.result));
@@ -297,6 +304,18 @@ void write_junit_suite_xml(const std::string& name, const std::vector<JunitCampa
   for (const auto& c : campaigns) all.add(counts_of_campaign(c));
   out(testsuites_open(name, all));
   for (std::size_t i = 0; i < campaigns.size(); ++i) {
+    if (campaigns[i].result == nullptr) {
+      const std::string stem = std::filesystem::path(campaigns[i].file).stem().string();
+      out(testsuite_open(stem, counts_of_campaign(campaigns[i]), campaigns[i].clock, std::to_string(i),
+                         dotless(stem)));
+      out("    <properties>\n" + property("campaign_file", campaigns[i].file) + "    </properties>\n");
+      out(fmt::format("    <testcase name=\"results\" classname=\"{}.campaign\" time=\"0.000\">\n"
+                      "      <error message=\"{}\" type=\"error\">{}</error>\n    </testcase>\n",
+                      xml_escape(dotless(stem)), xml_escape(campaigns[i].no_result),
+                      xml_escape(campaigns[i].no_result)));
+      out("    <system-out/>\n    <system-err/>\n  </testsuite>\n");
+      continue;
+    }
     const CampaignResult& r = *campaigns[i].result;
     out(testsuite_open(r.campaign, counts_of_campaign(campaigns[i]), campaigns[i].clock, std::to_string(i),
                        dotless(r.campaign)));

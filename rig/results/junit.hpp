@@ -66,11 +66,15 @@ struct JunitSuiteBody {
                                               const JunitClock& clock);
 
 struct JunitCampaign {
+  // nullptr: a campaign of the suite that has no results (a rig fault before or while it ran,
+  // or a stop before it started): a testsuite of one erroring testcase saying `no_result`, so
+  // a suite that did not run a campaign never reads green.
   const CampaignResult* result = nullptr;
   std::string file; // the campaign file as given
   JunitClock clock;
   RunSource runs;                       // the campaign's runs when `result` does not hold them (its run log)
   const JunitSuiteBody* body = nullptr; // when given: junit_suite_body(*result, runs, clock), made before
+  std::string no_result;                // why there is no result
 };
 [[nodiscard]] std::string to_junit_suite_xml(const std::string& name,
                                              const std::vector<JunitCampaign>& campaigns);

@@ -80,7 +80,7 @@ TEST(Junit, AnIncompleteCampaignIsAnErrorThoughEveryRunItHasPassed) {
   EXPECT_NE(x.find("<testsuites name=\"x\" tests=\"3\" failures=\"0\" errors=\"1\""), std::string::npos) << x;
   EXPECT_NE(x.find("<error message=\"incomplete: 2 of 3 planned runs have no result"), std::string::npos)
       << x;
-  const std::vector<JunitCampaign> suite = {{&c, "x.toml", {}, runs_of(c), nullptr}};
+  const std::vector<JunitCampaign> suite = {{&c, "x.toml", {}, runs_of(c), nullptr, {}}};
   const std::string s = to_junit_suite_xml("nightly", suite);
   EXPECT_NE(s.find("<testsuites name=\"nightly\" tests=\"3\" failures=\"0\" errors=\"1\""), std::string::npos)
       << s;
@@ -91,6 +91,29 @@ TEST(Junit, AnIncompleteCampaignIsAnErrorThoughEveryRunItHasPassed) {
   c.planned_runs = 1; // the same run, complete: clean
   finalize(c);
   EXPECT_EQ(hilrig::test::count_of(to_junit_xml(c), "<error "), 0U);
+}
+
+// A suite in which one campaign has no results at all (a rig fault before it ran, a stop
+// before it started) exits 3; its junit.xml must not read green either: that campaign is a
+// testsuite of one erroring testcase, in the root's counts too.
+TEST(Junit, ASuiteCampaignWithoutResultsIsAnError) {
+  CampaignResult c = junit_campaign(10.0, 1);
+  finalize(c);
+  ASSERT_EQ(c.verdict, Outcome::Pass);
+  JunitCampaign none;
+  none.file = "dir/locked.toml";
+  none.no_result = "no results: rig fault (see the command's messages)";
+  const std::vector<JunitCampaign> suite = {{&c, "x.toml", {}, runs_of(c), nullptr, {}}, none}; // 2 + 1 tests
+  const std::string s = to_junit_suite_xml("nightly", suite);
+  EXPECT_NE(s.find("<testsuites name=\"nightly\" tests=\"3\" failures=\"0\" errors=\"1\""), std::string::npos)
+      << s;
+  EXPECT_NE(s.find("<testsuite name=\"locked\" tests=\"1\" failures=\"0\" errors=\"1\""), std::string::npos)
+      << s;
+  EXPECT_NE(s.find("<error message=\"no results: rig fault (see the command&#39;s messages)\""),
+            std::string::npos)
+      << s;
+  EXPECT_NE(s.find("<property name=\"campaign_file\" value=\"dir/locked.toml\"/>"), std::string::npos) << s;
+  EXPECT_EQ(hilrig::test::count_of(s, "<testsuite "), 2U);
 }
 
 TEST(Junit, AFaultCaughtByOneOfItsCheckersHasNoFailure) {
@@ -160,8 +183,8 @@ TEST(Junit, ASuiteFromBodiesMadeBeforehandIsTheTextFromTheRuns) {
   timed.run_seconds = {{0, 0.1}, {1, 0.2}, {2, 0.7}};
   JunitClock partly; // run 1's wall time not known: no time on its campaign nor the suite
   partly.run_seconds = {{0, 0.3}};
-  const std::vector<JunitCampaign> from_runs = {{&a, "a.toml", timed, runs_of(a), nullptr},
-                                                {&b, "b.toml", partly, runs_of(b), nullptr}};
+  const std::vector<JunitCampaign> from_runs = {{&a, "a.toml", timed, runs_of(a), nullptr, {}},
+                                                {&b, "b.toml", partly, runs_of(b), nullptr, {}}};
   const JunitSuiteBody body_a = junit_suite_body(a, runs_of(a), timed);
   const JunitSuiteBody body_b = junit_suite_body(b, runs_of(b), partly);
   EXPECT_EQ(body_a.counts.tests, 6U);
