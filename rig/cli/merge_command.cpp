@@ -1,5 +1,7 @@
 #include "rig/cli/merge_command.hpp"
 
+#include <algorithm>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -76,8 +78,15 @@ int run_merge(const MergeArgs& a) {
                    .c_str(),
                stdout);
     // The merged verdict is the CI job's, as `hilrig run`'s exit status is the unsharded run's:
-    // a merge step judges the campaign with no glue.
-    if (merged.verdict != rig::Outcome::Pass) status = kCheckFailed;
+    // a merge step judges the campaign with no glue. A shard stopped by a signal, or a run a rig
+    // fault stopped, is the rig's failure, 3, as `hilrig run` exits for it: not the board's, 1.
+    const bool rig_fault = merged.interrupted.has_value() ||
+                           std::any_of(merged.runs.begin(), merged.runs.end(),
+                                       [](const rig::RunResult& run) { return !run.error.empty(); });
+    if (rig_fault)
+      status = kRigFault;
+    else if (merged.verdict != rig::Outcome::Pass)
+      status = kCheckFailed;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hilrig merge: %s\n", e.what());
     return kBadInput;

@@ -11,8 +11,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "rig/results/results_json.hpp"
 #include "tests/tools/scratch_files.hpp"
@@ -51,6 +54,31 @@ Result hilrig(const std::string& args) {
 }
 
 const std::string kPass = std::string(HILRIG_SOURCE_DIR) + "/campaigns/reference/reference_pls_pass.toml";
+
+// `hilrig merge` exits as `hilrig run` of the unsharded campaign would (docs/ci.md): a run a
+// rig fault stopped, or a shard a signal stopped, is 3 (the rig's failure), not 1 (the
+// board's); the same shard as it ran is 0.
+TEST(CommandLine, MergeOfARigFaultOrAnInterruptedShardExitsThree) {
+  const fs::path dir = test::scratch_dir("campaign", "merge_exit_three");
+  ASSERT_EQ(hilrig("run " + kPass + " --out " + (dir / "ran").string() + " --trace none").status, 0);
+  nlohmann::json shard = nlohmann::json::parse(test::read_file(dir / "ran" / "results.json"));
+  const auto write = [&](const std::string& name, const nlohmann::json& j) {
+    std::ofstream(dir / name) << j.dump();
+    return (dir / name).string();
+  };
+  const std::string clean = write("clean.json", shard);
+  nlohmann::json faulted = shard;
+  faulted["runs"][0]["error"] = "the run made no progress";
+  const std::string rig_fault = write("faulted.json", faulted);
+  nlohmann::json stopped = shard;
+  stopped["interrupted"] = "SIGTERM";
+  const std::string interrupted = write("stopped.json", stopped);
+  EXPECT_EQ(hilrig("merge " + (dir / "m0.json").string() + " " + clean).status, 0);
+  const Result a = hilrig("merge " + (dir / "m1.json").string() + " " + rig_fault);
+  EXPECT_EQ(a.status, 3) << a.err << a.out;
+  const Result b = hilrig("merge " + (dir / "m2.json").string() + " " + interrupted);
+  EXPECT_EQ(b.status, 3) << b.err << b.out;
+}
 
 TEST(CommandLine, UnknownSubcommandNamesTheClosest) {
   const Result r = hilrig("rn " + kPass);
