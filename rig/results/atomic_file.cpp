@@ -1,6 +1,7 @@
 #include "rig/results/atomic_file.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -108,7 +109,12 @@ void write_file_atomically(const std::filesystem::path& path,
     ::unlink(tmp.c_str());
     throw std::runtime_error(fmt::format("cannot flush {}: {}", tmp.string(), std::strerror(err)));
   }
-  std::filesystem::rename(tmp, path);
+  // A failed rename (the path a directory, or on another file system) leaves neither file.
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(err)));
+  }
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {

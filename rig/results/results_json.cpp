@@ -525,6 +525,10 @@ void write_results_dumps(const std::filesystem::path& path, const CampaignResult
 }
 
 CampaignResult read_results_file(const std::filesystem::path& path) {
+  // A stream over a directory opens, then fails to read with a library's words: name the file.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::runtime_error(fmt::format("{}: a directory, not a results.json or runs.jsonl", path.string()));
   if (path.extension() == ".jsonl") return read_run_log(path);
   std::ifstream in(path);
   if (!in) throw std::runtime_error(fmt::format("cannot read {}", path.string()));

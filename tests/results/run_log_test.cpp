@@ -382,6 +382,40 @@ TEST(WriteFileAtomically, FullDiskOrSizeLimitLeavesNoTmp) {
   EXPECT_EQ(hilrig::test::read_file(path), "previous\n");
 }
 
+// A path that is a directory (merge's or trend's --out given an existing directory): the message
+// names the path and why, and no *.tmp is left beside it; the directory stays.
+TEST(WriteFileAtomically, APathThatIsADirectoryLeavesNoTmp) {
+  const fs::path dir = scratch("atomic_dir");
+  fs::create_directories(dir / "m.json");
+  try {
+    write_file_atomically(dir / "m.json", "{}\n");
+    ADD_FAILURE() << "a write over a directory passed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write " + (dir / "m.json").string() + ": "),
+              std::string::npos)
+        << e.what();
+    EXPECT_TRUE(says(e, EISDIR)) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "m.json.tmp"));
+  EXPECT_TRUE(fs::is_directory(dir / "m.json"));
+}
+
+// A directory given where a results.json or runs.jsonl is read (merge, compare, trend): the
+// message names it, not a stream library's "basic_filebuf::underflow".
+TEST(ReadResultsFile, ADirectoryIsNamed) {
+  const fs::path dir = scratch("results_dir");
+  for (const char* name : {"d.json", "d.jsonl"}) {
+    fs::create_directories(dir / name);
+    try {
+      (void)read_results_file(dir / name);
+      ADD_FAILURE() << "a directory was read as results";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                (dir / name).string() + ": a directory, not a results.json or runs.jsonl");
+    }
+  }
+}
+
 // Streamed: a file larger than the 1 MiB buffer, written in pieces of every size, arrives
 // whole; a second name linked to it reads the same bytes.
 TEST(WriteFileAtomically, StreamedWritesEveryByteAndLinksTheSameBytes) {
