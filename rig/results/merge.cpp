@@ -111,13 +111,27 @@ CampaignResult merge_shards(std::vector<CampaignResult> shards, const std::vecto
     out.planned_runs += s.planned_runs;
     if (s.interrupted && !out.interrupted) out.interrupted = s.interrupted; // a shard stopped early
     for (auto& run : s.runs) {
-      if (const auto [at, added] = indices.emplace(run.index, i); !added) {
-        throw std::invalid_argument(fmt::format("run {} appears in two shards: {} and {}", run.index,
-                                                sorted_names[at->second], sorted_names[i]));
-      }
+      // Shard K of N runs the runs whose index mod N is K (docs/ci.md); any other index in it
+      // is not one this shard ran.
+      if (run.index % count != s.shard.index)
+        throw std::invalid_argument(
+            fmt::format("run {} in {}: shard {} of {} holds the runs whose index mod {} is {}", run.index,
+                        sorted_names[i], s.shard.index, count, count, s.shard.index));
+      // Two shards cannot both hold a run (each holds its own residue, above): a run twice is
+      // twice in one shard file.
+      if (const auto [at, added] = indices.emplace(run.index, i); !added)
+        throw std::invalid_argument(fmt::format("run {} appears twice in {}", run.index, sorted_names[i]));
       out.runs.push_back(std::move(run));
     }
   }
+  // Every index a run of the campaign's plan can have: 0 .. planned - 1.
+  for (const auto& [index, at] : indices)
+    if (index >= out.planned_runs)
+      throw std::invalid_argument(
+          out.planned_runs == 0
+              ? fmt::format("run {} in {}: the campaign plans no runs", index, sorted_names[at])
+              : fmt::format("run {} in {}: the campaign plans {} runs, 0 .. {}", index, sorted_names[at],
+                            out.planned_runs, out.planned_runs - 1));
   finalize(out);
   return out;
 }

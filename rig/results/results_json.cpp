@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 #include "rig/results/atomic_file.hpp"
@@ -36,8 +37,22 @@ const json& field(const json& j, const char* key, const char* where) {
 }
 
 template <class T> T get(const json& j, const char* key, const char* where) {
+  const json& v = field(j, key, where);
+  if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+    // nlohmann converts any number to any integer type without a word: a run index of -1 would
+    // read 18446744073709551615, a seed of 1e20 read 0.
+    using Limits = std::numeric_limits<T>;
+    const bool fits =
+        v.is_number_unsigned() ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(Limits::max())
+        : v.is_number_integer()
+            ? std::is_signed_v<T> && v.get<std::int64_t>() >= static_cast<std::int64_t>(Limits::min())
+            : false;
+    if (!fits)
+      throw std::runtime_error(fmt::format("results: {}.{}: {} is not a whole number {} .. {}", where, key,
+                                           v.dump(), Limits::min(), Limits::max()));
+  }
   try {
-    return field(j, key, where).get<T>();
+    return v.get<T>();
   } catch (const json::exception& e) {
     throw std::runtime_error(fmt::format("results: {}.{}: {}", where, key, e.what()));
   }

@@ -157,12 +157,28 @@ TEST(Merge, RefusalsOfDuplicateOverlappingOrMiscountedShardsNameBothFiles) {
   for (const char* part : {"shard 1 given twice", "b/results.json", "c/results.json"})
     EXPECT_NE(why.find(part), std::string::npos) << part << " in: " << why;
 
+  // Shard K of N holds the runs whose index mod N is K: shard 0's run in shard 2 is refused
+  // there, naming the file; a run twice in one file too.
   auto overlap = shards;
   overlap[2].runs.push_back(overlap[0].runs[1]);
   why = merge_error(overlap, files);
-  const std::string run = "run " + std::to_string(overlap[0].runs[1].index) + " appears in two shards";
-  for (const std::string& part : {run, std::string("a/results.json"), std::string("c/results.json")})
-    EXPECT_NE(why.find(part), std::string::npos) << part << " in: " << why;
+  const std::string run = "run " + std::to_string(overlap[0].runs[1].index) +
+                          " in shard 2 (c/results.json): shard 2 of 3 holds the runs whose index mod 3 is 2";
+  EXPECT_NE(why.find(run), std::string::npos) << why;
+  auto doubled = shards;
+  doubled[1].runs.push_back(doubled[1].runs[0]);
+  why = merge_error(doubled, files);
+  EXPECT_NE(why.find("run " + std::to_string(doubled[1].runs[0].index) +
+                     " appears twice in shard 1 (b/results.json)"),
+            std::string::npos)
+      << why;
+  // An index beyond the plan (9 runs: 0 .. 8) is no run of this campaign, in its residue or not.
+  auto beyond = shards;
+  beyond[0].runs.back().index = 9;
+  why = merge_error(beyond, files);
+  EXPECT_NE(why.find("run 9 in shard 0 (a/results.json): the campaign plans 9 runs, 0 .. 8"),
+            std::string::npos)
+      << why;
 
   auto miscounted = shards;
   miscounted[1].shard.count = 4;

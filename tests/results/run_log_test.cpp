@@ -16,6 +16,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -412,6 +413,29 @@ TEST(ReadResultsFile, ADirectoryIsNamed) {
     } catch (const std::runtime_error& e) {
       EXPECT_EQ(std::string(e.what()),
                 (dir / name).string() + ": a directory, not a results.json or runs.jsonl");
+    }
+  }
+}
+
+// A whole number the writer wrote (a run index, a seed) read back as one: a negative index, a
+// fraction or a seed past 2^64 is refused with the field and its range, not converted (-1 read
+// as 18446744073709551615, 1e20 as 0).
+TEST(ReadResultsFile, WholeNumbersOutOfTheirTypeAreRefused) {
+  const fs::path dir = scratch("results_whole");
+  const std::string text = to_json_text(test::sample_campaign(2));
+  for (const auto& [field, value, says] :
+       {std::tuple{"index", "-1", "run.index: -1 is not a whole number 0 .. 18446744073709551615"},
+        std::tuple{"index", "1.5", "run.index: 1.5 is not a whole number"},
+        std::tuple{"seed", "1e20", "run.seed: 1e+20 is not a whole number 0 .. 18446744073709551615"}}) {
+    nlohmann::json j = nlohmann::json::parse(text);
+    j["runs"][0][field] = nlohmann::json::parse(value);
+    const fs::path path = dir / "results.json";
+    std::ofstream(path) << j.dump();
+    try {
+      (void)read_results_file(path);
+      ADD_FAILURE() << field << " = " << value << " was read";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
     }
   }
 }
