@@ -44,6 +44,17 @@ int power_campaign(const PowerOptions& o, std::ostream& out, std::ostream& err) 
                          did_you_mean(n, names));
       return kBadInput;
     }
+  // The output directory before the bisection, not after it: an --out that is a file (or
+  // under one) is bad input, found before minutes of probes.
+  if (!o.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.out, ec);
+    if (ec || !std::filesystem::is_directory(o.out)) {
+      err << fmt::format("hilrig power: --out {}: not a directory that can be made ({})\n", o.out.string(),
+                         ec ? ec.message() : "a file is in the way");
+      return kBadInput;
+    }
+  }
   power::PowerResult result;
   try {
     power::PowerOptions options;
@@ -52,7 +63,6 @@ int power_campaign(const PowerOptions& o, std::ostream& out, std::ostream& err) 
     options.progress = [&err](const std::string& line) { err << line << '\n' << std::flush; };
     result = power::measure_power(c, options);
     if (!o.out.empty()) {
-      std::filesystem::create_directories(o.out);
       rig::write_file_atomically(o.out / "power.json", power::to_power_json(result));
       rig::write_file_atomically(o.out / "power.html", power::to_power_html(result));
     }
