@@ -176,6 +176,7 @@ void Ans1::power_on() {
   speed_reference_count_ = 0;
   rpm_clamped_ = false;
   last_wrap_ = Nanos::min();
+  last_wrap_direction_ = 0;
   time_of_rotation_ = 0;
   changed_outside_ = true;
   grid_origin_ = scheduler_.now() + params_.scan_phase - scan_period();
@@ -427,13 +428,20 @@ void Ans1::scan() {
   channels_held_ = shift_register_ == sr_before && channels_hold(now, changed);
   scans_channels_held_ += channels_held_ ? 1U : 0U;
 
-  // Time of Rotation: between two forward roll-overs of GMP (L794), in 0.1 ms.
-  if (!first_scan_ && crossed_forward(previous_gmp_, gmp_, 0, fsc)) {
-    if (last_wrap_ != Nanos::min()) {
+  // Time of Rotation: "the time it took for the shaft to complete its last rotation" (L2537),
+  // whichever way it turns (L2535), in 0.1 ms: between two roll-overs of GMP (L794) in the same
+  // direction, forward onto 0 or backward off it; a roll-over after one the other way starts
+  // the timing again (what lies between them is no whole rotation).
+  const bool forward_wrap = !first_scan_ && crossed_forward(previous_gmp_, gmp_, 0, fsc);
+  const bool backward_wrap = !first_scan_ && crossed_forward(gmp_, previous_gmp_, 0, fsc);
+  if (forward_wrap || backward_wrap) {
+    const std::int8_t direction = forward_wrap ? 1 : -1;
+    if (last_wrap_ != Nanos::min() && last_wrap_direction_ == direction) {
       const std::int64_t tenths = (now - last_wrap_) / microseconds(100);
       time_of_rotation_ = static_cast<std::uint16_t>(tenths > 0xFFFF ? 0xFFFF : tenths);
     }
     last_wrap_ = now;
+    last_wrap_direction_ = direction;
   }
 
   const ScanState state = scan_state(now);

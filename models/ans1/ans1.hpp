@@ -355,6 +355,7 @@ private:
   std::int64_t speed_reference_count_ = 0;
   bool rpm_clamped_ = false;
   Nanos last_wrap_ = Nanos::min();
+  std::int8_t last_wrap_direction_ = 0; // +1 forward onto 0, -1 backward off it
   std::uint16_t time_of_rotation_ = 0;
 
   // Output pins lag the scan by output_delay: a queue of (time, levels), one event pending.

@@ -31,7 +31,7 @@ struct Ans1::ScanSnapshot {
   std::tuple<std::uint16_t, std::uint16_t, std::uint16_t, std::uint16_t, std::uint16_t, std::uint16_t,
              std::uint16_t>
       masks;
-  std::tuple<std::uint16_t, Nanos> rotation;
+  std::tuple<std::uint16_t, Nanos, std::int8_t> rotation;
   std::tuple<bool, bool, ErrorCode, bool> host;
   friend bool operator==(const ScanSnapshot&, const ScanSnapshot&) = default;
 };
@@ -48,7 +48,7 @@ Ans1::ScanSnapshot Ans1::snapshot() const {
       {ls_, outputs_, queued_levels_},
       {masks_.calc, masks_.simple, masks_.pulse, masks_.window, masks_.shift_register, masks_.rpm,
        masks_.timer},
-      {time_of_rotation_, last_wrap_},
+      {time_of_rotation_, last_wrap_, last_wrap_direction_},
       {host_.transmit_seen(), host_.acknowledge(), host_.error(), host_.hardware_fault()},
   };
 }

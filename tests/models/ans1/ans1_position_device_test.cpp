@@ -211,6 +211,30 @@ TEST(Ans1Device, TimeOfRotationIsTheLastCycleInTenthsOfMs) {
   EXPECT_EQ(bench.device().time_of_rotation(), 3600);
 }
 
+// "The time it took for the shaft to complete its last rotation" (L2537) names no direction,
+// and reverse rotation is a normal case (L2535): 1 count per ms backwards on a 360-count cycle
+// reads 3600 too. Forward at 1 ms a count (3600), then backwards at 2 ms a count: the first
+// backward roll-over after a forward one completes no rotation and keeps 3600; the next, 360
+// counts (720 ms) later, reads 7200.
+TEST(Ans1Device, TimeOfRotationIsMeasuredInReverseToo) {
+  Bench backward;
+  backward.device().configure_position(encoder_setup(360, 360));
+  backward.quadrature_run(3_us, 1_ms, 800, -1);
+  backward.run_until(800_ms);
+  EXPECT_EQ(backward.device().time_of_rotation(), 3600);
+
+  Bench both;
+  both.device().configure_position(encoder_setup(360, 360));
+  both.quadrature_run(3_us, 1_ms, 800, +1);
+  both.quadrature_run(801_ms + 3_us, 2_ms, 900, -1);
+  both.run_until(800_ms);
+  EXPECT_EQ(both.device().time_of_rotation(), 3600);
+  both.run_until(1600_ms); // backward roll-over at 961 ms only
+  EXPECT_EQ(both.device().time_of_rotation(), 3600);
+  both.run_until(1700_ms); // and at 1681 ms
+  EXPECT_EQ(both.device().time_of_rotation(), 7200);
+}
+
 // --- transducer fault ----------------------------------------------------------------------
 
 TEST(Ans1Device, ResolverFaultTurnsOutputsOffAndLatchesUntilClearErrors) {
