@@ -240,7 +240,18 @@ rig::CampaignResult Executive::run_all(const std::vector<RunSpec>& runs, std::ui
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (progress) progress(i, runs.size(), runs[i]);
     RunOutput out = run(runs[i]);
-    if (sink) out.result.trace = sink(runs[i], out);
+    // What the sink could not write (a trace on a full disk) is the run's rig error; its
+    // judgement stands and is recorded, and so is every run before and after it: a write that
+    // fails loses nothing already captured.
+    if (sink) {
+      try {
+        out.result.trace = sink(runs[i], out);
+      } catch (const std::exception& e) {
+        out.result.trace.clear();
+        if (out.result.error.empty())
+          out.result.error = std::string("writing the run's evidence: ") + e.what();
+      }
+    }
     if (record)
       record(out.result);
     else

@@ -62,7 +62,8 @@ public:
   // progress(i, n, run) is called before each run.
   using Progress = std::function<void(std::size_t done, std::size_t total, const RunSpec& run)>;
   // sink(run, out) after each run: returns the trace file it wrote for the run (relative to
-  // the results), "" when it kept none; the run's result records it.
+  // the results), "" when it kept none; the run's result records it. A sink that throws gives
+  // that run a rig error (its checks kept) and the campaign goes on.
   using TraceSink = std::function<std::string(const RunSpec& run, const RunOutput& out)>;
   // record(run) after each run: when given, each finished run is handed to it and not kept,
   // so the returned result holds no runs (the caller folds them, e.g. from a rig::RunLog) and

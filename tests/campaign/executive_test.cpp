@@ -104,6 +104,28 @@ TEST(Executive, SameSeedGivesIdenticalResultsAndTraces) {
   EXPECT_EQ(rig::to_json_text(run_everything(c)), rig::to_json_text(run_everything(c)));
 }
 
+// A trace that cannot be written (a full disk) is the run's rig error, not the campaign's end:
+// the run keeps its checks, every run is recorded, the others untouched.
+TEST(Executive, ASinkThatThrowsIsTheRunsErrorAndTheCampaignGoesOn) {
+  const Campaign c = parse_campaign(test::kPlsCampaign, "t.toml");
+  const std::vector<RunSpec> runs = plan_runs(c, 1);
+  ASSERT_GE(runs.size(), 1U);
+  std::vector<rig::RunResult> recorded;
+  const auto sink = [&](const RunSpec& run, const RunOutput&) -> std::string {
+    if (&run == &runs.front())
+      throw std::runtime_error("cannot write OUT/trace.vcd.tmp: No space left on device");
+    return "";
+  };
+  (void)Executive(c).run_all(runs, 1, rig::Shard{0, 1}, {}, sink,
+                             [&](const rig::RunResult& r) { recorded.push_back(r); });
+  ASSERT_EQ(recorded.size(), runs.size());
+  EXPECT_EQ(recorded[0].error,
+            "writing the run's evidence: cannot write OUT/trace.vcd.tmp: No space left on device");
+  EXPECT_FALSE(recorded[0].checks.empty());
+  EXPECT_TRUE(recorded[0].trace.empty());
+  for (std::size_t i = 1; i < recorded.size(); ++i) EXPECT_EQ(recorded[i].error, "");
+}
+
 TEST(Executive, TheSeedMovesTheScanPhase) {
   // The reference PLS draws its scan phase from the run's seed: two seeds, two phases,
   // different latencies for the same crossings.
