@@ -4,11 +4,14 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <fcntl.h>
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <sys/file.h>
+#include <unistd.h>
 #include <vector>
 
 #include "rig/cli/exit_status.hpp"
@@ -36,6 +39,37 @@ fs::path beside(const fs::path& out, const char* file) {
   return out.parent_path() / (out.stem().string() + "." + file);
 }
 
+// The directory the merge writes into, made when missing, and taken as `hilrig run --out`
+// takes its own: a run still writing there (its .hilrig.lock held) is not overwritten (the
+// kill-recovery merge `hilrig merge OUT/results.json OUT/runs.jsonl` writes into the run's own
+// directory). Held until the merge's files are written.
+class MergeTarget {
+public:
+  explicit MergeTarget(const fs::path& out) {
+    const fs::path dir = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    const fs::path lock = dir / ".hilrig.lock";
+    if (!fs::exists(lock)) return;
+    fd_ = ::open(lock.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) != 0)
+      throw Busy(
+          fmt::format("{} is being written by a hilrig run (its .hilrig.lock is held): merge when it ends",
+                      dir.string()));
+  }
+  ~MergeTarget() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  MergeTarget(const MergeTarget&) = delete;
+  MergeTarget& operator=(const MergeTarget&) = delete;
+  struct Busy : std::runtime_error {
+    using std::runtime_error::runtime_error;
+  };
+
+private:
+  int fd_ = -1;
+};
+
 // A run's trace is named relative to its shard's results.json; the merged files link it from
 // where they are.
 void relink_traces(rig::CampaignResult& shard, const fs::path& shard_file, const fs::path& out) {
@@ -57,6 +91,7 @@ int run_merge(const MergeArgs& a) {
       relink_traces(shards.back(), path, a.out);
     }
     const rig::CampaignResult merged = rig::merge_shards(std::move(shards), a.shards);
+    const MergeTarget target(a.out);
     // The wall-clock facts the shards kept: the first shard's start and host. Each run's wall
     // time is not in results.json: the testcases carry no time (rig/results/junit.hpp).
     rig::JunitClock clock;
@@ -87,6 +122,9 @@ int run_merge(const MergeArgs& a) {
       status = kRigFault;
     else if (merged.verdict != rig::Outcome::Pass)
       status = kCheckFailed;
+  } catch (const MergeTarget::Busy& e) {
+    std::fprintf(stderr, "hilrig merge: %s\n", e.what());
+    return kRigFault; // as `hilrig run` on a directory in use: the rig cannot do it now
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hilrig merge: %s\n", e.what());
     return kBadInput;

@@ -3,7 +3,10 @@
 // `run` puts its summary and report path on stdout, the rest on stderr, and `synth <kind>`
 // (a command of a command) takes its own options.
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -78,6 +81,32 @@ TEST(CommandLine, MergeOfARigFaultOrAnInterruptedShardExitsThree) {
   EXPECT_EQ(a.status, 3) << a.err << a.out;
   const Result b = hilrig("merge " + (dir / "m2.json").string() + " " + interrupted);
   EXPECT_EQ(b.status, 3) << b.err << b.out;
+}
+
+// The kill-recovery merge writes into a run's own directory (`hilrig merge OUT/results.json
+// OUT/runs.jsonl`): while a run still holds that directory's .hilrig.lock the merge refuses, 3,
+// as a second `hilrig run` there does, and writes nothing; once it is released, it merges. A
+// directory that does not exist yet is made.
+TEST(CommandLine, MergeIntoADirectoryARunHoldsIsRefused) {
+  const fs::path dir = test::scratch_dir("campaign", "merge_locked");
+  ASSERT_EQ(hilrig("run " + kPass + " --out " + (dir / "ran").string() + " --trace none").status, 0);
+  const std::string shard = (dir / "ran" / "results.json").string();
+  const fs::path out = dir / "busy" / "results.json";
+  fs::create_directories(out.parent_path());
+  {
+    const int fd = ::open((out.parent_path() / ".hilrig.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    ASSERT_GE(fd, 0);
+    ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+    const Result held = hilrig("merge " + out.string() + " " + shard);
+    EXPECT_EQ(held.status, 3) << held.err;
+    EXPECT_NE(held.err.find("is being written by a hilrig run"), std::string::npos) << held.err;
+    EXPECT_FALSE(fs::exists(out));
+    ::close(fd);
+  }
+  EXPECT_EQ(hilrig("merge " + out.string() + " " + shard).status, 0);
+  EXPECT_TRUE(fs::exists(out));
+  EXPECT_EQ(hilrig("merge " + (dir / "new" / "deeper" / "m.json").string() + " " + shard).status, 0);
+  EXPECT_TRUE(fs::exists(dir / "new" / "deeper" / "m.junit.xml"));
 }
 
 TEST(CommandLine, UnknownSubcommandNamesTheClosest) {
