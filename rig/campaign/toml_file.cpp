@@ -1,5 +1,7 @@
 #include "rig/campaign/toml_file.hpp"
 
+#include <cstdint>
+
 #include <algorithm>
 #include <cstddef>
 #include <filesystem>
@@ -98,7 +100,51 @@ void check_key_parts(std::string_view text, const std::string& file_name) {
 
 } // namespace
 
+namespace {
+
+// Well-formed UTF-8 (no overlong forms, surrogates or code points past U+10FFFF).
+bool valid_utf8(std::string_view s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    std::size_t n = 0;
+    std::uint32_t cp = 0;
+    if (c < 0x80) {
+      ++i;
+      continue;
+    }
+    if ((c & 0xE0U) == 0xC0U) {
+      n = 1;
+      cp = c & 0x1FU;
+    } else if ((c & 0xF0U) == 0xE0U) {
+      n = 2;
+      cp = c & 0x0FU;
+    } else if ((c & 0xF8U) == 0xF0U) {
+      n = 3;
+      cp = c & 0x07U;
+    } else {
+      return false;
+    }
+    if (i + n >= s.size()) return false; // cut short
+    for (std::size_t k = 1; k <= n; ++k) {
+      const auto d = static_cast<unsigned char>(s[i + k]);
+      if ((d & 0xC0U) != 0x80U) return false;
+      cp = (cp << 6U) | (d & 0x3FU);
+    }
+    static constexpr std::uint32_t kLeast[] = {0, 0x80, 0x800, 0x10000};
+    if (cp < kLeast[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return false;
+    i += n + 1;
+  }
+  return true;
+}
+
+} // namespace
+
 std::string read_toml_text(const std::string& path, std::string_view what) {
+  // The path is written into results.json, junit.xml and report.html, which are UTF-8.
+  if (!valid_utf8(path))
+    throw CampaignError(path, SourcePos{}, "file",
+                        fmt::format("a {} whose path is valid UTF-8 (the outputs name it): rename it", what));
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status))

@@ -355,6 +355,22 @@ TEST(CampaignLimits, OnlyARegularFileOfAtMostOneMebibyteIsRead) {
             "file: a campaign file of at most 1048576 bytes");
 }
 
+// A campaign file's path is written into results.json, junit.xml and report.html (UTF-8): a
+// path that is not UTF-8 (a Latin-1 name, a cut sequence, an overlong form, a surrogate) is bad
+// input before anything runs, not a rig fault after; a UTF-8 name of 2, 3 and 4 bytes is read.
+TEST(CampaignLimits, APathThatIsNotUtf8IsBadInput) {
+  const fs::path dir = hilrig::test::scratch_dir("campaign", "utf8_names");
+  for (const char* bad : {"caf\xe9.toml", "cut\xc3.toml", "over\xc0\xaf.toml", "sur\xed\xa0\x80.toml"}) {
+    const fs::path path = hilrig::test::write_file(dir, bad, test::kValidCampaign);
+    EXPECT_EQ(file_error_of(path.string()),
+              "file: a campaign file whose path is valid UTF-8 (the outputs name it): rename it")
+        << bad;
+  }
+  for (const char* good : {"caf\xc3\xa9.toml", "\xe2\x82\xac.toml", "\xf0\x9f\x94\xa7.toml"})
+    EXPECT_EQ(file_error_of(hilrig::test::write_file(dir, good, test::kValidCampaign).string()), "accepted")
+        << good;
+}
+
 TEST(CampaignLimits, AFileOfSeveralReadChunksIsReadByteForByte) {
   // read_toml_text reads in 16 KiB chunks: a text of 2.5 chunks, every byte value but NUL,
   // comes back whole and in order.
