@@ -20,8 +20,12 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
   r.kind = "throughput";
   if (crossings.empty()) {
     // No crossing, no latency: the check judged nothing, whatever min_count says.
-    r.measurements.push_back(
-        error(spec.name + ".count", "nothing judged: the stimulus never crossed the setpoint"));
+    // The count it read (0) and the least it asks for stay in the evidence (junit.xml, compare).
+    Measurement count =
+        error(spec.name + ".count", "nothing judged: the stimulus never crossed the setpoint");
+    count.value = 0.0;
+    count.lower = static_cast<double>(spec.min_count);
+    r.measurements.push_back(std::move(count));
     return r;
   }
   std::vector<Sample> samples;

@@ -199,6 +199,11 @@ TEST(JudgedNothing, ThroughputWithNoCrossingIsAnErrorEvenWithMinCountOne) {
   const auto r = check_throughput({}, out, t);
   EXPECT_EQ(r.outcome(), Outcome::Error);
   EXPECT_NE(r.measurements[0].detail.find("nothing judged"), std::string::npos);
+  // The evidence keeps what it read and the least it asks for: 0 crossings, min_count.
+  EXPECT_EQ(r.measurements[0].value, 0.0);
+  EXPECT_EQ(r.measurements[0].lower, std::optional<double>(1.0));
+  t.min_count = 100;
+  EXPECT_EQ(check_throughput({}, out, t).measurements[0].lower, std::optional<double>(100.0));
 }
 
 TEST(JudgedNothing, WordBitsWithMaskZeroIsAnError) {
