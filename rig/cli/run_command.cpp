@@ -318,6 +318,10 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     header.host_link = o.host_link_factory ? "custom" : o.host_link;
     header.backend = p.rig ? "hardware" : "virtual";
     header.trace_policy = o.trace;
+    // The wall-clock facts in the log's header too: a log folded after a kill (hilrig merge
+    // OUT/results.json OUT/runs.jsonl) keeps when and where the campaign ran (a trend's label).
+    header.started_at = ran.clock.started_at;
+    header.host = ran.clock.hostname;
     rig::RunLog log(dir / rig::kRunLogName, header);
     const rig::CampaignResult done = exec.run_all(p.runs, p.seed, part, started, sink,
                                                   [&](const rig::RunResult& run) { log.append(run); });

@@ -227,6 +227,10 @@ TEST(Interrupt, SigkillAfterARunLeavesTheRunsDoneReadable) {
   EXPECT_EQ(results.at("planned_runs"), 2);
   ASSERT_EQ(results.at("runs").size(), 1U);
   EXPECT_EQ(results.at("runs")[0].at("index"), 0);
+  // When and where the campaign ran survive the fold too (a trend labels the night by it).
+  ASSERT_TRUE(results.contains("wall_clock"));
+  EXPECT_TRUE(results.at("wall_clock").contains("started_at"));
+  EXPECT_TRUE(results.at("wall_clock").contains("host"));
 }
 
 } // namespace
