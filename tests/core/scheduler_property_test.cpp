@@ -79,37 +79,61 @@ private:
   std::function<void()> body_;
 };
 
-// What ran, when, and whether Last events at that time had run, for one seed and engine.
-std::vector<std::int64_t> run_chain_program(std::uint32_t seed, bool as_stream) {
-  std::mt19937 rng(seed);
-  auto next = [&rng] { return static_cast<std::int64_t>(rng() % 1000); };
-  Scheduler s;
-  std::vector<std::int64_t> log;
-  int tags = 0;
-  std::function<void(std::int64_t, bool)> add = [&](std::int64_t t, bool last) {
-    const int tag = tags++;
-    s.at(
+// Random ordinary and Last events at few instants, each of which may schedule another (up to
+// `cap` events in all): the mix the chains and trains below run in. The log: each event's tag,
+// instant and ordinary_event_running(), then the executed count.
+class RandomEvents {
+public:
+  RandomEvents(Scheduler& s, std::uint32_t seed, int cap) : s_(s), rng_(seed), cap_(cap) {}
+  std::int64_t next() { return static_cast<std::int64_t>(rng_() % 1000); }
+  void record(std::int64_t tag) {
+    log_.insert(log_.end(), {tag, s_.now().count(), s_.ordinary_event_running() ? 1 : 0});
+  }
+  // An event within `span` ns of now, Last one time in four; one time in three it schedules
+  // another 0-6 ns after itself.
+  void add_within(std::int64_t span) {
+    const std::int64_t t = s_.now().count() + next() % span;
+    const bool last = next() % 4 == 0;
+    const int tag = tags_++;
+    s_.at(
         Nanos{t},
-        [&, tag] {
-          log.insert(log.end(), {tag, s.now().count(), s.ordinary_event_running() ? 1 : 0});
-          if (next() % 3 == 0 && tags < 4000) add(s.now().count() + next() % 7, next() % 4 == 0);
+        [this, tag] {
+          record(tag);
+          if (next() % 3 == 0 && tags_ < cap_) add_within(7);
         },
         last ? Scheduler::Tie::Last : Scheduler::Tie::InOrder);
-  };
+  }
+  [[nodiscard]] bool room() const { return tags_ < cap_; }
+  std::vector<std::int64_t> run() {
+    s_.run_until_idle();
+    log_.push_back(static_cast<std::int64_t>(s_.executed()));
+    return log_;
+  }
+
+private:
+  Scheduler& s_;
+  std::mt19937 rng_;
+  int cap_;
+  int tags_ = 0;
+  std::vector<std::int64_t> log_;
+};
+
+// What ran, when, and whether Last events at that time had run, for one seed and engine.
+std::vector<std::int64_t> run_chain_program(std::uint32_t seed, bool as_stream) {
+  Scheduler s;
+  RandomEvents events(s, seed, 4000);
   int links = 0;
   Chain* chain = nullptr;
   Chain c(s, as_stream, [&] {
-    log.insert(log.end(), {-1, s.now().count(), s.ordinary_event_running() ? 1 : 0});
-    if (next() % 2 == 0 && tags < 4000) add(s.now().count() + next() % 5, next() % 4 == 0);
-    if (++links < 3000) chain->next_at(s.now() + Nanos{next() % 4}); // 0: two links at one instant
+    events.record(-1);
+    if (events.next() % 2 == 0 && events.room()) events.add_within(5);
+    if (++links < 3000) chain->next_at(s.now() + Nanos{events.next() % 4}); // 0: two links at one instant
   });
   chain = &c;
-  for (int i = 0; i < 300; ++i) add(next() % 100, next() % 4 == 0);
-  chain->next_at(Nanos{next() % 10});
-  for (int i = 0; i < 300; ++i) add(next() % 100, next() % 4 == 0);
-  s.run_until_idle();
-  log.push_back(static_cast<std::int64_t>(s.executed()));
-  return log;
+  for (int i = 0; i < 300; ++i) events.add_within(100);
+  chain->next_at(Nanos{events.next() % 10});
+  for (int i = 0; i < 300; ++i) events.add_within(100);
+  return events.run();
 }
 
 } // namespace
@@ -148,24 +172,8 @@ namespace {
 // in places reserved up front (reserve_places). The log: each event's tag, instant and
 // ordinary_event_running(), then the executed count.
 std::vector<std::int64_t> run_train_program(std::uint32_t seed, bool one_at_a_time) {
-  std::mt19937 rng(seed);
-  auto next = [&rng] { return static_cast<std::int64_t>(rng() % 1000); };
   Scheduler s;
-  std::vector<std::int64_t> log;
-  const auto record = [&](std::int64_t tag) {
-    log.insert(log.end(), {tag, s.now().count(), s.ordinary_event_running() ? 1 : 0});
-  };
-  int tags = 0;
-  std::function<void(std::int64_t, bool)> add = [&](std::int64_t t, bool last) {
-    const int tag = tags++;
-    s.at(
-        Nanos{t},
-        [&, tag] {
-          record(tag);
-          if (next() % 3 == 0 && tags < 3000) add(s.now().count() + next() % 7, next() % 4 == 0);
-        },
-        last ? Scheduler::Tie::Last : Scheduler::Tie::InOrder);
-  };
+  RandomEvents events(s, seed, 3000);
   struct Train {
     std::int64_t start, period, links, tag;
     Reservation first;
@@ -178,27 +186,27 @@ std::vector<std::int64_t> run_train_program(std::uint32_t seed, bool one_at_a_ti
     s.at(
         Nanos{tr.start + tr.period * k},
         [&, &tr = tr] {
-          record(tr.tag - tr.next);
+          events.record(tr.tag - tr.next);
           if (++tr.next < tr.links) link(tr);
         },
         Reservation{tr.first.seq + static_cast<std::uint64_t>(k)});
   };
   for (int i = 0; i < 20; ++i) {
-    add(next() % 100, next() % 4 == 0);
-    const std::int64_t start = next() % 50, period = next() % 4, links = 1 + next() % 200;
+    events.add_within(100);
+    const std::int64_t start = events.next() % 50;
+    const std::int64_t period = events.next() % 4;
+    const std::int64_t links = 1 + events.next() % 200;
     const std::int64_t tag = -1000 * (i + 1);
     if (one_at_a_time) {
       trains.push_back(Train{start, period, links, tag, s.reserve_places(static_cast<std::uint64_t>(links))});
       link(trains.back());
     } else {
       for (std::int64_t k = 0; k < links; ++k)
-        s.at(Nanos{start + period * k}, [&, tag, k] { record(tag - k); });
+        s.at(Nanos{start + period * k}, [&events, tag, k] { events.record(tag - k); });
     }
-    add(next() % 100, next() % 4 == 0);
+    events.add_within(100);
   }
-  s.run_until_idle();
-  log.push_back(static_cast<std::int64_t>(s.executed()));
-  return log;
+  return events.run();
 }
 
 } // namespace
