@@ -4,16 +4,14 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <fcntl.h>
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <sys/file.h>
-#include <unistd.h>
 #include <vector>
 
+#include "rig/cli/directory_lock.hpp"
 #include "rig/cli/exit_status.hpp"
 #include "rig/results/atomic_file.hpp"
 #include "rig/results/junit.hpp"
@@ -49,25 +47,17 @@ public:
     const fs::path dir = out.parent_path().empty() ? fs::path(".") : out.parent_path();
     std::error_code ec;
     fs::create_directories(dir, ec);
-    const fs::path lock = dir / ".hilrig.lock";
-    if (!fs::exists(lock)) return;
-    fd_ = ::open(lock.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) != 0)
+    if (!lock_.take(dir, DirectoryLock::Missing::HoldNothing))
       throw Busy(
           fmt::format("{} is being written by a hilrig run (its .hilrig.lock is held): merge when it ends",
                       dir.string()));
   }
-  ~MergeTarget() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  MergeTarget(const MergeTarget&) = delete;
-  MergeTarget& operator=(const MergeTarget&) = delete;
   struct Busy : std::runtime_error {
     using std::runtime_error::runtime_error;
   };
 
 private:
-  int fd_ = -1;
+  DirectoryLock lock_;
 };
 
 // A run's trace is named relative to its shard's results.json; the merged files link it from

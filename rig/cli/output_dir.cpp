@@ -1,11 +1,5 @@
 #include "rig/cli/output_dir.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -14,8 +8,6 @@
 namespace hilrig::cli {
 
 namespace {
-
-constexpr const char* kLockName = ".hilrig.lock";
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
@@ -26,8 +18,8 @@ bool ends_with(const std::string& s, const std::string& tail) {
 bool is_run_evidence(const std::string& name) {
   if (ends_with(name, ".tmp")) return is_run_evidence(name.substr(0, name.size() - 4));
   return name == "results.json" || name == "junit.xml" || name == "report.html" || name == "runs.jsonl" ||
-         name == "can.log" || name == kLockName || (name.starts_with("trace") && ends_with(name, ".vcd")) ||
-         ends_with(name, ".gtkw");
+         name == "can.log" || name == kDirectoryLockName ||
+         (name.starts_with("trace") && ends_with(name, ".vcd")) || ends_with(name, ".gtkw");
 }
 
 OutputDirectory::OutputDirectory(const std::filesystem::path& dir) {
@@ -42,32 +34,19 @@ OutputDirectory::OutputDirectory(const std::filesystem::path& dir) {
                     "or new directory",
                     dir.string()));
   if (ec) throw std::filesystem::filesystem_error("cannot create --out", dir, ec);
-  const std::filesystem::path lock = dir / kLockName;
-  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0)
-    throw std::runtime_error(fmt::format("cannot open {}: {}", lock.string(), std::strerror(errno)));
-  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-    const int err = errno;
-    ::close(lock_fd_);
-    if (err == EWOULDBLOCK)
-      throw OutputBusy(fmt::format("--out {}: another hilrig run is writing this directory (it holds {})",
-                                   dir.string(), lock.string()));
-    throw std::runtime_error(fmt::format("cannot lock {}: {}", lock.string(), std::strerror(err)));
-  }
+  if (!lock_.take(dir, DirectoryLock::Missing::Create))
+    throw OutputBusy(fmt::format("--out {}: another hilrig run is writing this directory (it holds {})",
+                                 dir.string(), lock_.path().string()));
   std::vector<std::filesystem::path> evidence;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
-    if (!entry.is_regular_file() || !is_run_evidence(name)) {
-      ::close(lock_fd_);
+    if (!entry.is_regular_file() || !is_run_evidence(name))
       throw ForeignOutput(fmt::format("--out {}: holds {}, which hilrig run does not write: give an empty or "
                                       "new directory, or one an earlier hilrig run wrote",
                                       dir.string(), name));
-    }
-    if (name != kLockName) evidence.push_back(entry.path());
+    if (name != kDirectoryLockName) evidence.push_back(entry.path());
   }
   for (const auto& path : evidence) std::filesystem::remove(path);
 }
-
-OutputDirectory::~OutputDirectory() { ::close(lock_fd_); }
 
 } // namespace hilrig::cli

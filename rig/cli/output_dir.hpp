@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "rig/cli/directory_lock.hpp"
+
 namespace hilrig::cli {
 
 class OutputBusy : public std::runtime_error {
@@ -32,12 +34,9 @@ public:
   // Creates dir, takes its lock and clears the evidence of an earlier campaign; throws
   // OutputBusy or ForeignOutput as above, std::runtime_error with the errno text otherwise.
   explicit OutputDirectory(const std::filesystem::path& dir);
-  ~OutputDirectory();
-  OutputDirectory(const OutputDirectory&) = delete;
-  OutputDirectory& operator=(const OutputDirectory&) = delete;
 
 private:
-  int lock_fd_ = -1;
+  DirectoryLock lock_;
 };
 
 } // namespace hilrig::cli
