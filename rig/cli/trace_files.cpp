@@ -24,10 +24,18 @@ std::string plain_name(std::string text) {
 
 // The check's measurement windows, sorted and joined where they overlap or touch. A window of
 // no length is widened to 1 ns, so its marker is seen.
+// A measurement's window as the trace can show it: from 0 on (an expected window can begin, or
+// lie wholly, before the run: an edge due before the shaft reached the setpoint's count) and at
+// least a nanosecond long.
+rig::TraceWindow shown(const rig::TraceWindow& w) {
+  const Nanos begin = std::max(w.begin, Nanos{0});
+  return {begin, std::max(w.end, begin + Nanos{1})};
+}
+
 std::vector<rig::TraceWindow> windows_of(const rig::CheckResult& check) {
   std::vector<rig::TraceWindow> w;
   for (const rig::Measurement& m : check.measurements)
-    if (m.window) w.push_back({m.window->begin, std::max(m.window->end, m.window->begin + Nanos{1})});
+    if (m.window) w.push_back(shown(*m.window));
   std::sort(w.begin(), w.end(), [](const auto& a, const auto& b) { return a.begin < b.begin; });
   std::vector<rig::TraceWindow> joined;
   for (const rig::TraceWindow& x : w) {
@@ -49,8 +57,10 @@ bool failed(const rig::RunResult& run, const rig::CheckResult& check) {
 // that judged no window at all (e.g. it saw no edge) opens on the whole run.
 GtkwView view_of(const rig::CheckResult& check, const TraceRecorder& trace) {
   for (const rig::Measurement& m : check.measurements)
-    if (m.outcome != rig::Outcome::Pass && m.window)
-      return GtkwView{m.window->begin, std::max(m.window->end, m.window->begin + Nanos{1}), m.at};
+    if (m.outcome != rig::Outcome::Pass && m.window) {
+      const rig::TraceWindow w = shown(*m.window);
+      return GtkwView{w.begin, w.end, m.at};
+    }
   const std::vector<rig::TraceWindow> windows = windows_of(check);
   if (!windows.empty()) return GtkwView{windows.front().begin, windows.back().end, std::nullopt};
   return GtkwView{Nanos{0}, std::max(Nanos{1}, trace.latest_sample_time()), std::nullopt};
