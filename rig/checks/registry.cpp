@@ -116,6 +116,16 @@ std::optional<PhaseScan> phase_scan(const Table& t) {
   return PhaseScan{t.us("scan_us"), t.count("phase_bins", 10)};
 }
 
+// A full-scale count: 0 (none) or at least one count. Below one, setpoint + k * modulus puts
+// levels closer than a count apart, which no board resolves, and a scan step then meets
+// without end (1e-9: millions of crossings a step).
+double modulus_of(const Table& t) {
+  const double m = t.num("modulus");
+  if (m != 0.0 && m < 1.0)
+    throw ParamError("modulus", fmt::format("0 (none) or at least 1 count, not {}", m));
+  return m;
+}
+
 CheckParams throughput(std::string_view name, const Table& t) {
   one_of(t, "crossings_us", "setpoint");
   ThroughputParams p;
@@ -142,7 +152,7 @@ CheckParams throughput(std::string_view name, const Table& t) {
     ordered(t, "from_us", "to_us");
     s.step = t.us("step_us", Nanos{100'000});
     if (s.step <= Nanos{0}) throw ParamError("step_us", "a step of at least 1 ns (0.001 us)");
-    s.modulus = t.num("modulus");
+    s.modulus = modulus_of(t);
     p.crossings = s;
   }
   p.phase = phase_scan(t);
@@ -179,10 +189,14 @@ CheckParams advance(std::string_view name, const Table& t) {
   p.spec.name = name;
   p.spec.level = t.level("level", Level::High);
   p.spec.setpoint = t.num("setpoint");
+  // One advance: a time (scaled by the speed at each edge) or a fixed count, not both (one
+  // would silently win).
+  if (t.has("advance_ms") && t.has("advance_counts"))
+    throw ParamError("advance_counts", "advance_ms or advance_counts, not both");
   p.spec.advance = t.ms("advance_ms");
   p.spec.advance_counts = t.opt_num("advance_counts");
   p.spec.tolerance = t.num("tolerance_counts", 1.0);
-  p.spec.modulus = t.num("modulus");
+  p.spec.modulus = modulus_of(t);
   p.spec.min_edges = t.count("min_edges", 1);
   p.phase = phase_scan(t);
   return p;
@@ -195,7 +209,7 @@ CheckParams edge_at(std::string_view name, const Table& t) {
   p.spec.level = t.level("level", Level::High);
   p.spec.position = t.num("position");
   p.spec.tolerance = t.num("tolerance_counts", 1.0);
-  p.spec.modulus = t.num("modulus");
+  p.spec.modulus = modulus_of(t);
   p.spec.min_edges = t.count("min_edges", 1);
   p.spec.from = t.opt_us("from_us");
   p.spec.to = t.opt_us("to_us");
@@ -328,7 +342,8 @@ std::vector<CheckKind> make_kinds() {
        P("setpoint", Num, false, "counts: crossings derived from the position function"),
        P("direction", Str, false, "rising, falling or both (both)"),
        P("step_us", Num, false, "scan step for crossings (100); shorter than the shortest dwell", width),
-       P("modulus", Num, false, "full-scale count: setpoint + k * modulus are crossings too (0: none)", time),
+       P("modulus", Num, false,
+         "full-scale count: setpoint + k * modulus are crossings too (0: none; else at least 1)", time),
        instant(P("from_us", Num, false, "scan start", time), kUs),
        instant(P("to_us", Num, false, "scan end", time), kUs), phase_param("crossings"), bins_param()},
       throughput));
@@ -348,15 +363,15 @@ std::vector<CheckKind> make_kinds() {
        bins_param(),
        P("probe_phases", Int, false, "probe start phases over scan_us (phase_bins)", between(1.0, 1000.0))},
       debounce));
-  k.push_back(kind("advance_counts", "each output edge at speed S fires at setpoint - S*advance, in counts",
-                   {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
-                    P("setpoint", Num, true, "counts"), P("advance_ms", Num, false, "advance time (0)", time),
-                    P("advance_counts", Num, false, "fixed advance in counts instead of speed*advance_ms"),
-                    P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
-                    P("modulus", Num, false, "full-scale count for wrapping positions (0: none)", time),
-                    P("min_edges", Int, false, "fewest edges (1)", counts), phase_param("expected edges"),
-                    bins_param()},
-                   advance));
+  k.push_back(kind(
+      "advance_counts", "each output edge at speed S fires at setpoint - S*advance, in counts",
+      {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
+       P("setpoint", Num, true, "counts"), P("advance_ms", Num, false, "advance time (0)", time),
+       P("advance_counts", Num, false, "fixed advance in counts instead of speed*advance_ms"),
+       P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
+       P("modulus", Num, false, "full-scale count for wrapping positions (0: none; else at least 1)", time),
+       P("min_edges", Int, false, "fewest edges (1)", counts), phase_param("expected edges"), bins_param()},
+      advance));
   k.push_back(kind(
       "brake_stop_time", "brake applied to standstill against the limit; reported time and fault output",
       {P("limit_ms", Num, true, "stop time limit (inclusive)", time),
@@ -377,7 +392,7 @@ std::vector<CheckKind> make_kinds() {
       {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
        P("position", Num, true, "counts"),
        P("tolerance_counts", Num, false, "either side, inclusive (1)", time),
-       P("modulus", Num, false, "full-scale count (0: none)", time),
+       P("modulus", Num, false, "full-scale count (0: none; else at least 1)", time),
        P("min_edges", Int, false, "fewest edges (1)", counts),
        instant(P("from_us", Num, false, "judge the edges from this time (inclusive; default: all)", time),
                kUs),
@@ -579,7 +594,7 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
 
 CheckResult run(const PulseWidthParams& p, const Capture& c) {
   const std::span<const Edge> edges = line(c, p.line);
-  CheckResult r = check_pulse_width(edges, p.spec);
+  CheckResult r = check_pulse_width(edges, p.spec, c.end);
   if (p.phase) {
     // Where each pulse started within the board's scan or tick: a width the board quantises
     // to its tick shows its extremes only for starts across the whole tick.

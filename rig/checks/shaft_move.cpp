@@ -50,13 +50,27 @@ CheckResult check_shaft_move(std::span<const Edge> step, std::span<const Edge> d
     last = e.time;
   }
   const TraceWindow window{spec.from, last};
+  // No step in the window judges nothing but a net distance: a duration, speed or reversal
+  // count of a shaft that never moved would pass a board that never moves. Only `steps`
+  // (e.g. 0 +- 0: the shaft stands still) makes no step a measurement.
+  const bool judged_nothing = count == 0 && !spec.steps;
+  const auto nothing = [&](const char* what) {
+    r.measurements.push_back(error(
+        spec.name + "." + what,
+        fmt::format("nothing judged: no step in the window ({} ns .. {} ns); give steps "
+                    "(e.g. 0) to judge a shaft that stands still",
+                    spec.from.count(),
+                    spec.to == Nanos::max() ? std::string("end") : fmt::format("{}", spec.to.count()))));
+  };
   if (spec.steps) {
     r.measurements.push_back(measure(
         spec.name + ".steps", static_cast<double>(net), "steps", *spec.steps - spec.steps_tolerance,
         *spec.steps + spec.steps_tolerance,
         fmt::format("net steps (CW +) after {} ns: {} steps counted", spec.from.count(), count), window));
   }
-  if (spec.duration_min || spec.duration_max) {
+  if ((spec.duration_min || spec.duration_max) && judged_nothing) {
+    nothing("duration");
+  } else if (spec.duration_min || spec.duration_max) {
     r.measurements.push_back(measure_time(
         spec.name + ".duration", last - spec.from, TimeUnit::Ms, spec.duration_min, spec.duration_max,
         count == 0 ? std::string("no step in the window")
@@ -64,7 +78,9 @@ CheckResult check_shaft_move(std::span<const Edge> step, std::span<const Edge> d
         window, last));
   }
   if (spec.peak_min || spec.peak_max) {
-    if (shortest == Nanos::max()) {
+    if (judged_nothing) {
+      nothing("peak_speed");
+    } else if (shortest == Nanos::max()) {
       r.measurements.push_back(
           failure(spec.name + ".peak_speed", "fewer than two steps in one direction: no speed", window));
     } else {
@@ -74,7 +90,9 @@ CheckResult check_shaft_move(std::span<const Edge> step, std::span<const Edge> d
                                        TraceWindow{shortest_at - shortest, shortest_at}, shortest_at));
     }
   }
-  if (spec.reversals) {
+  if (spec.reversals && judged_nothing) {
+    nothing("reversals");
+  } else if (spec.reversals) {
     r.measurements.push_back(measure(spec.name + ".reversals", static_cast<double>(reversals), "",
                                      *spec.reversals, *spec.reversals, "direction changes between steps",
                                      window));

@@ -14,15 +14,9 @@ CheckResult check_word_bits(std::span<const Observation> observations, const Wor
     r.measurements.push_back(error(spec.name, "nothing judged: mask 0 selects no bit"));
     return r;
   }
-  const Observation* chosen = nullptr;
-  for (const auto& o : observations) {
-    if (o.name != spec.observation) continue;
-    if (spec.at && o.time > *spec.at) continue;
-    if (!chosen || o.time >= chosen->time) chosen = &o;
-  }
+  const Observation* chosen = chosen_observation(observations, spec);
   if (!chosen) {
-    r.measurements.push_back(
-        failure(spec.name, fmt::format("missing word: no observation named '{}'", spec.observation)));
+    r.measurements.push_back(missing_word(spec));
     return r;
   }
   // A signed read of a word keeps its 16 bits: take them back as two's complement.

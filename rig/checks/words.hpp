@@ -20,6 +20,13 @@ struct WordSpec {
   std::optional<Nanos> at{}; // judge the latest observation at or before this; default: the last
 };
 
+// The observation a word check judges: the latest named spec.observation at or before spec.at
+// (any time without it); nullptr when there is none.
+[[nodiscard]] const Observation* chosen_observation(std::span<const Observation> observations,
+                                                    const WordSpec& spec);
+// A word check's failure when there is none: "missing word: no observation named 'x' by T ns".
+[[nodiscard]] rig::Measurement missing_word(const WordSpec& spec);
+
 // "<name>" = the chosen observation's value against [lower, upper]. No such observation is a
 // failure ("missing word").
 [[nodiscard]] CheckResult check_word_within(std::span<const Observation> observations, const WordSpec& spec);

@@ -122,11 +122,13 @@ struct Observation {
 //  - Times are judged in integer nanoseconds, exactly (judge(Nanos, ...)).
 //  - Every other value (counts, words, rates) is judged with one epsilon: a value within
 //    kCompareEpsilon * max(1, |limit|) of a limit is at the limit. It absorbs the rounding of
-//    double arithmetic (101.00000000000003 against 101) and nothing a board could show: a
-//    nanosecond at 10^6 counts/s is already 10^-3 counts.
+//    double arithmetic (101.00000000000003 against 101: a double holds 2^-52 = 2.2e-16 of its
+//    value, so 1e-12 is ~4,500 roundings) and nothing a board could show, at any magnitude a
+//    campaign can reach: at 4 * 10^10 counts (10,000 turns of a 10^6-line encoder) it is
+//    0.04 counts, where 1e-9 was 40 (a board 31 counts off passed).
 //  - A value or a limit that is not a finite number is an Error: nothing was judged (every
 //    comparison with NaN is false, so a NaN limit would otherwise pass any value).
-inline constexpr double kCompareEpsilon = 1e-9;
+inline constexpr double kCompareEpsilon = 1e-12;
 
 [[nodiscard]] inline Outcome judge(double value, std::optional<double> lower, std::optional<double> upper) {
   if (!std::isfinite(value)) return Outcome::Error;

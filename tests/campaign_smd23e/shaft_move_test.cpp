@@ -81,6 +81,31 @@ TEST(ShaftMove, NoStepMeansZeroDurationAndNoSpeed) {
   EXPECT_EQ(find(r, "stop.peak_speed")->outcome, Outcome::Fail);
 }
 
+// Without `steps`, a window with no step judges nothing: a board that never moves must not
+// pass a duration, speed or reversal limit. One step in the window is judged again.
+TEST(ShaftMove, NoStepWithoutAStepsExpectationIsAnError) {
+  ShaftMoveSpec s;
+  s.name = "stop";
+  s.from = 10_ms;
+  s.to = 20_ms;
+  s.duration_max = 100_ms;
+  EXPECT_EQ(check_shaft_move({}, {}, s).outcome(), Outcome::Error);
+  s.duration_max.reset();
+  s.reversals = 0;
+  EXPECT_EQ(check_shaft_move({}, {}, s).outcome(), Outcome::Error);
+  s.reversals.reset();
+  s.peak_max = 10.0;
+  EXPECT_EQ(check_shaft_move({}, {}, s).outcome(), Outcome::Error);
+  s.peak_max.reset();
+  s.duration_max = 100_ms;
+  s.reversals = 0;
+  // A step just after `from` and one at `to`: in the window.
+  EXPECT_EQ(check_shaft_move(toggles({10_ms + 1_ns}), {}, s).outcome(), Outcome::Pass);
+  EXPECT_EQ(check_shaft_move(toggles({20_ms}), {}, s).outcome(), Outcome::Pass);
+  // Steps only outside it: nothing judged.
+  EXPECT_EQ(check_shaft_move(toggles({10_ms, 20_ms + 1_ns}), {}, s).outcome(), Outcome::Error);
+}
+
 TEST(ShaftMove, DirectionLowBeforeItsFirstEdgeIsCcw) {
   const std::vector<Edge> step = toggles({1_ms, 2_ms});
   ShaftMoveSpec s;
@@ -112,6 +137,22 @@ TEST(WordBits, JudgesOnlyTheMaskedBits) {
   EXPECT_EQ(check_word_bits(obs, s, 0x1080, 0x1080).outcome(), Outcome::Fail);
   s.observation = "nothing";
   EXPECT_EQ(check_word_bits(obs, s, 0x1080, 0x0080).outcome(), Outcome::Fail);
+}
+
+// A word read only after at_ms is missing at at_ms, and the failure says by when (as
+// word_equals and word_within say it): 1 ns later it is judged.
+TEST(WordBits, AWordReadAfterAtIsMissingByThatTime) {
+  const std::vector<rig::Observation> obs = {{"sw1", 0x0080, "", 5_ms}};
+  WordSpec s;
+  s.name = "mc";
+  s.observation = "sw1";
+  s.at = 5_ms - 1_ns;
+  const auto missing = check_word_bits(obs, s, 0x0080, 0x0080);
+  EXPECT_EQ(missing.outcome(), Outcome::Fail);
+  EXPECT_EQ(missing.measurements.at(0).detail, "missing word: no observation named 'sw1' by 4999999 ns");
+  EXPECT_EQ(check_word_within(obs, s).measurements.at(0).detail, missing.measurements.at(0).detail);
+  s.at = 5_ms;
+  EXPECT_EQ(check_word_bits(obs, s, 0x0080, 0x0080).outcome(), Outcome::Pass);
 }
 
 TEST(WordBits, ASignedReadKeepsItsSixteenBits) {

@@ -108,6 +108,35 @@ TEST(Boundary, PulseWidthLimitsSweptInNanoseconds) {
   }
 }
 
+// A pulse the run ends inside: one complete pulse of 25 us, then one that starts at 2 ms and is
+// still on at the end. Open for up to max it is not judged (it might still end in time); a
+// nanosecond over max it fails, already too long, on either level.
+TEST(Boundary, PulseStillOpenAtTheEndFailsOnceOverMax) {
+  PulseWidthSpec s;
+  s.min = 20'300_ns;
+  s.max = 30'700_ns;
+  for (const Level level : {Level::High, Level::Low}) {
+    s.level = level;
+    const Level back = level == Level::High ? Level::Low : Level::High;
+    const std::vector<Edge> line = {{1_ms, level}, {1_ms + 25_us, back}, {2_ms, level}};
+    for (int d = -3; d <= 3; ++d) {
+      SCOPED_TRACE(d);
+      const auto r = check_pulse_width(line, s, 2_ms + 30'700_ns + Nanos{d});
+      EXPECT_EQ(r.outcome(), d <= 0 ? Outcome::Pass : Outcome::Fail);
+      EXPECT_NEAR(find(r, "pulse.longest").value, d <= 0 ? 25.0 : (30'700 + d) / 1000.0, 1e-12);
+    }
+    // With no complete pulse the open one still fails (and the count says none was complete).
+    const std::vector<Edge> stuck = {{2_ms, level}};
+    const auto r = check_pulse_width(stuck, s, 500_ms);
+    EXPECT_EQ(r.outcome(), Outcome::Fail);
+    EXPECT_EQ(find(r, "pulse.longest").outcome, Outcome::Fail);
+    s.min_pulses = 0;
+    EXPECT_EQ(check_pulse_width(stuck, s, 500_ms).outcome(), Outcome::Fail);
+    EXPECT_EQ(check_pulse_width(stuck, s, 2_ms + 30'700_ns).outcome(), Outcome::Error); // judged nothing
+    s.min_pulses = 1;
+  }
+}
+
 TEST(Boundary, DebounceBoundaryInclusiveAtFilterPlusTolerance) {
   DebounceSpec s{"d", 500_us, 300_ns}; // boundary in [499.7, 500.3] us
   for (int d = -3; d <= 3; ++d) {
@@ -152,9 +181,9 @@ TEST(Boundary, TheRuleItself) {
   EXPECT_EQ(rig::judge(20'301_ns, std::nullopt, 20'300_ns), Outcome::Fail);
   EXPECT_EQ(rig::judge(20'300_ns, 20'300_ns, std::nullopt), Outcome::Pass);
   EXPECT_EQ(rig::judge(20'299_ns, 20'300_ns, std::nullopt), Outcome::Fail);
-  // The epsilon scales with the limit: at 10^6 counts one part in 10^9 is 10^-3 counts.
-  EXPECT_EQ(rig::judge(1e6 + 5e-4, std::nullopt, 1e6), Outcome::Pass);
-  EXPECT_EQ(rig::judge(1e6 + 2e-3, std::nullopt, 1e6), Outcome::Fail);
+  // The epsilon scales with the limit: at 10^6 counts one part in 10^12 is 10^-6 counts.
+  EXPECT_EQ(rig::judge(1e6 + 5e-7, std::nullopt, 1e6), Outcome::Pass);
+  EXPECT_EQ(rig::judge(1e6 + 2e-6, std::nullopt, 1e6), Outcome::Fail);
   EXPECT_EQ(rig::judge(std::nan(""), std::nullopt, std::nullopt), Outcome::Error);
   // A limit that is not a finite number judges nothing either: every comparison with NaN is
   // false, so it would pass any value.
@@ -165,6 +194,28 @@ TEST(Boundary, TheRuleItself) {
       EXPECT_EQ(rig::judge(v, std::nullopt, bad), Outcome::Error) << bad << " " << v;
       EXPECT_EQ(rig::judge(v, 0.0, bad), Outcome::Error) << bad << " " << v;
     }
+}
+
+// The largest position a campaign can state: start_turns 10,000 (docs/campaigns.md) of a
+// 10^6-line encoder, 4 * 10^10 counts. A tolerance window of +-0.5 counts there passes a value
+// a few roundings beyond its end (what arithmetic on doubles of that size leaves) and fails a
+// tenth of a count beyond, on both sides; a count of 1e-9 relative slack was 40 counts.
+TEST(Boundary, CountsFarFromZeroKeepTheirTolerance) {
+  const double expected = 4e10 + 70.0;
+  const double lower = expected - 0.5;
+  const double upper = expected + 0.5;
+  double over = upper;
+  double under = lower;
+  for (int ulp = 0; ulp < 8; ++ulp) {
+    EXPECT_EQ(rig::judge(over, lower, upper), Outcome::Pass) << ulp;
+    EXPECT_EQ(rig::judge(under, lower, upper), Outcome::Pass) << ulp;
+    over = std::nextafter(over, std::numeric_limits<double>::infinity());
+    under = std::nextafter(under, -std::numeric_limits<double>::infinity());
+  }
+  for (const double beyond : {0.1, 0.5, 1.0, 31.24}) {
+    EXPECT_EQ(rig::judge(upper + beyond, lower, upper), Outcome::Fail) << beyond;
+    EXPECT_EQ(rig::judge(lower - beyond, lower, upper), Outcome::Fail) << beyond;
+  }
 }
 
 // Item 5: a check that judged no measurement is an error, never a pass (the parser refuses

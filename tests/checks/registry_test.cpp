@@ -125,6 +125,41 @@ TEST(Registry, NotFiniteOrNegativeLimitsAreBadInput) {
   EXPECT_EQ(problem("word_within", json{{"observation", "w"}, {"lower", 3}, {"upper", 2}}), "upper");
 }
 
+// A modulus is 0 (none) or a full-scale count of at least one: below one count the levels
+// setpoint + k * modulus are closer than any board resolves (1e-9 made a run eat memory without
+// end). Both sides of 1, and 0, on every check that takes one.
+TEST(Registry, AModulusIsNoneOrAtLeastOneCount) {
+  const auto with = [](const std::string& kind, double modulus) {
+    json p = kind == "throughput"       ? json{{"output", "o"}, {"limit_us", 20}, {"setpoint", 1}}
+             : kind == "advance_counts" ? json{{"output", "o"}, {"setpoint", 1}, {"advance_ms", 1}}
+                                        : json{{"output", "o"}, {"position", 1}};
+    p["modulus"] = modulus;
+    return problem(kind, p);
+  };
+  for (const char* kind : {"throughput", "advance_counts", "edge_at_position"}) {
+    SCOPED_TRACE(kind);
+    for (const double ok : {0.0, 1.0, 4096.0}) EXPECT_EQ(with(kind, ok), "ok") << ok;
+    for (const double bad : {1e-300, 1e-9, 0.5, std::nextafter(1.0, 0.0), -1.0})
+      EXPECT_EQ(with(kind, bad), "modulus") << bad;
+  }
+}
+
+// advance_ms scales with the speed at each edge, advance_counts is fixed: given both, one
+// would silently win.
+TEST(Registry, AnAdvanceIsATimeOrACountNotBoth) {
+  const json base{{"output", "o"}, {"setpoint", 100}};
+  json both = base;
+  both["advance_ms"] = 1;
+  both["advance_counts"] = 2;
+  EXPECT_EQ(problem("advance_counts", both), "advance_counts");
+  json ms = base;
+  ms["advance_ms"] = 1;
+  EXPECT_EQ(problem("advance_counts", ms), "ok");
+  json counts = base;
+  counts["advance_counts"] = 2;
+  EXPECT_EQ(problem("advance_counts", counts), "ok");
+}
+
 // Issue 16 item 5: min_count, min_pulses, min_edges = 0 and a word_bits mask of 0 passed
 // with nothing captured. Refused where the campaign is read.
 TEST(Registry, ParametersThatJudgeNothingAreBadInput) {
