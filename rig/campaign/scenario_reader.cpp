@@ -604,6 +604,12 @@ private:
           r.fail("read", host != nullptr ? fmt::format("an input word 0 .. {}", host->input_words - 1)
                                          : std::string("an input word >= 0"));
         h.word = static_cast<std::size_t>(word);
+        if (host != nullptr && host->input_absent) {
+          std::map<std::string, duts::ParamValue, std::less<>> params;
+          for (const auto& [key, param] : s.dut.params) params[key] = param.value;
+          const std::string absent = host->input_absent(duts::DutParams(std::move(params)), h.word);
+          if (!absent.empty()) r.fail("read", absent);
+        }
         h.name = r.string("name");
         if (!is_label(h.name)) r.fail("name", "the observation's name: " + label_range());
         if (names.contains(h.name))

@@ -101,6 +101,8 @@ struct PanelActionInfo {
   std::string description; // what the board does, per its manual (`hilrig list`)
 };
 
+class DutParams;
+
 // The host's word interface (EtherNet/IP or Modbus registers on a real board).
 struct HostInterface {
   std::size_t output_words = 0; // host -> board (command words)
@@ -113,6 +115,11 @@ struct HostInterface {
   // Nonzero: output word 0 sends a block transfer whose length it gives, 0 .. this (the
   // Series 2700's BTW, 0 meaning all 64 words, L1269); a larger word 0 is bad input.
   std::size_t block_length_max = 0;
+  // Why input word `word` does not exist on a board of these parameters ("" when it does): a
+  // word only some of a device's models have (the Series 2700's single-transfer word, the
+  // 2731-04's only). Unset: every word below input_words exists. A campaign reading an absent
+  // word is bad input, as `hilrig serve` answers it with Illegal Data Address.
+  std::function<std::string(const DutParams&, std::size_t word)> input_absent{};
 };
 
 // Every parameter of a DUT with its value (the campaign's, or the default).

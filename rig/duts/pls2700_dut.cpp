@@ -4,6 +4,8 @@
 #include <array>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "drivers/virtual/virtual_bus.hpp"
 #include "models/pls2700/pls2700.hpp"
 
@@ -259,6 +261,20 @@ DutInfo pls2700_info() {
   };
   info.host =
       HostInterface{p::kMaxBtwWords + 1, kPls2700SingleTransferWord + 1, false, 15, 15, p::kMaxBtwWords};
+  // A one-channel module's BTR is 3 words, a two-channel one's 5 (L1260); only the 2731-04
+  // has the single-transfer word (L433, L1318; not the 2732-04, L437).
+  info.host.input_absent = [](const DutParams& params, std::size_t word) -> std::string {
+    const p::ModelTraits& model = p::traits(pls2700_model(params));
+    if (word == kPls2700SingleTransferWord && !model.single_transfer)
+      return fmt::format(
+          "no input word {} on the {}: the single-transfer position word is the 2731-04's only "
+          "(L433, L1318)",
+          word, model.name);
+    if (word < kPls2700ErrorWord && word >= static_cast<std::size_t>(model.btr_words))
+      return fmt::format("no input word {} on the {}: its block transfer read is words 0 .. {} (L1260)", word,
+                         model.name, model.btr_words - 1);
+    return {};
+  };
   info.make = [](Scheduler& scheduler, const DutParams& params, std::string_view variant,
                  std::uint64_t seed) -> std::unique_ptr<Dut> {
     const auto fault = p::fault_from_name(variant);

@@ -367,5 +367,40 @@ TEST(HostActions, Pls2700BtwLengthPastTheFileIsRefused) {
       << e;
 }
 
+// Input words a module has, by model: a one-channel module's BTR is words 0..2 and a
+// two-channel one's 0..4 (L1260); the single-transfer position word (input word 6) is the
+// 2731-04's only (L433, L1318; the 2732-04 has none, L437). Reading a word the module lacks is
+// bad input, named, as `hilrig serve` answers it with Illegal Data Address; each model's last
+// word and the one past it.
+TEST(HostActions, Pls2700ReadsOnlyTheWordsItsModelHas) {
+  const auto reading = [](const std::string& model, int word) {
+    std::string text = pls2700_btw("write = [2, 0x8801, 0x0360]");
+    text = replaced(text, "model = \"2731\"", "model = \"" + model + "\"");
+    return error_of(replaced(text, "read = 5", "read = " + std::to_string(word)));
+  };
+  for (const char* one : {"2731", "2731-04", "2741"}) {
+    SCOPED_TRACE(one);
+    EXPECT_EQ(reading(one, 2), "accepted");
+    EXPECT_NE(reading(one, 3).find("host[1].read: no input word 3 on the " + std::string(one) +
+                                   ": its block transfer read is words 0 .. 2 (L1260)"),
+              std::string::npos)
+        << reading(one, 3);
+    EXPECT_NE(reading(one, 4).find("no input word 4"), std::string::npos);
+  }
+  for (const char* two : {"2732", "2732-04", "2742", "2742-18"}) {
+    SCOPED_TRACE(two);
+    EXPECT_EQ(reading(two, 4), "accepted");
+    EXPECT_EQ(reading(two, 5), "accepted"); // the error byte, every model
+  }
+  EXPECT_EQ(reading("2731-04", 6), "accepted");
+  for (const char* model : {"2731", "2732", "2732-04", "2741", "2742", "2742-18"}) {
+    SCOPED_TRACE(model);
+    EXPECT_NE(reading(model, 6).find("host[1].read: no input word 6 on the " + std::string(model) +
+                                     ": the single-transfer position word is the 2731-04's only"),
+              std::string::npos)
+        << reading(model, 6);
+  }
+}
+
 } // namespace
 } // namespace hilrig::campaign
