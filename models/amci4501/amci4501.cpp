@@ -46,6 +46,7 @@ void Amci4501::power_off() {
 void Amci4501::power_on() {
   if (powered_) return;
   powered_ = true;
+  timeout_error_ = false; // before reset_measurement(): power-up clears the words too (L176)
   reset_measurement();
   config_ = Config{};
   decoder_ =
@@ -127,7 +128,9 @@ void Amci4501::program() {
 // [MODEL] A valid programming cycle starts measuring afresh: cycles in progress and
 // responses not yet out are dropped, result words and the handshake are cleared (always on
 // a mode change; else per Params::program_clears_results). No Response and Time Out stay
-// until control bit 1 clears them (L154).
+// until control bit 1 clears them (L93, L154; a programming cycle resets only the Command and
+// Parameter errors, L118), and while Time Out is set words 1-7 stay as they are, even across
+// a mode change (L119).
 void Amci4501::reset_measurement() {
   ++generation_;
   cancel_timeout();
@@ -140,7 +143,7 @@ void Amci4501::reset_measurement() {
   seen_active_ = {false, false};
   new_value_ = false;
   missed_ = 0;
-  std::fill(inputs_.begin(), inputs_.end(), std::uint16_t{0});
+  if (!timeout_error_) std::fill(inputs_.begin(), inputs_.end(), std::uint16_t{0});
 }
 
 // ---------------------------------------------------------------- inputs
@@ -238,8 +241,8 @@ void Amci4501::apply(const Deferred& d) {
   case Op::Publish:
     publish(words, d.first);
     break;
-  case Op::Write:
-    std::copy(words.begin(), words.end(), inputs_.begin() + d.first);
+  case Op::Write: // modes 5, 6: no update while a Time Out from modes 1-4 stands (L119)
+    if (!timeout_error_) std::copy(words.begin(), words.end(), inputs_.begin() + d.first);
     break;
   default:
     break;
@@ -280,18 +283,19 @@ void Amci4501::cancel_timeout() {
 }
 
 // Velocity (L114): counts in the last window, every window; modes 1 (word 2, signed) and
-// 2 (word 5, 0 when B leads A). Not frozen by the handshake (A37). [MODEL] saturates at
-// the int16 limits (L114 gives no range).
+// 2 (word 5, 0 when B leads A). Not frozen by the handshake (A37), but by Time Out: "The
+// module will not update the input image table data until the timeout error has been
+// cleared" (L119); the window still advances, so the first word after the clear is the
+// last window's count. [MODEL] saturates at the int16 limits (L114 gives no range).
 void Amci4501::on_velocity_window() {
-  if (!powered_) {
-    scheduler_.after(params_.velocity_window, [this] { on_velocity_window(); });
-    return;
+  if (powered_) {
+    const std::int64_t p = decoder_.count();
+    const std::int64_t v = std::clamp<std::int64_t>(p - velocity_ref_, -32768, 32767);
+    velocity_ref_ = p;
+    if (!timeout_error_ && config_.mode == 1) inputs_[2] = static_cast<std::uint16_t>(v);
+    if (!timeout_error_ && config_.mode == 2)
+      inputs_[5] = static_cast<std::uint16_t>(std::max<std::int64_t>(v, 0));
   }
-  const std::int64_t p = decoder_.count();
-  std::int64_t v = std::clamp<std::int64_t>(p - velocity_ref_, -32768, 32767);
-  velocity_ref_ = p;
-  if (config_.mode == 1) inputs_[2] = static_cast<std::uint16_t>(v);
-  if (config_.mode == 2) inputs_[5] = static_cast<std::uint16_t>(std::max<std::int64_t>(v, 0));
   scheduler_.after(params_.velocity_window, [this] { on_velocity_window(); });
 }
 

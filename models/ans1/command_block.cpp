@@ -69,13 +69,14 @@ namespace command_fields {
 ErrorCode decode_return_data(const HostWords& w, DecodedBlock& out) {
   if (reserved_bits_set(w[0], bits({10, 9, 8}))) return ErrorCode::ReservedBits;
   if (has(w[0], 8)) {
-    // w2 must name an output for the output blocks, w3 an input for the input blocks; the
+    // w2 must name an output for the output blocks, w3 an input for the input blocks, as
+    // Tables 5.1/6.1 list them (L1755-L1766, L2268-L2279; DA19 takes both, L1766, L2279); the
     // other word is ignored [MODEL; A48: DA5 has no input].
     const unsigned attribute = w[1];
     if (!is_data_attribute(attribute)) return ErrorCode::Parameter;
     const bool uses_output =
         attribute == 1 || attribute == 2 || attribute == 3 || attribute == 16 || attribute == 19;
-    const bool uses_input = attribute == 4 || attribute == 16 || attribute == 18;
+    const bool uses_input = attribute == 4 || attribute == 16 || attribute == 18 || attribute == 19;
     if (uses_output && !in_range(w[2], 1, 16)) return ErrorCode::Parameter;
     if (uses_input && !in_range(w[3], 1, 16)) return ErrorCode::Parameter;
     DataSelection sel;

@@ -94,8 +94,12 @@ void HostInterface::execute(const HostWords& words) {
 
   Ans1Setup next = d.setup;
   const BlockActions& a = d.actions;
-  if (a.factory_defaults) { // CB2 bit 5 also erases the stored programs (§5.3)
+  if (a.factory_defaults) {
+    // CB2 bit 5 restores "all parameters to their default settings and erase[s] all stored
+    // programming data ... cannot be restored" (L1816, L1820): the stored programs and the
+    // global parameters Save Global wrote to flash (L2239) alike.
     programs_ = {};
+    saved_global_.reset();
     active_program_ = 0;
     device_.force_outputs(0, 0);
     device_.force_inputs(0, 0);

@@ -30,11 +30,11 @@ Words mode(const Mode& m) {
     if (m.on != 0 || m.off != 0) throw ProgramFieldError("on", "an enable window only with mode = 2 (L170)");
     return {w0, word(m.timeout_ms)};
   }
-  // "The enable window on setpoint must be less than the enable window off setpoint" (L172); a
+  // "The enable window on setpoint must be less than the enable window off setpoint" (L171); a
   // deliberately invalid window, to provoke the Parameter Error, is written raw.
   if (m.on >= m.off)
-    throw ProgramFieldError("off",
-                            fmt::format("above the on setpoint {} (L172): {} .. 65535", m.on, m.on + 1));
+    throw ProgramFieldError(
+        "off", fmt::format("must be above the on setpoint {} (L171): {} .. 65535", m.on, m.on + 1));
   return {
       w0, word(m.timeout_ms), word(m.on / 1000), word(m.on % 1000), word(m.off / 1000), word(m.off % 1000)};
 }

@@ -287,12 +287,13 @@ TEST(ProgramAmci4501, ModeWordTimeoutAndTheEnableWindow) {
   EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 0", 1, 8, "mode", "1 .. 6"));
   // A window belongs to mode 2 only.
   EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 3\non = 5", 2, 6, "on", "only with mode = 2"));
-  // "The enable window on setpoint must be less than the enable window off setpoint" (L172):
+  // "The enable window on setpoint must be less than the enable window off setpoint" (L171):
   // on = off and on > off are refused where written; on one below off, to the range's top, is
   // accepted.
   EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2\non = 5\noff = 5", 3, 7, "off",
-                       "above the on setpoint 5 (L172): 6 .. 65535"));
-  EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2\non = 6\noff = 5", 3, 7, "off", "(L172)"));
+                       "must be above the on setpoint 5 (L171): 6 .. 65535"));
+  EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2\non = 6\noff = 5", 3, 7, "off",
+                       "must be above the on setpoint 6 (L171): 7 .. 65535"));
   // Without a window (on = off = 0), at the [[host]] entry (line 6).
   EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2", -2, 1, "off", "1 .. 65535"));
   EXPECT_EQ(words_of("amci4501", "program = \"mode\"\nmode = 2\non = 5\noff = 6"),

@@ -180,6 +180,35 @@ TEST(Amci4501Mode1, TimeoutBlocksUntilCleared) {
   EXPECT_EQ(b.word(1), 7);
 }
 
+// L119: "The module will not update the input image table data until the timeout error has
+// been cleared" - the velocity word too (L114). Timeout 60 ms, Start at 1 ms and no Latch:
+// Time Out at 61 ms. F(15000, 40,005 us, 10 us) runs 40.005-190.0 ms at 100,000 counts/s.
+// The window ending at 50 ms (before Time Out) holds 1,000 edges and is written; the ones
+// ending at 100 and 150 ms (5,000 edges each) are not. Control bit 1 at 160 ms (L154): the
+// window ending at 200 ms holds k = 11,000 .. 14,999, 4,000 edges, and is written again.
+TEST(Amci4501Mode1, TimeoutFreezesTheVelocityWordUntilCleared) {
+  Bench b;
+  b.program_mode(1, 60);
+  b.start_pulse(1_ms, us(200));
+  b.burst(15000, us(40005), us(10));
+  b.run_until(50_ms);
+  EXPECT_EQ(b.word(2), 1000);
+  b.run_until(61_ms - 1_ns);
+  EXPECT_FALSE(b.bit(status::kTimeout));
+  b.run_until(61_ms);
+  EXPECT_TRUE(b.bit(status::kTimeout));
+  for (Nanos t : {100_ms - 1_ns, 100_ms, 150_ms, 160_ms - 1_ns}) {
+    b.run_until(t);
+    EXPECT_EQ(b.word(2), 1000) << t.count();
+  }
+  b.module->write_output(0, control::kClearError);
+  EXPECT_FALSE(b.bit(status::kTimeout));
+  b.run_until(200_ms - 1_ns);
+  EXPECT_EQ(b.word(2), 1000) << "written at the window's end only";
+  b.run_until(200_ms);
+  EXPECT_EQ(b.word(2), 4000);
+}
+
 // W5 (L169): timeout word 0 means 10 s. Power-up state is mode 1 with timeout 0 (§5.4).
 TEST(Amci4501Mode1, TimeoutZeroMeansTenSeconds) {
   Bench b;

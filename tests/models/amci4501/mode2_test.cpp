@@ -186,6 +186,30 @@ TEST(Amci4501Mode2, EncoderStopsInWindowTimesOut) {
   EXPECT_FALSE(b.bit(status::kNewValue));
 }
 
+// L119 with L114: mode 2's velocity word 5 is frozen while Time Out is set. Window
+// 100..300, timeout 50 ms; F(150, 1,000 us, 10 us) opens the window at 1,990 us and stops
+// inside it: Time Out at 51,990 us. F(10000, 60,005 us, 10 us) runs 60.005-160.0 ms: the
+// window ending at 50 ms (150 edges, before Time Out) is written, the one ending at 100 ms
+// (4,000 edges) is not. Cleared at 120 ms (L154): the window ending at 150 ms holds 5,000.
+TEST(Amci4501Mode2, TimeoutFreezesTheVelocityWordUntilCleared) {
+  Bench b;
+  b.program_window(100, 300, 50);
+  b.burst(150, us(1000), us(10));
+  b.burst(10000, us(60005), us(10));
+  b.run_until(50_ms);
+  EXPECT_EQ(b.word(5), 150);
+  b.run_until(us(51990));
+  ASSERT_TRUE(b.bit(status::kTimeout));
+  b.run_until(100_ms);
+  EXPECT_EQ(b.word(5), 150);
+  b.run_until(120_ms);
+  b.module->write_output(0, control::kClearError);
+  b.run_until(150_ms - 1_ns);
+  EXPECT_EQ(b.word(5), 150);
+  b.run_until(150_ms);
+  EXPECT_EQ(b.word(5), 5000);
+}
+
 // L115 / A12: an L value above 32,767 counts saturates at 32,767 (MODEL) and is recorded.
 TEST(Amci4501Mode2, LatchCountsCapAt32767) {
   Bench b;

@@ -125,5 +125,66 @@ TEST(Amci4501Mode6, CountsBeyondTheMaximumReadTheMaximum) {
   }
 }
 
+// A Time Out set in mode 1 survives a change to mode 5: only control bit 1 clears it ("This
+// error must be cleared using the Clear Measurement Error bit", L93, L154; a programming
+// cycle resets the Command and Parameter errors only, L118), and until then the input words
+// are not updated (L119) [MODEL: the manual does not name a mode change; README]. Timeout
+// 2 ms, Start at 1 ms: Time Out at 3 ms. Mode 5 at 5 ms: status = bit 11 + bit 6 = 0x0840.
+// Start active 1,000 us at 10 ms is not written; cleared at 15 ms, Start active 2,500 us at
+// 20 ms -> words 1/2 = 2/500 at 22.5 ms + 100 us (L49, L116).
+TEST(Amci4501Mode5, TimeoutFromModeOneBlocksWritesUntilCleared) {
+  Bench b;
+  b.program_mode(1, 2);
+  b.start_pulse(1_ms, us(100));
+  b.start_pulse(10_ms, 1_ms);
+  b.latch_pulse(us(10500), us(300));
+  b.start_pulse(20_ms, us(2500));
+  b.run_until(3_ms);
+  ASSERT_TRUE(b.bit(status::kTimeout));
+  b.run_until(5_ms);
+  b.program_mode(5);
+  EXPECT_EQ(b.status(), 0x0840);
+  b.run_until(15_ms);
+  for (std::size_t w = 1; w < 8; ++w) EXPECT_EQ(b.word(w), 0) << "word " << w;
+  b.module->write_output(0, control::kClearError);
+  EXPECT_EQ(b.status(), 0x0800);
+  b.run_until(us(22600) - 1_ns);
+  EXPECT_EQ(b.word(1), 0);
+  EXPECT_EQ(b.word(2), 0);
+  b.run_until(us(22600));
+  EXPECT_EQ(b.word(1), 2);
+  EXPECT_EQ(b.word(2), 500);
+}
+
+// The same after mode 4's timeout report (L97-102): S1 at 1 ms, L1 at 3.5 ms (TM1 =
+// 2,500 us), timeout 10 ms -> words 2/500/0/0 at 11 ms. Changing to mode 5 keeps Time Out and
+// the report (L119); a Latch active 1,000 us at 15 ms is not written; after the clear at
+// 18 ms a Latch active 1,500 us at 20 ms gives words 3/4 = 1/500 at 21.5 ms + 100 us.
+TEST(Amci4501Mode5, ModeFourTimeoutReportStaysAcrossAModeChange) {
+  Bench b;
+  b.program_mode(4, 10);
+  b.start_pulse(1_ms, us(200));
+  b.latch_pulse(us(3500), us(200));
+  b.latch_pulse(15_ms, 1_ms);
+  b.latch_pulse(20_ms, us(1500));
+  b.run_until(11_ms);
+  ASSERT_TRUE(b.bit(status::kTimeout));
+  b.run_until(12_ms);
+  b.program_mode(5);
+  EXPECT_EQ(b.status(), 0x0840);
+  b.run_until(18_ms);
+  EXPECT_EQ(b.word(1), 2);
+  EXPECT_EQ(b.word(2), 500);
+  EXPECT_EQ(b.word(3), 0);
+  EXPECT_EQ(b.word(4), 0);
+  b.module->write_output(0, control::kClearError);
+  b.run_until(us(21600) - 1_ns);
+  EXPECT_EQ(b.word(3), 0);
+  b.run_until(us(21600));
+  EXPECT_EQ(b.word(3), 1);
+  EXPECT_EQ(b.word(4), 500);
+  EXPECT_EQ(b.word(1), 2);
+}
+
 } // namespace
 } // namespace hilrig::models::amci4501::test

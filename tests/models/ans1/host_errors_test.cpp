@@ -80,6 +80,28 @@ TEST(HostErrors, OutOfRangeValuesAreParameterErrors) {
   });
 }
 
+// Tables 5.1 and 6.1 (L1766, L2279): DA19 takes "Additional data for Output defined in word 2
+// Additional data for Input defined in word 3", so word 3 must name an input 1..16 as for
+// DA4, DA16 and DA18 (L1758, L1763, L1765): 0 and 17 are Parameter Errors, 1 and 16 are not.
+TEST(HostErrors, DataAttributeNineteenNeedsAnInputInWordThree) {
+  expect_all({
+      {"CB1 DA19 input 0", block(1, {8}, {{1, 19}, {2, 1}, {3, 0}}), ErrorCode::Parameter},
+      {"CB1 DA19 input 17", block(1, {8}, {{1, 19}, {2, 1}, {3, 17}}), ErrorCode::Parameter},
+      {"CB1 DA19 input 1", block(1, {8}, {{1, 19}, {2, 1}, {3, 1}}), ErrorCode::None},
+      {"CB1 DA19 input 16", block(1, {8}, {{1, 19}, {2, 16}, {3, 16}}), ErrorCode::None},
+      {"CB1 DA19 output 0", block(1, {8}, {{1, 19}, {2, 0}, {3, 1}}), ErrorCode::Parameter},
+      {"CB1 DA19 output 17", block(1, {8}, {{1, 19}, {2, 17}, {3, 1}}), ErrorCode::Parameter},
+      // The same words for DA4, DA16, DA18, which already check word 3.
+      {"CB1 DA4 input 0", block(1, {8}, {{1, 4}, {2, 1}, {3, 0}}), ErrorCode::Parameter},
+      {"CB1 DA16 input 17", block(1, {8}, {{1, 16}, {2, 1}, {3, 17}}), ErrorCode::Parameter},
+      {"CB1 DA18 input 0", block(1, {8}, {{1, 18}, {2, 1}, {3, 0}}), ErrorCode::Parameter},
+      // Blocks without an input word still ignore word 3 (L2267, L2277, L2280).
+      {"CB1 DA0 input 0", block(1, {8}, {{1, 0}, {2, 1}, {3, 0}}), ErrorCode::None},
+      {"CB1 DA17 input 0", block(1, {8}, {{1, 17}, {2, 1}, {3, 0}}), ErrorCode::None},
+      {"CB1 DA20 input 0", block(1, {8}, {{1, 20}, {2, 1}, {3, 0}}), ErrorCode::None},
+  });
+}
+
 TEST(HostErrors, ReservedBitsAreReservedBitsErrors) {
   expect_all({
       {"CB1 bit 7", block(1, {7}), ErrorCode::ReservedBits},

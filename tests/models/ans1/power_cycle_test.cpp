@@ -55,6 +55,37 @@ TEST(Ans1PowerCycle, SaveGlobalKeepsTheGlobalConfiguration) {
   EXPECT_EQ(rig.select(0)[7], 1000);
 }
 
+// L1816, L1820: Restore Factory Defaults (CB2 bit 5) restores "all parameters to their
+// default settings and erase[s] all stored programming data ... Once erased, all programmed
+// settings are lost and cannot be restored" - the Save Global flash copy (L2239) too. Saved:
+// CPC 2000, FSC 1000 (CB2 w2, w3) and brake input 5 (CB8 w1); they survive one power cycle.
+// After factory defaults and another power cycle: CPC 4,096 (L773), FSC 360 (L779) and no
+// brake input (0 = disabled, L2106; it "has to be associated" before use, L1029).
+TEST(Ans1PowerCycle, FactoryDefaultsEraseTheSavedGlobalParameters) {
+  HostRig rig;
+  ASSERT_EQ(rig.send(block(2, {8, 9}, {{2, 2000}, {3, 1000}})), ErrorCode::None);
+  ASSERT_EQ(rig.send(block(8, {8}, {{1, 5}})), ErrorCode::None);
+  ASSERT_EQ(rig.send(block(15, {10})), ErrorCode::None); // Save Global
+  cycle(rig);
+  ASSERT_EQ(rig.select(0)[6], 2000);
+  ASSERT_EQ(rig.select(0)[7], 1000);
+  ASSERT_EQ(rig.select(5)[1], 5);
+  ASSERT_EQ(rig.send(block(2, {5})), ErrorCode::None); // Restore Factory Defaults
+  EXPECT_EQ(rig.select(0)[6], 4096);
+  EXPECT_EQ(rig.select(5)[1], 0);
+  EXPECT_FALSE(rig.host.saved_global().has_value());
+  cycle(rig);
+  EXPECT_EQ(rig.select(0)[6], 4096);
+  EXPECT_EQ(rig.select(0)[7], 360);
+  EXPECT_EQ(rig.select(5)[1], 0);
+  // Save Global works again afterwards: the next save is what flash holds.
+  ASSERT_EQ(rig.send(block(2, {9}, {{3, 720}})), ErrorCode::None);
+  ASSERT_EQ(rig.send(block(15, {10})), ErrorCode::None);
+  cycle(rig);
+  EXPECT_EQ(rig.select(0)[6], 4096);
+  EXPECT_EQ(rig.select(0)[7], 720);
+}
+
 // L2306-L2309: a programming error stays through later valid blocks until Clear Errors; it is
 // RAM, so a power cycle clears it too [MODEL]. Forced outputs (CB1 w4/w5) are RAM as well.
 TEST(Ans1PowerCycle, ErrorsAndForcesDoNotSurvive) {
