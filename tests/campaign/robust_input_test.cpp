@@ -1,0 +1,90 @@
+// Bad input found by a robustness audit, each refused before anything runs (exit 2, naming
+// what and where) without losing what was already captured, and incomplete evidence judged 3.
+
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/tools/scratch_files.hpp"
+
+// A namespace of its own: a unity build puts this file beside command_line_test.cpp, whose
+// anonymous namespace has the same helpers.
+namespace hilrig::robust_input {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string out; // stdout
+  std::string err; // stderr
+};
+
+// Runs `hilrig ARGS` (plain words, no quoting) with stderr to a file of this test's own.
+// `wrap` goes before it: "timeout 20 " bounds a server that a missing check leaves serving.
+Result hilrig(const std::string& args, const std::string& wrap = "") {
+  const fs::path dir =
+      test::scratch_dir("campaign", std::string("robust_io_") +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  const fs::path err = dir / "stderr";
+  const std::string command = wrap + std::string(HILRIG_EXE) + " " + args + " 2>" + err.string();
+  Result r;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = test::read_file(err);
+  return r;
+}
+
+const std::string kPass = std::string(HILRIG_SOURCE_DIR) + "/campaigns/reference/reference_pls_pass.toml";
+
+// A merge whose output is one of its inputs (here shard 0's results.json given as both, and a
+// link to it) would replace that shard's results.json, junit.xml and report.html: refused, 2,
+// with every shard file as it was. A merge of several shards does not write over a run log's
+// own results.json either; the kill recovery, one run's log folded into its own directory, does.
+TEST(RobustInput, MergeRefusesToOverwriteAnInput) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_merge_overwrite");
+  for (const char* k : {"0", "1"})
+    ASSERT_EQ(
+        hilrig("run " + kPass + " --trace none --shard " + k + "/2 --out " + (dir / "s").string() + k).status,
+        0);
+  const fs::path s0 = dir / "s0";
+  const std::string s1 = (dir / "s1" / "results.json").string();
+  const std::string results = test::read_file(s0 / "results.json");
+  const std::string junit = test::read_file(s0 / "junit.xml");
+  const std::string input = (s0 / "results.json").string();
+  const Result same = hilrig("merge " + input + " " + input + " " + s1);
+  EXPECT_EQ(same.status, 2) << same.err;
+  EXPECT_NE(same.err.find("is also an input"), std::string::npos) << same.err;
+  fs::create_symlink(s0 / "results.json", dir / "alias.json");
+  const Result linked = hilrig("merge " + (dir / "alias.json").string() + " " + input + " " + s1);
+  EXPECT_EQ(linked.status, 2) << linked.err;
+  const Result log = hilrig("merge " + input + " " + (s0 / "runs.jsonl").string() + " " + s1);
+  EXPECT_EQ(log.status, 2) << log.err;
+  EXPECT_NE(log.err.find("the run's own file beside the input"), std::string::npos) << log.err;
+  EXPECT_EQ(test::read_file(s0 / "results.json"), results);
+  EXPECT_EQ(test::read_file(s0 / "junit.xml"), junit);
+  // Elsewhere, and into a directory of the shards under another name (NAME.junit.xml), it merges.
+  EXPECT_EQ(hilrig("merge " + (s0 / "merged.json").string() + " " + input + " " + s1).status, 0);
+  EXPECT_EQ(test::read_file(s0 / "junit.xml"), junit);
+  // The kill recovery: a run's one log folded into its own directory.
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "whole").string()).status, 0);
+  const Result fold = hilrig("merge " + (dir / "whole" / "results.json").string() + " " +
+                             (dir / "whole" / "runs.jsonl").string());
+  EXPECT_EQ(fold.status, 0) << fold.err;
+}
+
+} // namespace
+} // namespace hilrig::robust_input
