@@ -149,7 +149,16 @@ int run_merge(const MergeArgs& a) {
     // The merged verdict is the CI job's, as `hilrig run`'s exit status is the unsharded run's:
     // a merge step judges the campaign with no glue. A shard stopped by a signal, or a run a rig
     // fault stopped, is the rig's failure, 3, as `hilrig run` exits for it: not the board's, 1.
-    const bool rig_fault = merged.interrupted.has_value() ||
+    // Fewer runs than planned (the run log of a killed run, a results.json a run wrote before
+    // its end) is incomplete evidence as an interrupted shard is: 3, whichever file it came in.
+    const bool incomplete = merged.runs.size() < merged.planned_runs;
+    if (incomplete)
+      std::fputs(fmt::format("hilrig merge: incomplete evidence: {} of the {} planned runs (a run stopped or "
+                             "killed before its end)\n",
+                             merged.runs.size(), merged.planned_runs)
+                     .c_str(),
+                 stderr);
+    const bool rig_fault = incomplete || merged.interrupted.has_value() ||
                            std::any_of(merged.runs.begin(), merged.runs.end(),
                                        [](const rig::RunResult& run) { return !run.error.empty(); });
     if (rig_fault)

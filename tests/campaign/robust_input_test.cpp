@@ -86,5 +86,32 @@ TEST(RobustInput, MergeRefusesToOverwriteAnInput) {
   EXPECT_EQ(fold.status, 0) << fold.err;
 }
 
+// The run log of a killed run holds fewer runs than planned: incomplete evidence, 3, as its
+// results.json cut at the same run is, though every run it holds passed (not 1, a check's).
+TEST(RobustInput, MergeOfAnIncompleteRunLogExitsThree) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_merge_incomplete");
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "ran").string()).status, 0);
+  // The log as a kill leaves it: the header and the first run's record, the rest never written.
+  std::ifstream log(dir / "ran" / "runs.jsonl");
+  std::string header;
+  std::string first;
+  ASSERT_TRUE(std::getline(log, header) && std::getline(log, first));
+  std::string rest;
+  ASSERT_TRUE(std::getline(log, rest)) << "the campaign plans more than one run";
+  std::ofstream(dir / "cut.jsonl") << header << '\n' << first << '\n';
+  nlohmann::json results = nlohmann::json::parse(test::read_file(dir / "ran" / "results.json"));
+  results["runs"].erase(results["runs"].begin() + 1, results["runs"].end());
+  std::ofstream(dir / "cut.json") << results.dump();
+
+  const Result from_log = hilrig("merge " + (dir / "m1.json").string() + " " + (dir / "cut.jsonl").string());
+  EXPECT_EQ(from_log.status, 3) << from_log.err;
+  EXPECT_NE(from_log.err.find("incomplete evidence: 1 of the"), std::string::npos) << from_log.err;
+  const Result from_json = hilrig("merge " + (dir / "m2.json").string() + " " + (dir / "cut.json").string());
+  EXPECT_EQ(from_json.status, 3) << from_json.err;
+  // The whole log still merges to the run's own verdict.
+  EXPECT_EQ(
+      hilrig("merge " + (dir / "m3.json").string() + " " + (dir / "ran" / "runs.jsonl").string()).status, 0);
+}
+
 } // namespace
 } // namespace hilrig::robust_input
