@@ -113,5 +113,24 @@ TEST(RobustInput, MergeOfAnIncompleteRunLogExitsThree) {
       hilrig("merge " + (dir / "m3.json").string() + " " + (dir / "ran" / "runs.jsonl").string()).status, 0);
 }
 
+// A link loop among a suite's *.toml is bad input naming the link (as given alone), not a
+// library's "filesystem error" as a rig fault.
+TEST(RobustInput, ALinkLoopInASuiteIsBadInputNamingIt) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_suite_loop");
+  const fs::path suite = dir / "suite";
+  fs::create_directories(suite);
+  fs::copy_file(kPass, suite / "a.toml");
+  fs::create_symlink("loop2", suite / "loop1.toml");
+  fs::create_symlink("loop1.toml", suite / "loop2");
+  for (const std::string& command :
+       {"check " + suite.string(),
+        "run " + suite.string() + " --out " + (dir / "out").string() + " --trace none"}) {
+    const Result r = hilrig(command);
+    EXPECT_EQ(r.status, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("loop1.toml: Too many levels of symbolic links"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("filesystem error"), std::string::npos) << r.err;
+  }
+}
+
 } // namespace
 } // namespace hilrig::robust_input
