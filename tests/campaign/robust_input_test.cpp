@@ -132,5 +132,15 @@ TEST(RobustInput, ALinkLoopInASuiteIsBadInputNamingIt) {
   }
 }
 
+// A --port-file that cannot be written (a directory that is not there) is bad input before
+// anything serves: a script waiting for the file would wait for ever.
+TEST(RobustInput, ServeRefusesAPortFileItCannotWrite) {
+  const Result r = hilrig("serve ans1 --modbus-tcp 0 --port-file /nonexistent/dir/p", "timeout 20 ");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("/nonexistent/dir/p"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("listening"), std::string::npos) << r.out;
+}
+
 } // namespace
 } // namespace hilrig::robust_input
