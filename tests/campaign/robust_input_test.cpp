@@ -142,5 +142,26 @@ TEST(RobustInput, ServeRefusesAPortFileItCannotWrite) {
   EXPECT_EQ(r.out.find("listening"), std::string::npos) << r.out;
 }
 
+// A rate near 0 made the move's nanoseconds overflow (every edge at #0, exit 0): the move must
+// end within a campaign's run, and the least rate that does is named.
+TEST(RobustInput, SynthRefusesAMoveLongerThanARun) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_synth_time");
+  const std::string base =
+      "synth quadrature --out " + (dir / "a.vcd").string() + " --lines 100 --rpm 600 --turns 1 ";
+  const Result accel = hilrig(base + "--profile trapezoid --accel 1e-300");
+  EXPECT_EQ(accel.status, 2) << accel.err;
+  EXPECT_NE(accel.err.find("--accel"), std::string::npos) << accel.err;
+  EXPECT_NE(accel.err.find("at least"), std::string::npos) << accel.err;
+  const Result jerk = hilrig(base + "--profile scurve --accel 10 --jerk 1e-300");
+  EXPECT_EQ(jerk.status, 2) << jerk.err;
+  EXPECT_NE(jerk.err.find("--jerk"), std::string::npos) << jerk.err;
+  const Result brake = hilrig(base + "--profile press --duration 1s --brake 1e-300");
+  EXPECT_EQ(brake.status, 2) << brake.err;
+  EXPECT_NE(brake.err.find("--brake"), std::string::npos) << brake.err;
+  EXPECT_FALSE(fs::exists(dir / "a.vcd"));
+  // A slow move within the hour is still made.
+  EXPECT_EQ(hilrig(base + "--profile trapezoid --accel 0.001").status, 0);
+}
+
 } // namespace
 } // namespace hilrig::robust_input
