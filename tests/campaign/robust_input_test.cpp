@@ -163,5 +163,12 @@ TEST(RobustInput, SynthRefusesAMoveLongerThanARun) {
   EXPECT_EQ(hilrig(base + "--profile trapezoid --accel 0.001").status, 0);
 }
 
+// `run --out ""` is bad input (2), not a rig fault (3).
+TEST(RobustInput, RunRefusesAnEmptyOut) {
+  const Result r = hilrig("run " + kPass + " --out ''");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+}
+
 } // namespace
 } // namespace hilrig::robust_input
