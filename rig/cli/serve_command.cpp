@@ -1,5 +1,7 @@
 #include "rig/cli/serve_command.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -79,6 +81,12 @@ void parse_tcp(const ServeArgs& args, ServeOptions& o) {
     }
     o.bind = host == "localhost" ? "127.0.0.1" : host;
   }
+  // The server takes a dotted-quad IPv4 address (inet_pton's, as Asio's): anything else is the
+  // command line's mistake, named before a port is bound.
+  in_addr parsed{};
+  if (::inet_pton(AF_INET, o.bind.c_str(), &parsed) != 1)
+    bad_input(o.bind + " is not an IPv4 address (four numbers 0..255, like 127.0.0.1 or 0.0.0.0): " +
+              (args.bind.empty() ? "--modbus-tcp " + args.tcp_endpoint : "--bind " + args.bind));
 }
 
 void parse_rtu(const ServeArgs& args, ServeOptions& o) {

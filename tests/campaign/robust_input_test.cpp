@@ -142,6 +142,14 @@ TEST(RobustInput, ServeRefusesAPortFileItCannotWrite) {
   EXPECT_EQ(r.out.find("listening"), std::string::npos) << r.out;
 }
 
+// An address that is not IPv4 and a speed beyond the boards' rpm word are the command line's
+// mistakes (2), not the rig's (3), named before a port is bound.
+TEST(RobustInput, ServeRefusesABadBindAndAnOutOfRangeMotion) {
+  const Result bind = hilrig("serve ans1 --modbus-tcp 0 --bind 999.1.1.1", "timeout 20 ");
+  EXPECT_EQ(bind.status, 2) << bind.err;
+  EXPECT_NE(bind.err.find("999.1.1.1 is not an IPv4 address"), std::string::npos) << bind.err;
+}
+
 // A rate near 0 made the move's nanoseconds overflow (every edge at #0, exit 0): the move must
 // end within a campaign's run, and the least rate that does is named.
 TEST(RobustInput, SynthRefusesAMoveLongerThanARun) {
