@@ -171,6 +171,24 @@ TEST(RobustInput, SynthRefusesAMoveLongerThanARun) {
   EXPECT_EQ(hilrig(base + "--profile trapezoid --accel 0.001").status, 0);
 }
 
+// A [[wiring]] rig line's name follows the rule of every name (1 .. 64 printable ASCII): an
+// empty one or a control character (BEL, which went raw into trace.vcd) is bad input.
+TEST(RobustInput, WiringRigNamesAreLabels) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_wiring_name");
+  const std::string text = test::read_file(kPass);
+  const std::string line = "rig = \"ls1\"";
+  ASSERT_NE(text.find(line), std::string::npos);
+  for (const std::string& name : {std::string(""), std::string("l\\u0007s1")}) {
+    std::string bad = text;
+    bad.replace(bad.find(line), line.size(), "rig = \"" + name + "\"");
+    const fs::path file = test::write_file(dir, "bad.toml", bad);
+    const Result r = hilrig("check " + file.string());
+    EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+    EXPECT_NE(r.err.find("the rig line's name: 1 .. 64 printable ASCII characters"), std::string::npos)
+        << r.err;
+  }
+}
+
 // `run --out ""` is bad input (2), not a rig fault (3).
 TEST(RobustInput, RunRefusesAnEmptyOut) {
   const Result r = hilrig("run " + kPass + " --out ''");
