@@ -196,5 +196,17 @@ TEST(RobustInput, RunRefusesAnEmptyOut) {
   EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
 }
 
+// A --threshold naming no measurement (a misspelt name) is warned about, naming it; the
+// comparison's exit status is its own.
+TEST(RobustInput, CompareWarnsOfAThresholdThatNamesNothing) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_compare_threshold");
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "ran").string()).status, 0);
+  const std::string results = (dir / "ran" / "results.json").string();
+  const Result r = hilrig("compare " + results + " " + results + " --threshold nosuch=5 --threshold max=5");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: --threshold nosuch: no measurement"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("--threshold max"), std::string::npos) << r.err;
+}
+
 } // namespace
 } // namespace hilrig::robust_input
