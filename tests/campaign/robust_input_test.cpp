@@ -148,6 +148,9 @@ TEST(RobustInput, ServeRefusesABadBindAndAnOutOfRangeMotion) {
   const Result bind = hilrig("serve ans1 --modbus-tcp 0 --bind 999.1.1.1", "timeout 20 ");
   EXPECT_EQ(bind.status, 2) << bind.err;
   EXPECT_NE(bind.err.find("999.1.1.1 is not an IPv4 address"), std::string::npos) << bind.err;
+  const Result motion = hilrig("serve pls2700 --modbus-tcp 0 --motion constant:1e308rpm", "timeout 20 ");
+  EXPECT_EQ(motion.status, 2) << motion.err;
+  EXPECT_NE(motion.err.find("-32767 .. 32767 rpm"), std::string::npos) << motion.err;
 }
 
 // A rate near 0 made the move's nanoseconds overflow (every edge at #0, exit 0): the move must
