@@ -182,7 +182,7 @@ void add_merge_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "merge",
       "merge the results.json of every shard into one, with its junit.xml and report.html; exit 0 when the "
-      "merged verdict is pass, 1 when not, 2 on bad input");
+      "merged verdict is pass, 1 when not, 2 on bad input, 3 on a rig fault or incomplete evidence");
   cmd->add_option("out", args->out,
                   "the merged results.json to write; junit.xml and report.html go beside it (NAME.json: "
                   "NAME.junit.xml, NAME.report.html)")
