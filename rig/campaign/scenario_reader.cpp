@@ -235,6 +235,8 @@ private:
       Wire w;
       w.where = r.where();
       w.rig = r.string("rig");
+      // The line's name goes into trace.vcd, results and reports as every other name does.
+      if (!is_label(w.rig)) r.fail("rig", "the rig line's name: " + label_range());
       w.board = r.string("board");
       const auto dir = pin_direction(s.dut, w.board);
       if (!dir) r.fail("board", fmt::format("a pin of {}: one of {}", s.dut.model, pin_names(s.dut)));

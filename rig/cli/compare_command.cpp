@@ -1,5 +1,7 @@
 #include "rig/cli/compare_command.hpp"
 
+#include <algorithm>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <fmt/format.h>
@@ -49,6 +51,16 @@ int run_compare(const CompareArgs& a) {
     return kBadInput;
   }
   const rig::Comparison c = rig::compare_results(base, now, options);
+  // A threshold is a pattern, and one list may serve several campaigns, so one that names no
+  // measurement here is not an error; but a misspelt one silently judges nothing: say so.
+  for (const rig::Threshold& t : options.thresholds)
+    if (std::none_of(c.rows.begin(), c.rows.end(),
+                     [&](const rig::DriftRow& row) { return rig::threshold_matches(t, row.measurement); }))
+      std::fputs(fmt::format("hilrig compare: warning: --threshold {}: no measurement of {} or {} is named "
+                             "\"{}\" or ends in \".{}\"; it applies to none\n",
+                             t.name, a.base, a.now, t.name, t.name)
+                     .c_str(),
+                 stderr);
   std::fputs(rig::format_comparison(c, a.all).c_str(), stdout);
   return c.regression() ? kCheckFailed : kPassed;
 }

@@ -37,6 +37,49 @@ fs::path beside(const fs::path& out, const char* file) {
   return out.parent_path() / (out.stem().string() + "." + file);
 }
 
+// Whether two paths name one file: the same file when both exist (a hard link, a symbolic
+// link, "a/../a"), else the same path once the links and dots of its existing part resolve.
+bool same_file(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (fs::exists(a, ec) && fs::exists(b, ec)) {
+    const bool same = fs::equivalent(a, b, ec);
+    if (!ec) return same;
+  }
+  const auto resolved = [](const fs::path& p) {
+    std::error_code e;
+    const fs::path r = fs::weakly_canonical(fs::absolute(p), e);
+    return e ? fs::absolute(p).lexically_normal() : r;
+  };
+  return resolved(a) == resolved(b);
+}
+
+// A merge whose output (or the junit.xml or report.html beside it) is one of its inputs would
+// replace a shard's evidence with the merged result: refused before anything is read. A run
+// log's directory holds its run's own results.json, junit.xml and report.html, so a merge of
+// several shards does not write those either; folding one run's own log into them, `hilrig
+// merge OUT/results.json OUT/runs.jsonl`, is the kill recovery (docs/campaigns.md) and stays.
+void refuse_overwriting_an_input(const MergeArgs& a) {
+  const fs::path out(a.out);
+  const std::vector<fs::path> written{out, beside(out, "junit.xml"), beside(out, "report.html")};
+  for (const std::string& input : a.shards) {
+    std::vector<fs::path> kept{input};
+    const fs::path in(input);
+    if (in.extension() == ".jsonl" && a.shards.size() > 1)
+      for (const char* name : {"results.json", "junit.xml", "report.html"})
+        kept.push_back(in.parent_path() / name);
+    for (const fs::path& w : written)
+      for (const fs::path& k : kept)
+        if (same_file(w, k))
+          throw std::invalid_argument(
+              k == in ? fmt::format("{} is also an input ({}): the merge would overwrite it; write the merge "
+                                    "elsewhere (e.g. merged.json)",
+                                    w.string(), input)
+                      : fmt::format("{} is the run's own file beside the input {}: the merge would overwrite "
+                                    "it; write the merge elsewhere (e.g. merged.json)",
+                                    w.string(), input));
+  }
+}
+
 // The directory the merge writes into, made when missing, and taken as `hilrig run --out`
 // takes its own: a run still writing there (its .hilrig.lock held) is not overwritten (the
 // kill-recovery merge `hilrig merge OUT/results.json OUT/runs.jsonl` writes into the run's own
@@ -75,6 +118,7 @@ void relink_traces(rig::CampaignResult& shard, const fs::path& shard_file, const
 int run_merge(const MergeArgs& a) {
   int status = kPassed;
   try {
+    refuse_overwriting_an_input(a);
     std::vector<rig::CampaignResult> shards;
     for (const auto& path : a.shards) {
       shards.push_back(rig::read_results_file(path));
@@ -105,7 +149,16 @@ int run_merge(const MergeArgs& a) {
     // The merged verdict is the CI job's, as `hilrig run`'s exit status is the unsharded run's:
     // a merge step judges the campaign with no glue. A shard stopped by a signal, or a run a rig
     // fault stopped, is the rig's failure, 3, as `hilrig run` exits for it: not the board's, 1.
-    const bool rig_fault = merged.interrupted.has_value() ||
+    // Fewer runs than planned (the run log of a killed run, a results.json a run wrote before
+    // its end) is incomplete evidence as an interrupted shard is: 3, whichever file it came in.
+    const bool incomplete = merged.runs.size() < merged.planned_runs;
+    if (incomplete)
+      std::fputs(fmt::format("hilrig merge: incomplete evidence: {} of the {} planned runs (a run stopped or "
+                             "killed before its end)\n",
+                             merged.runs.size(), merged.planned_runs)
+                     .c_str(),
+                 stderr);
+    const bool rig_fault = incomplete || merged.interrupted.has_value() ||
                            std::any_of(merged.runs.begin(), merged.runs.end(),
                                        [](const rig::RunResult& run) { return !run.error.empty(); });
     if (rig_fault)
@@ -129,7 +182,7 @@ void add_merge_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "merge",
       "merge the results.json of every shard into one, with its junit.xml and report.html; exit 0 when the "
-      "merged verdict is pass, 1 when not, 2 on bad input");
+      "merged verdict is pass, 1 when not, 2 on bad input, 3 on a rig fault or incomplete evidence");
   cmd->add_option("out", args->out,
                   "the merged results.json to write; junit.xml and report.html go beside it (NAME.json: "
                   "NAME.junit.xml, NAME.report.html)")

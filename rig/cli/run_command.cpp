@@ -570,7 +570,13 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--out", options->out,
                   "directory for results.json, junit.xml, report.html, trace.vcd (a suite: junit.xml, "
                   "report.html and a directory per campaign)")
-      ->required();
+      ->required()
+      ->check(CLI::Validator(
+          // An empty path is no directory: bad input, before the campaign is even read.
+          [](const std::string& dir) {
+            return dir.empty() ? std::string("a directory, not an empty path") : "";
+          },
+          "DIR"));
   add_seed_option(*cmd, options->seed, "base seed (overrides [campaign] seed)");
   cmd->add_option("--shard", options->shard, "K/N: run only the runs whose index mod N is K (0-based)");
   cmd->add_option("--jobs,-j", options->jobs, "campaigns of a suite run at once (outputs as with 1)")

@@ -1,7 +1,14 @@
 #include "rig/cli/serve_command.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <optional>
@@ -74,6 +81,12 @@ void parse_tcp(const ServeArgs& args, ServeOptions& o) {
     }
     o.bind = host == "localhost" ? "127.0.0.1" : host;
   }
+  // The server takes a dotted-quad IPv4 address (inet_pton's, as Asio's): anything else is the
+  // command line's mistake, named before a port is bound.
+  in_addr parsed{};
+  if (::inet_pton(AF_INET, o.bind.c_str(), &parsed) != 1)
+    bad_input(o.bind + " is not an IPv4 address (four numbers 0..255, like 127.0.0.1 or 0.0.0.0): " +
+              (args.bind.empty() ? "--modbus-tcp " + args.tcp_endpoint : "--bind " + args.bind));
 }
 
 void parse_rtu(const ServeArgs& args, ServeOptions& o) {
@@ -87,7 +100,27 @@ void parse_rtu(const ServeArgs& args, ServeOptions& o) {
 
 const char* parity_name(Parity p) { return p == Parity::None ? "N" : p == Parity::Odd ? "O" : "E"; }
 
+// The bound port (or the serial path) in --port-file, before the announcement: a script waits
+// for the file, so one that cannot be written stops the server (exit 2) rather than leaving
+// the script waiting for a file that never comes.
+void write_port_file(const std::string& port_file, const ServeEndpoint& e) {
+  errno = 0;
+  FILE* f = std::fopen(port_file.c_str(), "w");
+  bool written = f != nullptr;
+  if (written) {
+    if (e.link == ServeLink::Tcp)
+      written = std::fprintf(f, "%u\n", static_cast<unsigned>(e.port)) > 0;
+    else
+      written = std::fprintf(f, "%s\n", e.serial_path.c_str()) > 0;
+    written = std::fclose(f) == 0 && written;
+  }
+  if (!written)
+    throw std::invalid_argument("--port-file " + port_file +
+                                ": cannot write it: " + std::strerror(errno != 0 ? errno : EIO));
+}
+
 void announce(const ServeOptions& o, const ServeEndpoint& e, const std::string& port_file) {
+  if (!port_file.empty()) write_port_file(port_file, e);
   if (e.link == ServeLink::Tcp) {
     std::printf("hilrig serve: %s listening on %s:%u (Modbus TCP)\n", o.device.c_str(), o.bind.c_str(),
                 static_cast<unsigned>(e.port));
@@ -104,14 +137,6 @@ void announce(const ServeOptions& o, const ServeEndpoint& e, const std::string& 
     std::printf("hilrig serve: far side: %s\n", e.far_side.c_str());
   }
   std::fflush(stdout);
-  if (!port_file.empty()) {
-    std::ofstream f(port_file);
-    if (e.link == ServeLink::Tcp) {
-      f << e.port << '\n';
-    } else {
-      f << e.serial_path << '\n';
-    }
-  }
 }
 
 void serve_main(const ServeArgs& args) {
@@ -151,6 +176,17 @@ void serve_main(const ServeArgs& args) {
   }
   if (o.far.config.empty() && (!o.far.gpio_sim.empty() || !o.far.can.empty())) {
     bad_input("--gpio-sim and --can need --far FAR.toml (which pin is on which line)");
+  }
+  if (!args.port_file.empty()) {
+    // Its directory is checked before the device is built or a port bound: the common mistake
+    // (a directory that is not there) is named before anything serves.
+    const std::filesystem::path dir = std::filesystem::path(args.port_file).parent_path();
+    const std::string where = dir.empty() ? "." : dir.string();
+    std::error_code ec;
+    if (std::filesystem::is_directory(args.port_file, ec))
+      bad_input("--port-file " + args.port_file + ": a directory, not a file to write the port to");
+    if (::access(where.c_str(), W_OK | X_OK) != 0)
+      bad_input("--port-file " + args.port_file + ": cannot write in " + where + ": " + std::strerror(errno));
   }
   campaign::StopRequest stop;
   const StopSignals signals(stop);

@@ -5,6 +5,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "drivers/virtual/virtual_bus.hpp"
 #include "models/amci4501/amci4501.hpp"
 #include "models/amci4501/registers.hpp"
@@ -16,6 +18,7 @@
 #include "models/smd23e/smd23e.hpp"
 #include "models/ssi7361/registers.hpp"
 #include "models/ssi7361/ssi7361.hpp"
+#include "rig/campaign/limits.hpp"
 #include "rig/duts/amci4501_dut.hpp"
 #include "rig/duts/ans1_adapter.hpp"
 #include "rig/duts/pls2700_dut.hpp"
@@ -151,6 +154,10 @@ double constant_rpm(const std::string& motion) {
     const char* last = m.data() + m.size() - kUnit.size();
     const auto [end, ec] = std::from_chars(first, last, rpm);
     if (ec == std::errc() && end == last && std::isfinite(rpm)) {
+      // The boards' speed word, as a campaign's speed_rpm is bounded.
+      if (std::abs(rpm) > campaign::limits::kMaxRpm)
+        throw std::invalid_argument(fmt::format("--motion {0}: a speed -{1} .. {1} rpm (got {2} rpm)", motion,
+                                                campaign::limits::kMaxRpm, rpm));
       return rpm;
     }
   }

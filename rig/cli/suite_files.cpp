@@ -19,12 +19,20 @@ std::vector<SuiteEntry> collect_campaigns(const std::vector<std::string>& paths)
     if (fs::is_directory(st)) {
       std::vector<SuiteEntry> found;
       for (const auto& e : fs::recursive_directory_iterator(path)) {
-        if (e.path().extension() != ".toml" || e.is_directory()) continue;
+        if (e.path().extension() != ".toml") continue;
+        // A link loop, or a link through a directory one may not read, is the suite's to fix:
+        // named as bad input, as `hilrig check` names it given alone.
+        std::error_code status_ec;
+        const fs::file_status s = e.status(status_ec);
+        if (status_ec && status_ec != std::errc::no_such_file_or_directory)
+          throw std::invalid_argument(fmt::format("{}: {}", e.path().string(), status_ec.message()));
+        if (fs::is_directory(s)) continue;
         // A *.toml that is not a campaign file one can read (a dangling link, a FIFO) would
         // drop out of the suite unnoticed: the suite would pass without it.
-        if (!e.is_regular_file())
-          throw std::invalid_argument(fmt::format("{}: {}, not a campaign file", e.path().string(),
-                                                  e.exists() ? "not a regular file" : "a link to nothing"));
+        if (!fs::is_regular_file(s))
+          throw std::invalid_argument(
+              fmt::format("{}: {}, not a campaign file", e.path().string(),
+                          fs::exists(s) ? "not a regular file" : "a link to nothing"));
         const fs::path rel = e.path().lexically_relative(path);
         found.push_back({e.path().string(), fs::path(rel).replace_extension().generic_string()});
       }

@@ -12,6 +12,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -291,6 +292,107 @@ void check_profile(const QuadratureOptions& o) {
                  fmt::format("-{0} .. {0} quarter periods", kMaxPhaseError));
 }
 
+// ---- the move's time: a synthesized motion ends within a campaign's run (limits::kMaxEnd) ---
+
+// The seconds a rest-to-rest move of d turns at v turns/s takes, in closed form as
+// signals/move_builders.cpp plans it: a rate near 0 would overflow its nanoseconds otherwise.
+double trapezoid_seconds(double d, double v, double a, double b) {
+  const double ramps = v * v / (2.0 * a) + v * v / (2.0 * b);
+  if (ramps >= d) {
+    // 1/(1/a + 1/b), not a·b/(a + b): a·b underflows to 0 for rates near 0 (a peak of 0).
+    const double peak = std::sqrt(2.0 * d / (1.0 / a + 1.0 / b));
+    return peak / a + peak / b;
+  }
+  return (d - ramps) / v + v / a + v / b;
+}
+
+double s_curve_seconds(double d, double v, double a, double j) {
+  if (v * j < a * a) a = std::sqrt(v * j);
+  double tj = a / j;
+  double ta = v / a - tj;
+  double tv = (d - v * (v / a + tj)) / v;
+  if (tv < 0.0) {
+    tv = 0.0;
+    v = a * (-tj + std::sqrt(tj * tj + 4.0 * d / a)) / 2.0;
+    ta = v / a - tj;
+    if (!(ta >= 0.0)) {
+      ta = 0.0;
+      tj = std::cbrt(d / (2.0 * j));
+    }
+  }
+  return 4.0 * tj + 2.0 * ta + tv;
+}
+
+// x rounded up to 4 significant digits: a least value quoted is one that works.
+double round_up(double x) {
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 3.0);
+  return std::ceil(x / unit) * unit;
+}
+
+// The least rate in (0, hi] that makes `time_at` (falling as the rate rises) at most `limit`.
+std::optional<double> least_rate(const std::function<double(double)>& time_at, double hi, double limit) {
+  if (!(time_at(hi) <= limit)) return std::nullopt;
+  double lo = std::numeric_limits<double>::min();
+  for (int i = 0; i < 200; ++i) {
+    const double mid = std::sqrt(lo) * std::sqrt(hi); // halves the range of exponents
+    (time_at(mid) <= limit ? hi : lo) = mid;
+  }
+  return round_up(hi);
+}
+
+// The move and its dwell end within a campaign's run, as a campaign's motion must; refused
+// naming the rate at fault and its least value, else what else to change.
+void check_move_time(const QuadratureOptions& o) {
+  const double limit = limits::kMaxEnd.seconds() - parse_instant(o.dwell, "--dwell").seconds();
+  const double d = std::abs(o.turns);
+  const double v = std::abs(o.rpm) / 60.0;
+  const std::string within = "ends within " + duration_words(limits::kMaxEnd) + " with its --dwell";
+  const auto refuse = [&](const std::string& option, double taken,
+                          const std::function<double(double)>& time_at, double hi, const std::string& unit) {
+    if (const auto least = least_rate(time_at, hi, limit))
+      throw CLI::ValidationError(option, fmt::format("at least {:.6g} {} for a move that {} (this one takes "
+                                                     "{:.6g} s)",
+                                                     *least, unit, within, taken));
+    throw CLI::ValidationError(option, fmt::format("a move that {} (this one takes {:.6g} s): raise --rpm, "
+                                                   "--accel, --decel or --jerk, or shorten --turns",
+                                                   within, taken));
+  };
+  if (o.profile == "trapezoid" && d > 0.0) {
+    const double b = o.decel > 0 ? o.decel : o.accel;
+    const double taken = trapezoid_seconds(d, v, o.accel, b);
+    if (taken <= limit) return;
+    if (o.decel > 0 && o.decel < o.accel)
+      refuse(
+          "--decel", taken, [&](double x) { return trapezoid_seconds(d, v, o.accel, x); }, kMaxTurnsPerS2,
+          "turns/s²");
+    refuse(
+        "--accel", taken, [&](double x) { return trapezoid_seconds(d, v, x, o.decel > 0 ? o.decel : x); },
+        kMaxTurnsPerS2, "turns/s²");
+  } else if (o.profile == "scurve" && d > 0.0) {
+    const double taken = s_curve_seconds(d, v, o.accel, o.jerk);
+    if (taken <= limit) return;
+    if (o.accel / o.jerk >= v / o.accel)
+      refuse(
+          "--jerk", taken, [&](double x) { return s_curve_seconds(d, v, o.accel, x); },
+          std::numeric_limits<double>::max(), "turns/s³");
+    refuse(
+        "--accel", taken, [&](double x) { return s_curve_seconds(d, v, x, o.jerk); }, kMaxTurnsPerS2,
+        "turns/s²");
+  } else if (o.profile == "press") {
+    const double run = parse_duration(o.duration, "--duration").seconds();
+    const double taken = run + v / o.brake;
+    if (taken <= limit) return;
+    refuse(
+        "--brake", taken, [&](double x) { return run + v / x; }, kMaxTurnsPerS2, "turns/s²");
+  } else if (o.profile == "constant") {
+    const double taken = parse_duration(o.duration, "--duration").seconds();
+    if (taken <= limit) return;
+    throw CLI::ValidationError("--dwell",
+                               fmt::format("--duration and --dwell together at most {} (got {} and {})",
+                                           duration_words(limits::kMaxEnd), o.duration, o.dwell));
+  }
+}
+
 void check_index(const QuadratureOptions& o) {
   const std::int64_t lines = o.lines;
   const std::int64_t cpt = 4 * lines;
@@ -310,6 +412,7 @@ void check_index(const QuadratureOptions& o) {
 void check_quadrature(const QuadratureOptions& o) {
   check_speed(o);
   check_profile(o);
+  check_move_time(o);
   check_index(o);
   for (const std::string& g : o.glitches) static_cast<void>(parse_glitch(g));
   for (const std::string& n : o.noise) static_cast<void>(parse_noise(n));

@@ -60,6 +60,10 @@ int rank(Outcome o) { return o == Outcome::Pass ? 0 : o == Outcome::Fail ? 1 : 2
 
 } // namespace
 
+bool threshold_matches(const Threshold& t, const std::string& measurement) {
+  return matches(t.name, measurement);
+}
+
 Threshold parse_threshold(std::string_view text) {
   const auto eq = text.find('=');
   if (eq == std::string_view::npos || eq == 0 || eq + 1 == text.size()) {

@@ -21,6 +21,8 @@ struct Threshold {
 };
 // Throws std::invalid_argument on a malformed threshold.
 [[nodiscard]] Threshold parse_threshold(std::string_view text);
+// Whether `t` names `measurement`: its name, or a dotted suffix of it.
+[[nodiscard]] bool threshold_matches(const Threshold& t, const std::string& measurement);
 
 struct CompareOptions {
   std::vector<Threshold> thresholds;

@@ -1,0 +1,215 @@
+// Bad input found by a robustness audit, each refused before anything runs (exit 2, naming
+// what and where) without losing what was already captured, and incomplete evidence judged 3.
+
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/tools/scratch_files.hpp"
+
+// A namespace of its own: a unity build puts this file beside command_line_test.cpp, whose
+// anonymous namespace has the same helpers.
+namespace hilrig::robust_input {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string out; // stdout
+  std::string err; // stderr
+};
+
+// Runs `hilrig ARGS` (plain words, no quoting) with stderr to a file of this test's own.
+// `wrap` goes before it: "timeout 20 " bounds a server that a missing check leaves serving.
+Result hilrig(const std::string& args, const std::string& wrap = "") {
+  const fs::path dir =
+      test::scratch_dir("campaign", std::string("robust_io_") +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  const fs::path err = dir / "stderr";
+  const std::string command = wrap + std::string(HILRIG_EXE) + " " + args + " 2>" + err.string();
+  Result r;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = test::read_file(err);
+  return r;
+}
+
+const std::string kPass = std::string(HILRIG_SOURCE_DIR) + "/campaigns/reference/reference_pls_pass.toml";
+
+// A merge whose output is one of its inputs (here shard 0's results.json given as both, and a
+// link to it) would replace that shard's results.json, junit.xml and report.html: refused, 2,
+// with every shard file as it was. A merge of several shards does not write over a run log's
+// own results.json either; the kill recovery, one run's log folded into its own directory, does.
+TEST(RobustInput, MergeRefusesToOverwriteAnInput) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_merge_overwrite");
+  for (const char* k : {"0", "1"})
+    ASSERT_EQ(
+        hilrig("run " + kPass + " --trace none --shard " + k + "/2 --out " + (dir / "s").string() + k).status,
+        0);
+  const fs::path s0 = dir / "s0";
+  const std::string s1 = (dir / "s1" / "results.json").string();
+  const std::string results = test::read_file(s0 / "results.json");
+  const std::string junit = test::read_file(s0 / "junit.xml");
+  const std::string input = (s0 / "results.json").string();
+  const Result same = hilrig("merge " + input + " " + input + " " + s1);
+  EXPECT_EQ(same.status, 2) << same.err;
+  EXPECT_NE(same.err.find("is also an input"), std::string::npos) << same.err;
+  fs::create_symlink(s0 / "results.json", dir / "alias.json");
+  const Result linked = hilrig("merge " + (dir / "alias.json").string() + " " + input + " " + s1);
+  EXPECT_EQ(linked.status, 2) << linked.err;
+  const Result log = hilrig("merge " + input + " " + (s0 / "runs.jsonl").string() + " " + s1);
+  EXPECT_EQ(log.status, 2) << log.err;
+  EXPECT_NE(log.err.find("the run's own file beside the input"), std::string::npos) << log.err;
+  EXPECT_EQ(test::read_file(s0 / "results.json"), results);
+  EXPECT_EQ(test::read_file(s0 / "junit.xml"), junit);
+  // Elsewhere, and into a directory of the shards under another name (NAME.junit.xml), it merges.
+  EXPECT_EQ(hilrig("merge " + (s0 / "merged.json").string() + " " + input + " " + s1).status, 0);
+  EXPECT_EQ(test::read_file(s0 / "junit.xml"), junit);
+  // The kill recovery: a run's one log folded into its own directory.
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "whole").string()).status, 0);
+  const Result fold = hilrig("merge " + (dir / "whole" / "results.json").string() + " " +
+                             (dir / "whole" / "runs.jsonl").string());
+  EXPECT_EQ(fold.status, 0) << fold.err;
+}
+
+// The run log of a killed run holds fewer runs than planned: incomplete evidence, 3, as its
+// results.json cut at the same run is, though every run it holds passed (not 1, a check's).
+TEST(RobustInput, MergeOfAnIncompleteRunLogExitsThree) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_merge_incomplete");
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "ran").string()).status, 0);
+  // The log as a kill leaves it: the header and the first run's record, the rest never written.
+  std::ifstream log(dir / "ran" / "runs.jsonl");
+  std::string header;
+  std::string first;
+  ASSERT_TRUE(std::getline(log, header) && std::getline(log, first));
+  std::string rest;
+  ASSERT_TRUE(std::getline(log, rest)) << "the campaign plans more than one run";
+  std::ofstream(dir / "cut.jsonl") << header << '\n' << first << '\n';
+  nlohmann::json results = nlohmann::json::parse(test::read_file(dir / "ran" / "results.json"));
+  results["runs"].erase(results["runs"].begin() + 1, results["runs"].end());
+  std::ofstream(dir / "cut.json") << results.dump();
+
+  const Result from_log = hilrig("merge " + (dir / "m1.json").string() + " " + (dir / "cut.jsonl").string());
+  EXPECT_EQ(from_log.status, 3) << from_log.err;
+  EXPECT_NE(from_log.err.find("incomplete evidence: 1 of the"), std::string::npos) << from_log.err;
+  const Result from_json = hilrig("merge " + (dir / "m2.json").string() + " " + (dir / "cut.json").string());
+  EXPECT_EQ(from_json.status, 3) << from_json.err;
+  // The whole log still merges to the run's own verdict.
+  EXPECT_EQ(
+      hilrig("merge " + (dir / "m3.json").string() + " " + (dir / "ran" / "runs.jsonl").string()).status, 0);
+}
+
+// A link loop among a suite's *.toml is bad input naming the link (as given alone), not a
+// library's "filesystem error" as a rig fault.
+TEST(RobustInput, ALinkLoopInASuiteIsBadInputNamingIt) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_suite_loop");
+  const fs::path suite = dir / "suite";
+  fs::create_directories(suite);
+  fs::copy_file(kPass, suite / "a.toml");
+  fs::create_symlink("loop2", suite / "loop1.toml");
+  fs::create_symlink("loop1.toml", suite / "loop2");
+  for (const std::string& command :
+       {"check " + suite.string(),
+        "run " + suite.string() + " --out " + (dir / "out").string() + " --trace none"}) {
+    const Result r = hilrig(command);
+    EXPECT_EQ(r.status, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("loop1.toml: Too many levels of symbolic links"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("filesystem error"), std::string::npos) << r.err;
+  }
+}
+
+// A --port-file that cannot be written (a directory that is not there) is bad input before
+// anything serves: a script waiting for the file would wait for ever.
+TEST(RobustInput, ServeRefusesAPortFileItCannotWrite) {
+  const Result r = hilrig("serve ans1 --modbus-tcp 0 --port-file /nonexistent/dir/p", "timeout 20 ");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("/nonexistent/dir/p"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("listening"), std::string::npos) << r.out;
+}
+
+// An address that is not IPv4 and a speed beyond the boards' rpm word are the command line's
+// mistakes (2), not the rig's (3), named before a port is bound.
+TEST(RobustInput, ServeRefusesABadBindAndAnOutOfRangeMotion) {
+  const Result bind = hilrig("serve ans1 --modbus-tcp 0 --bind 999.1.1.1", "timeout 20 ");
+  EXPECT_EQ(bind.status, 2) << bind.err;
+  EXPECT_NE(bind.err.find("999.1.1.1 is not an IPv4 address"), std::string::npos) << bind.err;
+  const Result motion = hilrig("serve pls2700 --modbus-tcp 0 --motion constant:1e308rpm", "timeout 20 ");
+  EXPECT_EQ(motion.status, 2) << motion.err;
+  EXPECT_NE(motion.err.find("-32767 .. 32767 rpm"), std::string::npos) << motion.err;
+}
+
+// A rate near 0 made the move's nanoseconds overflow (every edge at #0, exit 0): the move must
+// end within a campaign's run, and the least rate that does is named.
+TEST(RobustInput, SynthRefusesAMoveLongerThanARun) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_synth_time");
+  const std::string base =
+      "synth quadrature --out " + (dir / "a.vcd").string() + " --lines 100 --rpm 600 --turns 1 ";
+  const Result accel = hilrig(base + "--profile trapezoid --accel 1e-300");
+  EXPECT_EQ(accel.status, 2) << accel.err;
+  EXPECT_NE(accel.err.find("--accel"), std::string::npos) << accel.err;
+  EXPECT_NE(accel.err.find("at least"), std::string::npos) << accel.err;
+  const Result jerk = hilrig(base + "--profile scurve --accel 10 --jerk 1e-300");
+  EXPECT_EQ(jerk.status, 2) << jerk.err;
+  EXPECT_NE(jerk.err.find("--jerk"), std::string::npos) << jerk.err;
+  const Result brake = hilrig(base + "--profile press --duration 1s --brake 1e-300");
+  EXPECT_EQ(brake.status, 2) << brake.err;
+  EXPECT_NE(brake.err.find("--brake"), std::string::npos) << brake.err;
+  EXPECT_FALSE(fs::exists(dir / "a.vcd"));
+  // A slow move within the hour is still made.
+  EXPECT_EQ(hilrig(base + "--profile trapezoid --accel 0.001").status, 0);
+}
+
+// A [[wiring]] rig line's name follows the rule of every name (1 .. 64 printable ASCII): an
+// empty one or a control character (BEL, which went raw into trace.vcd) is bad input.
+TEST(RobustInput, WiringRigNamesAreLabels) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_wiring_name");
+  const std::string text = test::read_file(kPass);
+  const std::string line = "rig = \"ls1\"";
+  ASSERT_NE(text.find(line), std::string::npos);
+  for (const std::string& name : {std::string(""), std::string("l\\u0007s1")}) {
+    std::string bad = text;
+    bad.replace(bad.find(line), line.size(), "rig = \"" + name + "\"");
+    const fs::path file = test::write_file(dir, "bad.toml", bad);
+    const Result r = hilrig("check " + file.string());
+    EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+    EXPECT_NE(r.err.find("the rig line's name: 1 .. 64 printable ASCII characters"), std::string::npos)
+        << r.err;
+  }
+}
+
+// `run --out ""` is bad input (2), not a rig fault (3).
+TEST(RobustInput, RunRefusesAnEmptyOut) {
+  const Result r = hilrig("run " + kPass + " --out ''");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+}
+
+// A --threshold naming no measurement (a misspelt name) is warned about, naming it; the
+// comparison's exit status is its own.
+TEST(RobustInput, CompareWarnsOfAThresholdThatNamesNothing) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_compare_threshold");
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "ran").string()).status, 0);
+  const std::string results = (dir / "ran" / "results.json").string();
+  const Result r = hilrig("compare " + results + " " + results + " --threshold nosuch=5 --threshold max=5");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: --threshold nosuch: no measurement"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("--threshold max"), std::string::npos) << r.err;
+}
+
+} // namespace
+} // namespace hilrig::robust_input
