@@ -119,7 +119,9 @@ CycleOutcome run_cycle(ProgramState& state, const CommandWords& words, std::uint
       return out;
     }
   }
-  if ((q & qbit::kCommands) == 0 && !e2clr) {
+  // Without an EEPROM error E2CLR "will have no effect" (L2120-2121): a cycle with no command
+  // bit 07-01 besides it is CMDErr condition 2 (L2031), and a pending CMDErr stays.
+  if ((q & qbit::kCommands) == 0) {
     fail(state, ibit::kCommandError);
     return out;
   }

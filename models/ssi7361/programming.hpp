@@ -8,7 +8,7 @@
 //   1. must-be-zero bits of %Q / %AQ1, CntDir without PgmDir       -> CMDErr
 //   2. E2Err present: E2CLR clears it and loads the defaults (committed at once: it is the
 //      remedy, not a parameter); without E2CLR                     -> CMDErr
-//   3. no command bit 07-01 (and no E2CLR)                          -> CMDErr
+//   3. no command bit 07-01 (E2CLR alone without E2Err has no effect, L2121) -> CMDErr
 //   4. a parameter error pending and this cycle does not reprogram it -> MsgIgn
 //   5. N, M, M+N -> FMTErr; MUL, DIV, MUL<=DIV -> SCLErr; Preset -> PSTErr; RUT -> RUTErr
 //   6. commit; clear FMT/SCL/PST/RUT/CMD/MsgIgn; Format that changes the setup clears LO;

@@ -131,7 +131,12 @@ void Ssi7361::finish_frame() {
 
 // ---------------------------------------------------------------- data and rate
 
-void Ssi7361::recompute() { dv_ = ssi7361::data_value(raw_, state_.setup, state_.offset, params_); }
+// No frame read since power-up: the Data Value is 0, as the raw word and the rate are, not the
+// setup and LO applied to a raw 0 that no transducer sent (the manual is silent, [MODEL] in
+// docs/spec/ssi7361.md §7 A28).
+void Ssi7361::recompute() {
+  dv_ = frames_ == 0 ? 0 : ssi7361::data_value(raw_, state_.setup, state_.offset, params_);
+}
 
 std::int32_t Ssi7361::data_value() const { return saturate_i32(dv_); }
 

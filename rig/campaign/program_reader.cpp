@@ -63,7 +63,8 @@ std::optional<std::int64_t> field_value(TableReader& r, const ProgramFieldInfo& 
 
 } // namespace
 
-std::vector<std::uint16_t> read_program(TableReader& r, const duts::DutInfo* info) {
+std::vector<std::uint16_t> read_program(TableReader& r, const duts::DutInfo* info,
+                                        duts::EarlierWrites earlier) {
   const std::string block_name = r.string("program");
   if (info == nullptr)
     r.fail("program",
@@ -79,7 +80,7 @@ std::vector<std::uint16_t> read_program(TableReader& r, const duts::DutInfo* inf
   duts::ProgramValues values;
   for (const ProgramFieldInfo& f : block->fields) values.push_back(field_value(r, f));
   try {
-    return block->compile(values);
+    return block->compile(values, earlier);
   } catch (const duts::ProgramFieldError& e) {
     r.fail(e.field, e.what());
   }

@@ -579,7 +579,14 @@ private:
       }
       if (write) {
         h.kind = HostAction::Kind::Write;
-        h.words = program ? read_program(r, info_) : read_words(r, "write");
+        if (program) {
+          std::vector<std::vector<std::uint16_t>> earlier;
+          for (const HostAction& e : s.host)
+            if (e.kind == HostAction::Kind::Write) earlier.push_back(e.words);
+          h.words = read_program(r, info_, earlier);
+        } else {
+          h.words = read_words(r, "write");
+        }
         if (host != nullptr && h.words.size() > host->output_words)
           r.fail("write", fmt::format("at most {} output words for {}", host->output_words, info_->name));
         if (host != nullptr && host->block_length_max != 0 && h.words[0] > host->block_length_max)

@@ -136,6 +136,10 @@ CheckParams throughput(std::string_view name, const Table& t) {
   p.spec.p99_limit = t.opt_us("p99_limit_us");
   p.spec.min_limit = t.opt_us("min_limit_us");
   ordered(t, "min_limit_us", "limit_us");
+  p.spec.quiet = t.opt_us("quiet_us");
+  p.spec.early = t.opt_us("early_us");
+  if (p.spec.early && p.spec.min_limit)
+    throw ParamError("early_us", "not with min_limit_us (min is judged against -early_us)");
   p.spec.timeout = t.us("timeout_us", Nanos::max());
   p.spec.min_count = t.count("min_count", 1);
   if (t.has("crossings_us")) {
@@ -336,6 +340,11 @@ std::vector<CheckKind> make_kinds() {
        P("min_limit_us", Num, false, "lower limit on the min latency (inclusive; default none)", time),
        P("timeout_us", Num, false, "longest wait for an edge, inclusive (default: until the next crossing)",
          width),
+       P("quiet_us", Num, false,
+         "only an edge after the line was quiet this long counts (a burst's first edge; default any edge)",
+         width),
+       P("early_us", Num, false, "an edge up to this long before the crossing counts; min >= -early_us",
+         time),
        P("min_count", Int, false, "fewest latencies (1)", counts),
        instant(P("crossings_us", ParamType::NumberList, false, "stimulus crossing times; or setpoint", time),
                kUs),

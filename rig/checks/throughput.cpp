@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <iterator>
 #include <vector>
 
 namespace hilrig::checks {
@@ -11,6 +12,19 @@ struct Sample {
   Nanos latency;
   Nanos crossing;
 };
+
+// The first edge of `level` in [from, until) that follows at least `quiet` of no edge (the
+// line idle at the other level); an edge with none before it follows the capture's start.
+std::optional<Edge> next_burst_edge(std::span<const Edge> edges, Nanos from, Nanos until, Level level,
+                                    Nanos quiet) {
+  auto it =
+      std::lower_bound(edges.begin(), edges.end(), from, [](const Edge& e, Nanos t) { return e.time < t; });
+  for (; it != edges.end() && it->time < until; ++it) {
+    if (it->level != level) continue;
+    if (it == edges.begin() || it->time - std::prev(it)->time >= quiet) return *it;
+  }
+  return std::nullopt;
+}
 
 } // namespace
 
@@ -35,20 +49,34 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
   for (std::size_t i = 0; i < crossings.size(); ++i) {
     const Nanos c = crossings[i];
     // An edge exactly timeout after the crossing is in time (limits are inclusive); an edge at
-    // the next crossing belongs to that crossing.
+    // the next crossing belongs to that crossing. With `early` the crossings split the time
+    // between them in half: the nearest edge answers, early or late, and is judged by its
+    // latency rather than lost to a neighbour.
+    Nanos from = c;
     Nanos until = spec.timeout == Nanos::max() ? Nanos::max() : c + spec.timeout + Nanos{1};
-    if (i + 1 < crossings.size()) until = std::min(until, crossings[i + 1]);
-    if (const auto e = next_edge(output, c, until, spec.expected)) {
+    if (spec.early) {
+      const Nanos back = i > 0                      ? (c - crossings[i - 1]) / 2
+                         : i + 1 < crossings.size() ? (crossings[i + 1] - c) / 2
+                                                    : *spec.early;
+      from = c - std::max(back, *spec.early);
+      if (i + 1 < crossings.size()) until = std::min(until, c + (crossings[i + 1] - c + Nanos{1}) / 2);
+    } else if (i + 1 < crossings.size()) {
+      until = std::min(until, crossings[i + 1]);
+    }
+    const auto e = spec.quiet ? next_burst_edge(output, from, until, spec.expected, *spec.quiet)
+                              : next_edge(output, from, until, spec.expected);
+    if (e) {
       samples.push_back({e->time - c, c});
     } else {
-      if (!first_missing) first_missing = TraceWindow{c, until};
+      if (!first_missing) first_missing = TraceWindow{from, until};
       ++missing;
     }
   }
   std::string missing_detail = "every crossing produced an output edge";
   if (first_missing) {
-    missing_detail = fmt::format("missing edge: no {} edge after the crossing at {} ns (first of {})",
-                                 level_name(spec.expected), first_missing->begin.count(), missing);
+    missing_detail = fmt::format("missing edge: no {} edge{} in {} .. {} ns (first of {})",
+                                 level_name(spec.expected), spec.quiet ? " after a quiet gap" : "",
+                                 first_missing->begin.count(), first_missing->end.count(), missing);
   }
   r.measurements.push_back(measure(
       spec.name + ".count", static_cast<double>(samples.size()), "", static_cast<double>(spec.min_count),
@@ -61,14 +89,16 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
     const auto stat = [&](const std::string& what, std::size_t idx, std::optional<Nanos> upper,
                           std::optional<Nanos> lower = std::nullopt) {
       const Sample& s = samples[idx];
-      r.measurements.push_back(measure_time(
-          spec.name + "." + what, s.latency, TimeUnit::Us, lower, upper,
-          fmt::format("{} latency: crossing at {} ns to {} edge at {} ns", what, s.crossing.count(),
-                      level_name(spec.expected), (s.crossing + s.latency).count()),
-          TraceWindow{s.crossing, s.crossing + s.latency}, s.crossing + s.latency));
+      r.measurements.push_back(measure_time(spec.name + "." + what, s.latency, TimeUnit::Us, lower, upper,
+                                            fmt::format("{} latency: crossing at {} ns to {} edge at {} ns",
+                                                        what, s.crossing.count(), level_name(spec.expected),
+                                                        (s.crossing + s.latency).count()),
+                                            TraceWindow{std::min(s.crossing, s.crossing + s.latency),
+                                                        std::max(s.crossing, s.crossing + s.latency)},
+                                            s.crossing + s.latency));
     };
     const std::size_t n = samples.size();
-    stat("min", 0, std::nullopt, spec.min_limit);
+    stat("min", 0, std::nullopt, spec.early ? std::optional<Nanos>{-*spec.early} : spec.min_limit);
     stat("median", nearest_rank_index(n, 50.0), std::nullopt);
     stat("p99", nearest_rank_index(n, 99.0),
          spec.p99_limit ? spec.p99_limit : std::optional<Nanos>{spec.limit});

@@ -23,12 +23,24 @@ struct ThroughputSpec {
   // An edge is looked for from the crossing until the next crossing, and never longer than
   // this: a crossing with no edge in time is a missing edge, a failure.
   Nanos timeout = Nanos::max();
+  // Only the first edge of a burst answers: an edge after the line held the other level for at
+  // least this long (an SSI frame's first falling clock edge after the idle gap, ssi7361
+  // L1085, L1091-1092). Without it an edge inside a burst that started early, a whole number of
+  // clock periods early, can land on the crossing and read as on time.
+  std::optional<Nanos> quiet{};
+  // An edge up to this long before the crossing is in time too (a negative latency, judged by
+  // "<name>.min" against -early): a start that may come as early as late. Each crossing is then
+  // answered by the first edge from halfway back to the previous crossing (at least `early`
+  // back) to halfway on to the next, so an edge too early is measured, not lost. Not with
+  // min_limit.
+  std::optional<Nanos> early{};
   std::size_t min_count = 1; // fewer measured latencies than this fails "<name>.count"
 };
 
 // Measurements (unit us, windows from crossing to edge of the sample that set the value):
 // count (lower min_count), min (lower min_limit), median (nearest rank, no limits), p99 (upper p99_limit),
 // max (upper limit), missing (number of crossings with no edge; upper 0). Series "latency".
+// With `early`, min's lower limit is -early and a latency may be negative.
 [[nodiscard]] CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const Edge> output,
                                            const ThroughputSpec& spec);
 

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -42,13 +43,18 @@ struct ProgramFieldInfo {
 // nullopt for an Optional field not given.
 using ProgramValues = std::vector<std::optional<std::int64_t>>;
 
+// The words the campaign wrote before a block, in order (blocks as compiled, raw writes as
+// given): what a block that leaves a setting "as it is" keeps when the board has no way to
+// read the setting back (the 7361's Format word is written whole, L2126-L2152).
+using EarlierWrites = std::span<const std::vector<std::uint16_t>>;
+
 struct ProgramBlockInfo {
   std::string name;        // as a campaign names it: program = "setpoints"
   std::string description; // what it programs, with the manual lines
   std::vector<ProgramFieldInfo> fields;
   // The output words 0.. the block is written as (word 0 without Transmit; on a board
   // without the handshake, exactly what `write = [...]` would hold).
-  std::function<std::vector<std::uint16_t>(const ProgramValues&)> compile;
+  std::function<std::vector<std::uint16_t>(const ProgramValues&, EarlierWrites)> compile;
 };
 
 // A compiler's refusal of values that are each in range but do not go together (a rule across
@@ -92,9 +98,9 @@ template <typename B> struct BlockField {
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 template <typename B>
-[[nodiscard]] ProgramBlockInfo program_block(std::string name, std::string description,
-                                             std::vector<BlockField<B>> fields,
-                                             std::vector<std::uint16_t> (*compile)(const B&)) {
+[[nodiscard]] ProgramBlockInfo
+program_block(std::string name, std::string description, std::vector<BlockField<B>> fields,
+              std::function<std::vector<std::uint16_t>(const B&, EarlierWrites)> compile) {
   ProgramBlockInfo info;
   info.name = std::move(name);
   info.description = std::move(description);
@@ -130,7 +136,7 @@ template <typename B>
         f.member);
     info.fields.push_back(std::move(fi));
   }
-  info.compile = [fields = std::move(fields), compile](const ProgramValues& values) {
+  info.compile = [fields = std::move(fields), compile](const ProgramValues& values, EarlierWrites earlier) {
     B b{};
     for (std::size_t i = 0; i < fields.size() && i < values.size(); ++i) {
       std::visit(
@@ -146,9 +152,28 @@ template <typename B>
           },
           fields[i].member);
     }
-    return compile(b);
+    return compile(b, earlier);
   };
   return info;
+}
+
+// A block whose words depend on its fields only.
+template <typename B>
+[[nodiscard]] ProgramBlockInfo program_block(std::string name, std::string description,
+                                             std::vector<BlockField<B>> fields,
+                                             std::vector<std::uint16_t> (*compile)(const B&)) {
+  return program_block<B>(std::move(name), std::move(description), std::move(fields),
+                          std::function<std::vector<std::uint16_t>(const B&, EarlierWrites)>(
+                              [compile](const B& b, EarlierWrites) { return compile(b); }));
+}
+
+// A block whose words also depend on what the campaign wrote before it.
+template <typename B>
+[[nodiscard]] ProgramBlockInfo program_block(std::string name, std::string description,
+                                             std::vector<BlockField<B>> fields,
+                                             std::vector<std::uint16_t> (*compile)(const B&, EarlierWrites)) {
+  return program_block<B>(std::move(name), std::move(description), std::move(fields),
+                          std::function<std::vector<std::uint16_t>(const B&, EarlierWrites)>(compile));
 }
 
 #if defined(__GNUC__) && !defined(__clang__)

@@ -179,7 +179,8 @@ DutInfo ssi7361_info() {
       "the setup (format, scalars, RUT, direction) and the preset's offset LO are in EEPROM and survive "
       "(L1304-1306); every error bit is cleared (L254-256, L921-923) except E2Err [MODEL: the corrupted "
       "parameter is still in EEPROM]; while off: no frames, CLK idle high, status words 0 [MODEL]; back on: "
-      "ACK 0, raw/Data Value/rate 0 until frames come, the first frame first_frame after power-up (the "
+      "ACK 0, raw/Data Value/rate 0 until the first frame is read [MODEL A28], the first frame first_frame "
+      "after power-up (the "
       "manual: "
       "'a few seconds' to the RUN LED, L718)";
   info.host = HostInterface{s::kCommandWords, s::kStatusWords, true, 15, 15};

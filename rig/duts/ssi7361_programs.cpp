@@ -1,7 +1,9 @@
 // The 7361's instruction set in its manual's words (docs/spec/ssi7361.md §4-§5; manual
 // seeds/004, Lnnn): one `setup` block sets the %Q command bits of the groups given and their
 // %AQ words (Format %AQ1, Scalars %AQ2-3, Preset %AQ4-5 low word first, RUT %AQ6; L2080-L2123),
-// written up to the last word a group uses.
+// written up to the last word a group uses. The Format word is written whole, so code, logic
+// and clock left out keep what the campaign's last Format write set (the board cannot be
+// read back; factory binary, positive, 125 kHz before any, L2159-L2161).
 
 #include <cstdint>
 #include <optional>
@@ -31,7 +33,19 @@ struct Setup {
   bool eeprom_clear = false;
 };
 
-Words setup(const Setup& s) {
+// %AQ1 bits 07 (Gray), 08 (Negative) and 16 (500 kHz): the Format's settings a setup may leave out.
+constexpr std::uint16_t kKeptFormatBits = 0x80C0;
+
+// Those bits as the last earlier write that programmed the Format (%Q bit 02) set them; 0, the
+// factory setup (L2159-L2161), when none did.
+std::uint16_t kept_format_bits(duts::EarlierWrites earlier) {
+  for (auto it = earlier.rbegin(); it != earlier.rend(); ++it)
+    if (it->size() > 1 && ((*it)[0] & bit(1)) != 0)
+      return static_cast<std::uint16_t>((*it)[1] & kKeptFormatBits);
+  return 0;
+}
+
+Words setup(const Setup& s, duts::EarlierWrites earlier) {
   const bool format = s.bits || s.first_bit;
   if (format && !(s.bits && s.first_bit))
     throw ProgramFieldError(s.bits ? "first_bit" : "bits",
@@ -54,9 +68,12 @@ Words setup(const Setup& s) {
   std::size_t last = 0;
   if (format) {
     q |= bit(1);
-    w[1] = static_cast<std::uint16_t>(bit(15, s.clock.value_or(0) == 1) | (*s.first_bit << 8) |
-                                      bit(7, s.logic.value_or(0) == 1) | bit(6, s.code.value_or(0) == 1) |
-                                      *s.bits);
+    const std::uint16_t kept = kept_format_bits(earlier);
+    const auto setting = [&](const Opt& given, unsigned n) {
+      return given ? bit(n, *given == 1) : static_cast<std::uint16_t>(kept & bit(n));
+    };
+    w[1] = static_cast<std::uint16_t>(setting(s.clock, 15) | (*s.first_bit << 8) | setting(s.logic, 7) |
+                                      setting(s.code, 6) | *s.bits);
     last = 1;
   }
   if (s.multiplier) {
@@ -94,9 +111,24 @@ std::vector<ProgramBlockInfo> ssi7361_programs() {
           {
               {"bits", &Setup::bits, "Format: Number of Data Bits N (%AQ1 bits 05-01)", 2, 25},
               {"first_bit", &Setup::first_bit, "Format: MSB Number M (%AQ1 bits 13-09)", 1, 24},
-              {"code", &Setup::code, "Format: the data's code (bit 07)", 0, 0, {"binary", "gray"}},
-              {"logic", &Setup::logic, "Format: the data's logic (bit 08)", 0, 0, {"positive", "negative"}},
-              {"clock", &Setup::clock, "Format: the SSI clock (bit 16)", 0, 0, {"125kHz", "500kHz"}},
+              {"code",
+               &Setup::code,
+               "Format: the data's code (bit 07; absent: as the last Format written)",
+               0,
+               0,
+               {"binary", "gray"}},
+              {"logic",
+               &Setup::logic,
+               "Format: the data's logic (bit 08; absent: as the last Format written)",
+               0,
+               0,
+               {"positive", "negative"}},
+              {"clock",
+               &Setup::clock,
+               "Format: the SSI clock (bit 16; absent: as the last Format written)",
+               0,
+               0,
+               {"125kHz", "500kHz"}},
               {"multiplier", &Setup::multiplier, "Scalars: Scalar Multiplier (%AQ2)", 1, 32767},
               {"divisor", &Setup::divisor, "Scalars: Scalar Divisor (%AQ3)", 1, 32767},
               {"preset", &Setup::preset, "Preset Value (%AQ4 low, %AQ5 high)", -kMaxPreset, kMaxPreset},

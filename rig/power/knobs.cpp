@@ -42,8 +42,8 @@ constexpr std::array kKnobs{
     // The 7361's clock pulses are halves of its clock period T, its frames start every TINT
     // (models/ssi7361/README.md).
     Row{"ssi7361", "pulse_width", "clock_period_error", KnobDirection::Both},
-    // Up only: a frame that starts early reads as one clock period late (the check takes the
-    // next falling edge after the expected start), a detection, but not a margin.
+    // Up, and down too where the frame_start check has early_us (power.cpp, throughput_has_min):
+    // with quiet_us it judges each frame's first falling edge, so an early frame reads early.
     Row{"ssi7361", "throughput", "frame_period_error", KnobDirection::Up},
     // The SMD23E's step timing is its profile in its own time base (models/smd23e/README.md).
     Row{"smd23e", "shaft_move", "step_clock_error", KnobDirection::Both},

@@ -190,13 +190,14 @@ const checks::PulseWidthSpec* pulse_spec(const campaign::Campaign& c, const std:
   return nullptr;
 }
 
-// A throughput check with a lower limit (min_limit_us: the fastest answer the manual states)
-// is two-sided: a board that answers too fast is as far out of spec as one too slow, so its
-// knob is bisected down as well as up.
+// A throughput check with a lower limit (min_limit_us: the fastest answer the manual states;
+// early_us: a start that may come as early as late) is two-sided: a board that answers too
+// fast is as far out of spec as one too slow, so its knob is bisected down as well as up.
 bool throughput_has_min(const campaign::Campaign& c, const std::string& name) {
   for (const campaign::Scenario& s : c.points)
     if (const campaign::CheckSpec* k = s.check(name))
-      if (const auto* t = std::get_if<checks::ThroughputParams>(&k->params); t && t->spec.min_limit)
+      if (const auto* t = std::get_if<checks::ThroughputParams>(&k->params);
+          t && (t->spec.min_limit || t->spec.early))
         return true;
   return false;
 }

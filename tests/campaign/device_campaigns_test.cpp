@@ -144,5 +144,44 @@ TEST(DeviceCampaigns, Pls2700TwoChannelUpdateIsSlowerThanOneChannel) {
   EXPECT_LE(max2->value, 400.0);
 }
 
+// A shipped 7361 campaign with a TINT error e (frame_period_error, models/ssi7361/README.md):
+// frame k starts k * e off its expected start. Whether its frame_start check passed.
+bool frame_start_passes(const std::string& stem, const std::string& error) {
+  const std::string file = test::campaign_dir("ssi7361") + "/" + stem + ".toml";
+  std::string text = test::read_file(file);
+  const std::string at = "[dut.params]\n";
+  const auto pos = text.find(at);
+  EXPECT_NE(pos, std::string::npos) << stem;
+  text.insert(pos + at.size(), "frame_period_error = \"" + error + "\"\n");
+  const Campaign c = parse_campaign(text, file);
+  const rig::CampaignResult r = test::run_everything(c);
+  bool judged = false;
+  bool pass = true;
+  for (const auto& check : r.runs.at(0).checks)
+    for (const auto& m : check.measurements)
+      if (m.name.starts_with("frame_start.")) {
+        judged = true;
+        pass = pass && m.outcome == Outcome::Pass;
+      }
+  EXPECT_TRUE(judged) << stem << " " << error;
+  return judged && pass;
+}
+
+TEST(DeviceCampaigns, Ssi7361FrameStartFailsATintErrorBeyondHalfAClockPeriodEitherWay) {
+  // 125 kHz: TINT 500 us (L1090, L1096), 20 frames judged (k = 0..19) within +- T/2 = 4 us
+  // (A7): the 20th is 19 * e off, in limit while |e| <= 4 us / 19 = 210.5 ns. A whole clock
+  // period short (-8 us) put an inner edge of an early frame on the expected start, a pass
+  // before the check judged the frame's first edge.
+  for (const char* ok : {"0ns", "-1ns", "1ns", "-210ns", "210ns"})
+    EXPECT_TRUE(frame_start_passes("ssi7361_frame_timing", ok)) << ok;
+  for (const char* bad : {"-211ns", "211ns", "-1us", "1us", "-2us", "-4us", "-8us", "8us", "-16us"})
+    EXPECT_FALSE(frame_start_passes("ssi7361_frame_timing", bad)) << bad;
+  // 500 kHz: TINT 250 us (L1096-L1098), 10 frames (k = 0..9) within +- T/2 = 1 us: |e| <= 111.1 ns.
+  for (const char* ok : {"0ns", "-1ns", "-111ns", "111ns"})
+    EXPECT_TRUE(frame_start_passes("ssi7361_500khz", ok)) << ok;
+  for (const char* bad : {"-112ns", "112ns", "-1us", "1us", "-2us", "2us", "-4us"})
+    EXPECT_FALSE(frame_start_passes("ssi7361_500khz", bad)) << bad;
+}
+
 } // namespace
 } // namespace hilrig::campaign

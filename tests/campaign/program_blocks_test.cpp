@@ -349,6 +349,45 @@ TEST(ProgramSsi7361, FormatAndScalarRulesAreCheckedWhenRead) {
   EXPECT_TRUE(rejected("ssi7361", "program = \"setup\"\npreset = 33554432", 1, 10, "preset", "33554431"));
 }
 
+// The words of each write of a 7361 campaign whose [[host]] entries are BODIES, 1 ms apart.
+std::vector<Words> ssi7361_writes(const std::vector<std::string>& bodies) {
+  std::string text = "[campaign]\nname = \"words\"\nend = \"20ms\"\n[dut]\nmodel = \"ssi7361\"\n";
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    text += "[[host]]\nat = \"" + std::to_string(i + 1) + "ms\"\n" + bodies[i] + "\n";
+  text += "[[host]]\nat = \"19ms\"\nread = 0\nname = \"status\"\n[[check]]\nkind = \"word_bits\"\nname = "
+          "\"status\"\nobservation = \"status\"\nmask = 1\nvalue = 0\n";
+  const Campaign c = parse_campaign(text, "t.toml");
+  std::vector<Words> out;
+  for (const auto& h : c.points.at(0).host)
+    if (h.kind == HostAction::Kind::Write) out.push_back(h.words);
+  return out;
+}
+
+TEST(ProgramSsi7361, CodeLogicAndClockLeftOutKeepTheLastFormatWritten) {
+  // The Format word (%AQ1) is written whole (L2126-L2152) and the board cannot be read back:
+  // code (bit 07), logic (bit 08) and clock (bit 16) a setup leaves out are what the campaign's
+  // last Format write set; before any, the factory binary, positive, 125 kHz (L2159-L2161).
+  const std::string fmt = "program = \"setup\"\nbits = 24\nfirst_bit = 1";
+  const auto w = ssi7361_writes({
+      fmt, // factory bits
+      "program = \"setup\"\nbits = 25\nfirst_bit = 1\ncode = \"gray\"\nlogic = \"negative\"\nclock = "
+      "\"500kHz\"",                       // 0x80C0 | 0x0119
+      "program = \"setup\"\npreset = -1", // no Format: skipped
+      fmt,                                // keeps all three
+      fmt + "\ncode = \"binary\"",        // clears bit 07 only
+      fmt,                                // keeps that
+      "write = [2, 280]",                 // a raw Format: 0x0118
+      fmt + "\nclock = \"500kHz\"",       // from the raw one
+  });
+  ASSERT_EQ(w.size(), 8U);
+  EXPECT_EQ(w[0], (Words{0x0002, 0x0118}));
+  EXPECT_EQ(w[1], (Words{0x0002, 0x81D9}));
+  EXPECT_EQ(w[3], (Words{0x0002, 0x81D8}));
+  EXPECT_EQ(w[4], (Words{0x0002, 0x8198}));
+  EXPECT_EQ(w[5], (Words{0x0002, 0x8198}));
+  EXPECT_EQ(w[7], (Words{0x0002, 0x8118}));
+}
+
 // --- Series 2700 (docs/spec/pls2700.md §5.3; manual seeds/002) ----------------------------
 
 TEST(ProgramPls2700, EachInstructionIsOneBtwInBcd) {
@@ -461,7 +500,10 @@ TEST(ProgramShipped, Ssi7361DataTypesInWordsRunsAsItsRawWords) {
        {"program = \"setup\"\nbits = 10\nfirst_bit = 1\ncode = \"gray\"\nlogic = \"negative\"",
         "write = [0x0002, 0x01CA]"},
        {"program = \"setup\"\nbits = 10\nfirst_bit = 1\ncode = \"gray\"", "write = [0x0002, 0x014A]"},
-       {"program = \"setup\"\nbits = 10\nfirst_bit = 1\nlogic = \"negative\"", "write = [0x0002, 0x018A]"}});
+       {"program = \"setup\"\nbits = 10\nfirst_bit = 1\ncode = \"binary\" # the Format word is written "
+        "whole: left "
+        "out, code stays the gray above\nlogic = \"negative\"",
+        "write = [0x0002, 0x018A]"}});
 }
 
 TEST(ProgramShipped, Pls2700TachInWordsRunsAsItsRawWords) {

@@ -134,7 +134,7 @@ TEST(Registry, AModulusIsNoneOrAtLeastOneCount) {
              : kind == "advance_counts" ? json{{"output", "o"}, {"setpoint", 1}, {"advance_ms", 1}}
                                         : json{{"output", "o"}, {"position", 1}};
     p["modulus"] = modulus;
-    return problem(kind, p);
+    return problem(kind.c_str(), p);
   };
   for (const char* kind : {"throughput", "advance_counts", "edge_at_position"}) {
     SCOPED_TRACE(kind);

@@ -136,5 +136,78 @@ TEST(Throughput, PropertyStatisticsAreOrderStatisticsOfTheLatencies) {
   }
 }
 
+// An SSI clock as the 7361 drives it (manual L1085-L1098): idle high, each frame 25 falling
+// edges T = 8 us apart with a rising edge T/2 after each; frame k starts at starts[k].
+std::vector<Edge> ssi_clock(const std::vector<Nanos>& starts) {
+  std::vector<Edge> e;
+  for (const Nanos s : starts)
+    for (std::int64_t j = 0; j < 25; ++j) {
+      e.push_back({s + 8_us * j, Level::Low});
+      e.push_back({s + 8_us * j + 4_us, Level::High});
+    }
+  return e;
+}
+
+// Expected frame starts every TINT = 500 us (L1090, L1096) from 100 us.
+const std::vector<Nanos> kFrameStarts{100_us, 600_us, 1100_us, 1600_us};
+
+// The 7361 campaigns' frame_start check: the frame's first falling edge (after >= 20 us of
+// clock high, TM L1091-L1092) within +- T/2 = 4 us of the expected start.
+const ThroughputSpec kFrameStart{
+    .name = "fs", .expected = Level::Low, .limit = 4_us, .quiet = 20_us, .early = 4_us, .min_count = 4};
+
+std::vector<Nanos> shifted(std::size_t frame, Nanos by) {
+  std::vector<Nanos> s = kFrameStarts;
+  s[frame] += by;
+  return s;
+}
+
+TEST(Throughput, AnyEdgeLetsAFrameAWholeClockPeriodEarlyPass) {
+  // Why quiet exists: frame 2 starts 8 us (one T) early, its second falling edge is on the
+  // expected start, and a check taking any falling edge reads 0 us.
+  const auto out = ssi_clock(shifted(2, -8_us));
+  const auto r = check_throughput(kFrameStarts, out, {.name = "fs", .expected = Level::Low, .limit = 4_us});
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+}
+
+TEST(Throughput, QuietJudgesTheBurstsFirstEdgeEarlyAndLateEachSideOfTheLimit) {
+  const auto on_time = check_throughput(kFrameStarts, ssi_clock(kFrameStarts), kFrameStart);
+  EXPECT_EQ(on_time.outcome(), rig::Outcome::Pass);
+  EXPECT_EQ(find(on_time, "fs.min").value, 0.0);
+  EXPECT_EQ(find(on_time, "fs.max").value, 0.0);
+  EXPECT_EQ(find(on_time, "fs.min").lower, -4.0);
+  // Exactly T/2 early or late passes; a nanosecond beyond fails, each side.
+  for (const Nanos d : {-4_us, -1_ns, 1_ns, 4_us}) {
+    const auto r = check_throughput(kFrameStarts, ssi_clock(shifted(2, d)), kFrameStart);
+    EXPECT_EQ(r.outcome(), rig::Outcome::Pass) << d.count();
+  }
+  const auto early = check_throughput(kFrameStarts, ssi_clock(shifted(2, -4_us - 1_ns)), kFrameStart);
+  EXPECT_EQ(early.outcome(), rig::Outcome::Fail);
+  EXPECT_EQ(find(early, "fs.min").value, -4.001); // measured, not lost to the next frame
+  EXPECT_EQ(find(early, "fs.min").outcome, rig::Outcome::Fail);
+  const auto late = check_throughput(kFrameStarts, ssi_clock(shifted(2, 4_us + 1_ns)), kFrameStart);
+  EXPECT_EQ(late.outcome(), rig::Outcome::Fail);
+  EXPECT_EQ(find(late, "fs.max").value, 4.001);
+  // Early by whole clock periods: the frame's inner edges do not stand in for its first one.
+  for (const Nanos d : {-8_us, -16_us, -152_us}) {
+    const auto r = check_throughput(kFrameStarts, ssi_clock(shifted(2, d)), kFrameStart);
+    EXPECT_EQ(r.outcome(), rig::Outcome::Fail) << d.count();
+    EXPECT_EQ(find(r, "fs.min").value, to_us(d)) << d.count();
+  }
+  // Late by a whole period: the expected start has no edge until the frame's first.
+  const auto period_late = check_throughput(kFrameStarts, ssi_clock(shifted(2, 8_us)), kFrameStart);
+  EXPECT_EQ(period_late.outcome(), rig::Outcome::Fail);
+  EXPECT_EQ(find(period_late, "fs.max").value, 8.0);
+}
+
+TEST(Throughput, AnEarlyEdgeIsNegativeLatencyWithItsWindowInOrder) {
+  const auto r = check_throughput(kFrameStarts, ssi_clock(shifted(1, -3_us)), kFrameStart);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  EXPECT_EQ(find(r, "fs.min").value, -3.0);
+  ASSERT_TRUE(find(r, "fs.min").window);
+  EXPECT_EQ(find(r, "fs.min").window->begin, 597_us);
+  EXPECT_EQ(find(r, "fs.min").window->end, 600_us);
+}
+
 } // namespace
 } // namespace hilrig::checks

@@ -91,24 +91,28 @@ TEST(PowerSsi7361, ClockHalvesFailOneOrTwoNanosecondsOffTheManualsPeriod) {
 
 // ssi7361 manual (seeds/004_2d8564fc60a2b9d4.txt:1090, :1096): a frame starts every TINT =
 // 500 us at 125 kHz. ssi7361_frame_timing expects F1 at 100 us + k * 500 us, k = 0..19, and
-// takes the next falling clock edge within T/2 = 4 us (docs/spec/ssi7361.md §2.1, A7). With TINT + e
-// the 20th frame starts 19 e late: 19 * 210 ns = 3.99 us passes, 19 * 211 ns = 4.009 us fails.
+// takes each frame's first falling clock edge within +- T/2 = 4 us (docs/spec/ssi7361.md §2.1,
+// A7). With TINT + e the 20th frame starts 19 e off: 19 * 210 ns = 3.99 us passes, 19 * 211 ns =
+// 4.009 us fails, late (up) and early (down) alike.
 TEST(PowerSsi7361, FrameStartFailsWhenTheTwentiethFrameDriftsPastHalfAClock) {
   const campaign::Campaign c = load("campaigns/ssi7361/ssi7361_frame_timing.toml");
   PowerOptions options;
   options.checks = {"frame_start"};
   const PowerResult r = measure_power(c, options);
-  ASSERT_EQ(r.rows.size(), 1u);
-  const PowerRow& row = r.rows[0];
-  EXPECT_EQ(row.knob, "frame_period_error");
-  EXPECT_EQ(row.direction, "up");
-  ASSERT_TRUE(row.threshold && row.measured && row.limit && row.margin_pct) << row.reason;
-  EXPECT_NEAR(*row.threshold, 0.211, 1e-12);
-  EXPECT_NEAR(*row.last_pass, 0.210, 1e-12);
-  EXPECT_DOUBLE_EQ(*row.measured, 4.009);
-  EXPECT_DOUBLE_EQ(*row.limit, 4.0);
-  EXPECT_LE(*row.margin_pct, 1.0);
+  ASSERT_EQ(r.rows.size(), 2u);
+  for (const char* side : {"up", "down"}) {
+    const double sign = std::string(side) == "up" ? 1.0 : -1.0;
+    const PowerRow& row = row_of(r, "frame_start", side);
+    EXPECT_EQ(row.knob, "frame_period_error");
+    ASSERT_TRUE(row.threshold && row.measured && row.limit && row.margin_pct) << row.reason;
+    EXPECT_NEAR(*row.threshold, sign * 0.211, 1e-12);
+    EXPECT_NEAR(*row.last_pass, sign * 0.210, 1e-12);
+    EXPECT_DOUBLE_EQ(*row.measured, sign * 4.009);
+    EXPECT_DOUBLE_EQ(*row.limit, sign * 4.0);
+    EXPECT_LE(*row.margin_pct, 1.0);
+  }
   sweep_ns(c, "frame_start", "frame_period_error", 208, 214, 1, 211, +1);
+  sweep_ns(c, "frame_start", "frame_period_error", -208, -214, 1, -211, -1);
 }
 
 // ans1 manual (seeds/000_08a2edf5547d4d1e.txt:1961-1962): a Time-or-Position output turns off
@@ -260,7 +264,7 @@ TEST(PowerKnobs, KnobValuesOutsideTheirRangeAreBadInput) {
   EXPECT_EQ(with("clock_period_error = \"1us\""), "accepted");
   EXPECT_EQ(with("clock_period_error = \"-1us\""), "accepted");
   EXPECT_NE(with("clock_period_error = \"1001ns\"")
-                .find("t.toml:25:22: dut.params.clock_period_error: a value in -1us .. 1us"),
+                .find("t.toml:29:22: dut.params.clock_period_error: a value in -1us .. 1us"),
             std::string::npos)
       << with("clock_period_error = \"1001ns\"");
   EXPECT_NE(with("frame_period_error = \"-101us\"").find("frame_period_error: a value in -100us .. 100us"),

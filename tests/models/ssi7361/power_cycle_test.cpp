@@ -105,5 +105,51 @@ TEST(Ssi7361PowerCycle, ATransmitWrittenWhileOffStartsNoCycle) {
   EXPECT_EQ(rig.status_bits() & ibit::kAcknowledge, ibit::kAcknowledge);
 }
 
+TEST(Ssi7361PowerCycle, TheDataValueIsZeroUntilTheFirstFrameAfterPowerUpCompletes) {
+  // [MODEL] A28 (the manual is silent): raw, Data Value and rate 0 until a frame is read. The
+  // first frame's F1 is first_frame = 100 us after power-up; its 25th bit is sampled 25 T =
+  // 200 us after F1 (§2.1 [MODEL]), so it completes 300 us after power-up.
+  Rig rig(first_frame_at(100_us));
+  rig.run_for(2_ms);
+  ASSERT_EQ(rig.program(kBlockA, kAqA) & ibit::kParameterErrors, 0);
+  ASSERT_EQ(rig.program(qbit::kApplyPreset) & ibit::kCommandError, 0);
+  rig.run_for(1_ms);
+  ASSERT_EQ(rig.dv(), 125'420); // M-05
+  rig.module().power_off();
+  rig.run_for(5_ms);
+  const Nanos on = rig.now();
+  rig.module().power_on();
+  // Not 999's offset LO = 124,421 applied to a raw 0 nobody sent.
+  EXPECT_EQ(rig.dv(), 0);
+  rig.run_until(on + 299'999_ns);
+  EXPECT_EQ(rig.raw(), 0U);
+  EXPECT_EQ(rig.dv(), 0);
+  rig.run_until(on + 300'001_ns);
+  EXPECT_EQ(rig.raw(), 0x1FFFFFFU);
+  EXPECT_EQ(rig.dv(), 125'420);
+}
+
+TEST(Ssi7361PowerCycle, ANegativeCountDirectionReadsZeroNotTwoToTheNBeforeTheFirstFrame) {
+  // Count Direction Negative: x = 2^N - field (L1247-1248); from the all-ones frame with the
+  // factory N = 24 (M-21) x = 16,777,216 - 16,777,215 = 1. A raw 0 would give 2^24: before the
+  // first frame the Data Value is 0 instead (A28), at construction as after a power cycle.
+  Rig rig(first_frame_at(1_ms));
+  ASSERT_EQ(rig.program(qbit::kProgramDirection | qbit::kCountDirection) & ibit::kCommandError, 0);
+  EXPECT_EQ(rig.dv(), 0);
+  rig.run_until(1'199_us);
+  EXPECT_EQ(rig.dv(), 0);
+  rig.run_until(1'201_us);
+  EXPECT_EQ(rig.dv(), 1);
+  rig.module().power_off();
+  rig.run_for(1_ms);
+  const Nanos on = rig.now();
+  rig.module().power_on(); // F1 first_frame = 1 ms later, complete 200 us after it
+  EXPECT_EQ(rig.dv(), 0);
+  rig.run_until(on + 1'199_us);
+  EXPECT_EQ(rig.dv(), 0);
+  rig.run_until(on + 1'201_us);
+  EXPECT_EQ(rig.dv(), 1);
+}
+
 } // namespace
 } // namespace hilrig::models::ssi7361::test

@@ -295,10 +295,27 @@ TEST_F(Ssi7361Checkout, EepromErrorBlocksProgrammingUntilE2ClrLoadsTheDefaults) 
   EXPECT_EQ(rig.program(qbit::kE2Clear), kAck);
   EXPECT_EQ(rig.status_bits(), 0);
   EXPECT_EQ(rig.dv(), 16'777'215);
-  // Without E2Err, E2CLR has no effect.
+  // Without E2Err, E2CLR has no effect (L2121): alone it leaves no command bit 07-01, CMDErr
+  // condition 2 (L2031); the setup and LO stay.
   ASSERT_EQ(rig.program(qbit::kPresetValue | qbit::kApplyPreset, {.preset = 3}), kAck);
-  EXPECT_EQ(rig.program(qbit::kE2Clear), kAck);
+  EXPECT_EQ(rig.program(qbit::kE2Clear), kAck | ibit::kCommandError);
   EXPECT_EQ(rig.dv(), 3);
+}
+
+TEST_F(Ssi7361Checkout, E2ClrWithoutAnEepromErrorNeitherClearsNorMasksACommandError) {
+  block_a();
+  ASSERT_EQ(rig.program(qbit::kApplyPreset), kAck);
+  // A pending CMDErr (condition 2, L2031: no command bit) ...
+  ASSERT_EQ(rig.program(0), kAck | ibit::kCommandError);
+  // ... is not cleared by E2CLR alone, which has no effect without E2Err (L2119-2121) ...
+  EXPECT_EQ(rig.program(qbit::kE2Clear), kAck | ibit::kCommandError);
+  EXPECT_EQ(rig.dv(), 125'420);
+  EXPECT_EQ(rig.status_bits(), ibit::kCommandError);
+  // ... and E2CLR beside a command is ignored: the command alone decides, a valid one
+  // clears CMDErr (L2037) without loading the defaults (LO and the setup stay).
+  EXPECT_EQ(rig.program(qbit::kE2Clear | qbit::kProgramDirection), kAck);
+  EXPECT_EQ(rig.status_bits(), 0);
+  EXPECT_EQ(rig.dv(), 125'420);
 }
 
 TEST_F(Ssi7361Checkout, E2ClrIsCommittedEvenWhenALaterCheckFails) {
