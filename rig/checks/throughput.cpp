@@ -74,9 +74,15 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
   }
   std::string missing_detail = "every crossing produced an output edge";
   if (first_missing) {
-    missing_detail = fmt::format("missing edge: no {} edge{} in {} .. {} ns (first of {})",
-                                 level_name(spec.expected), spec.quiet ? " after a quiet gap" : "",
-                                 first_missing->begin.count(), first_missing->end.count(), missing);
+    // Without `early` the search starts at the crossing; an open end (no timeout, the last
+    // crossing) is not a time to print.
+    const TraceWindow& w = *first_missing;
+    const std::string where = !spec.early ? fmt::format("after the crossing at {} ns", w.begin.count())
+                              : w.end == Nanos::max()
+                                  ? fmt::format("from {} ns on", w.begin.count())
+                                  : fmt::format("in {} .. {} ns", w.begin.count(), w.end.count());
+    missing_detail = fmt::format("missing edge: no {} edge{} {} (first of {})", level_name(spec.expected),
+                                 spec.quiet ? " after a quiet gap" : "", where, missing);
   }
   r.measurements.push_back(measure(
       spec.name + ".count", static_cast<double>(samples.size()), "", static_cast<double>(spec.min_count),
