@@ -138,57 +138,31 @@ void expect_links_only_kept_traces(const fs::path& out) {
 }
 
 // A check's expected window may begin, or lie wholly, before t = 0: an edge due at a count the
-// shaft had passed before the run (here count 1 +- 3 of a shaft starting at 0, and count -10 +-
-// 3). The trace marks the window from 0 on; the verdict is the check's, not a rig fault.
-std::string edge_near_zero(double position) {
-  return fmt::format(R"([campaign]
-name = "edge_near_zero"
-end = "50ms"
-[dut]
-model = "reference_pls"
-[dut.params]
-on = 1
-off = 100
-scan = "200us"
-delay = "50us"
-[[wiring]]
-rig = "enc.A"
-board = "A"
-[[wiring]]
-rig = "enc.B"
-board = "B"
-[[wiring]]
-rig = "ls1"
-board = "OUT"
-[encoder]
-lines = 100
-[[motion.move]]
-kind = "constant"
-speed_rpm = 600
-duration = "50ms"
-[[check]]
-kind = "edge_at_position"
-name = "on_edge"
-output = "ls1"
-position = {}
-tolerance_counts = 3
-)",
-                     position);
+// shaft had passed before the run. The inline reference PLS turned on at count -49, one count
+// after the shaft's start at -50 (250 us a count). The trace marks the window from 0 on; the
+// verdict is the check's, not a rig fault.
+std::string edge_near_start(double position) {
+  std::string text = campaign::test::kPlsCampaign;
+  text.replace(text.find("on = 100"), 8, "on = -49");
+  text.erase(text.find("[[check]]"));
+  return text + fmt::format("[[check]]\nkind = \"edge_at_position\"\nname = \"on_edge\"\noutput = \"ls1\"\n"
+                            "position = {}\ntolerance_counts = 3\nmin_edges = 1\nto_us = 1000\n",
+                            position);
 }
 
 TEST(RunTrace, AWindowBeforeTheRunIsMarkedFromZero) {
   const fs::path dir = scratch("window_before_zero");
-  // Count 1 at 250 us (4,000 counts/s); seen within a 200 us scan, on the pin 50 us later: at
-  // most count 2, inside [-2, 4].
-  const fs::path pass = write_file(dir, "pass.toml", edge_near_zero(1));
+  // Count -49 at 250 us; seen within a 200 us scan, on the pin 50 us later: at most count -48,
+  // inside [-52, -46], whose first 500 us lie before the run.
+  const fs::path pass = write_file(dir, "pass.toml", edge_near_start(-49));
   EXPECT_EQ(run(pass.string(), dir / "pass"), 0);
   const std::string vcd = hilrig::test::read_file(dir / "pass" / "trace.vcd");
   // The check's mark rises at #0, inside $dumpvars' block: the window's part after the start.
   std::smatch var;
   ASSERT_TRUE(std::regex_search(vcd, var, std::regex(R"(\$var wire 1 (\S+) on_edge \$end)")));
   EXPECT_NE(vcd.find("$end\n1" + var[1].str() + "\n#"), std::string::npos);
-  // [-13, -7] counts lies before the run: the edge is outside it, a failure, not a rig fault.
-  const fs::path fail = write_file(dir, "fail.toml", edge_near_zero(-10));
+  // [-63, -57] lies wholly before the run: the edge is outside it, a failure, not a rig fault.
+  const fs::path fail = write_file(dir, "fail.toml", edge_near_start(-60));
   EXPECT_EQ(run(fail.string(), dir / "fail"), 1);
   EXPECT_TRUE(fs::exists(dir / "fail" / "trace-run0.on_edge.gtkw"));
 }
