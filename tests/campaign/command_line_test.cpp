@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rig/results/results_json.hpp"
+#include "tests/campaign/hilrig_process.hpp"
 #include "tests/tools/scratch_files.hpp"
 #include "tests/tools/vcd_reader.hpp"
 
@@ -29,32 +30,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out; // stdout
-  std::string err; // stderr
-};
-
-// Runs `hilrig ARGS` (arguments are plain words here: no quoting needed) with stderr to a file.
-Result hilrig(const std::string& args) {
-  // One directory per test: ctest runs the tests of this file in parallel processes, and a
-  // shared stderr file would hand one test another's messages.
-  const fs::path dir =
-      test::scratch_dir("campaign", std::string("command_line_io_") +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  const fs::path err = dir / "stderr";
-  const std::string command = std::string(HILRIG_EXE) + " " + args + " 2>" + err.string();
-  Result r;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = test::read_file(err);
-  return r;
-}
+using Result = test::ProcessResult;
+Result hilrig(const std::string& args, const std::string& wrap = "") { return test::run_hilrig(args, wrap); }
 
 const std::string kPass = std::string(HILRIG_SOURCE_DIR) + "/campaigns/reference/reference_pls_pass.toml";
 

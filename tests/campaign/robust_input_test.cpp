@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/campaign/hilrig_process.hpp"
 #include "tests/tools/scratch_files.hpp"
 
 // A namespace of its own: a unity build puts this file beside command_line_test.cpp, whose
@@ -22,31 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out; // stdout
-  std::string err; // stderr
-};
-
-// Runs `hilrig ARGS` (plain words, no quoting) with stderr to a file of this test's own.
-// `wrap` goes before it: "timeout 20 " bounds a server that a missing check leaves serving.
-Result hilrig(const std::string& args, const std::string& wrap = "") {
-  const fs::path dir =
-      test::scratch_dir("campaign", std::string("robust_io_") +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  const fs::path err = dir / "stderr";
-  const std::string command = wrap + std::string(HILRIG_EXE) + " " + args + " 2>" + err.string();
-  Result r;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = test::read_file(err);
-  return r;
-}
+using Result = test::ProcessResult;
+Result hilrig(const std::string& args, const std::string& wrap = "") { return test::run_hilrig(args, wrap); }
 
 const std::string kPass = std::string(HILRIG_SOURCE_DIR) + "/campaigns/reference/reference_pls_pass.toml";
 
