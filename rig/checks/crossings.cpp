@@ -28,8 +28,14 @@ std::vector<double> levels_between(double setpoint, double modulus, double lo, d
     if (setpoint >= lo && setpoint <= hi) out.push_back(setpoint);
     return out;
   }
-  for (double k = std::ceil((lo - setpoint) / modulus); setpoint + k * modulus <= hi; k += 1.0)
-    out.push_back(setpoint + k * modulus);
+  // The levels are the setpoint's class modulo the modulus: start from its representative in
+  // [0, modulus) (fmod is exact), so k stays small where the position is and k += 1 always
+  // moves (a setpoint of 1e16 with a modulus of 1 left k at -1e16, where adding 1 changes
+  // nothing, and the list grew without end).
+  double base = std::fmod(setpoint, modulus);
+  if (base < 0.0) base += modulus;
+  for (double k = std::ceil((lo - base) / modulus); base + k * modulus <= hi; k += 1.0)
+    out.push_back(base + k * modulus);
   return out;
 }
 

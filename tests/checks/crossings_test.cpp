@@ -55,6 +55,22 @@ TEST(Crossings, WithAModulusEveryTurnCrossesTheSetpoint) {
   EXPECT_EQ(f[2], 26_ms);
 }
 
+// The setpoint is a class modulo the modulus: one given far from the position (any number of
+// turns away, negative too) names the same crossings as its representative. 1e16 with a
+// modulus of 10 once left the search stepping k where adding 1 changes nothing (without end).
+TEST(Crossings, ASetpointTurnsAwayCrossesAsItsRepresentative) {
+  const auto near = find_crossings(ramp, 4.0, 0_ms, 30_ms, 1_ms, Direction::Rising, 10.0);
+  for (const double far : {14.0, -6.0, 4.0 + 10.0 * 1e9, 1e16 + 4.0, -1e16 + 4.0})
+    EXPECT_EQ(find_crossings(ramp, far, 0_ms, 30_ms, 1_ms, Direction::Rising, 10.0), near) << far;
+  // More than 2^53 moduli away (where k += 1 on the setpoint's own k moved nothing): a crossing
+  // every count, 30 of them in 30 ms.
+  const auto every_count = find_crossings(ramp, 0.0, 0_ms, 30_ms, 1_ms, Direction::Rising, 1.0);
+  EXPECT_EQ(every_count.size(), 30U);
+  EXPECT_EQ(find_crossings(ramp, 1e17, 0_ms, 30_ms, 1_ms, Direction::Rising, 1.0), every_count);
+  // The fraction survives: 1e15 + 4.5 (a double holds eighths there) crosses half a count later.
+  EXPECT_EQ(find_crossings(ramp, 1e15 + 4.5, 0_ms, 30_ms, 1_ms, Direction::Rising, 10.0).front(), 4'500_us);
+}
+
 // Up 1 count/ms to 2 counts at 2 ms, standing at exactly 2 until 7 ms, up to 4 at 9 ms,
 // standing at 4 until 109 ms, then down 1 count/ms. held() tells where each standstill ends.
 double stands(Nanos t) {
