@@ -80,6 +80,12 @@ CheckResult check_shaft_move(std::span<const Edge> step, std::span<const Edge> d
   if (spec.peak_min || spec.peak_max) {
     if (judged_nothing) {
       nothing("peak_speed");
+    } else if (shortest == Nanos::max() && !spec.peak_min) {
+      // Only a ceiling, and no speed to hold against it: nothing judged, not a pass or a fail.
+      r.measurements.push_back(
+          error(spec.name + ".peak_speed",
+                "nothing judged: fewer than two steps in one direction, no speed to hold "
+                "against peak_max"));
     } else if (shortest == Nanos::max()) {
       r.measurements.push_back(
           failure(spec.name + ".peak_speed", "fewer than two steps in one direction: no speed", window));

@@ -78,7 +78,17 @@ TEST(ShaftMove, NoStepMeansZeroDurationAndNoSpeed) {
   EXPECT_EQ(find(r, "stop.steps")->outcome, Outcome::Pass);
   EXPECT_EQ(find(r, "stop.duration")->value, 0.0);
   EXPECT_EQ(find(r, "stop.duration")->outcome, Outcome::Pass);
-  EXPECT_EQ(find(r, "stop.peak_speed")->outcome, Outcome::Fail);
+  // Only a ceiling on the speed of a shaft that made no two steps: nothing to hold against it.
+  EXPECT_EQ(find(r, "stop.peak_speed")->outcome, Outcome::Error);
+  // A floor is a move expected at least that fast: no speed fails it.
+  s.peak_min = 1.0;
+  EXPECT_EQ(find(check_shaft_move({}, {}, s), "stop.peak_speed")->outcome, Outcome::Fail);
+  // One step, no interval: the same.
+  s.peak_min.reset();
+  EXPECT_EQ(find(check_shaft_move(toggles({11_ms}), {}, s), "stop.peak_speed")->outcome, Outcome::Error);
+  // Two steps 1 ms apart: 1,000 steps/s against a ceiling of 10.
+  EXPECT_EQ(find(check_shaft_move(toggles({11_ms, 12_ms}), {}, s), "stop.peak_speed")->outcome,
+            Outcome::Fail);
 }
 
 // Without `steps`, a window with no step judges nothing: a board that never moves must not
