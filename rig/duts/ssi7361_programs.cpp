@@ -5,10 +5,12 @@
 // and clock left out keep what the campaign's last Format write set (the board cannot be
 // read back; factory binary, positive, 125 kHz before any, L2159-L2161).
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "models/ssi7361/programming.hpp"
 #include "rig/duts/device_programs.hpp"
 
 namespace hilrig::duts {
@@ -36,13 +38,22 @@ struct Setup {
 // %AQ1 bits 07 (Gray), 08 (Negative) and 16 (500 kHz): the Format's settings a setup may leave out.
 constexpr std::uint16_t kKeptFormatBits = 0x80C0;
 
-// Those bits as the last earlier write that programmed the Format (%Q bit 02) set them; 0, the
-// factory setup (L2159-L2161), when none did.
+// Those bits as the last earlier write the board took that programmed the Format (%Q bit 02) set
+// them; 0, the factory setup (L2159-L2161), before any. Each earlier write is replayed as the
+// board's own programming cycle (run_cycle) on the words written so far, so a Format it refused
+// (FMTErr, or ignored behind a pending error) sets nothing. A device fault or power cycle
+// between the writes is not seen here.
 std::uint16_t kept_format_bits(duts::EarlierWrites earlier) {
-  for (auto it = earlier.rbegin(); it != earlier.rend(); ++it)
-    if (it->size() > 1 && ((*it)[0] & bit(1)) != 0)
-      return static_cast<std::uint16_t>((*it)[1] & kKeptFormatBits);
-  return 0;
+  namespace m = models::ssi7361;
+  m::ProgramState state;
+  m::CommandWords image{};
+  std::uint16_t kept = 0;
+  for (const std::vector<std::uint16_t>& write : earlier) {
+    std::copy_n(write.begin(), std::min(write.size(), image.size()), image.begin());
+    if (m::run_cycle(state, image, 0, m::Params{}).accepted && (image[0] & bit(1)) != 0)
+      kept = static_cast<std::uint16_t>(image[1] & kKeptFormatBits);
+  }
+  return kept;
 }
 
 Words setup(const Setup& s, duts::EarlierWrites earlier) {

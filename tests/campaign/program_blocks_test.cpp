@@ -378,8 +378,13 @@ TEST(ProgramSsi7361, CodeLogicAndClockLeftOutKeepTheLastFormatWritten) {
       fmt,                                // keeps that
       "write = [2, 280]",                 // a raw Format: 0x0118
       fmt + "\nclock = \"500kHz\"",       // from the raw one
+      // Gray, negative, 500 kHz, but first_bit 2 + bits 25 > 26: FMTErr (L2162-L2163), the
+      // board keeps its Format, and so does the next block.
+      "write = [2, 0x82D9]",
+      fmt,
   });
-  ASSERT_EQ(w.size(), 8U);
+  ASSERT_EQ(w.size(), 10U);
+  EXPECT_EQ(w[9], (Words{0x0002, 0x8118}));
   EXPECT_EQ(w[0], (Words{0x0002, 0x0118}));
   EXPECT_EQ(w[1], (Words{0x0002, 0x81D9}));
   EXPECT_EQ(w[3], (Words{0x0002, 0x81D8}));
