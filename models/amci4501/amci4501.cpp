@@ -31,7 +31,8 @@ Amci4501::Amci4501(Scheduler& scheduler, const Pins& pins, Params params)
   if (pins_.z != nullptr) pins_.z->on_edge([this](const Edge& e) { on_index(e); });
   pins_.start.on_edge([this](const Edge& e) { on_start(e); });
   pins_.latch.on_edge([this](const Edge& e) { on_latch(e); });
-  scheduler_.after(params_.velocity_window - params_.velocity_phase, [this] { on_velocity_window(); });
+  scheduler_.after(params_.velocity_window - params_.velocity_phase,
+                   [this, epoch = velocity_epoch_] { on_velocity_window(epoch); });
 }
 
 // ---------------------------------------------------------------- supply
@@ -52,6 +53,11 @@ void Amci4501::power_on() {
   decoder_ =
       signals::QuadratureDecoder(count_mode(params_), is_high(pins_.a.level()), is_high(pins_.b.level()));
   velocity_ref_ = 0;
+  // [MODEL] The velocity timer starts with the module (L114 counts "in 50ms" from its own
+  // timer): after a power cycle the first window is a whole one from power-up, not the rest
+  // of a window on the grid the module had before it went off.
+  ++velocity_epoch_;
+  scheduler_.after(params_.velocity_window, [this, epoch = velocity_epoch_] { on_velocity_window(epoch); });
   no_response_ = timeout_error_ = command_error_ = parameter_error_ = acknowledge_ = false;
   start_active_ = start_mark_ = active(pins_.start.level(), params_.start_jumper);
   latch_active_ = latch_mark_ = active(pins_.latch.level(), params_.latch_jumper);
@@ -287,7 +293,8 @@ void Amci4501::cancel_timeout() {
 // module will not update the input image table data until the timeout error has been
 // cleared" (L119); the window still advances, so the first word after the clear is the
 // last window's count. [MODEL] saturates at the int16 limits (L114 gives no range).
-void Amci4501::on_velocity_window() {
+void Amci4501::on_velocity_window(std::uint32_t epoch) {
+  if (epoch != velocity_epoch_) return; // a timer from before a power cycle
   if (powered_) {
     const std::int64_t p = decoder_.count();
     const std::int64_t v = std::clamp<std::int64_t>(p - velocity_ref_, -32768, 32767);
@@ -296,7 +303,7 @@ void Amci4501::on_velocity_window() {
     if (!timeout_error_ && config_.mode == 2)
       inputs_[5] = static_cast<std::uint16_t>(std::max<std::int64_t>(v, 0));
   }
-  scheduler_.after(params_.velocity_window, [this] { on_velocity_window(); });
+  scheduler_.after(params_.velocity_window, [this, epoch] { on_velocity_window(epoch); });
 }
 
 } // namespace hilrig::models::amci4501

@@ -61,5 +61,24 @@ TEST(Amci4501PowerCycle, WhileOffTheCycleOutputIsOffAndNothingIsSeen) {
   EXPECT_FALSE(b.module->cycle_output_on()); // a level at power-up is no Start edge
 }
 
+// [MODEL] The velocity timer starts with the module: the word counts whole 50 ms windows from
+// power-up (L114), not the rest of the window the module was in when it went off. Edges every
+// 10 us (100,000 counts/s) from 5 us on; off at 20 ms, on at 25 ms: (25, 75] ms holds 5,000
+// edges, refreshed at 75 ms, and 0 (power-up cleared it, L176) until then.
+TEST(Amci4501PowerCycle, TheVelocityWindowStartsAtPowerUp) {
+  Bench b;
+  b.burst(20000, us(5), us(10));
+  b.run_until(20_ms);
+  b.module->power_off();
+  b.run_until(25_ms);
+  b.module->power_on();
+  b.run_until(75_ms - 1_ns);
+  EXPECT_EQ(b.word(2), 0); // the 50 ms refresh of the old grid is gone
+  b.run_until(75_ms);
+  EXPECT_EQ(b.word(2), 5000);
+  b.run_until(125_ms);
+  EXPECT_EQ(b.word(2), 5000);
+}
+
 } // namespace
 } // namespace hilrig::models::amci4501::test
