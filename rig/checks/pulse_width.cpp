@@ -45,7 +45,7 @@ CheckResult check_pulse_width(std::span<const Edge> line, const PulseWidthSpec& 
     r.measurements.push_back(measure_time(
         spec.name + ".longest", w.end - w.begin, TimeUnit::Us, std::nullopt, spec.max,
         fmt::format(
-            "longest {} pulse: from {} ns, still on at the end of the run ({} ns): at least this long",
+            "longest {0} pulse: from {1} ns, still {0} at the end of the run ({2} ns): at least this long",
             level_name(spec.level), w.begin.count(), w.end.count()),
         w, w.end));
   }
