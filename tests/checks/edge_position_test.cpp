@@ -113,6 +113,25 @@ TEST(Advance, WrapsModuloFullScale) {
   EXPECT_DOUBLE_EQ(find(r, "a.edge0").value, -4.5);
 }
 
+// 10,000 turns of a 10^6-line encoder: the shaft at 4e10 + 101.2412 counts, full scale 4096
+// (4e10 is a multiple). Against 101 +- 0.2412 the board is exactly at the limit: it passes as it
+// does without the modulus (expected 4e10 + 101), though the wrapped value keeps the position's
+// rounding (101.24120330810547); a tenth of a count beyond fails, on both sides.
+TEST(EdgeAtPosition, FarFromZeroWithAModulusTheLimitIsTheSameAsWithout) {
+  const std::vector<Edge> e{{1_ms, Level::High}};
+  const double turns = 4e10;
+  for (const double beyond : {0.0, 0.1}) {
+    SCOPED_TRACE(beyond);
+    const Outcome want = beyond == 0.0 ? Outcome::Pass : Outcome::Fail;
+    const EdgeAtPositionSpec wrapped{.name = "on", .position = 101.0, .tolerance = 0.2412, .modulus = 4096.0};
+    const EdgeAtPositionSpec plain{.name = "on", .position = turns + 101.0, .tolerance = 0.2412};
+    EXPECT_EQ(check_edge_at_position(e, constant(turns + 101.2412 + beyond), {}, wrapped).outcome(), want);
+    EXPECT_EQ(check_edge_at_position(e, constant(turns + 101.2412 + beyond), {}, plain).outcome(), want);
+    EXPECT_EQ(check_edge_at_position(e, constant(turns + 100.7588 - beyond), {}, wrapped).outcome(), want);
+    EXPECT_EQ(check_edge_at_position(e, constant(turns + 100.7588 - beyond), {}, plain).outcome(), want);
+  }
+}
+
 TEST(Advance, NoEdgeIsAMissingEdgeFailure) {
   const std::vector<Edge> e{{1_ms, Level::Low}};
   const auto r = check_advance(e, ramp(1000.0), constant(1000.0), {.name = "a", .setpoint = 100.0});
