@@ -47,7 +47,7 @@ void HostInterface::scan() {
 Ans1Setup HostInterface::power_up() {
   transmit_seen_ = (commands_[0] & kTransmitBit) != 0;
   ack_ = false;
-  error_ = ErrorCode::None;
+  error_ = latched_ = ErrorCode::None;
   hardware_fault_ = false;
   selection_ = DataSelection{};
   Ans1Setup s; // factory defaults (L2236)
@@ -82,15 +82,18 @@ void HostInterface::execute(const HostWords& words) {
   const DecodedBlock d = decode_command_block(words, current, context);
 
   if (d.actions.clear_errors) { // L1711: programming and hardware errors
-    error_ = ErrorCode::None;
+    error_ = latched_ = ErrorCode::None;
     hardware_fault_ = false;
     device_.clear_errors(); // latched resolver fault, brake overrun faults
   }
   if (d.error != ErrorCode::None) {
     error_ = d.error; // nothing applied
+    if (d.error != ErrorCode::CommandWord) latched_ = d.error;
     return;
   }
-  if (error_ == ErrorCode::CommandWord) error_ = ErrorCode::None; // cleared by a valid command word (L2305)
+  // A valid command word clears 1000 (L2305), not a code under it that needs Clear Errors
+  // (1001-1100, L2306-L2309): that one shows again.
+  if (error_ == ErrorCode::CommandWord) error_ = latched_;
 
   Ans1Setup next = d.setup;
   const BlockActions& a = d.actions;

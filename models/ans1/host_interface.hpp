@@ -84,6 +84,7 @@ private:
   bool transmit_seen_ = false; // Transmit level at the previous scan
   bool ack_ = false;
   ErrorCode error_ = ErrorCode::None;
+  ErrorCode latched_ = ErrorCode::None; // the last 1001-1100, until Clear Errors (L2306-L2309)
   bool hardware_fault_ = false;
   DataSelection selection_{};
   std::uint8_t active_program_ = 0;

@@ -227,6 +227,20 @@ TEST(HostErrors, CommandWordErrorClearsWithTheNextValidCommand) {
   EXPECT_EQ(rig.send(block(10, {8}, {{1, 5}})), ErrorCode::None);
 }
 
+// A 1000 on top of a code that needs Clear Errors: the 1000 shows, and the next valid command
+// word clears it (L2305) but not the 1001 under it (L2306), which shows again until Clear Errors.
+TEST(HostErrors, ACommandWordErrorDoesNotClearAProgrammingError) {
+  HostRig rig;
+  ASSERT_EQ(rig.send(block(8, {9}, {{2, 256}})), ErrorCode::Parameter);
+  EXPECT_EQ(rig.send(block(14, {})), ErrorCode::CommandWord);
+  EXPECT_EQ(rig.send(block(10, {8}, {{1, 5}})), ErrorCode::Parameter);
+  EXPECT_EQ(rig.send(block(10, {8}, {{1, 5}})), ErrorCode::Parameter);
+  EXPECT_EQ(rig.send(block(0, {4})), ErrorCode::None);
+  // Clear Errors clears both: a 1000 after it, then a valid command, leaves no code.
+  EXPECT_EQ(rig.send(block(14, {})), ErrorCode::CommandWord);
+  EXPECT_EQ(rig.send(block(10, {8}, {{1, 5}})), ErrorCode::None);
+}
+
 TEST(HostErrors, CommandBlockZeroIgnoresEverythingButClearErrors) {
   // L1713-L1721: bits 14..5 and words 1..19 of CB0 are ignored.
   HostRig rig;
