@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -442,6 +443,12 @@ CampaignResult campaign_from_json(const json& j) {
     r.trace_policy = *policy;
   }
   each_of(array_field(j, "runs", w), "runs", [&](const json& run) { r.runs.push_back(run_from_json(run)); });
+  // A run is one index of the plan: a file holding one twice (hand-edited, or two files pasted
+  // together) would be counted twice by compare and trend.
+  std::set<std::uint64_t> indices;
+  for (const RunResult& run : r.runs)
+    if (!indices.insert(run.index).second)
+      throw std::runtime_error(fmt::format("results: run {} appears twice", run.index));
   if (j.contains("interrupted")) r.interrupted = get<std::string>(j, "interrupted", w);
   if (j.contains("wall_clock")) {
     const json& wc = j.at("wall_clock");

@@ -79,6 +79,21 @@ TEST(ResultsJson, RoundTripKeepsEverything) {
   EXPECT_EQ(back.runs[0].checks[0].series[0].values, (std::vector<double>{12.0, 15.0, 10.0}));
 }
 
+// A run index twice (a hand-edited file, two pasted together) is refused by every reader
+// (compare and trend counted it twice; merge refused it already), naming the index.
+TEST(ResultsJson, ARunIndexTwiceIsRefused) {
+  const json j = to_json(test::sample_campaign(3));
+  ASSERT_NO_THROW((void)campaign_from_json(j));
+  json twice = j;
+  twice["runs"].push_back(j["runs"][1]);
+  try {
+    (void)campaign_from_json(twice);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("run 1 appears twice"), std::string::npos) << e.what();
+  }
+}
+
 // A resolver board's stators are analog lanes: their volts survive the round trip exactly,
 // beside an integer lane that stays as it was (no "real" key), and both fit the schema.
 TEST(ResultsJson, ARealLaneRoundTripsWithItsVolts) {
