@@ -76,6 +76,70 @@ void require_rest(const MotionProfile& profile, const char* who) {
 
 } // namespace
 
+namespace {
+
+// A trapezoid's peak speed and cruise seconds over distance d (> 0), before rounding.
+struct TrapezoidShape {
+  double peak = 0.0;
+  double cruise = 0.0;
+  bool triangle = false;
+};
+TrapezoidShape trapezoid_shape(double d, const MoveLimits& limits) {
+  const double a = limits.acceleration;
+  const double b = limits.deceleration;
+  const double v = limits.max_speed;
+  // Distance to reach v and to stop from it: v²/2a + v²/2b.
+  const double ramps = v * v / (2.0 * a) + v * v / (2.0 * b);
+  if (ramps < d) return {v, (d - ramps) / v, false};
+  // v²/2a + v²/2b = d. 1/(1/a + 1/b), not a·b/(a + b): a·b underflows to 0 for rates near 0.
+  return {std::sqrt(2.0 * d / (1.0 / a + 1.0 / b)), 0.0, true};
+}
+
+// An S-curve's times over distance d (> 0), before the ramps are cut into steps.
+struct SCurveShape {
+  double acceleration = 0.0; // peak, as reached
+  double jerk_time = 0.0;    // each of the four ramps
+  double accel_time = 0.0;   // constant acceleration between ramps
+  double cruise_time = 0.0;
+};
+SCurveShape s_curve_shape(double d, const SCurveLimits& limits) {
+  const double j = limits.jerk;
+  double v = limits.max_speed;
+  double a = limits.acceleration;
+  if (v * j < a * a) a = std::sqrt(v * j); // max_speed is reached before full acceleration
+  double tj = a / j;
+  double ta = v / a - tj;
+  // Both acceleration phases together cover v·(v/a + tj).
+  double tv = (d - v * (v / a + tj)) / v;
+  if (tv < 0.0) {
+    tv = 0.0;
+    v = a * (-tj + std::sqrt(tj * tj + 4.0 * d / a)) / 2.0; // v²/a + v·tj = d
+    ta = v / a - tj;
+    if (ta < 0.0) { // too short to reach full acceleration: 2·j·tj³ = d
+      ta = 0.0;
+      tj = std::cbrt(d / (2.0 * j));
+      a = j * tj;
+    }
+  }
+  return {a, tj, ta, tv};
+}
+
+} // namespace
+
+double trapezoid_seconds(double distance, const MoveLimits& limits) {
+  const double d = std::abs(distance);
+  if (d == 0.0) return 0.0;
+  const TrapezoidShape shape = trapezoid_shape(d, limits);
+  return shape.peak / limits.acceleration + shape.cruise + shape.peak / limits.deceleration;
+}
+
+double s_curve_seconds(double distance, const SCurveLimits& limits) {
+  const double d = std::abs(distance);
+  if (d == 0.0) return 0.0;
+  const SCurveShape shape = s_curve_shape(d, limits);
+  return 4.0 * shape.jerk_time + 2.0 * shape.accel_time + shape.cruise_time;
+}
+
 TrapezoidPlan plan_trapezoid(double distance, const MoveLimits& limits) {
   require_positive(limits.max_speed, "plan_trapezoid: max_speed must be > 0");
   require_positive(limits.acceleration, "plan_trapezoid: acceleration must be > 0");
@@ -83,21 +147,11 @@ TrapezoidPlan plan_trapezoid(double distance, const MoveLimits& limits) {
   TrapezoidPlan plan;
   const double d = std::abs(distance);
   if (d == 0.0) return plan;
-  const double a = limits.acceleration;
-  const double b = limits.deceleration;
-  double v = limits.max_speed;
-  // Distance to reach v and to stop from it: v²/2a + v²/2b.
-  double ramps = v * v / (2.0 * a) + v * v / (2.0 * b);
-  double cruise = 0.0;
-  if (ramps >= d) {
-    plan.triangle = true;
-    v = std::sqrt(2.0 * d * a * b / (a + b)); // v²/2a + v²/2b = d
-  } else {
-    cruise = (d - ramps) / v;
-  }
-  plan.accel_time = round_duration(v / a);
-  plan.decel_time = round_duration(v / b);
-  plan.cruise_time = plan.triangle ? Nanos::zero() : Nanos::from_seconds(cruise);
+  const TrapezoidShape shape = trapezoid_shape(d, limits);
+  plan.triangle = shape.triangle;
+  plan.accel_time = round_duration(shape.peak / limits.acceleration);
+  plan.decel_time = round_duration(shape.peak / limits.deceleration);
+  plan.cruise_time = plan.triangle ? Nanos::zero() : Nanos::from_seconds(shape.cruise);
   // Peak velocity that covers d exactly with the rounded times: d = v·(ta/2 + tc + td/2).
   const double peak =
       d / (0.5 * plan.accel_time.seconds() + plan.cruise_time.seconds() + 0.5 * plan.decel_time.seconds());
@@ -147,24 +201,11 @@ SCurvePlan s_curve_move(MotionProfile& profile, double distance, const SCurveLim
   SCurvePlan plan;
   const double d = std::abs(distance);
   if (d == 0.0) return plan;
-  const double j = limits.jerk;
-  double v = limits.max_speed;
-  double a = limits.acceleration;
-  if (v * j < a * a) a = std::sqrt(v * j); // max_speed is reached before full acceleration
-  double tj = a / j;
-  double ta = v / a - tj;
-  // Both acceleration phases together cover v·(v/a + tj).
-  double tv = (d - v * (v / a + tj)) / v;
-  if (tv < 0.0) {
-    tv = 0.0;
-    v = a * (-tj + std::sqrt(tj * tj + 4.0 * d / a)) / 2.0; // v²/a + v·tj = d
-    ta = v / a - tj;
-    if (ta < 0.0) { // too short to reach full acceleration: 2·j·tj³ = d
-      ta = 0.0;
-      tj = std::cbrt(d / (2.0 * j));
-      a = j * tj;
-    }
-  }
+  const SCurveShape shape = s_curve_shape(d, limits);
+  const double a = shape.acceleration;
+  const double tj = shape.jerk_time;
+  const double ta = shape.accel_time;
+  const double tv = shape.cruise_time;
   const auto n = static_cast<std::int64_t>(limits.steps_per_ramp);
   const Nanos step = round_duration(tj / static_cast<double>(n));
   plan.jerk_time = step * n;

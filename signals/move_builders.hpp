@@ -35,6 +35,9 @@ struct TrapezoidPlan {
 };
 
 [[nodiscard]] TrapezoidPlan plan_trapezoid(double distance, const MoveLimits& limits);
+// The seconds that move takes, in closed form before any rounding to ns: what a caller holds
+// against a limit first (a rate near 0 would overflow the plan's nanoseconds).
+[[nodiscard]] double trapezoid_seconds(double distance, const MoveLimits& limits);
 
 // Spins at `velocity` for `duration` from the current position (the velocity steps: an
 // ideal shaft that is already turning).
@@ -70,6 +73,8 @@ struct SCurvePlan {
   [[nodiscard]] Nanos duration() const { return 4 * jerk_time + 2 * accel_time + cruise_time; }
 };
 SCurvePlan s_curve_move(MotionProfile& profile, double distance, const SCurveLimits& limits);
+// The seconds that move takes, in closed form before the ramps are cut into steps and rounded.
+[[nodiscard]] double s_curve_seconds(double distance, const SCurveLimits& limits);
 
 // A press stroke: steps to `speed`, runs for `run_time`, then the brake is applied and
 // decelerates at `brake_deceleration` (> 0) to standstill.

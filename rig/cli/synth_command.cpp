@@ -294,35 +294,6 @@ void check_profile(const QuadratureOptions& o) {
 
 // ---- the move's time: a synthesized motion ends within a campaign's run (limits::kMaxEnd) ---
 
-// The seconds a rest-to-rest move of d turns at v turns/s takes, in closed form as
-// signals/move_builders.cpp plans it: a rate near 0 would overflow its nanoseconds otherwise.
-double trapezoid_seconds(double d, double v, double a, double b) {
-  const double ramps = v * v / (2.0 * a) + v * v / (2.0 * b);
-  if (ramps >= d) {
-    // 1/(1/a + 1/b), not a·b/(a + b): a·b underflows to 0 for rates near 0 (a peak of 0).
-    const double peak = std::sqrt(2.0 * d / (1.0 / a + 1.0 / b));
-    return peak / a + peak / b;
-  }
-  return (d - ramps) / v + v / a + v / b;
-}
-
-double s_curve_seconds(double d, double v, double a, double j) {
-  if (v * j < a * a) a = std::sqrt(v * j);
-  double tj = a / j;
-  double ta = v / a - tj;
-  double tv = (d - v * (v / a + tj)) / v;
-  if (tv < 0.0) {
-    tv = 0.0;
-    v = a * (-tj + std::sqrt(tj * tj + 4.0 * d / a)) / 2.0;
-    ta = v / a - tj;
-    if (!(ta >= 0.0)) {
-      ta = 0.0;
-      tj = std::cbrt(d / (2.0 * j));
-    }
-  }
-  return 4.0 * tj + 2.0 * ta + tv;
-}
-
 // x rounded up to 4 significant digits: a least value quoted is one that works.
 double round_up(double x) {
   const double unit = std::pow(10.0, std::floor(std::log10(x)) - 3.0);
@@ -359,25 +330,29 @@ void check_move_time(const QuadratureOptions& o) {
   };
   if (o.profile == "trapezoid" && d > 0.0) {
     const double b = o.decel > 0 ? o.decel : o.accel;
-    const double taken = trapezoid_seconds(d, v, o.accel, b);
+    const auto seconds = [&](double accel, double decel) {
+      return signals::trapezoid_seconds(d, signals::MoveLimits{v, accel, decel});
+    };
+    const double taken = seconds(o.accel, b);
     if (taken <= limit) return;
     if (o.decel > 0 && o.decel < o.accel)
       refuse(
-          "--decel", taken, [&](double x) { return trapezoid_seconds(d, v, o.accel, x); }, kMaxTurnsPerS2,
-          "turns/s²");
+          "--decel", taken, [&](double x) { return seconds(o.accel, x); }, kMaxTurnsPerS2, "turns/s²");
     refuse(
-        "--accel", taken, [&](double x) { return trapezoid_seconds(d, v, x, o.decel > 0 ? o.decel : x); },
-        kMaxTurnsPerS2, "turns/s²");
+        "--accel", taken, [&](double x) { return seconds(x, o.decel > 0 ? o.decel : x); }, kMaxTurnsPerS2,
+        "turns/s²");
   } else if (o.profile == "scurve" && d > 0.0) {
-    const double taken = s_curve_seconds(d, v, o.accel, o.jerk);
+    const auto seconds = [&](double accel, double jerk) {
+      return signals::s_curve_seconds(d, signals::SCurveLimits{v, accel, jerk});
+    };
+    const double taken = seconds(o.accel, o.jerk);
     if (taken <= limit) return;
     if (o.accel / o.jerk >= v / o.accel)
       refuse(
-          "--jerk", taken, [&](double x) { return s_curve_seconds(d, v, o.accel, x); },
-          std::numeric_limits<double>::max(), "turns/s³");
+          "--jerk", taken, [&](double x) { return seconds(o.accel, x); }, std::numeric_limits<double>::max(),
+          "turns/s³");
     refuse(
-        "--accel", taken, [&](double x) { return s_curve_seconds(d, v, x, o.jerk); }, kMaxTurnsPerS2,
-        "turns/s²");
+        "--accel", taken, [&](double x) { return seconds(x, o.jerk); }, kMaxTurnsPerS2, "turns/s²");
   } else if (o.profile == "press") {
     const double run = parse_duration(o.duration, "--duration").seconds();
     const double taken = run + v / o.brake;

@@ -281,3 +281,23 @@ TEST(MotionProfile, ChainedIsAppendOneByOne) {
   EXPECT_THROW((void)MotionProfile::chained(10.0, 1_s, {Segment{1_s, 0_s, 10.0, 0.0, 0.0}}),
                std::invalid_argument);
 }
+
+// A move's seconds in closed form, before rounding, and the move built agrees with it.
+// Trapezoid: 10 units at up to 2 units/s, a = b = 1: ramps 2 + 2 = 4 units in 4 s, the other 6
+// at 2 units/s in 3 s: 7 s. Triangle: 1 unit at a = b = 1 peaks at 1 unit/s: 2 s. At rates
+// near 0 the triangle is still long, not 0 s (a·b underflowed to 0 there).
+TEST(MoveSeconds, TrapezoidTriangleAndTinyRates) {
+  EXPECT_DOUBLE_EQ(trapezoid_seconds(10.0, {2.0, 1.0, 1.0}), 7.0);
+  EXPECT_DOUBLE_EQ(trapezoid_seconds(-10.0, {2.0, 1.0, 1.0}), 7.0);
+  EXPECT_DOUBLE_EQ(trapezoid_seconds(1.0, {2.0, 1.0, 1.0}), 2.0);
+  EXPECT_DOUBLE_EQ(trapezoid_seconds(0.0, {2.0, 1.0, 1.0}), 0.0);
+  EXPECT_NEAR(trapezoid_seconds(1.0, {600.0, 1e-300, 1e-300}) / 2e150, 1.0, 1e-12);
+  EXPECT_EQ(plan_trapezoid(10.0, {2.0, 1.0, 1.0}).duration(), 7_s);
+  // S-curve, jerk 1, a = 1, v = 10 units/s over 100 units: ramps tj = 1 s, ta = 9 s; the two
+  // acceleration phases cover v·(v/a + tj) = 110 > 100, so no cruise: v²/a + v·tj = 100 gives
+  // v = (-1 + sqrt(401)) / 2, ta = v - 1: 4 + 2·ta seconds.
+  const double v = (-1.0 + std::sqrt(401.0)) / 2.0;
+  EXPECT_NEAR(s_curve_seconds(100.0, {10.0, 1.0, 1.0}), 4.0 + 2.0 * (v - 1.0), 1e-12);
+  MotionProfile p;
+  EXPECT_NEAR(s_curve_move(p, 100.0, {10.0, 1.0, 1.0}).duration().seconds(), 4.0 + 2.0 * (v - 1.0), 1e-6);
+}
