@@ -151,14 +151,13 @@ int run_merge(const MergeArgs& a) {
     // fault stopped, is the rig's failure, 3, as `hilrig run` exits for it: not the board's, 1.
     // Fewer runs than planned (the run log of a killed run, a results.json a run wrote before
     // its end) is incomplete evidence as an interrupted shard is: 3, whichever file it came in.
-    const bool incomplete = merged.runs.size() < merged.planned_runs;
-    if (incomplete)
+    if (merged.runs.size() < merged.planned_runs)
       std::fputs(fmt::format("hilrig merge: incomplete evidence: {} of the {} planned runs (a run stopped or "
                              "killed before its end)\n",
                              merged.runs.size(), merged.planned_runs)
                      .c_str(),
                  stderr);
-    const bool rig_fault = incomplete || merged.interrupted.has_value() ||
+    const bool rig_fault = !merged.complete || // fewer runs than planned, or a shard interrupted
                            std::any_of(merged.runs.begin(), merged.runs.end(),
                                        [](const rig::RunResult& run) { return !run.error.empty(); });
     if (rig_fault)
