@@ -14,11 +14,6 @@
 
 namespace hilrig::drivers::modbus {
 namespace {
-// How long a frame of known length waits for its missing bytes (libmodbus waits 500 ms).
-constexpr Nanos kByteTimeout = milliseconds(100);
-} // namespace
-
-namespace {
 
 // Waits up to `timeout` (to the nanosecond: 3.5 characters are under 2 ms) for `events`.
 bool wait_for(int fd, short events, Nanos timeout) {
@@ -98,12 +93,12 @@ void RtuServer::serve_once() {
   while (pending_ > 0) {
     RtuFrame frame = next_rtu_frame(std::span(in_.data(), pending_), false);
     if (frame.kind == RtuFrameKind::Incomplete) {
-      // A frame whose function fixes its length waits up to kByteTimeout for its last byte: a
-      // USB adapter or an emulated UART delivers bytes in bursts with gaps longer than 3.5
-      // characters (seen in the RT VM lane), and cutting there lost whole requests. A frame of
-      // unknown length ends at the silence.
+      // A frame ends at the silence; one whose function fixes its length may be given longer
+      // (options_.byte_timeout: an adapter that delivers bytes in bursts, as the RT VM lane's
+      // emulated UART does).
       const std::optional<std::size_t> expected = rtu_request_length(std::span(in_.data(), pending_));
-      const Nanos wait = expected && *expected > pending_ ? kByteTimeout : silence_;
+      const Nanos wait =
+          expected && *expected > pending_ ? std::max(options_.byte_timeout, silence_) : silence_;
       if (wait_readable(wait) && read_more()) {
         continue;
       }

@@ -33,6 +33,12 @@ struct RtuServerOptions {
   bool rs485 = false;                             // ask the port for RS-485 mode
   Nanos poll_period = milliseconds(5);            // how often the tick runs while idle
   Fc23Read fc23_read = Fc23Read::AfterWrite;      // the served device's FC 23 (pdu_handler.hpp)
+  // How long a frame whose function fixes its length waits for its next byte. Below the
+  // 3.5-character silence (0, the default) it is the silence: a gap ends the frame (Serial Line
+  // v1.02 §2.5.1.1), so another slave's reply on a shared bus is not joined to the next request.
+  // A USB adapter or an emulated UART that delivers a frame in bursts needs more (e.g. 100 ms),
+  // at the price of joining a frame cut short to whatever comes next within that time.
+  Nanos byte_timeout{0};
 };
 
 // Counters, safe to read from another thread while the server runs.

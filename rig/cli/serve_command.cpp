@@ -49,6 +49,7 @@ struct ServeArgs {
   std::string tick;
   std::string scan;
   std::string idle_timeout;
+  std::string byte_timeout;
 };
 
 [[noreturn]] void bad_input(const std::string& why) {
@@ -167,6 +168,14 @@ void serve_main(const ServeArgs& args) {
     }
     o.tcp_limits.idle_timeout = *idle;
   }
+  if (!args.byte_timeout.empty()) {
+    const auto wait = campaign::parse_duration(args.byte_timeout);
+    if (o.link == ServeLink::Tcp || !wait || *wait < Nanos{0} || *wait > seconds(10)) {
+      bad_input("--byte-timeout " + args.byte_timeout +
+                ": an RTU link's wait for a frame's next byte, 0s..10s, like \"100ms\"");
+    }
+    o.byte_timeout = *wait;
+  }
   if (!args.scan.empty()) {
     const auto scan = campaign::parse_duration(args.scan);
     if (o.device != "ans1" || !scan || *scan < microseconds(1) || *scan > milliseconds(1)) {
@@ -282,6 +291,7 @@ void serve_device(const ServeOptions& options, const std::atomic<bool>& stop,
   server_options.format = options.format;
   server_options.unit = options.unit;
   server_options.rs485 = options.rs485;
+  server_options.byte_timeout = options.byte_timeout;
   server_options.poll_period = options.tick;
   server_options.fc23_read = device->fc23_read;
   std::optional<drivers::modbus::Pty> pty;
@@ -348,6 +358,9 @@ void add_serve_command(CLI::App& app) {
   cmd->add_option("--stop-bits", args->stop_bits, "RTU stop bits 1 or 2 (default 1)")
       ->check(CLI::Range(1U, 2U));
   cmd->add_option("--unit", args->unit, "RTU unit id 1..247 (default 1)")->check(CLI::Range(1U, 247U));
+  cmd->add_option("--byte-timeout", args->byte_timeout,
+                  "RTU: how long a frame whose function fixes its length waits for its next byte (default: "
+                  "the 3.5-character silence ends it; e.g. 100ms for a USB adapter that delivers bursts)");
   cmd->add_flag("--rs485", args->options.rs485,
                 "Put the serial port in RS-485 mode (reported when unsupported)");
   cmd->add_option("--fault", args->options.fault, fault_help());

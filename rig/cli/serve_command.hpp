@@ -42,6 +42,7 @@ struct ServeOptions {
   SerialFormat format{19200, 8, Parity::Even, 1};
   std::uint8_t unit = 1;
   bool rs485 = false;
+  Nanos byte_timeout{0}; // a fixed-length frame's wait for its next byte (RtuServerOptions)
   // The model
   std::string fault = "none";
   bool m12 = false;

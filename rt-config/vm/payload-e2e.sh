@@ -51,9 +51,11 @@ serve_pid=
 serve_start() {
   local ready="$e2e/$1.serve-ready" i
   rm -f "$ready"
-  step "$1: hilrig serve ans1 --modbus-rtu /dev/ttyS2 --far far-lane.toml --gpio-sim $sim --can can1 --tick 2ms --scan 500us"
+  # --byte-timeout: QEMU's emulated UART delivers a request in bursts with gaps longer than the
+  # 3.5-character silence, which would otherwise end the frame early (lost requests, host-link timeouts).
+  step "$1: hilrig serve ans1 --modbus-rtu /dev/ttyS2 --far far-lane.toml --gpio-sim $sim --can can1 --tick 2ms --scan 500us --byte-timeout 100ms"
   "$hilrig" serve ans1 --modbus-rtu /dev/ttyS2 --far "$here/far-lane.toml" --gpio-sim "$sim" --can can1 \
-    --tick 2ms --scan 500us --port-file "$ready" >"$e2e/$1.serve.log" 2>&1 &
+    --tick 2ms --scan 500us --byte-timeout 100ms --port-file "$ready" >"$e2e/$1.serve.log" 2>&1 &
   serve_pid=$!
   for i in $(seq 1 150); do # up to 30 s: the port file appears once it serves
     [ -s "$ready" ] && break

@@ -186,6 +186,18 @@ TEST(CommandLine, ServeFaultListsTheChoices) {
       << r.err;
 }
 
+// --byte-timeout is an RTU link's: on TCP, or beyond 0s..10s, it is refused before anything serves.
+TEST(CommandLine, ServeByteTimeoutIsAnRtuDurationInItsRange) {
+  for (const char* args :
+       {"serve ans1 --modbus-tcp 0 --byte-timeout 100ms", "serve ans1 --pty --byte-timeout 11s",
+        "serve ans1 --pty --byte-timeout -1ms", "serve ans1 --pty --byte-timeout soon"}) {
+    SCOPED_TRACE(args);
+    const Result r = hilrig(args);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("an RTU link's wait for a frame's next byte, 0s..10s"), std::string::npos) << r.err;
+  }
+}
+
 // `hilrig serve --help` names every device's fault variants, the same list a wrong one is
 // answered with.
 TEST(CommandLine, ServeHelpListsEveryDevicesFaults) {

@@ -217,5 +217,37 @@ TEST(ModbusRtuServer, ShortRequestWithAGoodCrcGetsIllegalDataValue) {
   EXPECT_EQ(line.receive(7), frame({1, 4, 2, 0x00, 0x53}));
 }
 
+TEST(ModbusRtuServer, AFrameCutShortEndsAtTheSilenceAndTheNextRequestIsAnswered) {
+  // Serial Line v1.02 §2.5.1.1: a silence of 3.5 characters ends a frame, so the first three
+  // bytes of an FC 4 request, left alone on the line, are a frame of their own (a bad CRC,
+  // dropped) and the whole request sent after them is answered, not joined to them.
+  ServeThread server(ans1_on_pty());
+  const auto& stats = *server.endpoint().rtu_stats;
+  RawLine line(server.endpoint().serial_path);
+  ASSERT_TRUE(line.ok());
+  ASSERT_TRUE(line.send({1, 4, 0}));
+  ASSERT_TRUE(reaches(stats.crc_errors, 1));
+  ASSERT_TRUE(line.send(frame({1, 4, 0, 13, 0, 1})));
+  EXPECT_EQ(line.receive(7), frame({1, 4, 2, 0x00, 0x53}));
+  EXPECT_EQ(stats.requests.load(), 1U);
+}
+
+TEST(ModbusRtuServer, AnotherSlavesReplyOnTheBusEndsAtTheSilence) {
+  // On a shared RS-485 line the server hears the other slaves' replies. Unit 6's reply to an
+  // FC 16 (unit, function, start, quantity, CRC: 8 bytes) read as a request would want a byte
+  // count and data; the silence after it ends it instead, and our request that follows is
+  // answered.
+  ServeThread server(ans1_on_pty());
+  const auto& stats = *server.endpoint().rtu_stats;
+  RawLine line(server.endpoint().serial_path);
+  ASSERT_TRUE(line.ok());
+  ASSERT_TRUE(line.send(frame({6, 0x10, 0x04, 0x00, 0x00, 0x02})));
+  for (int i = 0; i < 5000 && stats.other_unit.load() + stats.crc_errors.load() == 0; ++i)
+    ::poll(nullptr, 0, 1);
+  ASSERT_EQ(stats.other_unit.load() + stats.crc_errors.load(), 1U);
+  ASSERT_TRUE(line.send(frame({1, 4, 0, 13, 0, 1})));
+  EXPECT_EQ(line.receive(7), frame({1, 4, 2, 0x00, 0x53}));
+}
+
 } // namespace
 } // namespace hilrig::test
