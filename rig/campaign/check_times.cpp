@@ -54,6 +54,24 @@ std::optional<CheckTimeProblem> before_first_read(const Scenario& s, const nlohm
                                       name, static_cast<double>(first->count()) / 1e6, at)};
 }
 
+// A shaft_move counts the steps after from_ms and up to to_ms (or campaign.end), in whole ns:
+// a window with no instant in it can hold no step, and its limits would judge nothing.
+std::optional<CheckTimeProblem> empty_step_window(const Scenario& s, const checks::CheckKind& kind,
+                                                  const nlohmann::json& table) {
+  if (kind.name != "shaft_move" || !table.contains("from_ms") || !table["from_ms"].is_number())
+    return std::nullopt;
+  const bool to_given = table.contains("to_ms") && table["to_ms"].is_number();
+  const double from = ns_of(table["from_ms"], 1e6);
+  const double to = to_given ? ns_of(table["to_ms"], 1e6) : static_cast<double>(s.end.count());
+  if (from < to) return std::nullopt;
+  return CheckTimeProblem{
+      to_given ? "to_ms" : "from_ms",
+      fmt::format(
+          "a window with time in it: steps after from_ms ({} ms) and up to {} ({} ms) count, in whole "
+          "ns, and this one holds none",
+          table["from_ms"].get<double>(), to_given ? "to_ms" : "campaign.end", to / 1e6)};
+}
+
 } // namespace
 
 std::optional<CheckTimeProblem> check_time_problem(const Scenario& s, const checks::CheckKind& kind,
@@ -62,6 +80,7 @@ std::optional<CheckTimeProblem> check_time_problem(const Scenario& s, const chec
     if (p.instant_ns == 0.0 || !table.contains(p.name)) continue;
     if (auto problem = after_end(s, p, table[p.name])) return problem;
   }
+  if (auto problem = empty_step_window(s, kind, table)) return problem;
   return before_first_read(s, table);
 }
 

@@ -45,6 +45,8 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
   for (const Wire& w : s.wiring)
     if (names_line(s, w.rig)) named.push_back(w.rig);
   c.lines = v.trace->edges_of(named);
+  for (const Wire& w : s.wiring)
+    if (w.direction == duts::PinDirection::Input) c.rig_driven.insert(w.rig);
   const signals::MotionProfile* profile = &v.profile;
   // Each keeps the segment it last read: a check reads at nearby times (a crossing scan and
   // its bisections), and a plant's profile has a segment per integration step.

@@ -230,6 +230,13 @@ CheckParams brake(std::string_view name, const Table& t) {
     throw ParamError("report_tick_ms", "either report_tick_ms or report_tolerance_ms, not both");
   p.spec.report_tolerance_ms = t.num("report_tolerance_ms", 2.0);
   p.spec.report_tick = t.opt_ms("report_tick_ms");
+  // A key that only refines another does nothing alone: refused, as a typo would be.
+  if (t.has("report_tolerance_ms") && !t.has("reported"))
+    throw ParamError("report_tolerance_ms", "only with reported");
+  if (t.has("fault_level") && !t.has("fault_output"))
+    throw ParamError("fault_level", "only with fault_output");
+  if (t.has("fault_from_reported") && !(t.has("reported") && t.has("fault_output")))
+    throw ParamError("fault_from_reported", "only with reported and fault_output");
   p.spec.fault_level = t.level("fault_level", Level::Low);
   p.spec.fault_from_reported = t.flag("fault_from_reported");
   p.applied = t.opt_ms("applied_ms");
@@ -301,6 +308,7 @@ CheckParams shaft(std::string_view name, const Table& t) {
   if (p.to_given) p.spec.to = t.ms("to_ms");
   p.spec.dir_initial = t.level("dir_initial", Level::Low);
   p.spec.steps = t.opt_num("steps");
+  if (t.has("steps_tolerance") && !t.has("steps")) throw ParamError("steps_tolerance", "only with steps");
   p.spec.steps_tolerance = t.num("steps_tolerance");
   p.spec.duration_min = t.opt_ms("duration_min_ms");
   p.spec.duration_max = t.opt_ms("duration_max_ms");
@@ -574,6 +582,16 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
     applied = *p.applied;
   } else {
     const auto e = next_edge(line(c, p.brake_line), c.begin, Nanos::max(), p.applied_level);
+    if (!e && c.rig_driven.contains(p.brake_line)) {
+      // The rig's own stimulus never came: there was no stop to time.
+      CheckResult r;
+      r.measurements.push_back(
+          error(s.name + ".stop_time",
+                fmt::format("nothing judged: the rig never applied the brake on its line '{}' "
+                            "(no edge to {})",
+                            p.brake_line, level_name(p.applied_level))));
+      return r;
+    }
     if (!e)
       return failed(".stop_time",
                     fmt::format("missing edge: the brake line '{}' never applied the brake", p.brake_line));
@@ -590,9 +608,24 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
   std::span<const Edge> fault;
   if (p.fault_output) fault = line(c, *p.fault_output);
   // Virtual time: the rig knows the trajectory and hands the exact standstill; on hardware
-  // only the count changes are evidence, an interval judged on its upper end.
+  // only the count changes are evidence, an interval judged on its upper end: [last change,
+  // last change + one count at the final speed bound], from count changes before the brake
+  // too (a shaft that turned its last count just before it may still be turning).
   auto still = c.standstill ? exact_standstill(c.standstill(applied), c.end)
-                            : standstill_interval(c.motion, applied, c.end);
+                            : standstill_interval(c.motion, c.begin, c.end);
+  // A shaft already still when the brake is applied has no stop to time: its stop time of 0
+  // would pass any limit having judged nothing. On hardware, still for certain: the whole
+  // interval ends by then.
+  if (still && still->latest <= applied) {
+    CheckResult r;
+    r.measurements.push_back(error(
+        s.name + ".stop_time",
+        fmt::format(
+            "nothing judged: the shaft already stood still (by {} ns) when the brake was applied at {} ns",
+            still->latest.count(), applied.count())));
+    return r;
+  }
+  if (still) still->earliest = std::max(still->earliest, applied);
   // What a board timing the stop from count changes sees as its end (report_window()).
   const std::vector<PositionSample>& counts = c.counts.empty() ? c.motion : c.counts;
   if (still)

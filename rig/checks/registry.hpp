@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -23,6 +24,9 @@ namespace hilrig::checks {
 // What one run captured, as plain data the executive fills from its trace.
 struct Capture {
   std::map<std::string, std::vector<Edge>, std::less<>> lines; // every captured line, by trace name
+  // The lines the rig drives into the board (its stimuli): an edge missing there is the
+  // campaign's, and a check waiting for it judged nothing (an error, not the board's fail).
+  std::set<std::string, std::less<>> rig_driven{};
   PositionFn position; // stimulus position, counts (e.g. the motion profile)
   PositionFn speed;    // counts/s
   // When the rig knows the trajectory (virtual time): how long `position` holds still from a

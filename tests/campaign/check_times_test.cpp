@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 #include <utility>
@@ -69,13 +70,23 @@ std::string as_toml_number(double v) {
   return s;
 }
 
+// A shaft_move's window (from_ms, to_ms] with no whole ns in it: refused on its own (below).
+bool empty_step_window(const SweptInstant& c, double v) {
+  if (std::string(c.kind) != "shaft_move") return false;
+  const double ns = std::round(v * 1e6);
+  return std::string(c.key) == "from_ms" ? ns >= 100e6 : ns <= 0.0;
+}
+
 TEST(CheckTimes, EachInstantIsAcceptedUpToTheRunsEndAndRefusedPastIt) {
   for (const SweptInstant& c : swept_instants()) {
     SCOPED_TRACE(std::string(c.kind) + "." + c.key);
     const double ns = std::string(c.key).ends_with("_us") ? 1e3 : 1e6;
     for (const double v : {0.0, c.end_value / 2, c.end_value, c.end_value + 0.4 / ns})
-      EXPECT_EQ(error_of(campaign_with_check(c, std::string(c.key) + " = " + as_toml_number(v))), "accepted")
-          << v;
+      if (!empty_step_window(c, v)) {
+        EXPECT_EQ(error_of(campaign_with_check(c, std::string(c.key) + " = " + as_toml_number(v))),
+                  "accepted")
+            << v;
+      }
     for (const double v : {c.end_value + 1.0 / ns, c.end_value * 1.03, c.end_value + 1'000})
       EXPECT_EQ(error_of(campaign_with_check(c, std::string(c.key) + " = " + as_toml_number(v))),
                 instant_where(c) + "a time within the run, 0 .. " + as_toml_number(c.end_value) + " " +
@@ -84,6 +95,32 @@ TEST(CheckTimes, EachInstantIsAcceptedUpToTheRunsEndAndRefusedPastIt) {
                     " is after it")
           << v;
   }
+}
+
+// shaft_move counts the steps after from_ms and up to to_ms (the run's end, 100 ms, by
+// default), in whole ns: a window with no ns in it holds no step, and its limits (steps = 0
+// here) would pass a board having judged nothing. Swept across the empty window's edge.
+TEST(CheckTimes, AShaftMoveWindowWithNoInstantInItIsRefused) {
+  const SweptInstant from{
+      "shaft_move", {"step_line = \"ls1\"", "dir_line = \"ls1\"", "steps = 0"}, "from_ms", 100};
+  for (const char* v : {"0", "99.999999", "99.9999994"})
+    EXPECT_EQ(error_of(campaign_with_check(from, std::string("from_ms = ") + v)), "accepted") << v;
+  for (const char* v : {"99.9999996", "100", "100.0000004"})
+    EXPECT_EQ(error_of(campaign_with_check(from, std::string("from_ms = ") + v)),
+              instant_where(from) + "a window with time in it: steps after from_ms (" + v +
+                  " ms) and up to campaign.end (100 ms) count, in whole ns, and this one holds none")
+        << v;
+  const SweptInstant to{
+      "shaft_move", {"step_line = \"ls1\"", "dir_line = \"ls1\"", "steps = 0", "from_ms = 40"}, "to_ms", 100};
+  EXPECT_EQ(error_of(campaign_with_check(to, "to_ms = 40.000001")), "accepted");
+  EXPECT_EQ(error_of(campaign_with_check(to, "to_ms = 40.0000004")),
+            instant_where(to) +
+                "a window with time in it: steps after from_ms (40 ms) and up to to_ms (40 ms) "
+                "count, in whole ns, and this one holds none");
+  EXPECT_EQ(error_of(campaign_with_check(to, "to_ms = 40")),
+            instant_where(to) +
+                "a window with time in it: steps after from_ms (40 ms) and up to to_ms (40 ms) "
+                "count, in whole ns, and this one holds none");
 }
 
 // Every parameter the registry calls an instant is swept above: one added later is too.

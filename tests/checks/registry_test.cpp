@@ -315,6 +315,61 @@ TEST(Registry, BrakeFromTheBrakeLineAndTheReportedWord) {
   EXPECT_EQ(find(run_check("brake", tight, c), "brake.stop_time").outcome, rig::Outcome::Fail);
 }
 
+// A brake check with nothing to time is an error, never a pass (docs/campaigns.md "Checks"):
+// the rig's own brake line never applied, or a shaft already still when the brake came. A
+// board's output that should drop the brake and never does is the board's fail.
+TEST(Registry, BrakeWithNoStopToTimeIsAnError) {
+  const auto p = build("brake_stop_time", json{{"limit_ms", 100}, {"brake_line", "brake"}}, "b");
+  Capture c;
+  c.lines["brake"] = {};
+  c.motion = {{0_ms, 0.0}, {50_ms, 10.0}, {60_ms, 11.0}};
+  c.end = 600_ms;
+  c.rig_driven = {"brake"};
+  EXPECT_EQ(find(run_check("b", p, c), "b.stop_time").outcome, rig::Outcome::Error);
+  c.rig_driven.clear(); // the board drives it (a PLS output dropping a valve): the board's fail
+  EXPECT_EQ(find(run_check("b", p, c), "b.stop_time").outcome, rig::Outcome::Fail);
+  // Applied at 75 ms. Hardware: the last count change at 60 ms after one at 50 ms leaves the
+  // standstill in [60, 70] ms, before the brake: nothing to time. Applied at 65 ms the
+  // interval straddles it: judged on its upper end, 5 ms.
+  c.lines["brake"] = {{75_ms, Level::Low}};
+  EXPECT_EQ(find(run_check("b", p, c), "b.stop_time").outcome, rig::Outcome::Error);
+  c.lines["brake"] = {{70_ms, Level::Low}};
+  EXPECT_EQ(find(run_check("b", p, c), "b.stop_time").outcome, rig::Outcome::Error);
+  c.lines["brake"] = {{69'999'999_ns, Level::Low}};
+  EXPECT_EQ(find(run_check("b", p, c), "b.stop_time").value, 1e-6);
+  EXPECT_EQ(find(run_check("b", p, c), "b.stop_time").outcome, rig::Outcome::Pass);
+  // Virtual time: the exact standstill at or after the application. Still at it: an error;
+  // 1 ns later: a stop of 1 ns, judged.
+  c.standstill = [](Nanos from) { return std::optional<Nanos>{std::max(from, 60_ms)}; };
+  c.lines["brake"] = {{60_ms, Level::Low}};
+  EXPECT_EQ(find(run_check("b", p, c), "b.stop_time").outcome, rig::Outcome::Error);
+  c.lines["brake"] = {{59'999'999_ns, Level::Low}};
+  EXPECT_EQ(find(run_check("b", p, c), "b.stop_time").outcome, rig::Outcome::Pass);
+}
+
+// A key that only refines another does nothing alone: refused like a typo, not ignored.
+TEST(Registry, RefiningKeysWithoutWhatTheyRefineAreBadInput) {
+  const json brake{{"limit_ms", 100}, {"applied_ms", 1}};
+  const auto with = [](json t, json extra) {
+    t.update(extra);
+    return t;
+  };
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"report_tolerance_ms", 3}})), "report_tolerance_ms");
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"report_tolerance_ms", 3}, {"reported", "w"}})), "ok");
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"fault_level", "high"}})), "fault_level");
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"fault_level", "high"}, {"fault_output", "f"}})), "ok");
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"fault_from_reported", true}, {"reported", "w"}})),
+            "fault_from_reported");
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"fault_from_reported", true}, {"fault_output", "f"}})),
+            "fault_from_reported");
+  EXPECT_EQ(problem("brake_stop_time",
+                    with(brake, {{"fault_from_reported", true}, {"fault_output", "f"}, {"reported", "w"}})),
+            "ok");
+  const json shaft{{"step_line", "s"}, {"dir_line", "d"}, {"from_ms", 0}, {"duration_max_ms", 5}};
+  EXPECT_EQ(problem("shaft_move", with(shaft, {{"steps_tolerance", 2}})), "steps_tolerance");
+  EXPECT_EQ(problem("shaft_move", with(shaft, {{"steps_tolerance", 2}, {"steps", 100}})), "ok");
+}
+
 // The board's stop timer tick replaces the fixed report tolerance: one or the other, and a
 // tick of 0 would time nothing.
 TEST(Registry, BrakeReportTickIsATickOrATolerance) {
