@@ -268,10 +268,11 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
       progress.started(p.c.name, run);
       run_start = std::chrono::steady_clock::now();
     };
+    const campaign::RunSpec* sunk = nullptr; // the run whose evidence the sink wrote last
     const auto sink = [&](const campaign::RunSpec& run, const campaign::RunOutput& output) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
       ran.clock.run_seconds[run.index] = wall;
-      progress.finished(p.c.name, run, rig::run_outcome(output.result), wall);
+      sunk = &run;
       const Nanos run_epoch = can_log_offset;
       can_log_offset += p.c.scenario_of(run).end;
       if (!output.trace) return std::string();
@@ -323,8 +324,14 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
     header.started_at = ran.clock.started_at;
     header.host = ran.clock.hostname;
     rig::RunLog log(dir / rig::kRunLogName, header);
-    const rig::CampaignResult done = exec.run_all(p.runs, p.seed, part, started, sink,
-                                                  [&](const rig::RunResult& run) { log.append(run); });
+    // A run is reported finished once its record is in the log (written and synced): a script
+    // that stops hilrig on that line, or a kill right after it, finds the run in runs.jsonl.
+    const auto record = [&](const rig::RunResult& run) {
+      log.append(run);
+      if (sunk != nullptr)
+        progress.finished(p.c.name, *sunk, rig::run_outcome(run), ran.clock.run_seconds[run.index]);
+    };
+    const rig::CampaignResult done = exec.run_all(p.runs, p.seed, part, started, sink, record);
     // The fold takes the runs the log holds, or reads it back a record at a time: its memory
     // does not grow with the runs either.
     rig::CampaignResult facts;

@@ -957,6 +957,50 @@ TEST(RunProgressLines, EachRunWithOutcomeWallTimeAndEta) {
   EXPECT_EQ(clock_text(3723), "1:02:03");
 }
 
+// A stream that, at each "run N: <outcome> in" line, counts the run records in runs.jsonl.
+class LogAtEachFinishedLine : public std::stringbuf {
+public:
+  explicit LogAtEachFinishedLine(fs::path log) : log_(std::move(log)) {}
+  std::vector<std::string> seen; // "run N: records M"
+
+protected:
+  int sync() override {
+    const std::string text = str();
+    static const std::regex finished(R"re(\] run (\d+): [a-z]+ in [^\n]*\n)re");
+    const auto from = text.begin() + static_cast<std::ptrdiff_t>(scanned_);
+    for (auto it = std::sregex_iterator(from, text.end(), finished); it != std::sregex_iterator(); ++it) {
+      std::ifstream in(log_);
+      std::size_t records = 0;
+      for (std::string line; std::getline(in, line);)
+        if (line.rfind("{\"run\":", 0) == 0) ++records;
+      seen.push_back("run " + (*it)[1].str() + ": records " + std::to_string(records));
+    }
+    scanned_ = text.size();
+    return 0;
+  }
+
+private:
+  fs::path log_;
+  std::size_t scanned_ = 0;
+};
+
+// docs/campaigns.md: a kill leaves runs.jsonl with every finished run, and the end-of-run line
+// is what scripts wait for; so a run is reported finished only once its record is in the log.
+TEST(RunProgressLines, ARunIsReportedFinishedOnlyOnceItsRecordIsInTheLog) {
+  const fs::path dir = scratch("progress_after_record");
+  RunOptions o;
+  o.files = {campaign::test::shipped("reference_pls_pass.toml")};
+  o.out = dir / "out";
+  o.progress_lines = true;
+  LogAtEachFinishedLine buf(o.out / "runs.jsonl");
+  std::ostream err(&buf);
+  std::ostringstream out;
+  EXPECT_EQ(run_campaigns(o, out, err), 0) << buf.str();
+  EXPECT_EQ(buf.seen, (std::vector<std::string>{"run 0: records 1", "run 1: records 2", "run 2: records 3",
+                                                "run 3: records 4"}))
+      << buf.str();
+}
+
 int g_earlier_handler_saw = 0;
 void earlier_handler(int signal) { g_earlier_handler_saw = signal; }
 
