@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 namespace hilrig::rig {
 namespace {
 
@@ -119,6 +121,14 @@ void RunTally::apply(CampaignResult& r) {
   } else {
     r.verdict = Outcome::Pass;
   }
+}
+
+std::string incomplete_reason(const CampaignResult& r) {
+  if (r.complete) return {};
+  const std::size_t missing = r.planned_runs > r.totals.runs ? r.planned_runs - r.totals.runs : 0;
+  return fmt::format(
+      "incomplete: {} of {} planned runs have no result, the campaign did not run to its end{}", missing,
+      r.planned_runs, r.interrupted ? fmt::format(" (stopped by {})", *r.interrupted) : "");
 }
 
 void finalize(CampaignResult& r) {

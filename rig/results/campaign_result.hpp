@@ -100,6 +100,11 @@ struct CampaignResult {
 // run erred (or the result is incomplete); Fail otherwise.
 void finalize(CampaignResult& result);
 
+// Why an incomplete result's verdict is an error, for junit.xml and report.html alike:
+// "incomplete: 7 of 10 planned runs have no result, the campaign did not run to its end" (and
+// the stop, when a signal stopped it). Empty when the result is complete.
+[[nodiscard]] std::string incomplete_reason(const CampaignResult& result);
+
 // Derives a run's outcome and each of its checks' judgement (what finalize() does per run).
 void judge(RunResult& run);
 

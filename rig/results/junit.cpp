@@ -223,10 +223,7 @@ Counts missing_runs_counts(const CampaignResult& r) {
 
 std::string missing_runs_testcase(const CampaignResult& r) {
   if (r.complete) return {};
-  const std::size_t missing = r.planned_runs > r.totals.runs ? r.planned_runs - r.totals.runs : 0;
-  const std::string message = fmt::format(
-      "incomplete: {} of {} planned runs have no result, the campaign did not run to its end{}", missing,
-      r.planned_runs, r.interrupted ? fmt::format(" (stopped by {})", *r.interrupted) : "");
+  const std::string message = incomplete_reason(r);
   return fmt::format("    <testcase name=\"complete\" classname=\"{}.campaign\" time=\"0.000\">\n"
                      "      <error message=\"{}\" type=\"error\">{}</error>\n    </testcase>\n",
                      xml_escape(dotless(r.campaign)), xml_escape(message), xml_escape(message));

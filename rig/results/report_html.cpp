@@ -350,6 +350,8 @@ void write_report_html(const CampaignResult& r, const RunSource& runs, const Tex
         "<p class=\"error\">Interrupted by {}: the runs done are below, the last one stopped early "
         "with every rig-driven line at its inactive level.</p>\n",
         xml_escape(*r.interrupted));
+  else if (!r.complete) // killed and folded from its run log: say why the verdict is an error
+    s += fmt::format("<p class=\"error\">Verdict error: {}.</p>\n", xml_escape(incomplete_reason(r)));
   s += summary(r, runs);
   s += traceability(r);
   s += fmt::format(

@@ -3,6 +3,7 @@
 #include <regex>
 
 #include "rig/results/junit.hpp"
+#include "rig/results/report_html.hpp"
 #include "sample_campaign.hpp"
 #include "tests/tools/scratch_files.hpp"
 
@@ -88,9 +89,16 @@ TEST(Junit, AnIncompleteCampaignIsAnErrorThoughEveryRunItHasPassed) {
   EXPECT_EQ(body.counts.errored, 1U);
   EXPECT_EQ(hilrig::test::count_of(body.testcases, "<error "), 1U);
 
+  // report.html says why at the top, in the same words, not only "(incomplete)" in its totals.
+  EXPECT_NE(
+      to_report_html(c).find("<p class=\"error\">Verdict error: incomplete: 2 of 3 planned runs have no "
+                             "result, the campaign did not run to its end.</p>"),
+      std::string::npos);
+
   c.planned_runs = 1; // the same run, complete: clean
   finalize(c);
   EXPECT_EQ(hilrig::test::count_of(to_junit_xml(c), "<error "), 0U);
+  EXPECT_EQ(to_report_html(c).find("Verdict error: "), std::string::npos);
 }
 
 // A suite in which one campaign has no results at all (a rig fault before it ran, a stop
