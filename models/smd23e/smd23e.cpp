@@ -483,7 +483,9 @@ void Smd23e::process_command(const Words& previous) {
       (falling & run_->command_bit) != 0 && (rising & msw::kHold) == 0) {
     if (run_->kind == Kind::Jog) {
       controlled_stop(false);
-    } else if (progress() - run_->chain_start >= static_cast<double>(run_->reg_min)) {
+    } else if (!run_->stopping && progress() - run_->chain_start >= static_cast<double>(run_->reg_min)) {
+      // A stop already under way (the S tail of an earlier condition, or a Hold) is not
+      // restarted: the move outputs S once from the first stop condition (L1049, L1054).
       registration_stop();
     }
   }

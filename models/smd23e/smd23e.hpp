@@ -141,6 +141,8 @@ private:
     HomeStage home_stage = HomeStage::Search;
     int home_dir = 1;
     std::size_t segment = 0; // assembled moves
+    // Dwell Move: the dwell time, word 9 of the Run command that started it (L1179, L2436).
+    std::uint32_t dwell_ms = 0;
     std::function<void()> on_end;
   };
   struct Held {

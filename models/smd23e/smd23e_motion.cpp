@@ -316,7 +316,9 @@ void Smd23e::on_motion_end() {
     return;
   case Kind::Dwell: {
     const std::size_t next = r.segment + 1;
-    const auto dwell = static_cast<std::uint32_t>(out_[9]);
+    // The dwell time came with the Run command (L1179, L2436); word 9 written since is not
+    // read again: only a new 0→1 command edge takes new data (L2403).
+    const std::uint32_t dwell = r.dwell_ms;
     if (next >= segments_.size()) {
       if (!p_.dwell_after_last_segment) {
         move_complete_ = true;
@@ -678,7 +680,6 @@ void Smd23e::start_assembled() {
 }
 
 void Smd23e::run_dwell_segment(std::size_t index, std::uint32_t dwell_ms) {
-  (void)dwell_ms;
   const Segment& s = segments_[index];
   const int dir = s.offset >= 0 ? 1 : -1;
   const bool limit = p_.fault != Fault::IgnoredLimit &&
@@ -692,6 +693,7 @@ void Smd23e::run_dwell_segment(std::size_t index, std::uint32_t dwell_ms) {
   r.kind = Kind::Dwell;
   r.spec = s.spec;
   r.segment = index;
+  r.dwell_ms = dwell_ms;
   last_jerk_ = s.spec.jerk;
   const double n = std::abs(static_cast<double>(s.offset));
   start_motion(std::move(r), plan_move(n, vs(), s.spec.vp, s.spec.a, s.spec.d, s.spec.shape), dir);
