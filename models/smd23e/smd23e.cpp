@@ -635,6 +635,12 @@ void Smd23e::dispatch(std::uint16_t bit, bool indexed_start) {
             }
           },
           true);
+    } else if (held_) {
+      // A held move stands at its Starting Speed stop: the Immediate Stop ends it for good (it
+      // "cannot be restarted", L943) and, with no step to cut short, keeps the position valid
+      // (L2450: invalid only when set during a move).
+      held_.reset();
+      hold_state_ = false;
     }
     return;
   case msw::kResume:

@@ -207,6 +207,27 @@ TEST_F(Smd23eMoves, HeldMoveIsCancelledByAnotherMove) {
   EXPECT_TRUE(bit1(sw1::kCommandError)); // nothing held any more
 }
 
+// An Immediate Stop "cannot be restarted" (L943): one sent while the move is held ends it, so
+// a Resume finds nothing (Command Error, no step); the shaft stood still, so the position
+// stays valid (L2450: invalid only when the bit is set during a move).
+TEST_F(Smd23eMoves, ImmediateStopEndsAHeldMoveForGood) {
+  configure();
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(500_ms);
+  write(msw::kHold);
+  run_to(1_s);
+  ASSERT_TRUE(bit1(sw1::kHoldState));
+  ASSERT_EQ(position_word(), 560);
+  command(msw::kImmediateStop);
+  EXPECT_FALSE(bit1(sw1::kHoldState));
+  EXPECT_FALSE(bit1(sw1::kPositionInvalid));
+  command(msw::kResume, kDrive, MoveWords{.vp = 1100});
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  run_to(2_s);
+  EXPECT_EQ(position_word(), 560);
+}
+
 TEST_F(Smd23eMoves, HoldAndResumeAJog) {
   configure();
   command(msw::kJogCw);
