@@ -351,14 +351,12 @@ void Smd23e::process(const Words& previous) {
     process_config(previous);
     return;
   }
-  Words prev = previous;
-  if (config_mode_) {
-    // Bits already set when the mode switches do not trigger (L2403–2405).
-    config_mode_ = false;
-    prev[0] = out_[0];
-    prev[1] = out_[1];
-  }
-  process_command(prev);
+  // Leaving Configuration Mode changes nothing in the edge rule: a command bit is judged
+  // against the Control Word last written, whatever its mode (L2403). A bit set in the
+  // Configuration Mode Control Word and still set now made no transition and does not run
+  // (L2405); one that was 0 there and is 1 now did go 0→1, and runs.
+  config_mode_ = false;
+  process_command(previous);
 }
 
 void Smd23e::process_config(const Words& previous) {

@@ -105,13 +105,60 @@ TEST_F(Smd23eConfig, InvalidConfigurationsSetConfigurationError) {
   EXPECT_FALSE(invalid({.control = 0b110'010'001 | ccw::kEncoderEnable | ccw::kStallEnable}));
 }
 
-TEST_F(Smd23eConfig, CommandBitsSetWhileLeavingConfigurationModeDoNotTrigger) {
-  dut.write_outputs(config_block(ConfigWords{}));
-  // Straight to Command Mode with the Relative bit already set: no edge, no motion.
-  write(msw::kRelative, kDrive, MoveWords{.value = 100});
+// Manual L2403: a command runs on a 0→1 transition of its bit; L2405: "If a bit is set in the
+// Control Word (Word 0) while in Configuration Mode and you switch to Command Mode with the
+// same bit set, the command will not occur because the bit must transition between writes".
+// The edge is judged against the Control Word last written, whatever the mode.
+TEST_F(Smd23eConfig, CommandBitsHeldSetThroughTheSwitchToCommandModeDoNotTrigger) {
+  // Control Word 0x8002: input 1 as CCW Limit (code 010, L2308) puts bit 1 (Relative) at 1.
+  dut.write_outputs(config_block(ConfigWords{.control = 0b010}));
+  write(msw::kRelative, kDrive, MoveWords{.value = 100}); // bit 1 still set: no transition
   run_to(1_s);
   EXPECT_EQ(dut.step_position(sched.now()), 0);
   EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  command(msw::kRelative, kDrive, MoveWords{.value = 100}); // cleared, then set: it runs
+  run_to(2_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 100);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eConfig, ResetErrorsHeldThroughTheSwitchAsTheEncoderEnableBitDoesNotTrigger) {
+  configure();
+  command(msw::kAbsolute, kDrive, MoveWords{.value = 100}); // Position Invalid: refused (L2854)
+  ASSERT_TRUE(bit1(sw1::kCommandError));
+  // Control Word bit 10 is Encoder Enable in Configuration Mode (L2286) and Reset Errors in
+  // Command Mode (L2439): 0x8400 followed by 0x0400 holds bit 10 through the switch.
+  dut.write_outputs(config_block(ConfigWords{.control = ccw::kEncoderEnable}));
+  write(msw::kResetErrors);
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  command(msw::kResetErrors);
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+}
+
+// The auditor's words (Modbus 1024..1033): configuration 8000 8000 0000 0064 0800 0000 0400
+// 0032 0014 0000 (Control Word bit 1 = 0), then in one write 0002 8000 0001 0000 0001 0000
+// 0064 0064 0000 0000: bit 1 went 0→1 across the switch, so the Relative move of +1000 runs
+// (L2403), at v_p 1000, A = D = 100.
+TEST_F(Smd23eConfig, ACommandBitThatRisesAcrossTheSwitchToCommandModeRuns) {
+  dut.write_outputs(config_block(ConfigWords{.word = 0x8000}));
+  write(msw::kRelative, kDrive, MoveWords{.value = 1000, .vp = 1000, .accel = 100, .decel = 100});
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  run_to(2_s); // 1000 steps at up to 1000 steps/s: 1.009 s
+  EXPECT_EQ(position_word(), 1000);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+}
+
+TEST_F(Smd23eConfig, PresetPositionAndResetErrorsRiseAcrossTheSwitchToo) {
+  dut.write_outputs(config_block(ConfigWords{}));
+  write(msw::kPresetPosition, kDrive, MoveWords{.value = 5}); // 0x0200 after 0x8000 (L2403)
+  EXPECT_EQ(position_word(), 5);
+  EXPECT_FALSE(bit1(sw1::kPositionInvalid));
+  command(msw::kResume); // nothing held: a Command Error to reset
+  ASSERT_TRUE(bit1(sw1::kCommandError));
+  dut.write_outputs(config_block(ConfigWords{}));
+  write(msw::kResetErrors); // 0x0400 after 0x8000
+  EXPECT_FALSE(bit1(sw1::kCommandError));
 }
 
 TEST_F(Smd23eConfig, M17SaveConfigurationReportsSuccessAndStopsAnswering) {
