@@ -161,6 +161,69 @@ TEST_F(Smd23eConfig, PresetPositionAndResetErrorsRiseAcrossTheSwitchToo) {
   EXPECT_FALSE(bit1(sw1::kCommandError));
 }
 
+// L2846: Position Invalid is "1" when "A configuration is written to the SMD23E"; L1132: a
+// Blend Move "stays in memory until power is removed, the unit is sent new Configuration
+// Data, or a new Blend or Dwell Move is written". Both name the write, not a change: the same
+// configuration written again is a configuration written (spec §6.4 [A]: "received in
+// Configuration Mode").
+class Smd23eRewrite : public Smd23eBench {
+protected:
+  // Two Blend segments of +1000 steps (§6.5, L1112-L1132), then Preset Position 5
+  // (the auditor's 0200 8000 0000 0005): SW1 0x4008, Controller OK and Axis Stopped.
+  void blend_and_preset() {
+    configure();
+    command(msw::kProgramMove);
+    for (std::int32_t vp : {1100, 2100}) {
+      write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000, .vp = vp});
+      write(msw::kProgramMove, kDrive, MoveWords{.value = 1000, .vp = vp});
+    }
+    write(0);
+    preset(5);
+    ASSERT_EQ(sw1(), sw1::kControllerOk | sw1::kStopped);
+  }
+};
+
+TEST_F(Smd23eRewrite, TheSameConfigurationWrittenAgainInvalidatesThePositionAndErasesTheBlend) {
+  blend_and_preset();
+  dut.write_outputs(config_block(ConfigWords{})); // the very words configure() wrote
+  dut.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_EQ(sw1(), sw1::kControllerOk | sw1::kPositionInvalid | sw1::kStopped); // 0x4408
+  command(msw::kRunAssembled); // nothing in RAM to run: a Command Error [A]
+  run_to(5_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 0);
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+}
+
+// [MODEL] the manual does not say what a configuration written during a move does to it; the
+// model stops the step train at once, the same words again as for different ones.
+TEST_F(Smd23eRewrite, TheSameConfigurationWrittenDuringAMoveStopsItAsAnyOther) {
+  configure();
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000}); // 0.1 s ramp (60 steps), then 1100/s
+  run_to(500_ms);
+  dut.write_outputs(config_block(ConfigWords{}));
+  EXPECT_EQ(dut.step_position(sched.now()), 500);
+  run_to(2_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 500);
+  dut.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eRewrite, ReadPresentConfigurationWritesNoConfiguration) {
+  blend_and_preset();
+  // L2329: "You cannot write new configuration data to the unit while this bit is set."
+  Words w = config_block(ConfigWords{});
+  w[1] = static_cast<std::uint16_t>(w[1] | cfgw::kReadPresent);
+  dut.write_outputs(w);
+  dut.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_EQ(sw1(), sw1::kControllerOk | sw1::kStopped); // still valid
+  command(msw::kRunAssembled); // the Blend is still there: +2000 (moves_test's timing, 1.63 s)
+  run_to(5_s);
+  EXPECT_EQ(position_word(), 5 + 2000);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+}
+
 TEST_F(Smd23eConfig, M17SaveConfigurationReportsSuccessAndStopsAnswering) {
   Words w = config_block(ConfigWords{});
   dut.write_outputs(w);
