@@ -351,14 +351,12 @@ void Smd23e::process(const Words& previous) {
     process_config(previous);
     return;
   }
-  Words prev = previous;
-  if (config_mode_) {
-    // Bits already set when the mode switches do not trigger (L2403–2405).
-    config_mode_ = false;
-    prev[0] = out_[0];
-    prev[1] = out_[1];
-  }
-  process_command(prev);
+  // Leaving Configuration Mode changes nothing in the edge rule: a command bit is judged
+  // against the Control Word last written, whatever its mode (L2403). A bit set in the
+  // Configuration Mode Control Word and still set now made no transition and does not run
+  // (L2405); one that was 0 there and is 1 now did go 0→1, and runs.
+  config_mode_ = false;
+  process_command(previous);
 }
 
 void Smd23e::process_config(const Words& previous) {
@@ -374,23 +372,24 @@ void Smd23e::process_config(const Words& previous) {
   const bool save = (out_[1] & cfgw::kSaveConfig) != 0 && (previous[1] & cfgw::kSaveConfig) == 0;
   Config applied = *c;
   applied.words[1] = static_cast<std::uint16_t>(applied.words[1] & ~cfgw::kSaveConfig);
-  if (!configured_ || applied.words != cfg_.words) {
-    if (run_) {
-      immediate_stop();
-    }
-    cfg_ = applied;
-    // A changed idle current takes effect only at the end of the first move after
-    // re-configuration (L2350); the first configuration since power-up has nothing to keep.
-    if (!idle_percent_) {
-      idle_percent_ = applied.words[7];
-    }
-    pending_idle_percent_ = applied.words[7];
-    configured_ = true;
-    config_error_ = false;
-    pos_invalid_ = true;         // a configuration written sets Position Invalid (L2846)
-    segments_ = flash_segments_; // and erases the RAM assembled move (L1132); a flash one stays ([MODEL])
-    last_motion_end_ = sched_.now();
+  // Every valid write in Configuration Mode is "a configuration ... written" (L2846), "new
+  // Configuration Data" (L1132), the same words again included: the manual ties both to the
+  // write, not to a change or to entering the mode (spec §6.4 [A]).
+  if (run_) {
+    immediate_stop();
   }
+  cfg_ = applied;
+  // A changed idle current takes effect only at the end of the first move after
+  // re-configuration (L2350); the first configuration since power-up has nothing to keep.
+  if (!idle_percent_) {
+    idle_percent_ = applied.words[7];
+  }
+  pending_idle_percent_ = applied.words[7];
+  configured_ = true;
+  config_error_ = false;
+  pos_invalid_ = true;         // a configuration written sets Position Invalid (L2846)
+  segments_ = flash_segments_; // and erases the RAM assembled move (L1132); a flash one stays ([MODEL])
+  last_motion_end_ = sched_.now();
   if (save) {
     flash_result_ = 0xAAAA;
     flash_locked_ = true;

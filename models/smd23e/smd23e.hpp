@@ -53,8 +53,9 @@ public:
   // counts follow the lines instead of the steps, and stall detection compares them with the
   // steps issued.
   void connect_encoder(LineInput& a, LineInput& b);
-  // Stall detection against the connected encoder at now (spec §2.3, L1255, L2885): call
-  // after each step issued; the encoder's own edges call it too.
+  // Stall detection against the connected encoder at now (spec §2.3, L1255, L2885): the steps
+  // issued and the counts turned since the present move set off; call after each step issued,
+  // the encoder's own edges call it too.
   void watch_encoder();
 
   // RegisterMap: input registers 0–9; holding registers 1024–1033 (output words) and 0–9
@@ -257,6 +258,13 @@ private:
   std::int64_t enc_offset_ = 0; // Encoder register − counts derived from the shaft
   // The connected shaft encoder (connect_encoder), counting from 0 at power-up.
   std::optional<signals::QuadratureDecoder> shaft_encoder_;
+  // Where the step train, the shaft and the connected encoder stood when the present motion
+  // set off from rest (start_motion): stall detection watches the encoder "while a move is in
+  // progress" (L1255), so each move is judged by what it did itself, not by a disagreement
+  // left over from an earlier stall (which neither Reset Errors nor a preset undoes).
+  std::int64_t watch_steps_ = 0;
+  std::int64_t watch_shaft_ = 0;
+  std::int64_t watch_count_ = 0;
   std::int64_t captured_ = 0;
   bool shaft_blocked_ = false;
   std::int64_t shaft_frozen_ = 0;

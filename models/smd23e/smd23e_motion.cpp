@@ -81,9 +81,10 @@ void Smd23e::watch_encoder() {
   const bool enabled = encoder_enabled() && (cfg_.words[0] & ccw::kStallEnable) != 0;
   if (!shaft_encoder_ || !enabled || !run_ || steps_per_turn() == 0) return;
   // [A §2.3] the encoder disagrees when it is more than the threshold from the counts the
-  // steps issued should have turned (both from 0 at power-up).
-  const std::int64_t expected = floor_div(step_position(sched_.now()) * 1024, steps_per_turn());
-  const auto lag = static_cast<double>(std::abs(expected - shaft_encoder_->count()));
+  // steps issued should have turned, both counted from where this move set off (L1255).
+  const std::int64_t expected =
+      floor_div((step_position(sched_.now()) - watch_steps_) * 1024, steps_per_turn());
+  const auto lag = static_cast<double>(std::abs(expected - (shaft_encoder_->count() - watch_count_)));
   if (lag <= p_.stall_threshold_counts) return;
   immediate_stop(); // [A] a stall is an immediate stop
   set_error(stall_);
@@ -146,6 +147,9 @@ double Smd23e::velocity() const { return runs_.back().motion.velocity(sched_.now
 
 void Smd23e::start_motion(Run run, std::vector<Piece> pieces, int dir) {
   const Nanos now = sched_.now();
+  watch_steps_ = step_position(now); // the stall watch starts afresh with each move (L1255)
+  watch_shaft_ = shaft_steps(now);
+  watch_count_ = shaft_encoder_ ? shaft_encoder_->count() : 0;
   ShaftRun sr;
   sr.origin = step_position(now);
   sr.dir = dir;
@@ -378,7 +382,9 @@ void Smd23e::schedule_stall_check() {
   }
   const double threshold = p_.stall_threshold_counts * steps_per_turn() / 1024.0;
   const ShaftRun& r = runs_.back();
-  const double lag = std::abs(static_cast<double>(step_position(sched_.now()) - shaft_frozen_));
+  // Steps issued this move that the shaft did not turn: the block, not an earlier one's slip.
+  const double lag = std::abs(
+      static_cast<double>((step_position(sched_.now()) - watch_steps_) - (shaft_frozen_ - watch_shaft_)));
   const double x = r.motion.progress(sched_.now()) + std::max(0.0, threshold - lag) + 1.0;
   const Nanos t = r.motion.time_at_progress(x);
   if (t == Nanos::max()) {

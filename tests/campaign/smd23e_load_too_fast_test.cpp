@@ -5,6 +5,7 @@
 // undamped pendulum of the rotor's electrical lag).
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -120,6 +121,98 @@ TEST(Smd23eLoadTooFast, StallsAtTheAccelerationThePhysicsPredicts) {
       }
     }
   }
+}
+
+// After the fast move has stalled (10 ms, A = D = 500, the fault run above), Reset Errors,
+// Preset Position 0 and Preset Encoder 0, a slow move follows: the unit watches the encoder
+// "while a move is in progress" (L1255), so what the stall left between the steps and the
+// counts is no disagreement of the next move. The slow move: 12,800 steps (one turn) at
+// v_p 6400, A = D = 10 (f = 0.029, far below f_safe), from v_s 1 (L2496: 10,000 steps/s²):
+// ramps of 0.6399 s, the end at 1.5 s + 2.6398 s; at 4.0 s, 0.1398 s before it,
+// 0.1398 + 10,000 x 0.1398² / 2 = 97.86 steps are left: position 12,702, the encoder
+// 12,702 x 1024 / 12,800 = 1016 counts. The undamped rotor keeps ringing after the stall, within
+// a pole (pi electrical, +-10.24 counts) of where it is held, at the preset as at the reading:
+// the encoder reads 1016 +- 20.48 counts (+- 3 of the move's own ring).
+std::string after_a_stall() {
+  std::string t = test::read_file(kLoadTooFastFile);
+  t.replace(t.find("end = \"1610ms\""), 14, "end = \"4010ms\"");
+  const std::size_t moves = t.find("# Relative move (MSW 0x0002)");
+  EXPECT_NE(moves, std::string::npos);
+  t.resize(moves);
+  t += R"(
+[[host]]
+at = "10ms"
+name = "too_fast"
+program = "move"
+move = "relative"
+steps = 25600
+speed = 25600
+accel = 500
+decel = 500
+
+[[host]]
+at = "1000ms"
+read = 1
+name = "sw2_stalled"
+
+[[host]]
+at = "1002ms"
+name = "reset"
+program = "command"
+command = "reset_errors"
+
+[[host]]
+at = "1004ms"
+name = "preset_position"
+program = "command"
+command = "preset_position"
+position = 0
+
+[[host]]
+at = "1006ms"
+name = "preset_encoder"
+program = "command"
+command = "preset_encoder"
+position = 0
+
+[[host]]
+at = "1500ms"
+name = "slow"
+program = "move"
+move = "relative"
+steps = 12800
+speed = 6400
+accel = 10
+decel = 10
+)";
+  for (const int word : {1, 2, 3, 4, 5}) {
+    t += fmt::format("\n[[host]]\nat = \"4000ms\"\nread = {}\nname = \"w{}\"\n", word, word);
+  }
+  t += R"(
+[[check]]
+kind = "word_bits"
+name = "no_stall"
+observation = "w1"
+mask = 0x4000 # SW2 bit 14, Stall (L2885)
+value = 0
+)";
+  return t;
+}
+
+TEST(Smd23eLoadTooFast, AfterAStallResetAndPresetsTheNextMoveIsWatchedOnItsOwn) {
+  const Campaign c = parse_campaign(after_a_stall(), "after_a_stall.toml");
+  const RunOutput out = Executive(c).run(c.runs[0]);
+  const auto word = [&](const std::string& name) {
+    const rig::Observation* o = test::find_observation(out.result, name);
+    EXPECT_NE(o, nullptr) << name;
+    return o == nullptr ? 0 : static_cast<std::int16_t>(static_cast<std::uint16_t>(o->value));
+  };
+  EXPECT_EQ(word("sw2_stalled") & 0x4000, 0x4000); // the first move did stall
+  EXPECT_EQ(word("w1") & 0x4000, 0);               // the second one runs its steps
+  EXPECT_EQ(word("w2") * 1000 + word("w3"), 12702);
+  EXPECT_NEAR(word("w4") * 1000 + word("w5"), 1016, 20.48 + 3.0);
+  ASSERT_EQ(out.result.checks.size(), 1U);
+  EXPECT_EQ(out.result.checks[0].outcome(), Outcome::Pass);
 }
 
 } // namespace

@@ -105,13 +105,123 @@ TEST_F(Smd23eConfig, InvalidConfigurationsSetConfigurationError) {
   EXPECT_FALSE(invalid({.control = 0b110'010'001 | ccw::kEncoderEnable | ccw::kStallEnable}));
 }
 
-TEST_F(Smd23eConfig, CommandBitsSetWhileLeavingConfigurationModeDoNotTrigger) {
-  dut.write_outputs(config_block(ConfigWords{}));
-  // Straight to Command Mode with the Relative bit already set: no edge, no motion.
-  write(msw::kRelative, kDrive, MoveWords{.value = 100});
+// Manual L2403: a command runs on a 0→1 transition of its bit; L2405: "If a bit is set in the
+// Control Word (Word 0) while in Configuration Mode and you switch to Command Mode with the
+// same bit set, the command will not occur because the bit must transition between writes".
+// The edge is judged against the Control Word last written, whatever the mode.
+TEST_F(Smd23eConfig, CommandBitsHeldSetThroughTheSwitchToCommandModeDoNotTrigger) {
+  // Control Word 0x8002: input 1 as CCW Limit (code 010, L2308) puts bit 1 (Relative) at 1.
+  dut.write_outputs(config_block(ConfigWords{.control = 0b010}));
+  write(msw::kRelative, kDrive, MoveWords{.value = 100}); // bit 1 still set: no transition
   run_to(1_s);
   EXPECT_EQ(dut.step_position(sched.now()), 0);
   EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  command(msw::kRelative, kDrive, MoveWords{.value = 100}); // cleared, then set: it runs
+  run_to(2_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 100);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eConfig, ResetErrorsHeldThroughTheSwitchAsTheEncoderEnableBitDoesNotTrigger) {
+  configure();
+  command(msw::kAbsolute, kDrive, MoveWords{.value = 100}); // Position Invalid: refused (L2854)
+  ASSERT_TRUE(bit1(sw1::kCommandError));
+  // Control Word bit 10 is Encoder Enable in Configuration Mode (L2286) and Reset Errors in
+  // Command Mode (L2439): 0x8400 followed by 0x0400 holds bit 10 through the switch.
+  dut.write_outputs(config_block(ConfigWords{.control = ccw::kEncoderEnable}));
+  write(msw::kResetErrors);
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+  command(msw::kResetErrors);
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+}
+
+// The auditor's words (Modbus 1024..1033): configuration 8000 8000 0000 0064 0800 0000 0400
+// 0032 0014 0000 (Control Word bit 1 = 0), then in one write 0002 8000 0001 0000 0001 0000
+// 0064 0064 0000 0000: bit 1 went 0→1 across the switch, so the Relative move of +1000 runs
+// (L2403), at v_p 1000, A = D = 100.
+TEST_F(Smd23eConfig, ACommandBitThatRisesAcrossTheSwitchToCommandModeRuns) {
+  dut.write_outputs(config_block(ConfigWords{.word = 0x8000}));
+  write(msw::kRelative, kDrive, MoveWords{.value = 1000, .vp = 1000, .accel = 100, .decel = 100});
+  EXPECT_TRUE(bit1(sw1::kMovingCw));
+  run_to(2_s); // 1000 steps at up to 1000 steps/s: 1.009 s
+  EXPECT_EQ(position_word(), 1000);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+}
+
+TEST_F(Smd23eConfig, PresetPositionAndResetErrorsRiseAcrossTheSwitchToo) {
+  dut.write_outputs(config_block(ConfigWords{}));
+  write(msw::kPresetPosition, kDrive, MoveWords{.value = 5}); // 0x0200 after 0x8000 (L2403)
+  EXPECT_EQ(position_word(), 5);
+  EXPECT_FALSE(bit1(sw1::kPositionInvalid));
+  command(msw::kResume); // nothing held: a Command Error to reset
+  ASSERT_TRUE(bit1(sw1::kCommandError));
+  dut.write_outputs(config_block(ConfigWords{}));
+  write(msw::kResetErrors); // 0x0400 after 0x8000
+  EXPECT_FALSE(bit1(sw1::kCommandError));
+}
+
+// L2846: Position Invalid is "1" when "A configuration is written to the SMD23E"; L1132: a
+// Blend Move "stays in memory until power is removed, the unit is sent new Configuration
+// Data, or a new Blend or Dwell Move is written". Both name the write, not a change: the same
+// configuration written again is a configuration written (spec §6.4 [A]: "received in
+// Configuration Mode").
+class Smd23eRewrite : public Smd23eBench {
+protected:
+  // Two Blend segments of +1000 steps (§6.5, L1112-L1132), then Preset Position 5
+  // (the auditor's 0200 8000 0000 0005): SW1 0x4008, Controller OK and Axis Stopped.
+  void blend_and_preset() {
+    configure();
+    command(msw::kProgramMove);
+    for (std::int32_t vp : {1100, 2100}) {
+      write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000, .vp = vp});
+      write(msw::kProgramMove, kDrive, MoveWords{.value = 1000, .vp = vp});
+    }
+    write(0);
+    preset(5);
+    ASSERT_EQ(sw1(), sw1::kControllerOk | sw1::kStopped);
+  }
+};
+
+TEST_F(Smd23eRewrite, TheSameConfigurationWrittenAgainInvalidatesThePositionAndErasesTheBlend) {
+  blend_and_preset();
+  dut.write_outputs(config_block(ConfigWords{})); // the very words configure() wrote
+  dut.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_EQ(sw1(), sw1::kControllerOk | sw1::kPositionInvalid | sw1::kStopped); // 0x4408
+  command(msw::kRunAssembled); // nothing in RAM to run: a Command Error [A]
+  run_to(5_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 0);
+  EXPECT_TRUE(bit1(sw1::kCommandError));
+}
+
+// [MODEL] the manual does not say what a configuration written during a move does to it; the
+// model stops the step train at once, the same words again as for different ones.
+TEST_F(Smd23eRewrite, TheSameConfigurationWrittenDuringAMoveStopsItAsAnyOther) {
+  configure();
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000}); // 0.1 s ramp (60 steps), then 1100/s
+  run_to(500_ms);
+  dut.write_outputs(config_block(ConfigWords{}));
+  EXPECT_EQ(dut.step_position(sched.now()), 500);
+  run_to(2_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 500);
+  dut.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+}
+
+TEST_F(Smd23eRewrite, ReadPresentConfigurationWritesNoConfiguration) {
+  blend_and_preset();
+  // L2329: "You cannot write new configuration data to the unit while this bit is set."
+  Words w = config_block(ConfigWords{});
+  w[1] = static_cast<std::uint16_t>(w[1] | cfgw::kReadPresent);
+  dut.write_outputs(w);
+  dut.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_EQ(sw1(), sw1::kControllerOk | sw1::kStopped); // still valid
+  command(msw::kRunAssembled); // the Blend is still there: +2000 (moves_test's timing, 1.63 s)
+  run_to(5_s);
+  EXPECT_EQ(position_word(), 5 + 2000);
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
 }
 
 TEST_F(Smd23eConfig, M17SaveConfigurationReportsSuccessAndStopsAnswering) {

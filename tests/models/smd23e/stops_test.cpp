@@ -1,5 +1,8 @@
 // Stops, limits, E-Stop, stall, driver faults and invalid commands with their error bits
 // (spec §3.4, §3.7, §4, §6.7).
+#include <array>
+#include <utility>
+
 #include "tests/models/smd23e/smd23e_fixture.hpp"
 
 namespace hilrig::models::smd23e::test {
@@ -128,6 +131,109 @@ TEST_F(Smd23eStops, StallStopsTheMoveAndInvalidatesThePosition) {
   EXPECT_EQ(dut.shaft_steps(sched.now()), 500);
   command(msw::kResetErrors);
   EXPECT_FALSE(bit2(sw2::kStall));
+}
+
+// L1255: "the SMD23E/E monitors the encoder inputs for changes while a move is in progress.
+// If the encoder inputs do not change as expected, the move stops" (Stall, SW2 bit 14,
+// L2885; Position Invalid, L2852). Each move is watched on its own: what an earlier stall left
+// between steps and counts is no disagreement of the next move. The encoder here is a pair of
+// quadrature lines the test turns (a rig plant's ENC_A/ENC_B, connect_encoder); 2048
+// steps/turn and 1024 counts/turn: a count every 2 steps; the threshold 16 counts = 32 steps.
+class Smd23eStallWatch : public Smd23eBench {
+protected:
+  Smd23eStallWatch() { dut.connect_encoder(enc_a, enc_b); }
+
+  // One count forward: (A, B) 00 → 10 → 11 → 01 → 00 (signals/quadrature_decoder.hpp).
+  void count_up() {
+    static constexpr std::array<std::pair<Level, Level>, 4> kGray{{{Level::High, Level::Low},
+                                                                   {Level::High, Level::High},
+                                                                   {Level::Low, Level::High},
+                                                                   {Level::Low, Level::Low}}};
+    const auto [a, b] = kGray[phase_++ % 4];
+    if (a != enc_a.level()) enc_a.set(a);
+    if (b != enc_b.level()) enc_b.set(b);
+  }
+  // Plays the move as the rig does: at each step the encoder turns (a count every second
+  // step of this move, up to `turns` steps), then the board compares (Smd23eDut::follow).
+  // Returns the steps the move made.
+  std::int64_t play(std::int64_t turns) {
+    const std::int64_t origin = dut.runs().back().origin;
+    for (std::int64_t k = 1; dut.moving(); ++k) {
+      run_to(when_at(origin + k)); // the last step's time is the move's end
+      if (k <= turns && k % 2 == 0) count_up();
+      dut.watch_encoder();
+    }
+    return dut.step_position(sched.now()) - origin;
+  }
+
+  TestLine enc_a{sched};
+  TestLine enc_b{sched};
+  std::size_t phase_ = 0;
+};
+
+TEST_F(Smd23eStallWatch, AfterAStallResetAndPresetsTheNextMoveIsWatchedOnItsOwn) {
+  configure(ConfigWords{.control = ccw::kEncoderEnable | ccw::kStallEnable});
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  // The load does not turn: 17 counts behind (> 16) at step 34.
+  EXPECT_EQ(play(0), 34);
+  ASSERT_TRUE(bit2(sw2::kStall));
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  command(msw::kResetErrors);
+  preset(0);
+  command(msw::kPresetEncoder, kDrive, MoveWords{.value = 0});
+  EXPECT_FALSE(bit2(sw2::kStall));
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  EXPECT_EQ(play(1000), 1000); // it follows: no stall, though 17 counts are still missing
+  EXPECT_FALSE(bit2(sw2::kStall));
+  EXPECT_TRUE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 1000);
+  EXPECT_EQ(encoder_word(), 500);
+}
+
+TEST_F(Smd23eStallWatch, ASecondRealStallAfterResetIsStillDetected) {
+  configure(ConfigWords{.control = ccw::kEncoderEnable | ccw::kStallEnable});
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  ASSERT_EQ(play(0), 34);
+  command(msw::kResetErrors);
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  // The load follows 100 steps (50 counts), then sticks: 17 counts behind at step 134.
+  EXPECT_EQ(play(100), 134);
+  EXPECT_TRUE(bit2(sw2::kStall));
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+  EXPECT_EQ(position_word(), 134);
+}
+
+TEST_F(Smd23eStops, ABlockedShaftStallsEachMoveAfterTheThreshold) {
+  configure(ConfigWords{.control = ccw::kEncoderEnable | ccw::kStallEnable});
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(500_ms);
+  dut.block_shaft(true); // detected on the 33rd step after the block (see above)
+  run_to(600_ms);
+  ASSERT_EQ(position_word(), 533);
+  dut.block_shaft(false);
+  command(msw::kResetErrors);
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000}); // the shaft turns: no stall
+  run_to(2_s);
+  EXPECT_EQ(position_word(), 1000);
+  EXPECT_FALSE(bit2(sw2::kStall));
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000});
+  run_to(2500_ms);
+  dut.block_shaft(true); // blocked again: 33 steps more, not at once for the old 33
+  run_to(2600_ms);
+  EXPECT_TRUE(bit2(sw2::kStall));
+  EXPECT_EQ(position_word(), 1000 + 500 + 33);
+  command(msw::kResetErrors);
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000}); // still blocked: this move's 33
+  run_to(4_s);
+  EXPECT_TRUE(bit2(sw2::kStall));
+  EXPECT_EQ(position_word(), 33);
 }
 
 TEST_F(Smd23eStops, M15ResetDriverFault) {
