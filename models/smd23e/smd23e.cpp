@@ -375,7 +375,9 @@ void Smd23e::process_config(const Words& previous) {
   // Every valid write in Configuration Mode is "a configuration ... written" (L2846), "new
   // Configuration Data" (L1132), the same words again included: the manual ties both to the
   // write, not to a change or to entering the mode (spec §6.4 [A]).
-  if (run_) {
+  // It ends the move in every state, a Dwell Move's pause and a held move too ([MODEL]): the
+  // assembled move it runs is erased, and a held move would resume under other settings.
+  if (run_ || pause_event_.valid() || held_) {
     immediate_stop();
   }
   cfg_ = applied;

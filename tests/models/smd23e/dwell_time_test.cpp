@@ -91,5 +91,20 @@ TEST_F(Smd23eDwellTime, AZeroDwellInTheCommandStaysZero) {
   expect_complete_at(0.494);
 }
 
+// A configuration written in the first pause (181 .. 481 ms) ends the move there: it erases
+// the assembled move it runs (L1132) and invalidates the position (L2846); no later segment
+// runs and Move Complete never comes.
+TEST_F(Smd23eDwellTime, AConfigurationWrittenInAPauseEndsTheMove) {
+  run_dwell(300);
+  run_to(350_ms);
+  ASSERT_EQ(position_word(), 1000);
+  dut.write_outputs(config_block(ConfigWords{.vs = 1000}));
+  dut.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+  run_to(3_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 1000);
+  EXPECT_TRUE(bit1(sw1::kPositionInvalid));
+  EXPECT_FALSE(bit1(sw1::kMoveComplete));
+}
+
 } // namespace
 } // namespace hilrig::models::smd23e::test
