@@ -2,7 +2,7 @@
 // <figure class="evidence"> holds its data as JSON (rig/results/figure_data.hpp) in a
 // <script type="application/json" class="figure-data">; every chart of it becomes one uPlot.
 // After drawing, each chart's box says which marks landed on its canvas (data-expected,
-// data-limits), so a test reads what the reader sees.
+// data-limits) and where their words went (data-labels), so a test reads what the reader sees.
 (function () {
   'use strict';
   const WIDTH = 640;
@@ -86,9 +86,8 @@
       ctx.fillStyle = b.colour;
       ctx.fillRect(x0, bbox.top, Math.max(x1 - x0, px(1)), bbox.height);
       if (b.cls === 'expected' && x0 >= bbox.left && x1 <= right) seen.expected++;
-      if (chart.labels && b.label) text(ctx, b.label, (x0 + x1) / 2, bbox.top + px(10), '#1a7f37', bbox);
     }
-    // Bands of values (an expected rate), across the plot; their words at their left.
+    // Bands of values (an expected rate), across the plot.
     for (const b of chart.hbands || []) {
       const y0 = Math.max(u.valToPos(b.to, 'y', true), bbox.top);
       const y1 = Math.min(u.valToPos(b.from, 'y', true), bbox.top + bbox.height);
@@ -96,11 +95,6 @@
       ctx.fillStyle = b.colour;
       ctx.fillRect(bbox.left, y0, bbox.width, Math.max(y1 - y0, px(1)));
       if (b.cls === 'expected' && y0 > bbox.top - px(1) && y1 < bbox.top + bbox.height + px(1)) seen.rate++;
-      if (b.label) {
-        ctx.font = px(10) + 'px sans-serif';
-        ctx.fillStyle = '#bf3989';
-        ctx.fillText(b.label, bbox.left + px(4), Math.max(y0 - px(3), bbox.top + px(10)));
-      }
     }
     ctx.restore();
   }
@@ -113,11 +107,115 @@
     ctx.fillText(s, Math.min(Math.max(x - w / 2, bbox.left + px(2)), bbox.left + bbox.width - w - px(2)), y);
   }
 
-  // A mark's words beside its line (to its right, or its left near the plot's right edge).
-  function beside(ctx, s, x, y, colour, bbox) {
-    ctx.font = px(10) + 'px sans-serif';
-    const w = ctx.measureText(s).width;
-    text(ctx, s, x + px(4) + w > bbox.left + bbox.width ? x - px(4) - w / 2 : x + px(4) + w / 2, y, colour, bbox);
+  // The marks' words (limits, expected windows, edges, an expected rate) are drawn in a band
+  // reserved above the plot, never inside it: no trace crosses them. Each line's words sit
+  // beside it (right, else left), the line drawn on up to them; a window's words centred over
+  // it; the words of a band or line across the plot (an expected rate, a trend's limit) at the
+  // plot's left or right end. Words that would collide go on another row, placed greedily
+  // (measured on the canvas): a row's words neither touch each other nor a line drawn up
+  // through the row to words above it.
+  const ROW = 13; // CSS px per row of words (10 px text)
+  const PAD_TOP = 6; // the plot's top padding with no words
+  const bandHeight = rows => (rows ? rows * ROW + 3 : PAD_TOP);
+  const FONT = () => px(10) + 'px sans-serif';
+
+  function labelsOf(chart) {
+    const out = [];
+    if (chart.labels) {
+      for (const b of chart.bands || []) if (b.label) out.push({s: b.label, colour: '#1a7f37', from: b.from, to: b.to});
+      for (const l of chart.vlines || []) if (l.label) out.push({s: l.label, colour: l.colour, at: l.at, dashed: l.dashed});
+      for (const l of chart.hlines || []) if (l.label) out.push({s: l.label, colour: l.colour, end: 'right'});
+    }
+    for (const b of chart.hbands || []) if (b.label) out.push({s: b.label, colour: '#bf3989', end: 'left'});
+    return out;
+  }
+
+  // Where each of the words goes (canvas px): {l, a (left), w, row, lead (the x of its line)}.
+  function layOut(u, labels) {
+    const {ctx, bbox} = u;
+    const left = bbox.left + px(2), right = bbox.left + bbox.width - px(2), gap = px(8);
+    ctx.save();
+    ctx.font = FONT();
+    const wants = [];
+    for (const l of labels) {
+      const w = ctx.measureText(l.s).width;
+      const clamp = a => Math.max(Math.min(a, right - w), left);
+      let options, lead = null;
+      if (l.at != null) {
+        const x = u.valToPos(l.at, 'x', true);
+        if (x < bbox.left - px(1) || x > bbox.left + bbox.width + px(1)) continue;
+        lead = x;
+        options = [x + px(4), x - px(4) - w].filter(a => a >= left && a + w <= right);
+        if (!options.length) options = [clamp(x + px(4))];
+      } else if (l.from != null) {
+        const x0 = Math.max(u.valToPos(l.from, 'x', true), bbox.left);
+        const x1 = Math.min(u.valToPos(l.to, 'x', true), bbox.left + bbox.width);
+        if (x1 < x0) continue;
+        options = [clamp((x0 + x1) / 2 - w / 2)];
+      } else {
+        options = [l.end === 'left' ? left : clamp(right - w)];
+      }
+      wants.push({l, w, options, lead});
+    }
+    // Lines' words first, from the right: words beside a line (to its right) then never cover
+    // the line of words placed after them; then the rest, clear of every line drawn up.
+    wants.sort((p, q) => (p.lead == null) - (q.lead == null) || (q.lead ?? 0) - (p.lead ?? 0) || p.options[0] - q.options[0]);
+    const rows = []; // per row: the spans [a, b] of its words
+    const leads = []; // {x, row}: a line drawn up to its words in that row
+    const overlaps = (a, b, c, d) => a < d + gap && c < b + gap;
+    const free = (r, a, b, lead) =>
+      !(rows[r] || []).some(([c, d]) => overlaps(a, b, c, d)) &&
+      !leads.some(t => t.row >= r && t.x > a - gap / 2 && t.x < b + gap / 2) &&
+      (lead == null || !rows.slice(0, r).some(spans => spans.some(([c, d]) => lead > c - gap / 2 && lead < d + gap / 2)));
+    const placed = [];
+    for (const want of wants) {
+      let r = 0, a;
+      for (; r < rows.length; r++) {
+        a = want.options.find(o => free(r, o, o + want.w, want.lead));
+        if (a !== undefined) break;
+      }
+      // A new row on top always takes the words; its line, if words below would cross it, not.
+      if (a === undefined) {
+        a = want.options[0];
+        if (!free(r, a, a + want.w, want.lead)) want.lead = null;
+      }
+      (rows[r] = rows[r] || []).push([a, a + want.w]);
+      if (want.lead != null) leads.push({x: want.lead, row: r});
+      placed.push({...want, a, row: r});
+    }
+    ctx.restore();
+    return {placed, rows: rows.length};
+  }
+
+  // The words laid out, drawn in the band above the plot (a line's drawn on up to them); what
+  // was drawn where (CSS px on the canvas) returned for the page's tests.
+  function drawLabels(u, lay) {
+    const {ctx, bbox} = u;
+    const drawn = [];
+    ctx.save();
+    ctx.font = FONT();
+    ctx.textAlign = 'left';
+    ctx.textBaseline = 'alphabetic';
+    for (const p of lay.placed) {
+      const base = bbox.top - px(4) - px(ROW) * p.row;
+      const top = base - px(9);
+      const entry = {text: p.l.s, x: p.a / uPlot.pxRatio, y: top / uPlot.pxRatio, w: p.w / uPlot.pxRatio, h: px(12) / uPlot.pxRatio};
+      if (p.lead != null) {
+        ctx.strokeStyle = p.l.colour;
+        ctx.lineWidth = px(1.5);
+        ctx.setLineDash(p.l.dashed ? [px(5), px(4)] : []);
+        ctx.beginPath();
+        ctx.moveTo(p.lead, bbox.top);
+        ctx.lineTo(p.lead, top);
+        ctx.stroke();
+        entry.leader = [p.lead / uPlot.pxRatio, top / uPlot.pxRatio, bbox.top / uPlot.pxRatio];
+      }
+      ctx.fillStyle = p.l.colour;
+      ctx.fillText(p.l.s, p.a, base);
+      drawn.push(entry);
+    }
+    ctx.restore();
+    return drawn;
   }
 
   // The marks over the series: instants and limits, their words, the probes' numbers.
@@ -126,7 +224,6 @@
     const inside = (v, lo, hi) => v >= lo - px(1) && v <= hi + px(1);
     ctx.save();
     ctx.lineWidth = px(1.5);
-    let row = 0;
     for (const l of chart.vlines || []) {
       const x = u.valToPos(l.at, 'x', true);
       if (!inside(x, bbox.left, bbox.left + bbox.width)) continue;
@@ -137,7 +234,6 @@
       ctx.moveTo(x, bbox.top);
       ctx.lineTo(x, bbox.top + bbox.height);
       ctx.stroke();
-      if (chart.labels && l.label) beside(ctx, l.label, x, bbox.top + px(22 + 11 * row++), l.colour, bbox);
     }
     for (const l of chart.hlines || []) {
       const y = u.valToPos(l.at, l.scale || 'y', true);
@@ -149,7 +245,6 @@
       ctx.moveTo(bbox.left, y);
       ctx.lineTo(bbox.left + bbox.width, y);
       ctx.stroke();
-      if (chart.labels && l.label) text(ctx, l.label, bbox.left + bbox.width, y - px(3), l.colour, bbox);
     }
     // An expected series (a move's profile over its step rate): its points inside the plot.
     chart.series.forEach((s, i) => {
@@ -193,18 +288,32 @@
       scales.y2 = {range: range(chart.y2)};
       axes.push(yAxis(chart, chart.y2, 'y2', 1));
     }
+    // The band for the marks' words: as many rows as their layout takes once the plot's x
+    // positions are known (only the plot's top padding and height change, not its x axis).
+    const labels = labelsOf(chart);
+    const height = chart.height + (bottom ? 60 : 0);
+    let rows = 0, lay = {placed: [], rows: 0};
     const opts = {
       width: WIDTH,
-      height: chart.height + (bottom ? 60 : 0),
+      height,
       legend: {show: chart.series.length > 1 && !chart.lane, live: false},
-      padding: [6, 24, 0, 0], // fixed: stacked lanes keep one time axis
+      padding: [() => bandHeight(rows), 24, 0, 0], // left, right fixed: stacked lanes keep one time axis
       cursor: {show: true, drag: {x: false, y: false}},
       scales, axes,
       series: [{}].concat(chart.series.map(series)),
       hooks: {
-        drawClear: [u => { seen.expected = 0; seen.limits = 0; seen.rate = 0; seen.profile = 0; drawBands(u, chart, seen); }],
+        drawClear: [u => {
+          seen.expected = 0; seen.limits = 0; seen.rate = 0; seen.profile = 0;
+          lay = layOut(u, labels);
+          if (lay.rows !== rows) {
+            rows = lay.rows;
+            queueMicrotask(() => u.setSize({width: WIDTH, height: height - PAD_TOP + bandHeight(rows)}));
+          }
+          drawBands(u, chart, seen);
+        }],
         draw: [u => {
           drawMarks(u, chart, seen);
+          box.dataset.labels = JSON.stringify(drawLabels(u, lay));
           box.dataset.expected = seen.expected;
           box.dataset.limits = seen.limits;
           box.dataset.rateExpected = seen.rate;

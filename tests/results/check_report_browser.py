@@ -8,8 +8,10 @@ a size (a check with no limit and no window in results.json: a note saying so). 
 diagram has a lane per captured trace lane, its expected window and limit drawn on the canvas
 (figures.js records what landed inside the plot). The page must throw no JavaScript error;
 the sections must be as many as results.json's checks; a failing campaign's summary must link
-each failed check. The trend page of two nights is checked the same way. A screenshot of each
-report is written beside it (report.png).
+each failed check. The marks' words (limits, windows, edges) must be legible: none drawn on
+another, on a plot's traces or cut off (also in a crowded diagram: the SMD23E's trapezoid with
+the wrong acceleration). The trend page of two nights is checked the same way. A screenshot of
+each report is written beside it (report.png).
 
 Usage: check_report_browser.py HILRIG SOURCE_DIR SCRATCH_DIR CHROMIUM
 """
@@ -60,10 +62,50 @@ INSPECT = """JSON.stringify((() => {
     figures(s).filter(f => f.classList.contains('note')).length,
     figures(s).filter(f => f.dataset.kind === 'timing').map(timing),
     figures(s).filter(f => f.dataset.kind !== 'timing' && !f.classList.contains('note')).map(others)]);
+  // The marks' words (figures.js records each chart's in data-labels: its box and the line
+  // drawn up to it, CSS px on the canvas), on the page: in each figure no two boxes overlap, no
+  // box lies on a plot (where the traces are) or a lane's title, and no line crosses a box.
+  const labels = f => {
+    const boxes = [], leaders = [], keepOut = [], clashes = [];
+    for (const d of f.querySelectorAll('div.chart')) {
+      const canvas = d.querySelector('.uplot canvas');
+      if (!canvas || !laidOut(canvas)) continue;
+      const c = canvas.getBoundingClientRect();
+      const o = d.querySelector('.u-over').getBoundingClientRect();
+      const where = d.dataset.lane || 'the plot';
+      keepOut.push([o.left, o.top, o.right, o.bottom, where + "'s plot"]);
+      const title = d.querySelector('.lane-title');
+      if (title) {
+        const t = title.getBoundingClientRect();
+        keepOut.push([t.left, t.top, t.right, t.bottom, where + "'s title"]);
+      }
+      for (const l of JSON.parse(d.dataset.labels || '[]')) {
+        const b = [c.left + l.x, c.top + l.y, c.left + l.x + l.w, c.top + l.y + l.h, '"' + l.text + '"'];
+        if (b[0] < c.left - 0.5 || b[2] > c.right + 0.5 || b[1] < c.top - 0.5 || b[3] > c.bottom + 0.5)
+          clashes.push(b[4] + ' is cut off by the edge of ' + where + "'s canvas");
+        boxes.push(b);
+        if (l.leader) leaders.push([c.left + l.leader[0], c.top + l.leader[1], c.top + l.leader[2], b[4]]);
+      }
+    }
+    const hit = (a, b) => a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+    boxes.forEach((a, i) => {
+      boxes.slice(i + 1).forEach(b => { if (hit(a, b)) clashes.push(a[4] + ' overlaps ' + b[4]); });
+      keepOut.forEach(k => { if (hit(a, k)) clashes.push(a[4] + ' lies on ' + k[4]); });
+      leaders.forEach(([x, y0, y1, of]) => {
+        if (of !== a[4] && x > a[0] && x < a[2] && y0 < a[3] && a[1] < y1) clashes.push(a[4] + ' crossed by the line of ' + of);
+      });
+    });
+    return {count: boxes.length, clashes};
+  };
+  const figureLabels = [...document.querySelectorAll('figure.evidence')].map(f => {
+    const found = labels(f);
+    const section = f.closest('section.check');
+    return {check: section ? section.id : f.dataset.kind, count: found.count, clashes: found.clashes};
+  });
   const links = [...document.querySelectorAll('ul.failures a')].map(a => a.getAttribute('href'));
   const dangling = links.filter(h => !document.getElementById(h.slice(1)));
   const trend = [...document.querySelectorAll('figure.evidence[data-kind=trend]')].map(others);
-  return {sections, links, dangling, trend, errors: window.__errors,
+  return {sections, links, dangling, trend, errors: window.__errors, labels: figureLabels,
           undrawn: [...document.querySelectorAll('figure.evidence[data-kind]')].filter(f => !f.dataset.drawn).length};
 })())"""
 
@@ -136,6 +178,12 @@ def figure_problems(name, check, others):
         if on_canvas != limits:
             out.append(f"{name}: {check}: {kind} figure draws {on_canvas} of its {limits} limits on the canvas")
     return out
+
+
+def label_problems(name, figures):
+    """The marks' words of each figure legible: none on another, on a plot or a lane's title, cut
+    off, or crossed by a mark's line drawn up to other words."""
+    return [f"{name}: {f['check']}: {clash}" for f in figures for clash in f["clashes"]]
 
 
 def child_fds(read_end, write_end):
@@ -226,6 +274,7 @@ def trend_problems(hilrig, browser, scratch, reports):
     found = browser.inspect(page, scratch / "trend.png")
     measurements = sum(len(c["measurements"]) for run in json.loads(night.read_text())["runs"] for c in run["checks"])
     out = figure_problems("trend", "trend", found["trend"])
+    out += label_problems("trend", found["labels"])
     out += [f"trend: JavaScript error: {e}" for e in found["errors"]]
     if len(found["trend"]) != measurements:
         out.append(f"trend: {len(found['trend'])} figures for {measurements} measurements")
@@ -254,20 +303,34 @@ def main():
         problems.append("the failing campaign wrote no report")
     else:
         reports.append(scratch / "failing" / "report.html")
+    # Crowded marks (issue: labels drawn over each other): the SMD23E with the wrong acceleration
+    # and no faults injected, so its trapezoid's narrow expected window (two limit lines close
+    # together), its words and the far edge all fall in one top lane.
+    crowded = scratch / "crowded.toml"
+    faults = pathlib.Path(src, "campaigns/smd23e/smd23e_faults.toml").read_text()
+    crowded.write_text(faults.split("\n[[fault]]")[0].replace(
+        'model = "smd23e"', 'model = "smd23e"\nvariant = "wrong-acceleration"', 1))
+    subprocess.run([hilrig, "run", str(crowded), "--out", str(scratch / "crowded")], capture_output=True)
+    if not (scratch / "crowded" / "report.html").exists():
+        problems.append("the crowded campaign wrote no report")
+    else:
+        reports.append(scratch / "crowded" / "report.html")
 
     sources = {p.stem: p for p in pathlib.Path(src, "campaigns").rglob("*.toml")}
+    sources.update(failing=failing, crowded=crowded)
     browser = Browser(chromium, scratch / "chromium-profile")
     judged_total = 0
     drawn_traces = 0
     analog_drawn = 0  # resolver stator lanes drawn as lines, over every report
     profiles_drawn = 0  # shaft_move diagrams with their move's expected profile drawn
+    labels_checked = 0  # the marks' words laid out, over every report
     try:
         for report in reports:
             name = report.parent.name
             found = browser.inspect(report, report.parent / "report.png")
             results = json.loads((report.parent / "results.json").read_text())
             checks = [c for run in results["runs"] for c in run["checks"]]
-            toml = sources.get(name, failing if name == "failing" else None)
+            toml = sources.get(name)
             encoder = toml is not None and 'rig = "enc.A"' in toml.read_text()
             resolver = toml is not None and "[resolver]" in toml.read_text()
             if len(found["sections"]) != len(checks):
@@ -290,6 +353,8 @@ def main():
                     if figures == 0 and (drawable or notes == 0):
                         problems.append(f"{name}: {c['check']} ({word}) has no figure drawn by uPlot")
             problems += [f"{name}: JavaScript error: {e}" for e in found["errors"]]
+            problems += label_problems(name, found["labels"])
+            labels_checked += sum(f["count"] for f in found["labels"])
             if found["undrawn"]:
                 problems.append(f"{name}: {found['undrawn']} figures not drawn")
             bad = sum(1 for c in checks if c["outcome"] in ("fail", "error"))
@@ -308,14 +373,17 @@ def main():
         problems.append("no timing diagram with the run's trace in any report")
     if analog_drawn == 0:
         problems.append("no resolver stator drawn as an analog lane in any report")
+    if labels_checked == 0:
+        problems.append("no mark's words recorded (data-labels) in any report")
     if profiles_drawn == 0:
         problems.append("no shaft_move diagram with its move's expected profile in any report")
     for p in problems:
         print("FAIL:", p)
     if not problems:
-        print(f"{len(reports)} reports ({shipped} shipped, 1 failing), {judged_total} judged checks, "
+        print(f"{len(reports)} reports ({shipped} shipped, 1 failing, 1 crowded), {judged_total} judged checks, "
               f"each with a figure; {drawn_traces} timing diagrams with stimulus, count and output, "
-              f"{analog_drawn} analog stator lanes, {profiles_drawn} step rates with their expected profile")
+              f"{analog_drawn} analog stator lanes, {profiles_drawn} step rates with their expected profile, "
+              f"{labels_checked} marks' words apart from each other and off the traces")
     return 1 if problems else 0
 
 
