@@ -54,22 +54,40 @@ std::optional<CheckTimeProblem> before_first_read(const Scenario& s, const nlohm
                                       name, static_cast<double>(first->count()) / 1e6, at)};
 }
 
-// A shaft_move counts the steps after from_ms and up to to_ms (or campaign.end), in whole ns:
-// a window with no instant in it can hold no step, and its limits would judge nothing.
-std::optional<CheckTimeProblem> empty_step_window(const Scenario& s, const checks::CheckKind& kind,
+// A window (from, to] of whole ns that a check scans for its stimulus: a shaft_move's steps
+// after from_ms and up to to_ms, a throughput scan's setpoint crossings after from_us and up
+// to to_us. From 0 to campaign.end by default.
+struct ScanWindow {
+  const char* kind;
+  const char* from;
+  const char* to;
+  double ns_per_unit;
+  const char* what; // what the window holds
+};
+constexpr ScanWindow kScanWindows[] = {{"shaft_move", "from_ms", "to_ms", 1e6, "steps"},
+                                       {"throughput", "from_us", "to_us", 1e3, "setpoint crossings"}};
+
+// A window with no instant in it holds no stimulus, and its limits would judge nothing.
+std::optional<CheckTimeProblem> empty_scan_window(const Scenario& s, const checks::CheckKind& kind,
                                                   const nlohmann::json& table) {
-  if (kind.name != "shaft_move" || !table.contains("from_ms") || !table["from_ms"].is_number())
-    return std::nullopt;
-  const bool to_given = table.contains("to_ms") && table["to_ms"].is_number();
-  const double from = ns_of(table["from_ms"], 1e6);
-  const double to = to_given ? ns_of(table["to_ms"], 1e6) : static_cast<double>(s.end.count());
-  if (from < to) return std::nullopt;
-  return CheckTimeProblem{
-      to_given ? "to_ms" : "from_ms",
-      fmt::format(
-          "a window with time in it: steps after from_ms ({} ms) and up to {} ({} ms) count, in whole "
-          "ns, and this one holds none",
-          table["from_ms"].get<double>(), to_given ? "to_ms" : "campaign.end", to / 1e6)};
+  for (const ScanWindow& w : kScanWindows) {
+    if (kind.name != w.kind) continue;
+    const bool from_given = table.contains(w.from) && table[w.from].is_number();
+    const bool to_given = table.contains(w.to) && table[w.to].is_number();
+    if (!from_given && !to_given) continue;
+    const double from = from_given ? ns_of(table[w.from], w.ns_per_unit) : 0.0;
+    const double to = to_given ? ns_of(table[w.to], w.ns_per_unit) : static_cast<double>(s.end.count());
+    if (from < to) continue;
+    const char* unit = unit_of(w.ns_per_unit);
+    return CheckTimeProblem{
+        to_given ? w.to : w.from,
+        fmt::format("a window with time in it: {} after {} ({} {}) and up to {} ({} {}) count, in whole "
+                    "ns, and this one holds none",
+                    w.what, from_given ? w.from : "the run's start",
+                    from_given ? table[w.from].get<double>() : 0.0, unit, to_given ? w.to : "campaign.end",
+                    to / w.ns_per_unit, unit)};
+  }
+  return std::nullopt;
 }
 
 } // namespace
@@ -80,7 +98,7 @@ std::optional<CheckTimeProblem> check_time_problem(const Scenario& s, const chec
     if (p.instant_ns == 0.0 || !table.contains(p.name)) continue;
     if (auto problem = after_end(s, p, table[p.name])) return problem;
   }
-  if (auto problem = empty_step_window(s, kind, table)) return problem;
+  if (auto problem = empty_scan_window(s, kind, table)) return problem;
   return before_first_read(s, table);
 }
 

@@ -24,6 +24,7 @@ struct Common {
   std::size_t min_edges;
   std::optional<Nanos> from{}; // the edges judged: those in [from, to]
   std::optional<Nanos> to{};
+  std::string target{}; // where the edges are due, for "the shaft never reached <target>"
 };
 
 // " from 100000000 ns to 1300000000 ns": the time span judged, where the check sets one.
@@ -37,7 +38,7 @@ std::string span_words(const Common& c) {
 // `expected(edge, speed)` gives the expected position and a sentence saying how.
 template <class Expected>
 CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position, const PositionFn& speed,
-                        const Common& c, const char* kind, Expected expected) {
+                        const Common& c, const ReachedFn& reached, const char* kind, Expected expected) {
   CheckResult r;
   r.kind = kind;
   std::size_t n = 0;
@@ -77,6 +78,24 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
     r.measurements.push_back(std::move(m));
     ++n;
   }
+  if (n < c.min_edges && reached) {
+    if (const std::size_t times = reached(); times < c.min_edges) {
+      const std::string span = c.from && c.to ? span_words(c)
+                               : c.to         ? fmt::format(" up to {} ns", c.to->count())
+                                              : span_words(c);
+      Measurement m = error(
+          c.name + ".edges",
+          times == 0 ? fmt::format("nothing judged: the shaft never reached {}{} (the stimulus never came)",
+                                   c.target, span)
+                     : fmt::format("nothing judged against min_edges: the shaft reached {} {} time(s){}, "
+                                   "fewer than min_edges ({}); {} edges: {}",
+                                   c.target, times, span, c.min_edges, level_name(c.level), n));
+      m.value = static_cast<double>(n);
+      m.lower = static_cast<double>(c.min_edges);
+      r.measurements.insert(r.measurements.begin(), std::move(m));
+      return r;
+    }
+  }
   if (n == 0 && c.min_edges == 0) {
     r.measurements.push_back(
         error(c.name + ".edges",
@@ -95,9 +114,12 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
 } // namespace
 
 CheckResult check_advance(std::span<const Edge> output, const PositionFn& position, const PositionFn& speed,
-                          const AdvanceSpec& spec) {
-  const Common c{spec.name, spec.level, spec.tolerance, spec.modulus, spec.min_edges};
-  return judge_edges(output, position, speed, c, "advance_counts", [&](double s) {
+                          const AdvanceSpec& spec, const ReachedFn& reached) {
+  const Common c{spec.name,      spec.level,
+                 spec.tolerance, spec.modulus,
+                 spec.min_edges, std::nullopt,
+                 std::nullopt,   fmt::format("setpoint {} less its advance", spec.setpoint)};
+  return judge_edges(output, position, speed, c, reached, "advance_counts", [&](double s) {
     const double adv =
         spec.advance_counts ? *spec.advance_counts : s * static_cast<double>(spec.advance.count()) / 1e9;
     return std::pair{spec.setpoint - adv, fmt::format("{} - {:.3f} (speed {:.3f} counts/s) = {:.3f}",
@@ -106,9 +128,11 @@ CheckResult check_advance(std::span<const Edge> output, const PositionFn& positi
 }
 
 CheckResult check_edge_at_position(std::span<const Edge> output, const PositionFn& position,
-                                   const PositionFn& speed, const EdgeAtPositionSpec& spec) {
-  const Common c{spec.name, spec.level, spec.tolerance, spec.modulus, spec.min_edges, spec.from, spec.to};
-  return judge_edges(output, position, speed, c, "edge_at_position", [&](double) {
+                                   const PositionFn& speed, const EdgeAtPositionSpec& spec,
+                                   const ReachedFn& reached) {
+  const Common c{spec.name,      spec.level, spec.tolerance, spec.modulus,
+                 spec.min_edges, spec.from,  spec.to,        fmt::format("position {}", spec.position)};
+  return judge_edges(output, position, speed, c, reached, "edge_at_position", [&](double) {
     return std::pair{spec.position, fmt::format("{}", spec.position)};
   });
 }

@@ -3,6 +3,7 @@
 // generic "edge at position" check.
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -11,6 +12,12 @@
 #include "rig/checks/support.hpp"
 
 namespace hilrig::checks {
+
+// How many times the stimulus brought the shaft to the position an edge is expected at, in the
+// span judged (a crossing scan of the motion). Asked only when fewer edges than min_edges were
+// found: with fewer of those too, the shortfall is the stimulus's (an error, not the board's
+// fail). Empty: not known, every shortfall is the board's.
+using ReachedFn = std::function<std::size_t()>;
 
 struct AdvanceSpec {
   std::string name = "advance";
@@ -27,9 +34,10 @@ struct AdvanceSpec {
 // expected ± tolerance, where expected = setpoint - speed(edge.time) * advance (speed in
 // counts/s, signed, so reverse motion advances the other way). The window is the time span in
 // which the position lies inside the tolerance (linear at the edge's speed), `at` the edge.
-// Plus "<name>.edges" (count, lower min_edges).
+// Plus "<name>.edges" (count, lower min_edges; an error when `reached` is fewer too).
 [[nodiscard]] CheckResult check_advance(std::span<const Edge> output, const PositionFn& position,
-                                        const PositionFn& speed, const AdvanceSpec& spec);
+                                        const PositionFn& speed, const AdvanceSpec& spec,
+                                        const ReachedFn& reached = {});
 
 struct EdgeAtPositionSpec {
   std::string name = "edge";
@@ -43,8 +51,10 @@ struct EdgeAtPositionSpec {
 };
 
 // Every edge of spec.level in [from, to] fired within position ± tolerance. `speed` may be
-// empty; it only gives the expected window in time for the report.
+// empty; it only gives the expected window in time for the report. `reached`: as for
+// check_advance, the times the shaft reached spec.position in [from, to].
 [[nodiscard]] CheckResult check_edge_at_position(std::span<const Edge> output, const PositionFn& position,
-                                                 const PositionFn& speed, const EdgeAtPositionSpec& spec);
+                                                 const PositionFn& speed, const EdgeAtPositionSpec& spec,
+                                                 const ReachedFn& reached = {});
 
 } // namespace hilrig::checks

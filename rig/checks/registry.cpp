@@ -16,6 +16,10 @@ namespace {
 
 using nlohmann::json;
 
+// A number of a unit (ns_per_unit ns) in whole ns, rounded half away from zero: the one
+// rounding of every check time (0.0005 us is 1 ns, 0.0004 us is 0).
+double rounded_ns(double v, double ns_per_unit) { return std::round(v * ns_per_unit); }
+
 // A check's table after validation: every key known, of its declared type, finite and in
 // range. Read only while the parser builds the typed parameters.
 class Table {
@@ -61,7 +65,7 @@ public:
 
   // A time in whole ns: the unit's value rounded once, so 20.3 us is exactly 20'300 ns.
   static Nanos time(const char* k, double v, double ns_per_unit) {
-    const double ns = std::round(v * ns_per_unit);
+    const double ns = rounded_ns(v, ns_per_unit);
     if (!(std::abs(ns) < 9.2e18)) throw ParamError(k, "a time that fits in 64-bit nanoseconds (< 292 years)");
     return Nanos{static_cast<std::int64_t>(ns)};
   }
@@ -85,6 +89,13 @@ ParamSpec instant(ParamSpec p, double ns_per_unit) {
 }
 constexpr double kUs = 1e3;
 constexpr double kMs = 1e6;
+// A duration that must last (a timeout, a step, a probe, a tick), in a unit of ns_per_unit
+// nanoseconds: at least 1 ns once rounded (ParamSpec::duration_ns), checked with the ranges.
+ParamSpec duration(ParamSpec p, double ns_per_unit) {
+  p.range = above(0.0);
+  p.duration_ns = ns_per_unit;
+  return p;
+}
 constexpr auto Num = ParamType::Number;
 constexpr auto Int = ParamType::Integer;
 constexpr auto Str = ParamType::String;
@@ -110,10 +121,22 @@ WordSpec word_spec(std::string_view name, const Table& t) {
 
 // scan_us and phase_bins: the board's scan period a check reports its phase coverage against
 // (throughput, pulse_width, advance_counts: one mechanism, rig/checks/phase_coverage.hpp).
+// A bin is at least 1 ns wide: times are whole ns, and a finer bin could never be hit.
 std::optional<PhaseScan> phase_scan(const Table& t) {
   if (t.has("phase_bins") && !t.has("scan_us")) throw ParamError("phase_bins", "only with scan_us");
   if (!t.has("scan_us")) return std::nullopt;
-  return PhaseScan{t.us("scan_us"), t.count("phase_bins", 10)};
+  const PhaseScan s{t.us("scan_us"), t.count("phase_bins", 10)};
+  if (static_cast<std::int64_t>(s.bins) > s.scan.count()) {
+    const auto most = std::min<std::int64_t>(s.scan.count(), 1000);
+    if (t.has("phase_bins"))
+      throw ParamError("phase_bins", fmt::format("1 .. {}: at most one bin per ns of scan_us ({} ns)", most,
+                                                 s.scan.count()));
+    throw ParamError("scan_us",
+                     fmt::format("at least 0.01 us for the default 10 phase_bins (at most one bin per ns); "
+                                 "or phase_bins 1 .. {}",
+                                 most));
+  }
+  return s;
 }
 
 // A full-scale count: 0 (none) or at least one count. Below one, setpoint + k * modulus puts
@@ -141,9 +164,22 @@ CheckParams throughput(std::string_view name, const Table& t) {
   if (p.spec.early && p.spec.min_limit)
     throw ParamError("early_us", "not with min_limit_us (min is judged against -early_us)");
   p.spec.timeout = t.us("timeout_us", Nanos::max());
+  // An edge after the timeout is missing and one before min_limit_us fails: no board passes.
+  if (p.spec.min_limit && p.spec.timeout < *p.spec.min_limit)
+    throw ParamError("timeout_us",
+                     fmt::format("a timeout >= min_limit_us ({}): an edge before min_limit_us fails and one "
+                                 "after timeout_us is missing, so no board could pass",
+                                 t.num("min_limit_us")));
   p.spec.min_count = t.count("min_count", 1);
   if (t.has("crossings_us")) {
+    // The scan's keys refine setpoint: with given crossings they would be ignored.
+    for (const char* key : {"direction", "step_us", "modulus", "from_us", "to_us"})
+      if (t.has(key)) throw ParamError(key, "only with setpoint (crossings_us are the stimulus as given)");
     p.crossings = t.us_list("crossings_us");
+    // Fewer crossings than min_count: no board could pass.
+    const auto& given = std::get<std::vector<Nanos>>(p.crossings);
+    if (p.spec.min_count > given.size())
+      throw ParamError("min_count", fmt::format("1 .. {} (the number of crossings_us)", given.size()));
   } else {
     CrossingScan s;
     s.setpoint = t.num("setpoint");
@@ -155,7 +191,6 @@ CheckParams throughput(std::string_view name, const Table& t) {
     s.to = t.opt_us("to_us");
     ordered(t, "from_us", "to_us");
     s.step = t.us("step_us", Nanos{100'000});
-    if (s.step <= Nanos{0}) throw ParamError("step_us", "a step of at least 1 ns (0.001 us)");
     s.modulus = modulus_of(t);
     p.crossings = s;
   }
@@ -170,8 +205,6 @@ CheckParams debounce(std::string_view name, const Table& t) {
                          t.str("input"),    t.str("output"), t.level("level", Level::High)};
   if (p.plan.narrow >= p.plan.wide)
     throw ParamError("wide_us", fmt::format("a width > narrow_us ({})", t.num("narrow_us")));
-  if (p.plan.resolution <= Nanos{0})
-    throw ParamError("resolution_us", "a resolution of at least 1 ns (0.001 us)");
   // The limit probe a hair short of the narrowest allowed boundary must be a pulse.
   if (p.spec.shortest_rejected() <= Nanos{0})
     throw ParamError("tolerance_us",
@@ -279,14 +312,12 @@ CheckParams word_bits(std::string_view name, const Table& t) {
   return WordBitsParams{word_spec(name, t), mask, value};
 }
 
-CheckParams frames(std::string_view name, const Table& t) {
-  FrameDecodesParams p;
-  p.source = t.str("source");
-  p.decoder = t.str("decoder");
-  p.spec.name = name;
-  if (t.has("id")) p.spec.id = static_cast<std::uint32_t>(t.integer("id", 0));
-  p.spec.min_frames = t.count("min_frames", 1);
-  return p;
+// No backend fills Capture::frames and ::decoders yet (docs/campaigns.md "Checks"): the only
+// CAN frames a run records are the rig's own resolver stream, and nothing splits the serial
+// bytes into messages. A check that could only err is refused, after its keys are checked.
+CheckParams frames(std::string_view /*name*/, const Table& /*t*/) {
+  throw ParamError("", "a check kind a backend can judge: frame_decodes has no frame source on any "
+                       "backend yet (no CAN frame or serial message of the board is captured)");
 }
 
 CheckParams shaft(std::string_view name, const Table& t) {
@@ -337,7 +368,6 @@ ParamSpec bins_param() {
 
 std::vector<CheckKind> make_kinds() {
   const ParamRange time = at_least(0.0);   // a time or a limit on one
-  const ParamRange width = above(0.0);     // a pulse width, a step, a timeout
   const ParamRange counts = at_least(1.0); // fewest items judged: at least one
   std::vector<CheckKind> k;
   k.push_back(kind(
@@ -346,11 +376,13 @@ std::vector<CheckKind> make_kinds() {
        P("limit_us", Num, true, "upper limit on the max latency (inclusive)", time),
        P("p99_limit_us", Num, false, "upper limit on p99 (default limit_us)", time),
        P("min_limit_us", Num, false, "lower limit on the min latency (inclusive; default none)", time),
-       P("timeout_us", Num, false, "longest wait for an edge, inclusive (default: until the next crossing)",
-         width),
-       P("quiet_us", Num, false,
-         "only an edge after the line was quiet this long counts (a burst's first edge; default any edge)",
-         width),
+       duration(P("timeout_us", Num, false,
+                  "longest wait for an edge, inclusive (default: until the next crossing)"),
+                kUs),
+       duration(P("quiet_us", Num, false,
+                  "only an edge after the line was quiet this long counts (a burst's first edge; default "
+                  "any edge)"),
+                kUs),
        P("early_us", Num, false, "an edge up to this long before the crossing counts; min >= -early_us",
          time),
        P("min_count", Int, false, "fewest latencies (1)", counts),
@@ -358,7 +390,8 @@ std::vector<CheckKind> make_kinds() {
                kUs),
        P("setpoint", Num, false, "counts: crossings derived from the position function"),
        P("direction", Str, false, "rising, falling or both (both)"),
-       P("step_us", Num, false, "scan step for crossings (100); shorter than the shortest dwell", width),
+       duration(P("step_us", Num, false, "scan step for crossings (100); shorter than the shortest dwell"),
+                kUs),
        P("modulus", Num, false,
          "full-scale count: setpoint + k * modulus are crossings too (0: none; else at least 1)", time),
        instant(P("from_us", Num, false, "scan start", time), kUs),
@@ -366,11 +399,11 @@ std::vector<CheckKind> make_kinds() {
       throughput));
   k.push_back(kind(
       "debounce", "pulses shorter than the filter rejected, longer accepted; boundary by bisection",
-      {P("filter_us", Num, true, "the spec's filter time", width),
+      {duration(P("filter_us", Num, true, "the spec's filter time"), kUs),
        P("tolerance_us", Num, true, "allowed boundary error, either side (inclusive)", time),
-       P("narrow_us", Num, true, "narrowest probe (must be rejected)", width),
-       P("wide_us", Num, true, "widest probe (must be accepted)", width),
-       P("resolution_us", Num, false, "bisection stops at this bracket (1)", width),
+       duration(P("narrow_us", Num, true, "narrowest probe (must be rejected)"), kUs),
+       duration(P("wide_us", Num, true, "widest probe (must be accepted)"), kUs),
+       duration(P("resolution_us", Num, false, "bisection stops at this bracket (1)"), kUs),
        P("input", Str, true, "the line the pulse is driven on"),
        P("output", Str, true, "the line whose edge means accepted"),
        P("level", Lvl, false, "the pulse's active level (high)"),
@@ -389,21 +422,22 @@ std::vector<CheckKind> make_kinds() {
        P("modulus", Num, false, "full-scale count for wrapping positions (0: none; else at least 1)", time),
        P("min_edges", Int, false, "fewest edges (1)", counts), phase_param("expected edges"), bins_param()},
       advance));
-  k.push_back(kind(
-      "brake_stop_time", "brake applied to standstill against the limit; reported time and fault output",
-      {P("limit_ms", Num, true, "stop time limit (inclusive)", time),
-       P("brake_line", Str, false, "the brake input line; or applied_ms"),
-       P("applied_level", Lvl, false, "level of brake_line that applies the brake (low)"),
-       instant(P("applied_ms", Num, false, "when the brake was applied", time), kMs),
-       P("reported", Str, false, "observation holding the board's stop time, ms"),
-       P("report_tolerance_ms", Num, false, "|reported - measured| allowed (2)", time),
-       P("report_tick_ms", Num, false,
-         "the board's stop timer tick: reported judged within [last count change - tick, standstill + tick]",
-         width),
-       P("fault_output", Str, false, "the stop-time fault output line"),
-       P("fault_level", Lvl, false, "the fault output's level on a fault (low)"),
-       P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time")},
-      brake));
+  k.push_back(
+      kind("brake_stop_time", "brake applied to standstill against the limit; reported time and fault output",
+           {P("limit_ms", Num, true, "stop time limit (inclusive)", time),
+            P("brake_line", Str, false, "the brake input line; or applied_ms"),
+            P("applied_level", Lvl, false, "level of brake_line that applies the brake (low)"),
+            instant(P("applied_ms", Num, false, "when the brake was applied", time), kMs),
+            P("reported", Str, false, "observation holding the board's stop time, ms"),
+            P("report_tolerance_ms", Num, false, "|reported - measured| allowed (2)", time),
+            duration(P("report_tick_ms", Num, false,
+                       "the board's stop timer tick: reported judged within [last count change - tick, "
+                       "standstill + tick]"),
+                     kMs),
+            P("fault_output", Str, false, "the stop-time fault output line"),
+            P("fault_level", Lvl, false, "the fault output's level on a fault (low)"),
+            P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time")},
+           brake));
   k.push_back(kind(
       "edge_at_position", "every edge of an output at a position, within a tolerance",
       {P("output", Str, true, "the output line"), P("level", Lvl, false, "which edges (high)"),
@@ -434,7 +468,9 @@ std::vector<CheckKind> make_kinds() {
                     P("lower", Num, false, "inclusive"), P("upper", Num, false, "inclusive"),
                     instant(P("at_ms", Num, false, "judge the latest observation by then", time), kMs)},
                    word_within));
-  k.push_back(kind("frame_decodes", "every captured CAN frame or serial message decodes with no named error",
+  k.push_back(kind("frame_decodes",
+                   "every captured CAN frame or serial message decodes with no named error (no backend "
+                   "captures the board's frames yet: refused)",
                    {P("source", Str, true, "the bus or link"), P("decoder", Str, true, "the decoder's name"),
                     P("id", Int, false, "only frames with this id", between(0, 0x1FFFFFFF)),
                     P("min_frames", Int, false, "fewest frames (1)", counts)},
@@ -499,6 +535,8 @@ bool in_range(double v, const ParamRange& r) {
 
 // Every number of a value (one, or each of a list) finite and in range.
 bool value_ok(const json& v, const ParamSpec& s) {
+  if (s.duration_ns > 0.0)
+    return in_range(v.get<double>(), s.range) && rounded_ns(v.get<double>(), s.duration_ns) >= 1.0;
   if (s.type == ParamType::Number || s.type == ParamType::Integer) return in_range(v.get<double>(), s.range);
   if (s.type == ParamType::NumberList)
     return std::all_of(v.begin(), v.end(), [&](const json& e) { return in_range(e.get<double>(), s.range); });
@@ -549,9 +587,41 @@ CheckResult run(const DebounceParams& p, const Capture& c) {
   return r;
 }
 
+// How many times `f` (the shaft's position, or where it stands plus its advance) reached
+// `level` (or level + k * modulus) in [from, to]: throughput's crossing scan, both ways. A
+// touch counts (reaching is enough), and so does starting there. Stepped every 10 us: an
+// excursion past the level shorter than that may be missed, read as "not reached" (an error,
+// never a pass).
+std::size_t times_reached(const Capture& c, const PositionFn& f, double level, double modulus,
+                          std::optional<Nanos> from, std::optional<Nanos> to) {
+  // Crossings are found in (a, b]: one ns before `from` makes the span [from, to].
+  const Nanos start = from ? std::max(c.begin, *from) : c.begin;
+  const Nanos a = from ? std::max(c.begin, *from - Nanos{1}) : c.begin;
+  const Nanos b = to.value_or(c.end);
+  if (b < start) return 0;
+  const double off = f(start) - level;
+  const bool at_start = modulus > 0.0 ? std::remainder(off, modulus) == 0.0 : off == 0.0;
+  const std::vector<Nanos> crossed =
+      b > a ? find_crossings(f, level, a, b, Nanos{10'000}, Direction::Both, modulus, c.held)
+            : std::vector<Nanos>{};
+  // Standing there at the start without arriving then (already there before, or the run's
+  // first instant): reached once more.
+  const bool arrived_at_start = !crossed.empty() && crossed.front() == start;
+  return crossed.size() + (at_start && !arrived_at_start ? 1 : 0);
+}
+
 CheckResult run(const AdvanceParams& p, const Capture& c) {
   if (!c.speed && !p.spec.advance_counts) throw CaptureError{"the capture has no speed function"};
-  CheckResult r = check_advance(line(c, p.output), position_fn(c), c.speed, p.spec);
+  // An edge is due where the position plus its advance reaches the setpoint.
+  const ReachedFn reached = [&] {
+    const PositionFn& pos = position_fn(c);
+    const double seconds = static_cast<double>(p.spec.advance.count()) / 1e9;
+    const PositionFn ahead = p.spec.advance_counts
+                                 ? PositionFn([&](Nanos t) { return pos(t) + *p.spec.advance_counts; })
+                                 : PositionFn([&](Nanos t) { return pos(t) + c.speed(t) * seconds; });
+    return times_reached(c, ahead, p.spec.setpoint, p.spec.modulus, std::nullopt, std::nullopt);
+  };
+  CheckResult r = check_advance(line(c, p.output), position_fn(c), c.speed, p.spec, reached);
   if (p.phase) {
     // The stimulus of each edge: the instant the shaft stood at its expected position, the
     // middle of the edge's tolerance window (linear at the edge's speed).
@@ -567,7 +637,10 @@ CheckResult run(const AdvanceParams& p, const Capture& c) {
 }
 
 CheckResult run(const EdgeAtPositionParams& p, const Capture& c) {
-  return check_edge_at_position(line(c, p.output), position_fn(c), c.speed, p.spec);
+  const ReachedFn reached = [&] {
+    return times_reached(c, position_fn(c), p.spec.position, p.spec.modulus, p.spec.from, p.spec.to);
+  };
+  return check_edge_at_position(line(c, p.output), position_fn(c), c.speed, p.spec, reached);
 }
 
 CheckResult run(const BrakeParams& p, const Capture& c) {
@@ -734,6 +807,14 @@ std::string expected_text(ParamType t, const ParamRange& r) {
   return what;
 }
 
+std::string expected_text(const ParamSpec& p) {
+  if (p.duration_ns == 0.0) return expected_text(p.type, p.range);
+  // The least number that rounds to 1 ns: half a ns in the unit (0.0005 us, 0.0000005 ms).
+  std::string least = fmt::format("{:.9f}", 0.5 / p.duration_ns);
+  least.erase(least.find_last_not_of('0') + 1);
+  return fmt::format("{} >= {} (at least 1 ns once rounded to whole ns)", expected_text(p.type, {}), least);
+}
+
 const std::vector<CheckKind>& check_kinds() {
   static const std::vector<CheckKind> kinds = make_kinds();
   return kinds;
@@ -763,12 +844,11 @@ CheckParams build_check_params(const CheckKind& kind, std::string_view check, co
       throw ParamError(
           key, fmt::format("a parameter of {} (one of {}){}", kind.name, names, did_you_mean(key, valid)));
     }
-    if (!type_ok(value, it->type) || !value_ok(value, *it))
-      throw ParamError(key, expected_text(it->type, it->range));
+    if (!type_ok(value, it->type) || !value_ok(value, *it)) throw ParamError(key, expected_text(*it));
   }
   for (const auto& s : kind.params)
     if (s.required && !table.contains(s.name))
-      throw ParamError(s.name, fmt::format("missing: {} ({})", expected_text(s.type, s.range), s.help));
+      throw ParamError(s.name, fmt::format("missing: {} ({})", expected_text(s), s.help));
   return kind.build(check, table);
 }
 

@@ -72,7 +72,14 @@ struct ParamSpec {
   // 0 for a number that is not one (a limit, a width). The campaign reader holds an instant
   // to 0 .. campaign.end, so a window past the run's end is refused before anything runs.
   double instant_ns = 0.0;
+  // A duration that must last (a timeout, a step, a probe width, a tick), in ns per unit of
+  // the number; 0 for any other. Rounded to whole ns as the check rounds it, it must be at
+  // least 1 ns: 0.0004 us is 0 ns, a timeout or probe of no time at all.
+  double duration_ns = 0.0;
 };
+// The same for a parameter: a duration (ParamSpec::duration_ns) reads "a finite number >=
+// 0.0005 (at least 1 ns once rounded to whole ns)".
+[[nodiscard]] std::string expected_text(const ParamSpec& p);
 
 // A problem with one check parameter: the key ("" for the check as a whole) and the valid
 // range, for the campaign parser's file:line:col: key: expected.

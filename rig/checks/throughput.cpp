@@ -84,9 +84,22 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
     missing_detail = fmt::format("missing edge: no {} edge{} {} (first of {})", level_name(spec.expected),
                                  spec.quiet ? " after a quiet gap" : "", where, missing);
   }
-  r.measurements.push_back(measure(
-      spec.name + ".count", static_cast<double>(samples.size()), "", static_cast<double>(spec.min_count),
-      std::nullopt, fmt::format("{} latencies from {} crossings", samples.size(), crossings.size())));
+  if (crossings.size() < spec.min_count) {
+    // Fewer crossings than min_count: no board could reach it, so the shortfall is the
+    // stimulus's (an error), not the board's fail. The latencies there are are still judged.
+    Measurement count =
+        error(spec.name + ".count",
+              fmt::format("nothing judged against min_count: the stimulus crossed the setpoint "
+                          "{} time(s), fewer than min_count ({}); latencies measured: {}",
+                          crossings.size(), spec.min_count, samples.size()));
+    count.value = static_cast<double>(samples.size());
+    count.lower = static_cast<double>(spec.min_count);
+    r.measurements.push_back(std::move(count));
+  } else {
+    r.measurements.push_back(measure(
+        spec.name + ".count", static_cast<double>(samples.size()), "", static_cast<double>(spec.min_count),
+        std::nullopt, fmt::format("{} latencies from {} crossings", samples.size(), crossings.size())));
+  }
   r.measurements.push_back(measure(spec.name + ".missing", static_cast<double>(missing), "", std::nullopt,
                                    0.0, missing_detail, first_missing));
   if (!samples.empty()) {

@@ -34,7 +34,9 @@ struct ThroughputSpec {
   // back) to halfway on to the next, so an edge too early is measured, not lost. Not with
   // min_limit.
   std::optional<Nanos> early{};
-  std::size_t min_count = 1; // fewer measured latencies than this fails "<name>.count"
+  // Fewer measured latencies than this fails "<name>.count"; fewer crossings than this is an
+  // error there (the stimulus fell short, not the board).
+  std::size_t min_count = 1;
 };
 
 // Measurements (unit us, windows from crossing to edge of the sample that set the value):

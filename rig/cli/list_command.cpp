@@ -112,7 +112,7 @@ void write_listing(std::ostream& out) {
   for (const checks::CheckKind& k : checks::check_kinds()) {
     out << fmt::format("  {}: {}\n", k.name, k.summary);
     for (const auto& p : k.params)
-      out << fmt::format("    {} ({}{}): {}\n", p.name, checks::expected_text(p.type, p.range),
+      out << fmt::format("    {} ({}{}): {}\n", p.name, checks::expected_text(p),
                          p.required ? ", required" : "", p.help);
   }
 

@@ -26,7 +26,13 @@ TEST(CheckParams, NotFiniteOrNegativeLimitIsBadInputAtItsValue) {
               "t.toml:28:12: check[0].limit_us: a finite number >= 0");
   }
   EXPECT_EQ(error_of(test::kCampaignToSetpoint + "limit_us = 20\ntimeout_us = 0\n"),
-            "t.toml:29:14: check[0].timeout_us: a finite number > 0");
+            "t.toml:29:14: check[0].timeout_us: a finite number >= 0.0005 (at least 1 ns once rounded to "
+            "whole ns)");
+  // 0.0004 us is 0 ns once rounded: no timeout at all, refused the same way.
+  EXPECT_EQ(error_of(test::kCampaignToSetpoint + "limit_us = 20\ntimeout_us = 0.0004\n"),
+            "t.toml:29:14: check[0].timeout_us: a finite number >= 0.0005 (at least 1 ns once rounded to "
+            "whole ns)");
+  EXPECT_EQ(error_of(test::kCampaignToSetpoint + "limit_us = 20\ntimeout_us = 0.0005\n"), "accepted");
   EXPECT_EQ(error_of(test::kCampaignToSetpoint + "limit_us = 20\nsetpoint_x = nan\n")
                 .rfind("t.toml:29:14: check[0].setpoint_x: a parameter of throughput", 0),
             0U);

@@ -70,11 +70,14 @@ std::string as_toml_number(double v) {
   return s;
 }
 
-// A shaft_move's window (from_ms, to_ms] with no whole ns in it: refused on its own (below).
+// A shaft_move's window (from_ms, to_ms] or a throughput scan's (from_us, to_us] with no whole
+// ns in it (the other end at its default, 0 or campaign.end): refused on its own (below).
 bool empty_step_window(const SweptInstant& c, double v) {
-  if (std::string(c.kind) != "shaft_move") return false;
-  const double ns = std::round(v * 1e6);
-  return std::string(c.key) == "from_ms" ? ns >= 100e6 : ns <= 0.0;
+  const std::string kind = c.kind;
+  const std::string key = c.key;
+  if (kind != "shaft_move" && kind != "throughput") return false;
+  const double ns = std::round(v * (key.ends_with("_us") ? 1e3 : 1e6));
+  return key.starts_with("from") ? ns >= 100e6 : ns <= 0.0;
 }
 
 TEST(CheckTimes, EachInstantIsAcceptedUpToTheRunsEndAndRefusedPastIt) {
@@ -121,6 +124,47 @@ TEST(CheckTimes, AShaftMoveWindowWithNoInstantInItIsRefused) {
             instant_where(to) +
                 "a window with time in it: steps after from_ms (40 ms) and up to to_ms (40 ms) "
                 "count, in whole ns, and this one holds none");
+}
+
+// A throughput scan finds the setpoint's crossings after from_us and up to to_us (0 and
+// campaign.end, 100 ms, by default), in whole ns (rig/checks/crossings.hpp: (from, to]): a window
+// with no ns in it finds none, and the run could only err. Swept across the empty window's edge.
+TEST(CheckTimes, AThroughputScanWindowWithNoInstantInItIsRefused) {
+  const std::vector<std::string> scan{"output = \"ls1\"", "limit_us = 250", "setpoint = 10"};
+  const SweptInstant from{"throughput", scan, "from_us", 100'000};
+  for (const char* v : {"0", "99999.999", "99999.9994"})
+    EXPECT_EQ(error_of(campaign_with_check(from, std::string("from_us = ") + v)), "accepted") << v;
+  for (const char* v : {"99999.9996", "100000", "100000.0004"})
+    EXPECT_EQ(error_of(campaign_with_check(from, std::string("from_us = ") + v)),
+              instant_where(from) + "a window with time in it: setpoint crossings after from_us (" + v +
+                  " us) and up to campaign.end (100000 us) count, in whole ns, and this one holds none")
+        << v;
+  const SweptInstant to{"throughput", scan, "to_us", 100'000};
+  for (const char* v : {"0.001", "0.0005"})
+    EXPECT_EQ(error_of(campaign_with_check(to, std::string("to_us = ") + v)), "accepted") << v;
+  for (const char* v : {"0.0004", "0"})
+    EXPECT_EQ(error_of(campaign_with_check(to, std::string("to_us = ") + v)),
+              instant_where(to) +
+                  "a window with time in it: setpoint crossings after the run's start (0 us) and up to "
+                  "to_us (0 us) count, in whole ns, and this one holds none")
+        << v;
+  // Both given (the auditor's from_us = to_us, and a pair equal once rounded): to_us is named.
+  std::vector<std::string> from_1000 = scan;
+  from_1000.emplace_back("from_us = 1000");
+  const SweptInstant both{"throughput", from_1000, "to_us", 100'000};
+  for (const char* v : {"1000.001", "1000.0006"})
+    EXPECT_EQ(error_of(campaign_with_check(both, std::string("to_us = ") + v)), "accepted") << v;
+  for (const char* v : {"1000", "1000.0004"})
+    EXPECT_EQ(error_of(campaign_with_check(both, std::string("to_us = ") + v)),
+              instant_where(both) +
+                  "a window with time in it: setpoint crossings after from_us (1000 us) and up to to_us "
+                  "(1000 us) count, in whole ns, and this one holds none")
+        << v;
+  std::vector<std::string> from_round = scan;
+  from_round.emplace_back("from_us = 1000.0001");
+  EXPECT_EQ(error_of(campaign_with_check({"throughput", from_round, "to_us", 100'000}, "to_us = 1000.0004")),
+            "t.toml:42:9: check[1].to_us: a window with time in it: setpoint crossings after from_us "
+            "(1000.0001 us) and up to to_us (1000 us) count, in whole ns, and this one holds none");
 }
 
 // Every parameter the registry calls an instant is swept above: one added later is too.

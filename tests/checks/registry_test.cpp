@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -17,6 +18,16 @@ using test::find;
 
 CheckParams build(const char* kind, const json& table, std::string_view name = "c") {
   return build_check_params(*find_check_kind(kind), name, table);
+}
+
+// The first problem's valid range, or "ok".
+std::string message(const char* kind, const json& table) {
+  try {
+    (void)build(kind, table);
+    return "ok";
+  } catch (const ParamError& e) {
+    return e.what();
+  }
 }
 
 // The key the first problem names ("(check)" for a rule across keys), or "ok".
@@ -62,9 +73,9 @@ TEST(Registry, EveryKindBuildsItsOwnTypedParameters) {
       {"word_equals", {{"observation", "w"}, {"value", 1}}},
       {"word_within", {{"observation", "w"}, {"lower", 1}}},
       {"word_bits", {{"observation", "w"}, {"mask", 1}, {"value", 1}}},
-      {"frame_decodes", {{"source", "s"}, {"decoder", "d"}}},
       {"shaft_move", {{"step_line", "s"}, {"dir_line", "d"}, {"from_ms", 0}, {"steps", 3}}}};
-  ASSERT_EQ(tables.size(), check_kinds().size());
+  // frame_decodes is refused: no backend captures frames (FrameDecodesIsRefusedAtParse).
+  ASSERT_EQ(tables.size() + 1, check_kinds().size());
   for (const auto& [kind, table] : tables) EXPECT_EQ(kind_of(build(kind, table)), kind);
 }
 
@@ -170,7 +181,7 @@ TEST(Registry, ParametersThatJudgeNothingAreBadInput) {
             "min_edges");
   EXPECT_EQ(problem("advance_counts", json{{"output", "o"}, {"setpoint", 1}, {"min_edges", 0}}), "min_edges");
   EXPECT_EQ(problem("frame_decodes", json{{"source", "s"}, {"decoder", "d"}, {"min_frames", 0}}),
-            "min_frames");
+            "min_frames"); // the key's range first, then the kind itself (FrameDecodesIsRefusedAtParse)
   EXPECT_EQ(problem("word_bits", json{{"observation", "w"}, {"mask", 0}, {"value", 0}}), "mask");
   EXPECT_EQ(problem("word_bits", json{{"observation", "w"}, {"mask", 1}, {"value", 0}}), "ok");
 }
@@ -463,6 +474,268 @@ TEST(Registry, PulseWidthAndAdvancePhaseCoverage) {
       "advance_counts",
       json{{"output", "o"}, {"setpoint", 10}, {"modulus", 10}, {"scan_us", 300}, {"phase_bins", 3}}, "adv");
   EXPECT_EQ(find(run_check("adv", adv3, a), "adv.phase_coverage").value, 2.0);
+}
+
+// The keys that refine a scanned setpoint do nothing with given crossings: refused, as a typo
+// would be (docs/campaigns.md "Checks": "stimulus: crossings_us *or* setpoint with ...").
+TEST(Registry, SetpointScanKeysAreRefusedWithGivenCrossings) {
+  const json given{{"output", "o"}, {"limit_us", 300}, {"crossings_us", {42500}}};
+  const json scanned{{"output", "o"}, {"limit_us", 300}, {"setpoint", 100}};
+  const auto with = [](json t, json extra) {
+    t.update(extra);
+    return t;
+  };
+  for (const auto& [key, value] : std::vector<std::pair<const char*, json>>{
+           {"direction", "rising"}, {"step_us", 10}, {"modulus", 400}, {"from_us", 1000}, {"to_us", 50000}}) {
+    SCOPED_TRACE(key);
+    EXPECT_EQ(problem("throughput", with(given, {{key, value}})), key);
+    EXPECT_EQ(problem("throughput", with(scanned, {{key, value}})), "ok");
+  }
+  try {
+    (void)build("throughput", with(given, {{"from_us", 1000}}));
+    ADD_FAILURE() << "from_us with crossings_us built";
+  } catch (const ParamError& e) {
+    EXPECT_STREQ(e.what(), "only with setpoint (crossings_us are the stimulus as given)");
+  }
+}
+
+// Every duration whose range is "> 0" (a timeout, a quiet gap, a scan step, a filter, a probe
+// width, a bisection bracket, a stop timer tick) is at least 1 ns once rounded to whole ns as
+// the check rounds it (std::round: 0.0005 us is 1 ns, 0.0004999 us is 0). Swept across that
+// edge for each, found from the registry so a duration added later is swept too.
+TEST(Registry, EveryDurationIsAtLeastOneNanosecondOnceRounded) {
+  const std::map<std::string, json> base = {
+      {"throughput", {{"output", "o"}, {"limit_us", 300}, {"setpoint", 100}}},
+      {"debounce",
+       {{"filter_us", 1000},
+        {"tolerance_us", 100},
+        {"narrow_us", 10},
+        {"wide_us", 5000},
+        {"input", "i"},
+        {"output", "o"}}},
+      {"brake_stop_time", {{"limit_ms", 100}, {"applied_ms", 1}, {"reported", "w"}}}};
+  std::set<std::string> swept;
+  for (const CheckKind& k : check_kinds())
+    for (const ParamSpec& p : k.params) {
+      // A number whose range excludes 0 itself is a duration: the rule applies to each.
+      if (p.type == ParamType::Number && p.range.min == 0.0 && p.range.min_open) {
+        EXPECT_GT(p.duration_ns, 0.0) << k.name << "." << p.name;
+      }
+      if (p.duration_ns == 0.0) continue;
+      SCOPED_TRACE(k.name + "." + p.name);
+      ASSERT_TRUE(base.contains(k.name));
+      swept.insert(k.name + "." + p.name);
+      const double half_ns = 0.5 / p.duration_ns; // 0.0005 us, 0.0000005 ms
+      const auto with = [&](double v) {
+        json t = base.at(k.name);
+        t[p.name] = v;
+        return t;
+      };
+      const std::string rule = p.duration_ns == 1e3
+                                   ? "a finite number >= 0.0005 (at least 1 ns once rounded to whole ns)"
+                                   : "a finite number >= 0.0000005 (at least 1 ns once rounded to whole ns)";
+      for (const double refused : {half_ns * 0.01, half_ns * 0.8, half_ns * 0.9999}) {
+        EXPECT_EQ(problem(k.name.c_str(), with(refused)), p.name) << refused;
+        EXPECT_EQ(message(k.name.c_str(), with(refused)), rule) << refused;
+      }
+      // Half a ns and more is 1 ns: accepted by this rule (another may still refuse it: a
+      // debounce filter or wide probe of 1 ns leaves no room for its tolerance or narrow_us).
+      for (const double ok : {half_ns, half_ns * 1.0001, 2 * half_ns})
+        EXPECT_NE(message(k.name.c_str(), with(ok)), rule) << ok;
+    }
+  EXPECT_EQ(swept,
+            (std::set<std::string>{"throughput.timeout_us", "throughput.quiet_us", "throughput.step_us",
+                                   "debounce.filter_us", "debounce.narrow_us", "debounce.wide_us",
+                                   "debounce.resolution_us", "brake_stop_time.report_tick_ms"}));
+  // The probe of the auditor's case: narrow_us = 0.0004 would have probed a 0 ns pulse.
+  const json db{
+      {"filter_us", 1000}, {"tolerance_us", 100}, {"wide_us", 5000}, {"input", "i"}, {"output", "o"}};
+  auto narrow = db;
+  narrow["narrow_us"] = 0.0004;
+  EXPECT_EQ(problem("debounce", narrow), "narrow_us");
+  narrow["narrow_us"] = 0.0005;
+  EXPECT_EQ(std::get<DebounceParams>(build("debounce", narrow)).plan.narrow, 1_ns);
+}
+
+// A phase bin is at least 1 ns of the scan: times are whole ns, so a finer bin could never be
+// hit and "complete" coverage could never be reached. 1 .. the scan in ns (and 1000).
+TEST(Registry, PhaseBinsAreAtMostOnePerNanosecondOfTheScan) {
+  const std::vector<std::pair<const char*, json>> kinds = {
+      {"throughput", {{"output", "o"}, {"limit_us", 300}, {"crossings_us", {1}}}},
+      {"debounce",
+       {{"filter_us", 1000},
+        {"tolerance_us", 100},
+        {"narrow_us", 10},
+        {"wide_us", 5000},
+        {"input", "i"},
+        {"output", "o"}}},
+      {"advance_counts", {{"output", "o"}, {"setpoint", 100}}},
+      {"pulse_width", {{"line", "o"}}}};
+  for (const auto& [kind, base] : kinds) {
+    SCOPED_TRACE(kind);
+    const auto with = [&](json extra) {
+      json t = base;
+      t.update(extra);
+      return t;
+    };
+    EXPECT_EQ(problem(kind, with({{"scan_us", 0.005}, {"phase_bins", 5}})), "ok");
+    EXPECT_EQ(problem(kind, with({{"scan_us", 0.005}, {"phase_bins", 6}})), "phase_bins");
+    EXPECT_EQ(problem(kind, with({{"scan_us", 0.001}, {"phase_bins", 1}})), "ok");
+    EXPECT_EQ(problem(kind, with({{"scan_us", 0.001}, {"phase_bins", 2}})), "phase_bins");
+    // 0.0055 us is 6 ns (rounded half away from zero): 6 bins, not 7.
+    EXPECT_EQ(problem(kind, with({{"scan_us", 0.0055}, {"phase_bins", 6}})), "ok");
+    EXPECT_EQ(problem(kind, with({{"scan_us", 0.0055}, {"phase_bins", 7}})), "phase_bins");
+    EXPECT_EQ(problem(kind, with({{"scan_us", 1}, {"phase_bins", 1000}})), "ok");
+    // The default 10 bins need a scan of 10 ns: the key the file holds is named.
+    EXPECT_EQ(problem(kind, with({{"scan_us", 0.01}})), "ok");
+    EXPECT_EQ(problem(kind, with({{"scan_us", 0.009}})), "scan_us");
+  }
+  try {
+    (void)build("pulse_width", json{{"line", "o"}, {"scan_us", 0.005}, {"phase_bins", 10}});
+    ADD_FAILURE() << "10 bins over 5 ns built";
+  } catch (const ParamError& e) {
+    EXPECT_STREQ(e.what(), "1 .. 5: at most one bin per ns of scan_us (5 ns)");
+  }
+}
+
+// An edge after timeout_us is missing, one before min_limit_us fails: a timeout below the
+// minimum passes no board. Compared in whole ns, inclusive like every limit.
+TEST(Registry, AThroughputTimeoutBelowItsMinimumIsContradictory) {
+  const json base{{"output", "o"}, {"limit_us", 300}, {"crossings_us", {1}}, {"min_limit_us", 20}};
+  const auto with = [&](double timeout) {
+    json t = base;
+    t["timeout_us"] = timeout;
+    return t;
+  };
+  EXPECT_EQ(problem("throughput", with(10)), "timeout_us");
+  EXPECT_EQ(problem("throughput", with(19.999)), "timeout_us");
+  EXPECT_EQ(problem("throughput", with(19.9994)), "timeout_us"); // 19'999 ns
+  EXPECT_EQ(problem("throughput", with(19.9996)), "ok");         // 20'000 ns
+  EXPECT_EQ(problem("throughput", with(20)), "ok");
+  EXPECT_EQ(problem("throughput", with(25)), "ok");
+}
+
+// Given crossings are the whole stimulus: a min_count above their number passes no board.
+TEST(Registry, AThroughputMinCountAboveTheGivenCrossingsIsRefused) {
+  const json base{{"output", "o"}, {"limit_us", 300}, {"crossings_us", {10, 20}}};
+  const auto with = [&](int n) {
+    json t = base;
+    t["min_count"] = n;
+    return t;
+  };
+  EXPECT_EQ(problem("throughput", with(1)), "ok");
+  EXPECT_EQ(problem("throughput", with(2)), "ok");
+  EXPECT_EQ(problem("throughput", with(3)), "min_count");
+  try {
+    (void)build("throughput", with(3));
+  } catch (const ParamError& e) {
+    EXPECT_STREQ(e.what(), "1 .. 2 (the number of crossings_us)");
+  }
+}
+
+// A scanned setpoint crossed fewer than min_count times: the stimulus fell short, an error
+// (nothing judged against min_count), not the board's fail. Position 1 count/ms: setpoint 5
+// crossed once, at 5 ms.
+TEST(Registry, AScannedSetpointCrossedTooFewTimesIsAnError) {
+  Capture c;
+  c.position = [](Nanos t) { return static_cast<double>(t.count()) / 1e6; };
+  c.lines["o"] = {{5_ms + 15_us, Level::High}};
+  c.end = 10_ms;
+  const auto scan = [](int min_count) {
+    return build("throughput",
+                 json{{"output", "o"}, {"limit_us", 20}, {"setpoint", 5}, {"min_count", min_count}}, "tp");
+  };
+  EXPECT_EQ(run_check("tp", scan(1), c).outcome(), rig::Outcome::Pass);
+  const auto r = run_check("tp", scan(2), c);
+  EXPECT_EQ(find(r, "tp.count").outcome, rig::Outcome::Error);
+  EXPECT_EQ(find(r, "tp.count").value, 1.0);
+  EXPECT_EQ(find(r, "tp.count").lower, 2.0);
+  EXPECT_EQ(find(r, "tp.count").detail,
+            "nothing judged against min_count: the stimulus crossed the setpoint 1 time(s), fewer than "
+            "min_count (2); latencies measured: 1");
+  EXPECT_EQ(find(r, "tp.max").value, 15.0); // what there was is still judged
+  // Crossed twice (back down at 8 ms, the board answers only the first): the board's fail.
+  c.position = [](Nanos t) { return t < 6_ms ? t.seconds() * 1e3 : 12.0 - t.seconds() * 1e3; };
+  const auto twice = run_check("tp", scan(2), c);
+  EXPECT_EQ(find(twice, "tp.count").outcome, rig::Outcome::Fail);
+}
+
+// edge_at_position and advance_counts with no edge: if the shaft never reached where the edge
+// is due (in the span judged), the stimulus never came, an error; if it did, the missing edge
+// is the board's fail. Position 1 count/ms from 0 to 10 ms, then still at 10.
+TEST(Registry, AnEdgeDueWhereTheShaftNeverWentIsAnError) {
+  Capture c;
+  c.position = [](Nanos t) { return std::min(t, 10_ms).seconds() * 1e3; };
+  c.speed = [](Nanos t) { return t < 10_ms ? 1e3 : 0.0; };
+  c.lines["o"] = {};
+  c.end = 20_ms;
+  const auto eap = [&](json extra) {
+    json t{{"output", "o"}, {"position", 5}};
+    if (!extra.is_null()) t.update(extra); // {} is null
+    return run_check("e", build("edge_at_position", t, "e"), c);
+  };
+  EXPECT_EQ(find(eap({}), "e.edges").outcome, rig::Outcome::Fail); // reached at 5 ms: the board's
+  EXPECT_EQ(find(eap({}), "e.edges").detail, "missing edge: no high edge on the output");
+  const auto never = eap({{"position", 10.5}});
+  EXPECT_EQ(find(never, "e.edges").outcome, rig::Outcome::Error);
+  EXPECT_EQ(find(never, "e.edges").detail,
+            "nothing judged: the shaft never reached position 10.5 (the stimulus never came)");
+  // Reached exactly (10 counts at 10 ms, then still) counts as reached.
+  EXPECT_EQ(find(eap({{"position", 10}}), "e.edges").outcome, rig::Outcome::Fail);
+  // With a modulus of 8, position 10.5 is 2.5: reached at 2.5 ms.
+  EXPECT_EQ(find(eap({{"position", 10.5}, {"modulus", 8}}), "e.edges").outcome, rig::Outcome::Fail);
+  // The span judged: [from_us, to_us], inclusive. Position 5 is reached at 5 ms exactly.
+  EXPECT_EQ(find(eap({{"from_us", 6000}}), "e.edges").outcome, rig::Outcome::Error);
+  EXPECT_EQ(find(eap({{"from_us", 5000}}), "e.edges").outcome, rig::Outcome::Fail);
+  EXPECT_EQ(find(eap({{"from_us", 5000.001}}), "e.edges").outcome, rig::Outcome::Error);
+  EXPECT_EQ(find(eap({{"to_us", 5000}}), "e.edges").outcome, rig::Outcome::Fail);
+  EXPECT_EQ(find(eap({{"to_us", 4999.999}}), "e.edges").outcome, rig::Outcome::Error);
+  EXPECT_EQ(find(eap({{"to_us", 4999.999}}), "e.edges").detail,
+            "nothing judged: the shaft never reached position 5 up to 4999999 ns (the stimulus never came)");
+  // Reached once, two edges asked for: the shortfall is the stimulus's.
+  const auto once = eap({{"min_edges", 2}});
+  EXPECT_EQ(find(once, "e.edges").outcome, rig::Outcome::Error);
+  EXPECT_EQ(find(once, "e.edges").detail,
+            "nothing judged against min_edges: the shaft reached position 5 1 time(s), fewer than min_edges "
+            "(2); high edges: 0");
+  // An edge that did come is judged as ever.
+  c.lines["o"] = {{Nanos{5'000'300}, Level::High}};
+  EXPECT_EQ(eap({}).outcome(), rig::Outcome::Pass);
+  c.lines["o"] = {};
+
+  // advance_counts: the edge is due where the position plus its advance reaches the setpoint.
+  const auto adv = [&](json extra) {
+    json t{{"output", "o"}, {"setpoint", 12}};
+    if (!extra.is_null()) t.update(extra); // {} is null
+    return run_check("a", build("advance_counts", t, "a"), c);
+  };
+  // Setpoint 12 with advance_counts 3: due at 9 counts, reached at 9 ms: the board's fail.
+  EXPECT_EQ(find(adv({{"advance_counts", 3}}), "a.edges").outcome, rig::Outcome::Fail);
+  // ... advance_counts 1.5: due at 10.5, never reached.
+  EXPECT_EQ(find(adv({{"advance_counts", 1.5}}), "a.edges").outcome, rig::Outcome::Error);
+  EXPECT_EQ(find(adv({{"advance_counts", 1.5}}), "a.edges").detail,
+            "nothing judged: the shaft never reached setpoint 12 less its advance (the stimulus never came)");
+  // advance_ms 3 at 1000 counts/s: due where position + 3 reaches 12, at 9 ms: reached. With
+  // 2 ms it would be at 10 ms, where the shaft stops and its advance with it (12 - 1 ns
+  // before, 10 at it): never reached.
+  EXPECT_EQ(find(adv({{"advance_ms", 3}}), "a.edges").outcome, rig::Outcome::Fail);
+  EXPECT_EQ(find(adv({{"advance_ms", 2}}), "a.edges").outcome, rig::Outcome::Error);
+  EXPECT_EQ(find(adv({}), "a.edges").outcome, rig::Outcome::Error); // 12 itself: never
+}
+
+// frame_decodes has no frame source: no backend fills Capture::frames or ::decoders (the
+// run's CAN frames are the rig's own resolver stream; serial bytes are not split into
+// messages), so every run could only err. Refused where the campaign is read, after its keys.
+TEST(Registry, FrameDecodesIsRefusedAtParse) {
+  EXPECT_EQ(problem("frame_decodes", json{{"source", "can0"}, {"decoder", "resolver_angle"}}), "(check)");
+  EXPECT_EQ(problem("frame_decodes", json{{"source", "can0"}}), "decoder");
+  EXPECT_EQ(problem("frame_decodes", json{{"source", "can0"}, {"decoder", "d"}, {"bogus", 1}}), "bogus");
+  try {
+    (void)build("frame_decodes", json{{"source", "can0"}, {"decoder", "resolver_angle"}});
+  } catch (const ParamError& e) {
+    EXPECT_STREQ(e.what(), "a check kind a backend can judge: frame_decodes has no frame source on any "
+                           "backend yet (no CAN frame or serial message of the board is captured)");
+  }
 }
 
 } // namespace
