@@ -499,6 +499,12 @@ TEST(Registry, SetpointScanKeysAreRefusedWithGivenCrossings) {
   }
 }
 
+// A debounce check every rule accepts: a 1 ms filter, ±100 us, probes from 10 us to 5 ms.
+json debounce_base() {
+  return {{"filter_us", 1000}, {"tolerance_us", 100}, {"narrow_us", 10},
+          {"wide_us", 5000},   {"input", "i"},        {"output", "o"}};
+}
+
 // Every duration whose range is "> 0" (a timeout, a quiet gap, a scan step, a filter, a probe
 // width, a bisection bracket, a stop timer tick) is at least 1 ns once rounded to whole ns as
 // the check rounds it (std::round: 0.0005 us is 1 ns, 0.0004999 us is 0). Swept across that
@@ -506,13 +512,7 @@ TEST(Registry, SetpointScanKeysAreRefusedWithGivenCrossings) {
 TEST(Registry, EveryDurationIsAtLeastOneNanosecondOnceRounded) {
   const std::map<std::string, json> base = {
       {"throughput", {{"output", "o"}, {"limit_us", 300}, {"setpoint", 100}}},
-      {"debounce",
-       {{"filter_us", 1000},
-        {"tolerance_us", 100},
-        {"narrow_us", 10},
-        {"wide_us", 5000},
-        {"input", "i"},
-        {"output", "o"}}},
+      {"debounce", debounce_base()},
       {"brake_stop_time", {{"limit_ms", 100}, {"applied_ms", 1}, {"reported", "w"}}}};
   std::set<std::string> swept;
   for (const CheckKind& k : check_kinds())
@@ -548,9 +548,7 @@ TEST(Registry, EveryDurationIsAtLeastOneNanosecondOnceRounded) {
                                    "debounce.filter_us", "debounce.narrow_us", "debounce.wide_us",
                                    "debounce.resolution_us", "brake_stop_time.report_tick_ms"}));
   // The probe of the auditor's case: narrow_us = 0.0004 would have probed a 0 ns pulse.
-  const json db{
-      {"filter_us", 1000}, {"tolerance_us", 100}, {"wide_us", 5000}, {"input", "i"}, {"output", "o"}};
-  auto narrow = db;
+  auto narrow = debounce_base();
   narrow["narrow_us"] = 0.0004;
   EXPECT_EQ(problem("debounce", narrow), "narrow_us");
   narrow["narrow_us"] = 0.0005;
@@ -562,13 +560,7 @@ TEST(Registry, EveryDurationIsAtLeastOneNanosecondOnceRounded) {
 TEST(Registry, PhaseBinsAreAtMostOnePerNanosecondOfTheScan) {
   const std::vector<std::pair<const char*, json>> kinds = {
       {"throughput", {{"output", "o"}, {"limit_us", 300}, {"crossings_us", {1}}}},
-      {"debounce",
-       {{"filter_us", 1000},
-        {"tolerance_us", 100},
-        {"narrow_us", 10},
-        {"wide_us", 5000},
-        {"input", "i"},
-        {"output", "o"}}},
+      {"debounce", debounce_base()},
       {"advance_counts", {{"output", "o"}, {"setpoint", 100}}},
       {"pulse_width", {{"line", "o"}}}};
   for (const auto& [kind, base] : kinds) {
