@@ -9,10 +9,6 @@ namespace {
 
 constexpr std::uint16_t kMaxScalar = 32'767;
 
-bool format_valid(const SsiSetup& s) {
-  return s.bits >= 2 && s.bits <= 25 && s.msb >= 1 && s.msb <= 24 && s.msb + s.bits <= 26;
-}
-
 bool scalars_valid(std::uint16_t mul, std::uint16_t div, const Params& params) {
   if (mul < 1 || mul > kMaxScalar || div < 1 || div > kMaxScalar) return false;
   return params.multiplier_may_equal_divisor ? mul <= div : mul < div;

@@ -39,6 +39,26 @@ struct Setup {
   return s;
 }
 
+// The Format command's ranges (L2126-2133 N, L2143-2148 M, L2162-2163): a cycle that
+// programs anything outside them sets FMTErr and keeps the old setup. The one copy of the
+// rule: the programming cycle and `hilrig synth ssi` both judge by format_fault().
+inline constexpr unsigned kMinDataBits = 2;     // N
+inline constexpr unsigned kMaxDataBits = 25;    // N
+inline constexpr unsigned kMinMsb = 1;          // M
+inline constexpr unsigned kMaxMsb = 24;         // M
+inline constexpr unsigned kMaxMsbPlusBits = 26; // M + N: the field ends by stream bit 25
+
+// Which part of a Format is out of range, in the manual's order (N, then M, then M + N).
+enum class FormatFault : std::uint8_t { None, DataBits, Msb, MsbPlusBits };
+
+[[nodiscard]] constexpr FormatFault format_fault(const SsiSetup& s) {
+  if (s.bits < kMinDataBits || s.bits > kMaxDataBits) return FormatFault::DataBits;
+  if (s.msb < kMinMsb || s.msb > kMaxMsb) return FormatFault::Msb;
+  if (s.msb + s.bits > kMaxMsbPlusBits) return FormatFault::MsbPlusBits;
+  return FormatFault::None;
+}
+[[nodiscard]] constexpr bool format_valid(const SsiSetup& s) { return format_fault(s) == FormatFault::None; }
+
 [[nodiscard]] constexpr std::uint16_t encode_format(const SsiSetup& s) {
   return static_cast<std::uint16_t>((s.clock_500khz ? fbit::kClock500 : 0u) | ((s.msb & 0x1Fu) << 8) |
                                     (s.negative_logic ? fbit::kNegative : 0u) | (s.gray ? fbit::kGray : 0u) |

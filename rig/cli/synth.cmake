@@ -7,4 +7,5 @@ file(GLOB HILRIG_CLI_SYNTH_SOURCES CONFIGURE_DEPENDS
 list(REMOVE_DUPLICATES HILRIG_CLI_SYNTH_SOURCES)
 list(SORT HILRIG_CLI_SYNTH_SOURCES)
 add_library(hilrig_cli_synth OBJECT ${HILRIG_CLI_SYNTH_SOURCES})
-target_link_libraries(hilrig_cli_synth PUBLIC hilrig_flags hilrig_signals hilrig_core hilrig_cli_number_checks CLI11::CLI11 hilrig_fmt)
+target_link_libraries(hilrig_cli_synth PUBLIC hilrig_flags hilrig_signals hilrig_core hilrig_cli_number_checks
+  hilrig_model_ssi7361 hilrig_results CLI11::CLI11 hilrig_fmt)

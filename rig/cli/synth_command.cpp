@@ -3,10 +3,14 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
+#include <cstring>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -20,6 +24,7 @@
 #include "rig/campaign/limits.hpp"
 #include "rig/cli/exit_status.hpp"
 #include "rig/cli/number_checks.hpp"
+#include "rig/results/atomic_file.hpp"
 #include "signals/discrete_bounce.hpp"
 #include "signals/discrete_input.hpp"
 #include "signals/edge_rate.hpp"
@@ -77,10 +82,13 @@ double seconds_in(const std::string& text, const std::string& option) {
   return parse_number(text, option);
 }
 
-Level parse_level(const std::string& text) {
+// A level of `option`; `item` is the whole value it came from ("1ms=2"), empty if the text is
+// the whole value: "--set: 1ms=2: the level '2' is not 0, 1, high or low".
+Level parse_level(const std::string& text, const std::string& option, const std::string& item = {}) {
   if (text == "1" || text == "high" || text == "H") return Level::High;
   if (text == "0" || text == "low" || text == "L") return Level::Low;
-  throw CLI::ValidationError("level", "'" + text + "' is not 0/1/high/low");
+  throw CLI::ValidationError(option, fmt::format("{}the level '{}' is not 0, 1, high or low",
+                                                 item.empty() ? "" : item + ": ", text));
 }
 
 // ---- quadrature -------------------------------------------------------------------
@@ -111,11 +119,12 @@ struct QuadratureOptions {
   double max_input_hz = 0.0;
   std::string rate_action = "warn";
   // Faults, applied in this order.
-  std::vector<std::string> glitches;      // channel,at,width
-  std::vector<std::size_t> missing_edges; // index into the edge list, as before any is lost
-  std::vector<std::size_t> simultaneous;  // index into the edge list
-  std::vector<std::string> noise;         // start,length,pulses,seed[,min_width,max_width]
-  double phase_error = 0.0;               // fraction of a quarter period
+  std::vector<std::string> glitches; // channel,at,width
+  // Signed: CLI11 reads "-1" into an unsigned as 2^64 - 1, and the refusal would quote that.
+  std::vector<std::int64_t> missing_edges; // index into the edge list, as before any is lost
+  std::vector<std::int64_t> simultaneous;  // index into the edge list
+  std::vector<std::string> noise;          // start,length,pulses,seed[,min_width,max_width]
+  double phase_error = 0.0;                // fraction of a quarter period
 };
 
 signals::QuadChannel parse_channel(const std::string& text) {
@@ -123,27 +132,6 @@ signals::QuadChannel parse_channel(const std::string& text) {
   if (text == "B" || text == "b") return signals::QuadChannel::B;
   if (text == "Z" || text == "z") return signals::QuadChannel::Z;
   throw CLI::ValidationError("--glitch", "'" + text + "' is not A, B or Z");
-}
-
-// A time in [lo, hi]; outside it, bad input naming that range (not parse_duration's +-3600 s).
-Nanos parse_duration_within(const std::string& text, const std::string& option, Nanos lo, Nanos hi) {
-  const double seconds = seconds_in(text, option);
-  if (!(seconds >= lo.seconds() && seconds <= hi.seconds()))
-    throw CLI::ValidationError(
-        option, fmt::format("{} .. {} (got {})", duration_words(lo), duration_words(hi), text));
-  const Nanos t = Nanos::from_seconds(seconds);
-  require_duration_within(option, text, t, lo, hi);
-  return t;
-}
-
-// A time on the trace: the VCD starts at 0, and no run is longer than a campaign's.
-Nanos parse_instant(const std::string& text, const std::string& option) {
-  return parse_duration_within(text, option, Nanos::zero(), limits::kMaxEnd);
-}
-
-// A width or a period: some time, at most a campaign's run.
-Nanos parse_positive_duration(const std::string& text, const std::string& option) {
-  return parse_duration_within(text, option, Nanos{1}, limits::kMaxEnd);
 }
 
 struct Glitch {
@@ -186,32 +174,33 @@ signals::NoiseBurst parse_noise(const std::string& text) {
 }
 
 // An index names an A or B edge of the trace: the limit is the signal's own edge count.
-void require_ab_edge(const signals::QuadratureTrace& trace, std::size_t index, const std::string& option) {
-  const std::size_t edges = trace.edges.size();
-  if (index >= edges)
+void require_ab_edge(const signals::QuadratureTrace& trace, std::int64_t index, const std::string& option) {
+  const auto edges = static_cast<std::int64_t>(trace.edges.size());
+  if (index < 0 || index >= edges)
     throw CLI::ValidationError(option, edges == 0 ? fmt::format("this motion makes no edges (got {})", index)
                                                   : fmt::format("an edge index 0 .. {}: this motion makes {} "
                                                                 "edges (got {})",
                                                                 edges - 1, edges, index));
-  if (trace.edges[index].channel == signals::QuadChannel::Z)
+  if (trace.edges[static_cast<std::size_t>(index)].channel == signals::QuadChannel::Z)
     throw CLI::ValidationError(option, fmt::format("edge {} is a Z edge: name an A or B edge", index));
 }
 
 // Every --missing-edge names an edge as the trace stood before any was lost: losing one
 // renumbers the edges after it, so they are lost from the highest index down, and each lower
 // one still names its own edge. A lost edge takes its channel's next remaining edge with it.
-void lose_edges(signals::QuadratureTrace& trace, std::vector<std::size_t> indices) {
+void lose_edges(signals::QuadratureTrace& trace, std::vector<std::int64_t> indices) {
   std::sort(indices.begin(), indices.end(), std::greater<>());
   if (const auto twice = std::adjacent_find(indices.begin(), indices.end()); twice != indices.end())
     throw CLI::ValidationError("--missing-edge", fmt::format("edge {} is named twice", *twice));
-  for (const std::size_t i : indices) require_ab_edge(trace, i, "--missing-edge");
-  for (const std::size_t i : indices) signals::inject_missing_edge(trace, i);
+  for (const std::int64_t i : indices) require_ab_edge(trace, i, "--missing-edge");
+  for (const std::int64_t i : indices) signals::inject_missing_edge(trace, static_cast<std::size_t>(i));
 }
 
-void move_edges_together(signals::QuadratureTrace& trace, const std::vector<std::size_t>& indices) {
+void move_edges_together(signals::QuadratureTrace& trace, const std::vector<std::int64_t>& indices) {
   using signals::QuadChannel;
-  for (const std::size_t i : indices) {
-    require_ab_edge(trace, i, "--simultaneous");
+  for (const std::int64_t index : indices) {
+    require_ab_edge(trace, index, "--simultaneous");
+    const auto i = static_cast<std::size_t>(index);
     const QuadChannel other = trace.edges[i].channel == QuadChannel::A ? QuadChannel::B : QuadChannel::A;
     const auto later =
         std::find_if(trace.edges.begin() + static_cast<std::ptrdiff_t>(i) + 1, trace.edges.end(),
@@ -354,13 +343,13 @@ void check_move_time(const QuadratureOptions& o) {
     refuse(
         "--accel", taken, [&](double x) { return seconds(x, o.jerk); }, kMaxTurnsPerS2, "turns/s²");
   } else if (o.profile == "press") {
-    const double run = parse_duration(o.duration, "--duration").seconds();
+    const double run = parse_positive_duration(o.duration, "--duration").seconds();
     const double taken = run + v / o.brake;
     if (taken <= limit) return;
     refuse(
         "--brake", taken, [&](double x) { return run + v / x; }, kMaxTurnsPerS2, "turns/s²");
   } else if (o.profile == "constant") {
-    const double taken = parse_duration(o.duration, "--duration").seconds();
+    const double taken = parse_positive_duration(o.duration, "--duration").seconds();
     if (taken <= limit) return;
     throw CLI::ValidationError("--dwell",
                                fmt::format("--duration and --dwell together at most {} (got {} and {})",
@@ -384,7 +373,37 @@ void check_index(const QuadratureOptions& o) {
                                fmt::format("0 .. {} counts, at most a turn (got {})", cpt, o.index_width));
 }
 
-void check_quadrature(const QuadratureOptions& o) {
+// An option the chosen profile or Z does not use is refused, not ignored: a person who gave it
+// expected it to change the signal.
+void check_applies(const CLI::App& cmd, const QuadratureOptions& o) {
+  const std::string& p = o.profile;
+  const std::string is = " (this is --profile " + p + ")";
+  refuse_unless_applies(cmd, "--duration", p == "constant" || p == "press",
+                        "only with --profile constant or press (a trapezoid or scurve runs until it has "
+                        "moved --turns)" +
+                            is);
+  const std::string moves = "only with --profile trapezoid or scurve" + is;
+  refuse_unless_applies(cmd, "--turns", moves_to_a_distance(o), moves);
+  refuse_unless_applies(cmd, "--accel", moves_to_a_distance(o), moves);
+  refuse_unless_applies(cmd, "--decel", p == "trapezoid",
+                        "only with --profile trapezoid (an scurve slows at --accel)" + is);
+  refuse_unless_applies(cmd, "--jerk", p == "scurve", "only with --profile scurve" + is);
+  refuse_unless_applies(cmd, "--steps", p == "scurve", "only with --profile scurve" + is);
+  refuse_unless_applies(cmd, "--brake", p == "press", "only with --profile press" + is);
+  const bool gated = o.index_line != kNoIndexLine;
+  refuse_unless_applies(cmd, "--index-count", !gated,
+                        "not with --index-line, which places Z itself (on A·B high of that line)");
+  refuse_unless_applies(cmd, "--index-width", !gated,
+                        "not with --index-line, which makes Z one count wide itself");
+  refuse_unless_applies(cmd, "--index-count", o.index_width > 0,
+                        "only with --index-width > 0: Z is that many counts wide from --index-count "
+                        "(without it there is no Z)");
+  refuse_unless_applies(cmd, "--rate-action", o.max_input_hz > 0,
+                        "only with --max-input-hz > 0: it says what exceeding that frequency does");
+}
+
+void check_quadrature(const CLI::App& cmd, const QuadratureOptions& o) {
+  check_applies(cmd, o);
   check_speed(o);
   check_profile(o);
   check_move_time(o);
@@ -426,11 +445,7 @@ signals::MotionProfile build_profile(const QuadratureOptions& o) {
   MotionProfile p(o.start_turns);
   const double speed = o.rpm / 60.0; // turns/s
   const double decel = o.decel > 0 ? o.decel : o.accel;
-  const auto duration = [&o] {
-    const Nanos d = parse_duration(o.duration, "--duration");
-    if (d <= Nanos::zero()) throw CLI::ValidationError("--duration", "must be > 0, got " + o.duration);
-    return d;
-  };
+  const auto duration = [&o] { return parse_positive_duration(o.duration, "--duration"); };
   if (o.profile == "constant") {
     constant_speed(p, speed, duration());
   } else if (o.profile == "trapezoid") {
@@ -442,7 +457,7 @@ signals::MotionProfile build_profile(const QuadratureOptions& o) {
   } else {
     throw CLI::ValidationError("--profile", "unknown profile '" + o.profile + "'");
   }
-  const Nanos dwell = parse_duration(o.dwell, "--dwell");
+  const Nanos dwell = parse_instant(o.dwell, "--dwell");
   if (dwell > Nanos::zero()) {
     if (p.at_rest())
       p.dwell(dwell);
@@ -452,9 +467,10 @@ signals::MotionProfile build_profile(const QuadratureOptions& o) {
   return p;
 }
 
-int run_quadrature(const QuadratureOptions& o) {
+int run_quadrature(const CLI::App& cmd, const QuadratureOptions& o) {
   using namespace signals;
-  check_quadrature(o);
+  check_quadrature(cmd, o);
+  require_writable("--out", o.out);
   const MotionProfile profile = build_profile(o);
   QuadratureEncoder enc;
   // The rig's placement (rig/campaign/rig_drive.cpp, docs/campaigns.md "[encoder]"): count =
@@ -540,30 +556,32 @@ void add_quadrature(CLI::App& synth) {
                   fmt::format("speed (constant, press) or max speed (trapezoid, scurve), RPM: -{0} .. {0}, "
                               "and at most {1} counts/s (X4); trapezoid, scurve, press: |rpm| >= {2}",
                               limits::kMaxRpm, limits::kMaxCountsPerS, limits::kMinCruiseRpm));
-  cmd->add_option("--duration", o->duration, "run time (constant, press), e.g. 10ms: 1ns .. 3600s");
+  cmd->add_option("--duration", o->duration, "run time (constant, press only), e.g. 10ms: 1ns .. 3600s");
   cmd->add_option(
       "--turns", o->turns,
-      fmt::format("move distance in turns, signed (trapezoid, scurve): -{0} .. {0}", limits::kMaxTurns));
-  cmd->add_option("--accel", o->accel, "acceleration, turns/s² (trapezoid, scurve: > 0): " + rate);
-  cmd->add_option("--decel", o->decel, "deceleration, turns/s² (trapezoid; 0 = accel): " + rate);
-  cmd->add_option("--jerk", o->jerk, "jerk, turns/s³ (scurve: > 0)");
-  cmd->add_option("--steps", o->steps, "constant-acceleration steps per jerk ramp (scurve)")
+      fmt::format("move distance in turns, signed (trapezoid, scurve only): -{0} .. {0}", limits::kMaxTurns));
+  cmd->add_option("--accel", o->accel, "acceleration, turns/s² (trapezoid, scurve only: > 0): " + rate);
+  cmd->add_option("--decel", o->decel, "deceleration, turns/s² (trapezoid only; 0 = accel): " + rate);
+  cmd->add_option("--jerk", o->jerk, "jerk, turns/s³ (scurve only: > 0)");
+  cmd->add_option("--steps", o->steps, "constant-acceleration steps per jerk ramp (scurve only)")
       ->check(CLI::Range(1, kMaxSteps));
-  cmd->add_option("--brake", o->brake, "brake deceleration, turns/s² (press: > 0): " + rate);
+  cmd->add_option("--brake", o->brake, "brake deceleration, turns/s² (press only: > 0): " + rate);
   cmd->add_option("--dwell", o->dwell, "time to hold (or keep turning) after the move: 0 .. 3600s");
   cmd->add_option("--start", o->start_turns,
                   fmt::format("start position, turns: -{0} .. {0}", limits::kMaxTurns));
   cmd->add_flag("--reverse-direction", o->reversed, "B leads A for forward motion");
-  cmd->add_option("--index-count", o->index_count, "Z position in counts within a turn: 0 .. 4 x lines - 1");
+  cmd->add_option("--index-count", o->index_count,
+                  "Z position in counts within a turn: 0 .. 4 x lines - 1 (with --index-width > 0)");
   cmd->add_option("--index-width", o->index_width, "Z width in counts (0: no Z): 0 .. 4 x lines");
   cmd->add_option("--index-line", o->index_line,
-                  "Z gated to A·B high on this line, 0 .. lines - 1 (overrides count/width)");
+                  "Z gated to A·B high on this line, 0 .. lines - 1 (not with --index-count/--index-width)");
   cmd->add_flag("--count", o->with_count, "also record the encoder count as an integer signal");
   cmd->add_option("--name", o->name, "signal name prefix");
   cmd->add_option("--max-input-hz", o->max_input_hz,
                   "check each channel against this frequency (e.g. 250e3; 0: no check)")
       ->check(non_negative_number());
-  cmd->add_option("--rate-action", o->rate_action, "warn | fail when --max-input-hz is exceeded")
+  cmd->add_option("--rate-action", o->rate_action,
+                  "warn | fail when --max-input-hz is exceeded (with --max-input-hz > 0)")
       ->check(CLI::IsMember({"warn", "fail"}));
   cmd->add_option("--glitch", o->glitches,
                   "fault: invert a channel for a while: channel,at,width (A|B|Z, 0 .. 3600s, 1ns .. 3600s)");
@@ -581,7 +599,7 @@ void add_quadrature(CLI::App& synth) {
   cmd->add_option(
       "--phase-error", o->phase_error,
       fmt::format("fault: shift B by this fraction of a quarter period, -{0} .. {0}", kMaxPhaseError));
-  on_run(*cmd, [o] { return run_quadrature(*o); });
+  on_run(*cmd, [cmd, o] { return run_quadrature(*cmd, *o); });
 }
 
 // ---- discrete ---------------------------------------------------------------------
@@ -602,7 +620,7 @@ std::vector<Edge> parse_sets(const std::vector<std::string>& sets) {
   for (const std::string& s : sets) {
     const auto parts = split(s, '=');
     if (parts.size() != 2) throw CLI::ValidationError("--set", "expected time=level, got '" + s + "'");
-    const Edge e{parse_instant(parts[0], "--set"), parse_level(parts[1])};
+    const Edge e{parse_instant(parts[0], "--set"), parse_level(parts[1], "--set", s)};
     const auto [it, added] = at.try_emplace(e.time, e.level, s);
     if (!added && it->second.first != e.level)
       throw CLI::ValidationError("--set",
@@ -648,7 +666,7 @@ Bounce parse_bounce(const std::string& text) {
   if (parts.size() != 5 && parts.size() != 6)
     throw CLI::ValidationError("--bounce",
                                "expected time,level,window,bounces,seed[,min_width], got '" + text + "'");
-  Bounce b{parse_instant(parts[0], "--bounce"), parse_level(parts[1]), {}};
+  Bounce b{parse_instant(parts[0], "--bounce"), parse_level(parts[1], "--bounce", text), {}};
   b.bounce.window = parse_instant(parts[2], "--bounce");
   b.bounce.bounces =
       static_cast<std::size_t>(parse_whole(parts[3], "--bounce", "bounces", 0, limits::kMaxBounceEdges));
@@ -665,29 +683,79 @@ Bounce parse_bounce(const std::string& text) {
   return b;
 }
 
+// One stimulus of the line: a --set (one edge), a --train or a --bounce (its edges, in time).
+struct Stimulus {
+  std::string option; // "--set"
+  std::string text;   // as given: "1ms=1"
+  std::vector<Edge> edges;
+  [[nodiscard]] Nanos first() const { return edges.front().time; }
+  [[nodiscard]] Nanos last() const { return edges.back().time; }
+  [[nodiscard]] std::string named() const { return option + " " + text; }
+};
+
+// The stimuli as given play one at a time, each as written. Two whose spans (first edge ..
+// last edge, both included) meet would play neither as asked: a --set inside a train stretches
+// or cuts a pulse, a train inside a bounce toggles against it. So they are refused, naming both
+// (two --set of one level at one time are one change). A train's pulses leave --initial and
+// return to it, so the line must be at --initial when the train starts: a --set or --bounce
+// before it that left the line at the other level is refused too.
+void check_stimuli(std::vector<Stimulus>& stimuli, Level initial, const std::string& initial_text) {
+  std::stable_sort(stimuli.begin(), stimuli.end(),
+                   [](const Stimulus& x, const Stimulus& y) { return x.first() < y.first(); });
+  const auto span = [](const Stimulus& x) {
+    return x.first() == x.last() ? "at " + duration_words(x.first())
+                                 : duration_words(x.first()) + " .. " + duration_words(x.last());
+  };
+  const Stimulus* reaching = nullptr; // the stimulus that ends last so far
+  const Stimulus* leveller = nullptr; // the one that last set the line's level
+  Level level = initial;
+  for (const Stimulus& x : stimuli) {
+    if (reaching != nullptr && x.first() <= reaching->last()) {
+      const bool same_change = x.option == "--set" && reaching->option == "--set" &&
+                               x.edges.front().level == reaching->edges.front().level;
+      if (!same_change)
+        throw CLI::ValidationError(x.option,
+                                   fmt::format("{} ({}) overlaps {} ({}): one stimulus at a time on the line",
+                                               x.named(), span(x), reaching->named(), span(*reaching)));
+    }
+    if (x.option == "--train" && level != initial)
+      throw CLI::ValidationError(
+          x.option, fmt::format("{} pulses away from --initial {} and back, but {} left the line at {} "
+                                "before it starts",
+                                x.named(), initial_text, leveller->named(), is_high(level) ? 1 : 0));
+    if (reaching == nullptr || x.last() > reaching->last()) reaching = &x;
+    level = x.edges.back().level;
+    leveller = &x;
+  }
+}
+
 int run_discrete(const DiscreteOptions& o) {
-  const Level initial = parse_level(o.initial);
-  std::vector<Edge> wanted = parse_sets(o.sets);
+  const Level initial = parse_level(o.initial, "--initial");
+  std::vector<Stimulus> stimuli;
+  const std::vector<Edge> sets = parse_sets(o.sets);
+  for (std::size_t i = 0; i < sets.size(); ++i) stimuli.push_back({"--set", o.sets[i], {sets[i]}});
   std::vector<Train> trains;
   std::vector<Bounce> bounces;
-  auto edges = static_cast<std::int64_t>(wanted.size());
+  auto edges = static_cast<std::int64_t>(sets.size());
   for (const std::string& s : o.trains) edges += 2 * trains.emplace_back(parse_train(s)).count;
   for (const std::string& s : o.bounces)
     edges += 2 * static_cast<std::int64_t>(bounces.emplace_back(parse_bounce(s)).bounce.bounces) + 1;
   require_edges_within_cap(edges, "discrete", "fewer or shorter --train and --bounce");
-  for (const Train& t : trains) {
+  require_writable("--out", o.out);
+  for (std::size_t i = 0; i < trains.size(); ++i) {
+    const Train& t = trains[i];
     signals::DiscreteSignal train(initial);
     train.pulse_train(t.start, t.period, t.width, static_cast<std::size_t>(t.count), !initial);
-    wanted.insert(wanted.end(), train.edges().begin(), train.edges().end());
+    stimuli.push_back({"--train", o.trains[i], train.edges()});
   }
-  for (const Bounce& b : bounces) {
-    const auto bounce = signals::bounce_edges(b.at, b.level, b.bounce);
-    wanted.insert(wanted.end(), bounce.begin(), bounce.end());
+  for (std::size_t i = 0; i < bounces.size(); ++i) {
+    const Bounce& b = bounces[i];
+    stimuli.push_back({"--bounce", o.bounces[i], signals::bounce_edges(b.at, b.level, b.bounce)});
   }
-  std::stable_sort(wanted.begin(), wanted.end(),
-                   [](const Edge& x, const Edge& y) { return x.time < y.time; });
+  check_stimuli(stimuli, initial, o.initial);
   signals::DiscreteSignal signal(initial);
-  for (const Edge& e : wanted) signal.set(e.time, e.level);
+  for (const Stimulus& x : stimuli)
+    for (const Edge& e : x.edges) signal.set(e.time, e.level);
 
   TraceRecorder trace;
   const std::uint32_t line = trace.declare(o.name);
@@ -701,10 +769,12 @@ int run_discrete(const DiscreteOptions& o) {
 void add_discrete(CLI::App& synth) {
   auto o = std::make_shared<DiscreteOptions>();
   CLI::App* cmd =
-      synth.add_subcommand("discrete", "A discrete input: level changes, pulse trains, contact bounce");
+      synth.add_subcommand("discrete", "A discrete input: level changes, pulse trains, contact bounce; one "
+                                       "stimulus at a time (overlapping ones are refused, naming both), and "
+                                       "a train starts with the line at --initial");
   cmd->add_option("--out", o->out, "VCD file to write ('-' for stdout)")->required();
   cmd->add_option("--name", o->name, "signal name");
-  cmd->add_option("--initial", o->initial, "initial level (0/1)");
+  cmd->add_option("--initial", o->initial, "initial level: 0, 1, low or high");
   cmd->add_option("--set", o->sets,
                   "a level change: time=level, e.g. 1ms=1 (repeatable; times 0 .. 3600s, one level a time)");
   cmd->add_option(
@@ -734,13 +804,6 @@ void require_within(const std::string& option, double value, double lo, double h
     throw CLI::ValidationError(option, fmt::format("{} (got {})", range, value));
 }
 
-void require_duration_within(const std::string& option, const std::string& text, Nanos value, Nanos lo,
-                             Nanos hi) {
-  if (value < lo || value > hi)
-    throw CLI::ValidationError(
-        option, fmt::format("{} .. {} (got {})", duration_words(lo), duration_words(hi), text));
-}
-
 std::int64_t parse_whole(const std::string& text, const std::string& option, const std::string& what,
                          std::int64_t lo, std::int64_t hi) {
   const double v = parse_number(text, option);
@@ -749,24 +812,56 @@ std::int64_t parse_whole(const std::string& text, const std::string& option, con
   return static_cast<std::int64_t>(v);
 }
 
-Nanos parse_duration(const std::string& text, const std::string& option) {
+Nanos parse_duration(const std::string& text, const std::string& option, Nanos lo, Nanos hi) {
   const double seconds = seconds_in(text, option);
-  const double max = limits::kMaxEnd.seconds();
-  if (!(std::abs(seconds) <= max))
-    throw CLI::ValidationError(
-        option, fmt::format("a time within -{0} .. {0} (got {1})", duration_words(limits::kMaxEnd), text));
-  return Nanos::from_seconds(seconds);
+  const auto refuse = [&] {
+    return CLI::ValidationError(
+        option, fmt::format("{} .. {} (got {})", duration_words(lo), duration_words(hi), text));
+  };
+  // As written first: NaN, infinities and huge values never reach the conversion to Nanos.
+  if (!(seconds >= lo.seconds() && seconds <= hi.seconds())) throw refuse();
+  const Nanos t = Nanos::from_seconds(seconds);
+  if (t < lo || t > hi) throw refuse();
+  return t;
+}
+
+Nanos parse_instant(const std::string& text, const std::string& option) {
+  return parse_duration(text, option, Nanos::zero(), limits::kMaxEnd);
+}
+
+Nanos parse_positive_duration(const std::string& text, const std::string& option) {
+  return parse_duration(text, option, Nanos{1}, limits::kMaxEnd);
+}
+
+void refuse_unless_applies(const CLI::App& kind, const std::string& option, bool applies,
+                           const std::string& needs) {
+  if (!applies && kind.count(option) > 0) throw CLI::ValidationError(option, needs);
+}
+
+void require_writable(const std::string& option, const std::string& path) {
+  if (path == "-") return;
+  if (path.empty()) throw CLI::ValidationError(option, "a file to write (got an empty path)");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw CLI::ValidationError(option, path + ": a directory, not a file to write");
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  const std::string where = dir.empty() ? "." : dir.string();
+  if (::access(where.c_str(), W_OK | X_OK) != 0)
+    throw CLI::ValidationError(option,
+                               fmt::format("{}: cannot write in {}: {}", path, where, std::strerror(errno)));
+}
+
+void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  if (path == "-") {
+    write(std::cout);
+    std::cout.flush();
+    return;
+  }
+  rig::write_file_atomically(path, write);
 }
 
 void write_vcd_file(const TraceRecorder& trace, const std::string& path) {
-  if (path == "-") {
-    write_vcd(trace, std::cout);
-    return;
-  }
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw std::runtime_error("cannot open " + path + " for writing");
-  write_vcd(trace, out);
-  if (!out) throw std::runtime_error("cannot write " + path);
+  write_output_file(path, [&trace](std::ostream& out) { write_vcd(trace, out); });
 }
 
 bool register_synth_kind(SynthKindAdder add) {

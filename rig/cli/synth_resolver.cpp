@@ -10,9 +10,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
@@ -67,7 +67,7 @@ struct ResolverOptions {
   // The emulator-node stream.
   bool frames = false;
   std::string frame_period = "1ms";
-  unsigned channel = 0;
+  std::int64_t channel = 0; // signed: CLI11 reads "-1" into an unsigned as 2^64 - 1
   std::string can_bus = "can0";
   std::string can_log;
 };
@@ -75,10 +75,25 @@ struct ResolverOptions {
 double radians(double deg) { return deg * std::numbers::pi / 180.0; }
 
 void write_can_log(const TraceRecorder& trace, const std::string& path) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw std::runtime_error("cannot open " + path + " for writing");
-  write_candump(trace, out);
-  if (!out) throw std::runtime_error("cannot write " + path);
+  write_output_file(path, [&trace](std::ostream& out) { write_candump(trace, out); });
+}
+
+// A Linux network interface name (dev_valid_name, IFNAMSIZ 16 with its NUL): a candump line
+// is "(time) IFACE ID#DATA", so a space would split it and an empty name leave a field out.
+constexpr std::size_t kMaxIfName = 15;
+
+void check_can_bus(const std::string& name) {
+  const auto bad = [&name](const std::string& why) {
+    return CLI::ValidationError("--can-bus", fmt::format("an interface name of 1 .. {} characters, without "
+                                                         "whitespace, '/' or ':', not . or .. ({}: got '{}')",
+                                                         kMaxIfName, why, name));
+  };
+  if (name.empty()) throw bad("empty");
+  if (name.size() > kMaxIfName) throw bad(fmt::format("{} characters", name.size()));
+  if (name == "." || name == "..") throw bad("not a name");
+  for (const char c : name)
+    if (std::isspace(static_cast<unsigned char>(c)) != 0 || c == '/' || c == ':')
+      throw bad(fmt::format("'{}' in it", c == '\t' ? std::string("\\t") : std::string(1, c)));
 }
 
 constexpr double kMaxRateHz = 1e9; // the trace's resolution: one sample a nanosecond
@@ -89,7 +104,13 @@ void check_phase(const std::string& option, double deg) {
 
 // The options against the campaign's limits (docs/campaigns.md "Ranges and limits") and the
 // signal library's resolver (2.2 .. 7 kHz excitation, signals/resolver.hpp).
-void check_resolver(const ResolverOptions& o) {
+void check_resolver(const CLI::App& cmd, const ResolverOptions& o) {
+  // The stream's options do nothing without the stream: refused, not ignored.
+  const bool frames_wanted = o.frames || !o.can_log.empty();
+  for (const char* option : {"--frame-period", "--channel", "--can-bus"})
+    refuse_unless_applies(cmd, option, frames_wanted,
+                          "only with --can-frames or --can-log: it shapes the angle frames they write");
+  if (frames_wanted) check_can_bus(o.can_bus);
   require_within("--rpm", o.rpm, -limits::kMaxRpm, limits::kMaxRpm,
                  fmt::format("-{0} .. {0} rpm", limits::kMaxRpm));
   const double max_deg = limits::kMaxTurns * 360.0;
@@ -108,7 +129,8 @@ void check_resolver(const ResolverOptions& o) {
   check_phase("--excitation-phase", o.excitation_phase_deg);
   check_phase("--sin-phase", o.sin_phase_deg);
   check_phase("--cos-phase", o.cos_phase_deg);
-  if (o.channel > 15) throw CLI::ValidationError("--channel", fmt::format("0 .. 15 (got {})", o.channel));
+  if (o.channel < 0 || o.channel > 15)
+    throw CLI::ValidationError("--channel", fmt::format("0 .. 15 (got {})", o.channel));
   // Samples of the carrier at or below twice its frequency alias it (at exactly twice they can
   // all be zero crossings); above 1 GHz two samples share the trace's nanosecond.
   if (!(o.rate_hz > 2.0 * o.excitation_hz && o.rate_hz <= kMaxRateHz))
@@ -132,8 +154,7 @@ std::int64_t samples_in(Nanos duration, double rate_hz) {
 
 // Frame k at k x period up to and including the end of the run.
 Nanos frame_period_of(const ResolverOptions& o, Nanos duration) {
-  const Nanos period = parse_duration(o.frame_period, "--frame-period");
-  require_duration_within("--frame-period", o.frame_period, period, Nanos{1}, limits::kMaxEnd);
+  const Nanos period = parse_positive_duration(o.frame_period, "--frame-period");
   const std::int64_t frames = duration.count() / period.count() + 1;
   if (frames > kMaxFrames)
     throw CLI::ValidationError("--frame-period",
@@ -143,14 +164,20 @@ Nanos frame_period_of(const ResolverOptions& o, Nanos duration) {
   return period;
 }
 
-void run_resolver(const ResolverOptions& o) {
+void run_resolver(const CLI::App& cmd, const ResolverOptions& o) {
   using namespace signals;
-  check_resolver(o);
-  const Nanos duration = parse_duration(o.duration, "--duration");
-  if (duration <= Nanos::zero()) throw CLI::ValidationError("--duration", "must be > 0, got " + o.duration);
+  check_resolver(cmd, o);
+  const Nanos duration = parse_positive_duration(o.duration, "--duration");
   const auto count = static_cast<std::size_t>(samples_in(duration, o.rate_hz));
   const bool frames_wanted = o.frames || !o.can_log.empty();
   const Nanos period = frames_wanted ? frame_period_of(o, duration) : Nanos{0};
+  // Every output is checked before any is written: a refused --out leaves no --can-log behind.
+  require_writable("--out", o.out);
+  if (!o.can_log.empty()) {
+    require_writable("--can-log", o.can_log);
+    if (o.can_log == o.out)
+      throw CLI::ValidationError("--can-log", "a file other than --out's (got " + o.out + ")");
+  }
   const double speed = o.rpm / 60.0; // turns/s
   MotionProfile profile(o.start_deg / 360.0);
   constant_speed(profile, speed, duration);
@@ -209,10 +236,10 @@ void run_resolver(const ResolverOptions& o) {
       trace.value(angle, t, static_cast<std::int64_t>(get_raw(frame, 0, 24)));
       trace.value(sequence, t, static_cast<std::int64_t>(f.sequence));
     }
-    if (!o.can_log.empty()) write_can_log(trace, o.can_log);
   }
 
   write_vcd_file(trace, o.out);
+  if (!o.can_log.empty()) write_can_log(trace, o.can_log);
   if (o.out != "-")
     fmt::print("{}: {} samples at {} Hz over {:.6f} s, angle {:.3f} -> {:.3f} deg, {} angle frames\n", o.out,
                count, o.rate_hz, duration.seconds(), o.start_deg, profile.end_position() * 360.0, frames);
@@ -256,12 +283,16 @@ void add_synth_resolver(CLI::App& synth) {
       "add the emulator-node angle frames (0x120) to the trace (speed field +-2047.99 turn/s: every --rpm "
       "fits)");
   cmd->add_option("--frame-period", o->frame_period,
-                  fmt::format("angle frame period, e.g. 1ms: 1ns .. 3600s, at most {} frames", kMaxFrames));
-  cmd->add_option("--channel", o->channel, "resolver channel in the frames, 0..15");
-  cmd->add_option("--can-bus", o->can_bus, "bus name in the trace and the candump log");
+                  fmt::format("angle frame period, e.g. 1ms: 1ns .. 3600s, at most {} frames (with "
+                              "--can-frames or --can-log)",
+                              kMaxFrames));
+  cmd->add_option("--channel", o->channel, "resolver channel in the frames, 0 .. 15 (with the frames)");
+  cmd->add_option("--can-bus", o->can_bus,
+                  "bus name in the trace and the candump log: a Linux interface name, 1 .. 15 characters, "
+                  "no whitespace, '/' or ':' (with the frames)");
   cmd->add_option("--can-log", o->can_log, "also write the angle frames as a candump -l log");
-  on_run(*cmd, [o] {
-    run_resolver(*o);
+  on_run(*cmd, [cmd, o] {
+    run_resolver(*cmd, *o);
     return 0;
   });
 }

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "models/ssi7361/setup.hpp"
 #include "rig/campaign/limits.hpp"
 #include "rig/cli/number_checks.hpp"
 #include "rig/cli/synth_command.hpp"
@@ -33,49 +34,76 @@ constexpr unsigned kFrameBits = 25;
 // Each frame is 50 clock edges and up to 50 data edges: kMaxSynthEdges in all.
 constexpr std::size_t kMaxFrames = static_cast<std::size_t>(kMaxSynthEdges) / 100;
 
+// Whole-number options are signed here: CLI11 reads "-1" into an unsigned as 2^64 - 1, and the
+// refusal would then quote that instead of what was typed.
 struct SsiOptions {
   std::string out;
   std::string name = "rig.ssi";
   unsigned clock_khz = 125;
-  std::size_t frames = 4;
+  std::int64_t frames = 4;
   std::string first = "20us";
-  unsigned msb = 1;
-  unsigned bits = 24;
+  std::int64_t msb = 1;
+  std::int64_t bits = 24;
   bool gray = false;
-  std::uint32_t counts_per_turn = 4096;
+  std::int64_t counts_per_turn = 4096;
   double rpm = 0.0;
   double start_turns = 0.0;
   std::string monoflop = "16us";
   std::string output_delay = "0";
   // Faults.
   std::string stuck = "none";
-  unsigned flip_bit = 0;
+  std::int64_t flip_bit = 0;
   std::string late = "0";
-  std::uint32_t glitch_mask = 0;
+  std::int64_t glitch_mask = 0;
 };
 
-// The data field (--msb, --bits) lies inside the frame, stream bits 1 .. 25.
+// The data field (--msb, --bits) is what the 7361's Format command can be set to: outside it
+// the board raises FMTErr (ssi7361.md §3, L2126-2163), so the rig refuses it too, by the
+// model's own rule (models/ssi7361/setup.hpp format_fault), in the manual's order.
 void check_fields(const SsiOptions& o) {
-  if (o.msb < 1 || o.msb + o.bits - 1 > kFrameBits)
-    throw CLI::ValidationError("--msb", fmt::format("1 .. {0} with --msb + --bits - 1 <= {0} (got {1} + {2})",
-                                                    kFrameBits, o.msb, o.bits));
-  const std::uint64_t max_mask = (std::uint64_t{1} << o.bits) - 1;
-  if (o.glitch_mask > max_mask)
+  namespace m = models::ssi7361;
+  const auto in = [](std::int64_t v, unsigned lo, unsigned hi) {
+    return v >= static_cast<std::int64_t>(lo) && v <= static_cast<std::int64_t>(hi);
+  };
+  // Out of the 5-bit fields' reach the setup cannot even hold the value: judged here first.
+  if (!in(o.bits, 0, 31) || !in(o.msb, 0, 31) ||
+      m::format_fault(m::SsiSetup{.msb = static_cast<unsigned>(o.msb),
+                                  .bits = static_cast<unsigned>(o.bits)}) != m::FormatFault::None) {
+    if (!in(o.bits, m::kMinDataBits, m::kMaxDataBits))
+      throw CLI::ValidationError("--bits", fmt::format("{} .. {}, the 7361's Number of Data Bits N (got {})",
+                                                       m::kMinDataBits, m::kMaxDataBits, o.bits));
+    if (!in(o.msb, m::kMinMsb, m::kMaxMsb))
+      throw CLI::ValidationError(
+          "--msb", fmt::format("{} .. {}, the 7361's MSB Number M (got {})", m::kMinMsb, m::kMaxMsb, o.msb));
+    throw CLI::ValidationError(
+        "--msb", fmt::format("--msb + --bits at most {} (the 7361's M + N: the field ends by stream bit {}) "
+                             "(got {} + {} = {})",
+                             m::kMaxMsbPlusBits, kFrameBits, o.msb, o.bits, o.msb + o.bits));
+  }
+  // A single-turn position is 0 .. counts-per-turn - 1: more than the field holds would wrap.
+  const std::int64_t field = std::int64_t{1} << o.bits;
+  if (o.counts_per_turn < 1 || o.counts_per_turn > field)
+    throw CLI::ValidationError(
+        "--counts-per-turn",
+        fmt::format("1 .. 2^bits = {}: positions 0 .. counts-per-turn - 1 fit the {}-bit field of --bits "
+                    "(got {})",
+                    field, o.bits, o.counts_per_turn));
+  if (o.glitch_mask < 0 || o.glitch_mask > field - 1)
     throw CLI::ValidationError(
         "--glitch-mask",
-        fmt::format("0 .. {} (the {}-bit data field of --bits) (got {})", max_mask, o.bits, o.glitch_mask));
+        fmt::format("0 .. {} (the {}-bit data field of --bits) (got {})", field - 1, o.bits, o.glitch_mask));
 }
 
 // A time of the slave's that may be 0 (monoflop, output delay, a late answer).
-Nanos parse_delay(const std::string& option, const std::string& text) {
-  const Nanos d = parse_duration(text, option);
-  require_duration_within(option, text, d, Nanos::zero(), limits::kMaxEnd);
-  return d;
-}
+Nanos parse_delay(const std::string& option, const std::string& text) { return parse_instant(text, option); }
 
-void check_ssi(const SsiOptions& o) {
+void check_ssi(const CLI::App& cmd, const SsiOptions& o) {
   check_fields(o);
-  if (o.frames < 1 || o.frames > kMaxFrames)
+  // A stuck data line sends no bit: the faults that change the bits it sends would do nothing.
+  for (const char* fault : {"--flip-bit", "--late", "--glitch-mask"})
+    refuse_unless_applies(cmd, fault, o.stuck == "none",
+                          "not with --stuck " + o.stuck + ": a stuck data line sends no bit to change");
+  if (o.frames < 1 || o.frames > static_cast<std::int64_t>(kMaxFrames))
     throw CLI::ValidationError("--frames", fmt::format("1 .. {} (got {})", kMaxFrames, o.frames));
   require_within("--rpm", o.rpm, -limits::kMaxRpm, limits::kMaxRpm,
                  fmt::format("-{0} .. {0} rpm", limits::kMaxRpm));
@@ -83,39 +111,50 @@ void check_ssi(const SsiOptions& o) {
                  fmt::format("-{0} .. {0} turns", limits::kMaxTurns));
 }
 
-void run_ssi(const SsiOptions& o) {
+void run_ssi(const CLI::App& cmd, const SsiOptions& o) {
   using namespace signals;
-  check_ssi(o);
+  check_ssi(cmd, o);
   const SsiMasterParams master_params = ssi7361_master(o.clock_khz == 500);
   const SsiMaster master(master_params);
-  const Nanos first = parse_duration(o.first, "--first");
-  if (first <= Nanos::zero())
-    throw CLI::ValidationError("--first", "must be > 0 (the clock idles high before), got " + o.first);
+  // After 0: the clock idles high before the first frame's latching edge.
+  const Nanos first = parse_positive_duration(o.first, "--first");
   const Nanos monoflop = parse_delay("--monoflop", o.monoflop);
   const Nanos output_delay = parse_delay("--output-delay", o.output_delay);
   const Nanos late = parse_delay("--late", o.late);
-  const Nanos end = first + master.frame_period() * static_cast<std::int64_t>(o.frames);
+  // The last frame ends within a campaign's run, as quadrature's and discrete's signals do.
+  // Exact in Nanos: --frames is at most kMaxFrames, so first + frames x TINT cannot overflow.
+  const Nanos tint = master.frame_period();
+  const Nanos end = first + tint * o.frames;
+  if (end > limits::kMaxEnd)
+    throw CLI::ValidationError(
+        "--frames",
+        fmt::format("frames that end by {}: --first {} + {} x {} (one frame at {} kHz) ends at {:.9f} s",
+                    duration_words(limits::kMaxEnd), o.first, o.frames, duration_words(tint), o.clock_khz,
+                    end.seconds()));
+  require_writable("--out", o.out);
+  const auto frames = static_cast<std::size_t>(o.frames);
 
   MotionProfile profile(o.start_turns);
   constant_speed(profile, o.rpm / 60.0, end);
 
   SsiSlaveParams slave_params;
-  slave_params.format = ssi7361_frame(o.msb, o.bits, o.gray ? SsiCode::Gray : SsiCode::Binary);
+  slave_params.format = ssi7361_frame(static_cast<unsigned>(o.msb), static_cast<unsigned>(o.bits),
+                                      o.gray ? SsiCode::Gray : SsiCode::Binary);
   slave_params.monoflop = monoflop;
   slave_params.output_delay = output_delay;
   SsiSlaveFaults faults;
   if (o.stuck == "high") faults.stuck = SsiStuck::High;
   if (o.stuck == "low") faults.stuck = SsiStuck::Low;
-  faults.flip_stream_bit = o.flip_bit;
+  faults.flip_stream_bit = static_cast<unsigned>(o.flip_bit);
   faults.late_response = late;
-  faults.gray_glitch_mask = o.glitch_mask;
+  faults.gray_glitch_mask = static_cast<std::uint32_t>(o.glitch_mask);
 
-  std::vector<Edge> clock = master.clock_schedule(first, o.frames);
+  std::vector<Edge> clock = master.clock_schedule(first, frames);
   std::vector<Edge> data;
   Level data_initial = Level::High;
   try {
-    SsiSlave slave(slave_params,
-                   counts_from_turns([&profile](Nanos t) { return profile.position(t); }, o.counts_per_turn));
+    SsiSlave slave(slave_params, counts_from_turns([&profile](Nanos t) { return profile.position(t); },
+                                                   static_cast<std::uint32_t>(o.counts_per_turn)));
     // A stuck line is stuck from the start: it is the line's initial level, not an edge.
     static_cast<void>(slave.set_faults(faults, Nanos{0}));
     data_initial = slave.data();
@@ -139,7 +178,7 @@ void run_ssi(const SsiOptions& o) {
   for (const Edge& e : data) trace.edge(dat, e);
   // Each word appears when the master has sampled its last bit.
   const LineHistory line(data_initial, data);
-  for (const SsiReading& r : master.read_frames(line, first, o.frames)) {
+  for (const SsiReading& r : master.read_frames(line, first, frames)) {
     const Nanos read_at = master.sample_time(r.frame_start, master_params.frame_bits);
     trace.value(word, read_at, static_cast<std::int64_t>(r.word));
     trace.value(value, read_at,
@@ -152,6 +191,7 @@ void run_ssi(const SsiOptions& o) {
 }
 
 void add_synth_ssi(CLI::App& synth) {
+  namespace m = models::ssi7361;
   auto o = std::make_shared<SsiOptions>();
   CLI::App* cmd = synth.add_subcommand(
       "ssi", "The 7361's SSI clock and the transducer's data line for N frames (shaft at constant speed)");
@@ -159,28 +199,36 @@ void add_synth_ssi(CLI::App& synth) {
   cmd->add_option("--name", o->name, "signal name prefix");
   cmd->add_option("--clock-khz", o->clock_khz, "SSI clock: 125 (TINT 500 us) or 500 (TINT 250 us)")
       ->check(CLI::IsMember({125U, 500U}));
-  cmd->add_option("--frames", o->frames, fmt::format("frames to clock, 1 .. {}", kMaxFrames));
+  cmd->add_option("--frames", o->frames,
+                  fmt::format("frames to clock, 1 .. {}, the last ending by 3600s", kMaxFrames));
   cmd->add_option("--first", o->first, "first frame's latching falling edge, e.g. 20us: 1ns .. 3600s");
   cmd->add_option("--msb", o->msb,
-                  "stream bit of the data MSB (the 7361's M): 1 .. 25, with --msb + --bits - 1 <= 25");
-  cmd->add_option("--bits", o->bits, "data bits (the 7361's N)")->check(CLI::Range(1U, 25U));
+                  fmt::format("stream bit of the data MSB (the 7361's MSB Number M): {} .. {}, with --msb + "
+                              "--bits <= {} (FMTErr otherwise)",
+                              m::kMinMsb, m::kMaxMsb, m::kMaxMsbPlusBits));
+  cmd->add_option(
+      "--bits", o->bits,
+      fmt::format("data bits (the 7361's Number of Data Bits N): {} .. {}, with --msb + --bits <= {}",
+                  m::kMinDataBits, m::kMaxDataBits, m::kMaxMsbPlusBits));
   cmd->add_flag("--gray", o->gray, "Gray-coded data (default binary)");
-  cmd->add_option("--counts-per-turn", o->counts_per_turn, "transducer counts per turn")
+  cmd->add_option("--counts-per-turn", o->counts_per_turn,
+                  "transducer counts per turn: 1 .. 2^bits (each position 0 .. counts-per-turn - 1 fits the "
+                  "field; more is refused, not wrapped)")
       ->check(positive_number());
   cmd->add_option("--rpm", o->rpm, fmt::format("shaft speed, RPM (signed): -{0} .. {0}", limits::kMaxRpm));
   cmd->add_option("--start", o->start_turns,
                   fmt::format("start position, turns: -{0} .. {0}", limits::kMaxTurns));
-  cmd->add_option("--monoflop", o->monoflop, "transducer monoflop time TM, e.g. 16us: 0 .. 3600s");
-  cmd->add_option("--output-delay", o->output_delay, "clock edge to data change, e.g. 200ns: 0 .. 3600s");
+  cmd->add_option("--monoflop", o->monoflop, "transducer monoflop time TM, e.g. 16us: 0s .. 3600s");
+  cmd->add_option("--output-delay", o->output_delay, "clock edge to data change, e.g. 200ns: 0s .. 3600s");
   cmd->add_option("--stuck", o->stuck, "fault: data line stuck none | high | low")
       ->check(CLI::IsMember({"none", "high", "low"}));
   cmd->add_option("--flip-bit", o->flip_bit, "fault: invert this stream bit (1..25) on the wire")
-      ->check(CLI::Range(1U, kFrameBits));
-  cmd->add_option("--late", o->late, "fault: extra delay of every data change, e.g. 3us: 0 .. 3600s");
+      ->check(CLI::Range(1, static_cast<int>(kFrameBits)));
+  cmd->add_option("--late", o->late, "fault: extra delay of every data change, e.g. 3us: 0s .. 3600s");
   cmd->add_option("--glitch-mask", o->glitch_mask,
                   "fault: XOR this into the coded data field: 0 .. 2^bits - 1 (within --bits)");
-  on_run(*cmd, [o] {
-    run_ssi(*o);
+  on_run(*cmd, [cmd, o] {
+    run_ssi(*cmd, *o);
     return 0;
   });
 }

@@ -76,6 +76,12 @@ std::optional<std::string> unknown_word(const CLI::App& app, int argc, const cha
     if (!known)
       return fmt::format("hilrig {}: {}: no such option{} (hilrig {} --help lists them)", path, name,
                          did_you_mean(name, options), path);
+    // The word after an option that needs a value is that value, as CLI11 takes it whatever it
+    // looks like: "--rpm -inf" is --rpm's bad value, judged by --rpm, not an option "-inf".
+    const bool attached =
+        word.find('=') != std::string_view::npos || (!name.starts_with("--") && name.size() > 2);
+    const CLI::Option* option = attached ? nullptr : cmd->get_option_no_throw(name);
+    if (option != nullptr && option->get_items_expected_min() > 0) ++i;
   }
   return std::nullopt;
 }

@@ -14,7 +14,8 @@ namespace hilrig::cli {
 // "hilrig run: --ot: no such option (did you mean \"--out\"?)"; nullopt when the words are
 // all known (CLI11 then parses them and judges the rest). A command of a command is followed
 // ("synth quadrature --lines": quadrature's options). A word after "-" and a digit or "." is a
-// value ("-3", "-1ms"), not an option.
+// value ("-3", "-1ms"), not an option, and so is the word after an option that takes one
+// ("--rpm -inf": CLI11 gives it to --rpm, whose own check refuses it).
 [[nodiscard]] std::optional<std::string> unknown_word(const CLI::App& app, int argc, const char* const* argv);
 
 } // namespace hilrig::cli

@@ -324,18 +324,18 @@ TEST(CommandLine, SynthBadValuesNameTheOptionAndItsRange) {
       {"quadrature --lines 0", "--lines: 0 is not > 0"},   // CLI11 once said "0 not in range 0 to 1.8e308"
       {"quadrature --lines -3", "--lines: -3 is not > 0"}, // a negative number is a value
       {"quadrature --lines abc", "--lines: abc is not a number"},
-      {"quadrature --duration 0ms", "--duration: must be > 0, got 0ms"},
-      {"quadrature --duration -1ms", "--duration: must be > 0, got -1ms"}, // "-1ms" is a value too
-      {"resolver --duration -1ms", "--duration: must be > 0"},
+      {"quadrature --duration 0ms", "--duration: 1ns .. 3600s (got 0ms)"},
+      {"quadrature --duration -1ms", "--duration: 1ns .. 3600s (got -1ms)"}, // "-1ms" is a value too
+      {"resolver --duration -1ms", "--duration: 1ns .. 3600s (got -1ms)"},
       {"discrete --train 2ms,1ms,3ms,3", "--train: a width 0 < width < period 1ms (got 3ms)"},
-      {"ssi --bits 26", "--bits: Value 26 not in range 1 to 25"},
+      {"ssi --bits 26", "--bits: 2 .. 25, the 7361's Number of Data Bits N (got 26)"},
       // Non-finite and huge numbers: the campaign's limits (docs/campaigns.md "Ranges and limits").
       {"quadrature --rpm nan", "--rpm: -32767 .. 32767 rpm (got nan)"},
       {"quadrature --start inf", "--start: -10000 .. 10000 turns (got inf)"},
       {"quadrature --rpm 1e300 --duration 1ms", "--rpm: -32767 .. 32767 rpm (got 1e+300)"},
       // 1,000,000 counts/s over 4096 counts/turn: 244.140625 turn/s = 14648.4375 rpm.
       {"quadrature --lines 1024 --rpm 15000", "--rpm: at most 1000000 encoder counts/s (X4): 14648.4 rpm"},
-      {"quadrature --duration inf", "--duration: a time within -3600s .. 3600s (got inf)"},
+      {"quadrature --duration inf", "--duration: 1ns .. 3600s (got inf)"},
       {"quadrature --dwell 3601s", "--dwell: 0s .. 3600s (got 3601s)"},
       {"quadrature --dwell -1s", "--dwell: 0s .. 3600s (got -1s)"},
       {"discrete --set 3601s=1", "--set: 0s .. 3600s (got 3601s)"},
@@ -363,20 +363,23 @@ TEST(CommandLine, SynthBadValuesNameTheOptionAndItsRange) {
       // Values once accepted silently.
       {"quadrature --index-line 1024", "--index-line: a line 0 .. 1023 of --lines 1024 (got 1024)"},
       {"quadrature --index-line -1", "--index-line: a line 0 .. 1023 of --lines 1024 (got -1)"},
-      {"quadrature --index-count 4096", "--index-count: a count within the turn, 0 .. 4095"},
-      {"quadrature --index-count -1", "--index-count: a count within the turn, 0 .. 4095"},
+      {"quadrature --index-width 1 --index-count 4096", "--index-count: a count within the turn, 0 .. 4095"},
+      {"quadrature --index-width 1 --index-count -1", "--index-count: a count within the turn, 0 .. 4095"},
       {"quadrature --index-width -1", "--index-width: 0 .. 4096 counts, at most a turn (got -1)"},
       {"quadrature --index-width 4097", "--index-width: 0 .. 4096 counts, at most a turn (got 4097)"},
-      {"quadrature --decel -1", "--decel: 0 .. 16666.7 turns/s² (1000000 rpm/s) (got -1)"},
+      {"quadrature --profile trapezoid --accel 10 --decel -1",
+       "--decel: 0 .. 16666.7 turns/s² (1000000 rpm/s) (got -1)"},
       {"quadrature --max-input-hz -1", "--max-input-hz: -1 is not >= 0"},
       {"ssi --flip-bit 0", "--flip-bit: Value 0 not in range 1 to 25"},
-      {"ssi --glitch-mask 1024 --bits 10",
+      {"ssi --glitch-mask 1024 --bits 10 --counts-per-turn 1024",
        "--glitch-mask: 0 .. 1023 (the 10-bit data field of --bits) (got 1024)"},
       {"discrete --train 1ms,100us,10us,0", "--train: a count 1 .. 5000000 (got 0)"},
       {"discrete --set 1ms=1 --set 1ms=0", "--set: one level at each time (got 1ms=1 and 1ms=0)"},
       // The option, not the signal library's identifier.
-      {"ssi --msb 0", "--msb: 1 .. 25 with --msb + --bits - 1 <= 25 (got 0 + 24)"},
-      {"ssi --msb 20 --bits 10", "--msb: 1 .. 25 with --msb + --bits - 1 <= 25 (got 20 + 10)"},
+      {"ssi --msb 0", "--msb: 1 .. 24, the 7361's MSB Number M (got 0)"},
+      {"ssi --msb 20 --bits 10",
+       "--msb: --msb + --bits at most 26 (the 7361's M + N: the field ends by stream "
+       "bit 25) (got 20 + 10 = 30)"},
       {"ssi --flip-bit 26", "--flip-bit: Value 26 not in range 1 to 25"},
       {"ssi --output-delay -1us", "--output-delay: 0s .. 3600s (got -1us)"},
       {"ssi --late -1us", "--late: 0s .. 3600s (got -1us)"},

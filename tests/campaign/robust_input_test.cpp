@@ -135,8 +135,8 @@ TEST(RobustInput, ServeRefusesABadBindAndAnOutOfRangeMotion) {
 // end within a campaign's run, and the least rate that does is named.
 TEST(RobustInput, SynthRefusesAMoveLongerThanARun) {
   const fs::path dir = test::scratch_dir("campaign", "robust_synth_time");
-  const std::string base =
-      "synth quadrature --out " + (dir / "a.vcd").string() + " --lines 100 --rpm 600 --turns 1 ";
+  const std::string stroke = "synth quadrature --out " + (dir / "a.vcd").string() + " --lines 100 --rpm 600 ";
+  const std::string base = stroke + "--turns 1 "; // a move's distance: not the press's option
   const Result accel = hilrig(base + "--profile trapezoid --accel 1e-300");
   EXPECT_EQ(accel.status, 2) << accel.err;
   EXPECT_NE(accel.err.find("--accel"), std::string::npos) << accel.err;
@@ -144,7 +144,7 @@ TEST(RobustInput, SynthRefusesAMoveLongerThanARun) {
   const Result jerk = hilrig(base + "--profile scurve --accel 10 --jerk 1e-300");
   EXPECT_EQ(jerk.status, 2) << jerk.err;
   EXPECT_NE(jerk.err.find("--jerk"), std::string::npos) << jerk.err;
-  const Result brake = hilrig(base + "--profile press --duration 1s --brake 1e-300");
+  const Result brake = hilrig(stroke + "--profile press --duration 1s --brake 1e-300");
   EXPECT_EQ(brake.status, 2) << brake.err;
   EXPECT_NE(brake.err.find("--brake"), std::string::npos) << brake.err;
   EXPECT_FALSE(fs::exists(dir / "a.vcd"));

@@ -24,12 +24,33 @@ std::size_t change_count(const test::Vcd& vcd, const char* leaf) { return vcd.le
 } // namespace
 
 TEST(SynthCommand, ParsesDurations) {
-  EXPECT_EQ(cli::parse_duration("10ms"), 10_ms);
-  EXPECT_EQ(cli::parse_duration("24.414us"), 24'414_ns);
-  EXPECT_EQ(cli::parse_duration("250ns"), 250_ns);
-  EXPECT_EQ(cli::parse_duration("1.5s"), 1'500_ms);
-  EXPECT_EQ(cli::parse_duration("2"), 2_s);
-  EXPECT_THROW(static_cast<void>(cli::parse_duration("fast")), CLI::ValidationError);
+  EXPECT_EQ(cli::parse_instant("10ms", "--t"), 10_ms);
+  EXPECT_EQ(cli::parse_instant("24.414us", "--t"), 24'414_ns);
+  EXPECT_EQ(cli::parse_instant("250ns", "--t"), 250_ns);
+  EXPECT_EQ(cli::parse_instant("1.5s", "--t"), 1'500_ms);
+  EXPECT_EQ(cli::parse_instant("2", "--t"), 2_s);
+  EXPECT_THROW(static_cast<void>(cli::parse_instant("fast", "--t")), CLI::ValidationError);
+}
+
+// One parser, each option's own range in its refusal: both ends are in, a nanosecond (or any
+// amount) beyond either is out, and so are NaN and infinities; a time below the 1 ns minimum is
+// refused by that minimum, not rounded to 0 and then called "not > 0".
+TEST(SynthCommand, DurationsOutsideTheirRangeNameIt) {
+  const auto refusal = [](const std::string& text, Nanos lo, Nanos hi) -> std::string {
+    try {
+      static_cast<void>(cli::parse_duration(text, "--first", lo, hi));
+    } catch (const CLI::ValidationError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  EXPECT_EQ(cli::parse_positive_duration("1ns", "--first"), 1_ns);
+  EXPECT_EQ(cli::parse_positive_duration("3600s", "--first"), 3'600_s);
+  EXPECT_EQ(cli::parse_instant("0", "--late"), 0_ns);
+  for (const char* text : {"0", "1e-10", "0.9ns", "-1ns", "3600.000000001s", "3601s", "nan", "inf", "-inf"})
+    EXPECT_EQ(refusal(text, 1_ns, 3'600_s), std::string("--first: 1ns .. 3600s (got ") + text + ")") << text;
+  for (const char* text : {"-1ns", "3601s", "nan"})
+    EXPECT_EQ(refusal(text, 0_ns, 3'600_s), std::string("--first: 0s .. 3600s (got ") + text + ")") << text;
 }
 
 TEST(SynthCommand, QuadratureAt600RpmWritesEveryEdge) {

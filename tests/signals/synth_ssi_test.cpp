@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -141,4 +142,51 @@ TEST(SynthSsi, LateDataShiftsTheWordByOneBit) {
   vcd = test::read_vcd_file(out);
   EXPECT_EQ(vcd.leaf("data").initial.value().bits(), 0u);
   EXPECT_EQ(vcd.leaf("word").changes.at(0).bits(), 0u);
+}
+
+// The data field is what the 7361's Format command accepts, nothing more (ssi7361.md §3,
+// L2126-2133, L2143-2148, L2162-2163): MSB Number M 1 .. 24, Number of Data Bits N 2 .. 25,
+// M + N <= 26; the board raises FMTErr for anything else, so synth refuses it. Every M and N
+// the 5-bit fields can hold, against the manual's numbers written out here.
+TEST(SynthSsi, FieldIsExactlyWhatThe7361CanBeSetTo) {
+  const std::string out = test::kSynthDir + "/synth_ssi_field.vcd";
+  for (int m = 0; m <= 31; ++m) {
+    for (int n = 0; n <= 31; ++n) {
+      const bool board_accepts = m >= 1 && m <= 24 && n >= 2 && n <= 25 && m + n <= 26;
+      // 4 counts a turn fit every accepted field (2 bits and up).
+      const std::vector<std::string> args{
+          "ssi",   "--out",           out,      "--frames",        "1",
+          "--msb", std::to_string(m), "--bits", std::to_string(n), "--counts-per-turn",
+          "4"};
+      bool accepted = true;
+      try {
+        synth(args);
+      } catch (const std::exception&) {
+        accepted = false;
+      }
+      EXPECT_EQ(accepted, board_accepts) << "--msb " << m << " --bits " << n;
+    }
+  }
+}
+
+// A single-turn position 0 .. counts-per-turn - 1 fits the N-bit field or is refused: 8192
+// counts a turn need 13 bits (they once wrapped silently in 12).
+TEST(SynthSsi, CountsPerTurnFitTheField) {
+  const std::string out = test::kSynthDir + "/synth_ssi_cpt.vcd";
+  const auto accepted = [&](const std::string& bits, const std::string& cpt) {
+    try {
+      synth({"ssi", "--out", out, "--frames", "1", "--bits", bits, "--counts-per-turn", cpt});
+    } catch (const std::exception&) {
+      return false;
+    }
+    return true;
+  };
+  EXPECT_TRUE(accepted("12", "4096"));
+  EXPECT_FALSE(accepted("12", "4097"));
+  EXPECT_FALSE(accepted("12", "8192"));
+  EXPECT_TRUE(accepted("13", "8192"));
+  EXPECT_TRUE(accepted("2", "4"));
+  EXPECT_FALSE(accepted("2", "5"));
+  EXPECT_TRUE(accepted("25", "33554432"));
+  EXPECT_FALSE(accepted("25", "33554433"));
 }
