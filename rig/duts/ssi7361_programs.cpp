@@ -66,7 +66,7 @@ Words setup(const Setup& s, duts::EarlierWrites earlier) {
                             : s.logic ? "logic"
                                       : "clock",
                             "with bits and first_bit: part of the Format word (L2126-L2152)");
-  if (format && *s.first_bit + *s.bits > 26)
+  if (format && *s.first_bit + *s.bits > models::ssi7361::kMaxMsbPlusBits) // the board's own rule (setup.hpp)
     throw ProgramFieldError("bits",
                             "first_bit + bits <= 26: the field within the 25-bit frame (L2162-L2163)");
   if (s.multiplier.has_value() != s.divisor.has_value())
