@@ -268,6 +268,11 @@ CheckParams brake(std::string_view name, const Table& t) {
     throw ParamError("report_tolerance_ms", "only with reported");
   if (t.has("fault_level") && !t.has("fault_output"))
     throw ParamError("fault_level", "only with fault_output");
+  // The tick places the board's report (reported) and the fault it decides from it (fault_output).
+  if (t.has("report_tick_ms") && !t.has("reported") && !t.has("fault_output"))
+    throw ParamError("report_tick_ms", "only with reported or fault_output");
+  if (t.has("applied_level") && !t.has("brake_line"))
+    throw ParamError("applied_level", "only with brake_line");
   if (t.has("fault_from_reported") && !(t.has("reported") && t.has("fault_output")))
     throw ParamError("fault_from_reported", "only with reported and fault_output");
   p.spec.fault_level = t.level("fault_level", Level::Low);

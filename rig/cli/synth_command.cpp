@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -844,6 +845,9 @@ void require_writable(const std::string& option, const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw CLI::ValidationError(option, path + ": a directory, not a file to write");
+  // A file there already (a device like /dev/null, a pipe, a link) is written through.
+  if (std::filesystem::exists(std::filesystem::symlink_status(path, ec)) && ::access(path.c_str(), W_OK) == 0)
+    return;
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   const std::string where = dir.empty() ? "." : dir.string();
   if (::access(where.c_str(), W_OK | X_OK) != 0)
@@ -857,7 +861,29 @@ void write_output_file(const std::string& path, const std::function<void(std::os
     std::cout.flush();
     return;
   }
-  rig::write_file_atomically(path, write);
+  // A new or regular file is replaced whole (a crash leaves the old one or the new one); a
+  // device, a pipe or a symlink is written through, as a shell redirection would: renaming a
+  // file over it would replace /dev/null itself, or the link instead of its target.
+  std::error_code ec;
+  const auto status = std::filesystem::symlink_status(path, ec);
+  if (!std::filesystem::exists(status) || std::filesystem::is_regular_file(status)) {
+    rig::write_file_atomically(path, write);
+    return;
+  }
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error(fmt::format("cannot open {}: {}", path, std::strerror(errno)));
+  write(out);
+  out.flush();
+  if (!out) throw std::runtime_error(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+  if (a == "-" || b == "-") return false;
+  std::error_code ec;
+  if (std::filesystem::equivalent(a, b, ec)) return true; // both there: one inode
+  const auto ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a, ec), ec);
+  const auto cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b, ec), ec);
+  return ca == cb;
 }
 
 void write_vcd_file(const TraceRecorder& trace, const std::string& path) {

@@ -65,10 +65,13 @@ void refuse_unless_applies(const CLI::App& kind, const std::string& option, bool
 // in /nowhere: No such file or directory"). Every output of a kind is checked first, so a
 // refused one leaves no other behind.
 void require_writable(const std::string& option, const std::string& path);
-// Writes the trace as VCD to `path` ("-" for stdout) through a temporary renamed over it (a
-// crash leaves the old file or the whole new one); throws std::runtime_error on I/O failure.
+// Writes the trace as VCD to `path` ("-" for stdout): a new or regular file through a
+// temporary renamed over it (a crash leaves the old file or the whole new one), a device, pipe
+// or symlink written through; throws std::runtime_error on I/O failure.
 void write_vcd_file(const TraceRecorder& trace, const std::string& path);
 // The same, any text: `write` formats into the temporary (a candump log).
 void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& write);
+// Whether two output paths name one file (./x.vcd and x.vcd, a link and its target).
+[[nodiscard]] bool same_file(const std::string& a, const std::string& b);
 
 } // namespace hilrig::cli

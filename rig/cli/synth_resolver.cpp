@@ -175,7 +175,7 @@ void run_resolver(const CLI::App& cmd, const ResolverOptions& o) {
   require_writable("--out", o.out);
   if (!o.can_log.empty()) {
     require_writable("--can-log", o.can_log);
-    if (o.can_log == o.out)
+    if (same_file(o.can_log, o.out))
       throw CLI::ValidationError("--can-log", "a file other than --out's (got " + o.out + ")");
   }
   const double speed = o.rpm / 60.0; // turns/s

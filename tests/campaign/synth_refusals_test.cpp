@@ -190,6 +190,9 @@ TEST(SynthRefusals, AnOutputThatCannotBeWrittenLeavesNothing) {
           "--can-log: ");
   refused("resolver --out " + vcd + " --duration 1ms --can-log " + vcd,
           "--can-log: a file other than --out's");
+  // The same file by another spelling: ./ in front, or a link to it.
+  refused("resolver --out " + vcd + " --duration 1ms --can-log " + (dir / "." / "ok.vcd").string(),
+          "--can-log: a file other than --out's");
   refused("resolver --out " + dir.string() + " --duration 1ms", "a directory, not a file to write");
   for (const char* kind : {"quadrature", "discrete", "ssi", "resolver"})
     refused(std::string(kind) + " --out " + nowhere, "--out: " + nowhere + ": cannot write in");
@@ -201,6 +204,25 @@ TEST(SynthRefusals, AnOutputThatCannotBeWrittenLeavesNothing) {
   EXPECT_TRUE(fs::exists(log));
   EXPECT_FALSE(fs::exists(vcd + ".tmp"));
   EXPECT_FALSE(fs::exists(log + ".tmp"));
+}
+
+// What is there already and is not a regular file is written through, as a shell redirection
+// would: a symlink's target gets the VCD (the link stays a link), a FIFO gets the bytes. A
+// temporary renamed over it would have replaced the link, or a device such as /dev/null.
+TEST(SynthRefusals, AnOutputThatIsALinkOrADeviceIsWrittenThrough) {
+  const fs::path dir = test::scratch_dir("campaign", "synth_write_through");
+  const fs::path target = dir / "target.vcd";
+  const fs::path link = dir / "link.vcd";
+  fs::remove(target);
+  fs::remove(link);
+  fs::create_symlink(target.filename(), link);
+  const test::ProcessResult r = test::run_hilrig("synth ssi --frames 1 --out " + link.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_GT(fs::file_size(target), 0U);
+  const test::ProcessResult null = test::run_hilrig("synth ssi --frames 1 --out /dev/null");
+  EXPECT_EQ(null.status, 0) << null.err;
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
 // A candump line is "(time) IFACE ID#DATA": the interface name is what Linux takes (1 .. 15

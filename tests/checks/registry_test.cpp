@@ -368,6 +368,10 @@ TEST(Registry, RefiningKeysWithoutWhatTheyRefineAreBadInput) {
   EXPECT_EQ(problem("brake_stop_time", with(brake, {{"report_tolerance_ms", 3}})), "report_tolerance_ms");
   EXPECT_EQ(problem("brake_stop_time", with(brake, {{"report_tolerance_ms", 3}, {"reported", "w"}})), "ok");
   EXPECT_EQ(problem("brake_stop_time", with(brake, {{"fault_level", "high"}})), "fault_level");
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"report_tick_ms", 1}})), "report_tick_ms");
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"report_tick_ms", 1}, {"reported", "w"}})), "ok");
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"report_tick_ms", 1}, {"fault_output", "f"}})), "ok");
+  EXPECT_EQ(problem("brake_stop_time", with(brake, {{"applied_level", "high"}})), "applied_level");
   EXPECT_EQ(problem("brake_stop_time", with(brake, {{"fault_level", "high"}, {"fault_output", "f"}})), "ok");
   EXPECT_EQ(problem("brake_stop_time", with(brake, {{"fault_from_reported", true}, {"reported", "w"}})),
             "fault_from_reported");
@@ -384,7 +388,7 @@ TEST(Registry, RefiningKeysWithoutWhatTheyRefineAreBadInput) {
 // The board's stop timer tick replaces the fixed report tolerance: one or the other, and a
 // tick of 0 would time nothing.
 TEST(Registry, BrakeReportTickIsATickOrATolerance) {
-  const json base{{"limit_ms", 150}, {"applied_ms", 1}};
+  const json base{{"limit_ms", 150}, {"applied_ms", 1}, {"reported", "w"}};
   auto with = [&](json extra) {
     json t = base;
     t.update(extra);
