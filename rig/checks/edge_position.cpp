@@ -80,9 +80,7 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
   }
   if (n < c.min_edges && reached) {
     if (const std::size_t times = reached(); times < c.min_edges) {
-      const std::string span = c.from && c.to ? span_words(c)
-                               : c.to         ? fmt::format(" up to {} ns", c.to->count())
-                                              : span_words(c);
+      const std::string span = c.to && !c.from ? fmt::format(" up to {} ns", c.to->count()) : span_words(c);
       Measurement m = error(
           c.name + ".edges",
           times == 0 ? fmt::format("nothing judged: the shaft never reached {}{} (the stimulus never came)",

@@ -655,21 +655,20 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
     r.measurements.push_back(failure(s.name + what, std::move(why)));
     return r;
   };
+  const auto erred = [&](std::string why) { // nothing to judge
+    CheckResult r;
+    r.measurements.push_back(error(s.name + ".stop_time", std::move(why)));
+    return r;
+  };
   Nanos applied{0};
   if (p.applied) {
     applied = *p.applied;
   } else {
     const auto e = next_edge(line(c, p.brake_line), c.begin, Nanos::max(), p.applied_level);
-    if (!e && c.rig_driven.contains(p.brake_line)) {
-      // The rig's own stimulus never came: there was no stop to time.
-      CheckResult r;
-      r.measurements.push_back(
-          error(s.name + ".stop_time",
-                fmt::format("nothing judged: the rig never applied the brake on its line '{}' "
-                            "(no edge to {})",
-                            p.brake_line, level_name(p.applied_level))));
-      return r;
-    }
+    if (!e && c.rig_driven.contains(p.brake_line)) // the rig's own stimulus never came
+      return erred(
+          fmt::format("nothing judged: the rig never applied the brake on its line '{}' (no edge to {})",
+                      p.brake_line, level_name(p.applied_level)));
     if (!e)
       return failed(".stop_time",
                     fmt::format("missing edge: the brake line '{}' never applied the brake", p.brake_line));
@@ -694,15 +693,10 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
   // A shaft already still when the brake is applied has no stop to time: its stop time of 0
   // would pass any limit having judged nothing. On hardware, still for certain: the whole
   // interval ends by then.
-  if (still && still->latest <= applied) {
-    CheckResult r;
-    r.measurements.push_back(error(
-        s.name + ".stop_time",
-        fmt::format(
-            "nothing judged: the shaft already stood still (by {} ns) when the brake was applied at {} ns",
-            still->latest.count(), applied.count())));
-    return r;
-  }
+  if (still && still->latest <= applied)
+    return erred(fmt::format(
+        "nothing judged: the shaft already stood still (by {} ns) when the brake was applied at {} ns",
+        still->latest.count(), applied.count()));
   if (still) still->earliest = std::max(still->earliest, applied);
   // What a board timing the stop from count changes sees as its end (report_window()).
   const std::vector<PositionSample>& counts = c.counts.empty() ? c.motion : c.counts;
