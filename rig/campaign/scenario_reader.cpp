@@ -898,11 +898,19 @@ private:
       if (const auto problem = check_time_problem(s, *kind, table)) r.fail(problem->key, problem->expected);
       if (auto* move = std::get_if<checks::ShaftMoveParams>(&c.params)) move->spec.profile = profile_of(s, r);
       if (const auto* d = std::get_if<checks::DebounceParams>(&c.params)) {
-        // Every start phase's probe pulse begins within the run.
-        if (const Nanos last = d->probe_starts(c.probe_at).back(); last >= s.end)
+        // Every start phase's probe pulse, the widest too, ends within the run: a pulse still
+        // running at the end could not be seen accepted, and a board within the limits would fail.
+        const Nanos last = d->probe_starts(c.probe_at).back();
+        if (last >= s.end)
           r.fail("probe_at",
                  fmt::format("probe_at + scan_us within the run (the last start phase is at {} ms)",
                              static_cast<double>(last.count()) / 1e6));
+        if (last + d->plan.wide > s.end)
+          r.fail("wide_us", fmt::format("a probe that ends within the run: the last start phase at {} ms + "
+                                        "wide_us ends at {} ms, after campaign.end ({} ms)",
+                                        static_cast<double>(last.count()) / 1e6,
+                                        static_cast<double>((last + d->plan.wide).count()) / 1e6,
+                                        static_cast<double>(s.end.count()) / 1e6));
       }
       r.finish();
       s.checks.push_back(std::move(c));

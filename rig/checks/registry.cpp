@@ -96,6 +96,13 @@ ParamSpec duration(ParamSpec p, double ns_per_unit) {
   p.duration_ns = ns_per_unit;
   return p;
 }
+// A probe pulse's width in us: a pulse width, 1 ns .. 3600 s like every stimulus's
+// (docs/campaigns.md, "Times").
+ParamSpec probe_width(ParamSpec p) {
+  p = duration(std::move(p), kUs);
+  p.range.max = 3.6e9;
+  return p;
+}
 constexpr auto Num = ParamType::Number;
 constexpr auto Int = ParamType::Integer;
 constexpr auto Str = ParamType::String;
@@ -159,6 +166,11 @@ CheckParams throughput(std::string_view name, const Table& t) {
   p.spec.p99_limit = t.opt_us("p99_limit_us");
   p.spec.min_limit = t.opt_us("min_limit_us");
   ordered(t, "min_limit_us", "limit_us");
+  // Every latency is judged against limit_us, so a p99 above it could never fail.
+  if (p.spec.p99_limit && *p.spec.p99_limit > p.spec.limit)
+    throw ParamError("p99_limit_us", fmt::format("at most limit_us ({}): every latency is judged against "
+                                                 "limit_us, so a p99 limit above it never judges",
+                                                 t.num("limit_us")));
   p.spec.quiet = t.opt_us("quiet_us");
   p.spec.early = t.opt_us("early_us");
   if (p.spec.early && p.spec.min_limit)
@@ -209,6 +221,16 @@ CheckParams debounce(std::string_view name, const Table& t) {
   if (p.spec.shortest_rejected() <= Nanos{0})
     throw ParamError("tolerance_us",
                      fmt::format("below filter_us ({}) by more than 0.001 us", t.num("filter_us")));
+  // narrow_us and wide_us bracket a board outside the limits: narrow_us must be one every board
+  // within them rejects, wide_us one every such board accepts (else the bracket says nothing).
+  if (p.plan.narrow > p.spec.shortest_rejected())
+    throw ParamError("narrow_us", fmt::format("a width below filter_us - tolerance_us ({} us), which a board "
+                                              "within the limits rejects",
+                                              to_us(p.spec.filter - p.spec.tolerance)));
+  if (p.plan.wide < p.spec.longest_accepted())
+    throw ParamError("wide_us", fmt::format("a width of at least filter_us + tolerance_us ({} us), which a "
+                                            "board within the limits accepts",
+                                            to_us(p.spec.longest_accepted())));
   p.phase = phase_scan(t);
   if (t.has("probe_phases") && !p.phase) throw ParamError("probe_phases", "only with scan_us");
   if (p.phase) {
@@ -406,8 +428,8 @@ std::vector<CheckKind> make_kinds() {
       "debounce", "pulses shorter than the filter rejected, longer accepted; boundary by bisection",
       {duration(P("filter_us", Num, true, "the spec's filter time"), kUs),
        P("tolerance_us", Num, true, "allowed boundary error, either side (inclusive)", time),
-       duration(P("narrow_us", Num, true, "narrowest probe (must be rejected)"), kUs),
-       duration(P("wide_us", Num, true, "widest probe (must be accepted)"), kUs),
+       probe_width(P("narrow_us", Num, true, "narrowest probe (must be rejected)")),
+       probe_width(P("wide_us", Num, true, "widest probe (must be accepted)")),
        duration(P("resolution_us", Num, false, "bisection stops at this bracket (1)"), kUs),
        P("input", Str, true, "the line the pulse is driven on"),
        P("output", Str, true, "the line whose edge means accepted"),

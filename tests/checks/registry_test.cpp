@@ -289,8 +289,44 @@ TEST(Registry, DebounceStartPhasesAreValidatedWithTheirKey) {
   EXPECT_EQ(problem("debounce", with({{"scan_us", 0}})), "scan_us");
   // The limit probe a hair short of filter - tolerance must be a pulse.
   EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27500}})), "tolerance_us");
-  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27499.999}})), "tolerance_us"); // 0 ns
-  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27499.998}})), "ok");           // 1 ns
+  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27499.999}})), "tolerance_us");             // 0 ns
+  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27499.998}, {"narrow_us", 0.001}})), "ok"); // 1 ns
+}
+
+// narrow_us and wide_us bracket a board outside [filter - tolerance, filter + tolerance]: a
+// narrowest probe that a board within the limits may accept, or a widest one it may reject,
+// is refused. Limits 27,000 .. 28,000 us (filter 27,500, tolerance 500, as ans1_debounce).
+TEST(Registry, DebounceProbeWidthsLieOutsideTheLimits) {
+  const json base{{"filter_us", 27500}, {"tolerance_us", 500}, {"narrow_us", 5000},
+                  {"wide_us", 60000},   {"input", "i"},        {"output", "o"}};
+  const auto with = [&](json extra) {
+    json t = base;
+    t.update(extra);
+    return t;
+  };
+  EXPECT_EQ(problem("debounce", with({{"narrow_us", 26999.999}})), "ok");    // 1 ns short of 27 ms
+  EXPECT_EQ(problem("debounce", with({{"narrow_us", 27000}})), "narrow_us"); // may be accepted
+  EXPECT_EQ(problem("debounce", with({{"narrow_us", 27000.001}})), "narrow_us");
+  EXPECT_EQ(problem("debounce", with({{"wide_us", 28000}})), "ok");          // must be accepted
+  EXPECT_EQ(problem("debounce", with({{"wide_us", 27999.999}})), "wide_us"); // may be rejected
+  // A pulse width is 1 ns .. 3600 s (docs/campaigns.md, "Times").
+  EXPECT_EQ(problem("debounce", with({{"wide_us", 3.6e9}})), "ok");
+  EXPECT_EQ(problem("debounce", with({{"wide_us", 3.6e9 + 0.001}})), "wide_us");
+  EXPECT_EQ(problem("debounce", with({{"narrow_us", 0.001}})), "ok");
+  EXPECT_EQ(problem("debounce", with({{"narrow_us", 0.0004}})), "narrow_us"); // 0 ns
+}
+
+// A p99 limit above limit_us could never fail (every latency is judged against limit_us).
+TEST(Registry, ThroughputP99LimitAtMostTheLimit) {
+  const json base{{"output", "o"}, {"limit_us", 100}, {"crossings_us", json::array({1000})}};
+  const auto with = [&](json extra) {
+    json t = base;
+    t.update(extra);
+    return t;
+  };
+  EXPECT_EQ(problem("throughput", with({{"p99_limit_us", 100}})), "ok");
+  EXPECT_EQ(problem("throughput", with({{"p99_limit_us", 99.999}})), "ok");
+  EXPECT_EQ(problem("throughput", with({{"p99_limit_us", 100.001}})), "p99_limit_us");
 }
 
 TEST(Registry, BrakeFromTheBrakeLineAndTheReportedWord) {
