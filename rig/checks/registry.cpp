@@ -594,7 +594,7 @@ CheckResult run(const ThroughputParams& p, const Capture& c) {
     crossings = find_crossings(position_fn(c), s.setpoint, s.from.value_or(c.begin), s.to.value_or(c.end),
                                s.step, s.direction, s.modulus, c.held);
   }
-  CheckResult r = check_throughput(crossings, line(c, p.output), p.spec);
+  CheckResult r = check_throughput(crossings, line(c, p.output), p.spec, c.end);
   if (p.phase)
     r.measurements.push_back(
         phase_coverage_measurement(p.spec.name + ".phase_coverage", crossings, p.phase->scan, p.phase->bins));

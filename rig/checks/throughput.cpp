@@ -29,7 +29,7 @@ std::optional<Edge> next_burst_edge(std::span<const Edge> edges, Nanos from, Nan
 } // namespace
 
 CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const Edge> output,
-                             const ThroughputSpec& spec) {
+                             const ThroughputSpec& spec, Nanos seen_until) {
   CheckResult r;
   r.kind = "throughput";
   if (crossings.empty()) {
@@ -45,6 +45,7 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
   std::vector<Sample> samples;
   samples.reserve(crossings.size());
   std::size_t missing = 0;
+  std::size_t cut = 0; // no edge yet when the capture ended, inside limit_us of the crossing
   std::optional<TraceWindow> first_missing;
   for (std::size_t i = 0; i < crossings.size(); ++i) {
     const Nanos c = crossings[i];
@@ -67,6 +68,8 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
                               : next_edge(output, from, until, spec.expected);
     if (e) {
       samples.push_back({e->time - c, c});
+    } else if (c + spec.limit > seen_until) {
+      ++cut; // a board within the limit may answer after the run: nothing to judge
     } else {
       if (!first_missing) first_missing = TraceWindow{from, until};
       ++missing;
@@ -84,21 +87,30 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
     missing_detail = fmt::format("missing edge: no {} edge{} {} (first of {})", level_name(spec.expected),
                                  spec.quiet ? " after a quiet gap" : "", where, missing);
   }
-  if (crossings.size() < spec.min_count) {
+  const std::size_t judged = crossings.size() - cut;
+  const std::string cut_detail =
+      cut == 0
+          ? std::string()
+          : fmt::format("; {} crossing(s) within limit_us of the capture's end at {} ns with no edge yet, "
+                        "not judged",
+                        cut, seen_until.count());
+  if (judged < spec.min_count) {
     // Fewer crossings than min_count: no board could reach it, so the shortfall is the
     // stimulus's (an error), not the board's fail. The latencies there are are still judged.
     Measurement count =
         error(spec.name + ".count",
               fmt::format("nothing judged against min_count: the stimulus crossed the setpoint "
-                          "{} time(s), fewer than min_count ({}); latencies measured: {}",
-                          crossings.size(), spec.min_count, samples.size()));
+                          "{} time(s){}, fewer than min_count ({}); latencies measured: {}{}",
+                          judged, cut == 0 ? "" : " in time to be judged", spec.min_count, samples.size(),
+                          cut_detail));
     count.value = static_cast<double>(samples.size());
     count.lower = static_cast<double>(spec.min_count);
     r.measurements.push_back(std::move(count));
   } else {
     r.measurements.push_back(measure(
         spec.name + ".count", static_cast<double>(samples.size()), "", static_cast<double>(spec.min_count),
-        std::nullopt, fmt::format("{} latencies from {} crossings", samples.size(), crossings.size())));
+        std::nullopt,
+        fmt::format("{} latencies from {} crossings{}", samples.size(), crossings.size(), cut_detail)));
   }
   r.measurements.push_back(measure(spec.name + ".missing", static_cast<double>(missing), "", std::nullopt,
                                    0.0, missing_detail, first_missing));

@@ -43,7 +43,9 @@ struct ThroughputSpec {
 // count (lower min_count), min (lower min_limit), median (nearest rank, no limits), p99 (upper p99_limit),
 // max (upper limit), missing (number of crossings with no edge; upper 0). Series "latency".
 // With `early`, min's lower limit is -early and a latency may be negative.
+// `seen_until` is the capture's end: a crossing with no edge whose limit_us reaches past it is
+// not judged (a board within the limit may answer after the run), and is named in count's detail.
 [[nodiscard]] CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const Edge> output,
-                                           const ThroughputSpec& spec);
+                                           const ThroughputSpec& spec, Nanos seen_until = Nanos::max());
 
 } // namespace hilrig::checks

@@ -209,5 +209,37 @@ TEST(Throughput, AnEarlyEdgeIsNegativeLatencyWithItsWindowInOrder) {
   EXPECT_EQ(find(r, "fs.min").window->end, 600_us);
 }
 
+// The capture ends 20 us after the last crossing (3 ms), the limit is 20 us: a board within the
+// limit has had to answer by the end, so a missing edge there fails; 1 ns later and the end cuts
+// the window short: that crossing is not judged (a board may answer after the run), never failed.
+TEST(Throughput, ACrossingWhoseLimitReachesPastTheCaptureIsNotJudged) {
+  const auto out = outputs_after({1_ms, 2_ms}, {15_us, 20_us}); // none after 3 ms
+  const ThroughputSpec spec{.name = "ls1", .limit = 20_us, .min_count = 2};
+  auto r = check_throughput(kCrossings, out, spec, 3_ms + 20_us);
+  EXPECT_EQ(find(r, "ls1.missing").value, 1.0);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
+  r = check_throughput(kCrossings, out, spec, 3_ms + 20_us - 1_ns);
+  EXPECT_EQ(find(r, "ls1.missing").value, 0.0);
+  EXPECT_EQ(find(r, "ls1.count").value, 2.0);
+  EXPECT_NE(find(r, "ls1.count").detail.find("1 crossing(s) within limit_us of the capture's end"),
+            std::string::npos);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  // An edge that did come before the end is judged as ever, cut window or not.
+  const auto all = outputs_after(kCrossings, {15_us, 20_us, 12_us});
+  r = check_throughput(kCrossings, all, spec, 3_ms + 13_us);
+  EXPECT_EQ(find(r, "ls1.count").value, 3.0);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+  const auto late = outputs_after(kCrossings, {15_us, 20_us, 21_us});
+  r = check_throughput(kCrossings, late, {.name = "ls1", .limit = 20_us, .timeout = 30_us}, 3_ms + 25_us);
+  EXPECT_EQ(find(r, "ls1.max").outcome, rig::Outcome::Fail);
+  // Fewer judged crossings than min_count: the run's shortfall, an error; none judged, too.
+  r = check_throughput(kCrossings, out, {.name = "ls1", .limit = 20_us, .min_count = 3}, 3_ms + 19_us);
+  EXPECT_EQ(find(r, "ls1.count").outcome, rig::Outcome::Error);
+  const std::vector<Nanos> last{3_ms};
+  r = check_throughput(last, {}, {.name = "ls1", .limit = 20_us}, 3_ms + 5_us);
+  EXPECT_EQ(find(r, "ls1.count").outcome, rig::Outcome::Error);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Error);
+}
+
 } // namespace
 } // namespace hilrig::checks
