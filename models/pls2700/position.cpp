@@ -49,7 +49,11 @@ StatorReading decode_stators(double sin_stator, double cos_stator, double refere
   const double s = sin_stator / reference;
   const double c = cos_stator / reference;
   r.ratio = std::hypot(s, c);
-  r.valid = r.ratio >= min_ratio && r.ratio <= max_ratio;
+  // The band is closed: a transducer exactly at a limit is good. The ratio of two sampled
+  // sinusoids carries a few ulps of rounding (cos 60 deg reads 0.49999999999999994 at some
+  // angles), so a ratio within kRatioSlack of a limit counts as at it, not past it.
+  constexpr double kRatioSlack = 1e-9;
+  r.valid = r.ratio >= min_ratio * (1.0 - kRatioSlack) && r.ratio <= max_ratio * (1.0 + kRatioSlack);
   if (r.valid) {
     r.raw = raw_from_turns(std::atan2(s, c) / (2.0 * std::numbers::pi));
   }

@@ -156,6 +156,35 @@ modulus = 360
 min_edges = 2
 )";
 
+// The 2700's fault band [min_stator_ratio, max_stator_ratio] is closed (models/pls2700/README.md,
+// "Decoder"): a transducer whose stators are exactly 0.5 or 1.5 of the reference is good at every
+// angle, whatever the rounding of the sampled sinusoids; a millionth beyond either limit faults.
+TEST(ResolverStators, The2700RatioBandIsClosedAtEveryAngle) {
+  const double reference = 3.3;
+  const auto reading = [&](double ratio, double angle) {
+    return models::pls2700::decode_stators(reference * ratio * std::sin(angle),
+                                           reference * ratio * std::cos(angle), reference, 0.5, 1.5);
+  };
+  int bad_at_limit = 0;
+  int good_beyond = 0;
+  for (int k = 0; k < 100'000; ++k) {
+    const double angle = 2.0 * std::numbers::pi * k / 100'000.0;
+    for (const double at : {0.5, 1.5})
+      if (!reading(at, angle).valid) ++bad_at_limit;
+    for (const double beyond : {0.5 * (1.0 - 1e-6), 1.5 * (1.0 + 1e-6)})
+      if (reading(beyond, angle).valid) ++good_beyond;
+  }
+  EXPECT_EQ(bad_at_limit, 0);
+  EXPECT_EQ(good_beyond, 0);
+  // One coil open: the other alone, |cos| of 60 degrees is the limit (pls2700_open_coil.toml).
+  EXPECT_TRUE(
+      models::pls2700::decode_stators(0.0, reference * std::cos(std::numbers::pi / 3.0), reference, 0.5, 1.5)
+          .valid);
+  EXPECT_FALSE(models::pls2700::decode_stators(0.0, reference * std::cos(std::numbers::pi / 3.0 + 1e-6),
+                                               reference, 0.5, 1.5)
+                   .valid);
+}
+
 TEST(ResolverStators, TheAns1FollowsTheResolverToItsSetpoints) {
   const Campaign c = parse_campaign(kResolver, "t.toml");
   const rig::CampaignResult r = test::run_everything(c);
