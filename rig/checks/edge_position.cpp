@@ -79,15 +79,24 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
     ++n;
   }
   if (n < c.min_edges && reached) {
-    if (const std::size_t times = reached(); times < c.min_edges) {
+    if (const Reaches reaches = reached(); reaches.complete < c.min_edges) {
+      const std::size_t times = reaches.complete;
       const std::string span = c.to && !c.from ? fmt::format(" up to {} ns", c.to->count()) : span_words(c);
-      Measurement m = error(
-          c.name + ".edges",
-          times == 0 ? fmt::format("nothing judged: the shaft never reached {}{} (the stimulus never came)",
-                                   c.target, span)
-                     : fmt::format("nothing judged against min_edges: the shaft reached {} {} time(s){}, "
-                                   "fewer than min_edges ({}); {} edges: {}",
-                                   c.target, times, span, c.min_edges, level_name(c.level), n));
+      const std::string open =
+          reaches.open_at_end
+              ? fmt::format(
+                    " (and once more with the shaft still within {} counts of it when the span ended: "
+                    "a board within the tolerance may fire after that)",
+                    c.tolerance)
+              : std::string();
+      Measurement m =
+          error(c.name + ".edges",
+                times == 0 && !reaches.open_at_end
+                    ? fmt::format("nothing judged: the shaft never reached {}{} (the stimulus never came)",
+                                  c.target, span)
+                    : fmt::format("nothing judged against min_edges: the shaft reached {} {} time(s){}{}, "
+                                  "fewer than min_edges ({}); {} edges: {}",
+                                  c.target, times, span, open, c.min_edges, level_name(c.level), n));
       m.value = static_cast<double>(n);
       m.lower = static_cast<double>(c.min_edges);
       r.measurements.insert(r.measurements.begin(), std::move(m));

@@ -17,7 +17,13 @@ namespace hilrig::checks {
 // span judged (a crossing scan of the motion). Asked only when fewer edges than min_edges were
 // found: with fewer of those too, the shortfall is the stimulus's (an error, not the board's
 // fail). Empty: not known, every shortfall is the board's.
-using ReachedFn = std::function<std::size_t()>;
+struct Reaches {
+  std::size_t complete = 0; // reaches the shaft had left the tolerance band of by the span's end
+  // One more reach whose band the shaft was still in when the span ended: a board within the
+  // tolerance may fire after it, so its missing edge is not the board's.
+  bool open_at_end = false;
+};
+using ReachedFn = std::function<Reaches()>;
 
 struct AdvanceSpec {
   std::string name = "advance";

@@ -618,14 +618,17 @@ CheckResult run(const DebounceParams& p, const Capture& c) {
 // `level` (or level + k * modulus) in [from, to]: throughput's crossing scan, both ways. A
 // touch counts (reaching is enough), and so does starting there. Stepped every 10 us: an
 // excursion past the level shorter than that may be missed, read as "not reached" (an error,
-// never a pass).
-std::size_t times_reached(const Capture& c, const PositionFn& f, double level, double modulus,
-                          std::optional<Nanos> from, std::optional<Nanos> to) {
+// never a pass). The last reach counts only if the shaft reached an edge of the tolerance band
+// after it (level +- tolerance) by the span's end: till then a board within the tolerance may
+// still fire (the shaft on its way through the band, or standing in it), so its missing edge is
+// not the board's.
+Reaches times_reached(const Capture& c, const PositionFn& f, double level, double tolerance, double modulus,
+                      std::optional<Nanos> from, std::optional<Nanos> to) {
   // Crossings are found in (a, b]: one ns before `from` makes the span [from, to].
   const Nanos start = from ? std::max(c.begin, *from) : c.begin;
   const Nanos a = from ? std::max(c.begin, *from - Nanos{1}) : c.begin;
   const Nanos b = to.value_or(c.end);
-  if (b < start) return 0;
+  if (b < start) return {};
   const double off = f(start) - level;
   const bool at_start = modulus > 0.0 ? std::remainder(off, modulus) == 0.0 : off == 0.0;
   const std::vector<Nanos> crossed =
@@ -634,7 +637,15 @@ std::size_t times_reached(const Capture& c, const PositionFn& f, double level, d
   // Standing there at the start without arriving then (already there before, or the run's
   // first instant): reached once more.
   const bool arrived_at_start = !crossed.empty() && crossed.front() == start;
-  return crossed.size() + (at_start && !arrived_at_start ? 1 : 0);
+  const std::size_t times = crossed.size() + (at_start && !arrived_at_start ? 1 : 0);
+  if (times == 0 || tolerance <= 0.0) return {times, false};
+  const Nanos last = crossed.empty() ? start : crossed.back();
+  const auto band_edge_after = [&](double edge) {
+    return b > last &&
+           !find_crossings(f, edge, last, b, Nanos{10'000}, Direction::Both, modulus, c.held).empty();
+  };
+  if (band_edge_after(level + tolerance) || band_edge_after(level - tolerance)) return {times, false};
+  return {times - 1, true};
 }
 
 CheckResult run(const AdvanceParams& p, const Capture& c) {
@@ -646,7 +657,8 @@ CheckResult run(const AdvanceParams& p, const Capture& c) {
     const PositionFn ahead = p.spec.advance_counts
                                  ? PositionFn([&](Nanos t) { return pos(t) + *p.spec.advance_counts; })
                                  : PositionFn([&](Nanos t) { return pos(t) + c.speed(t) * seconds; });
-    return times_reached(c, ahead, p.spec.setpoint, p.spec.modulus, std::nullopt, std::nullopt);
+    return times_reached(c, ahead, p.spec.setpoint, p.spec.tolerance, p.spec.modulus, std::nullopt,
+                         std::nullopt);
   };
   CheckResult r = check_advance(line(c, p.output), position_fn(c), c.speed, p.spec, reached);
   if (p.phase) {
@@ -665,7 +677,8 @@ CheckResult run(const AdvanceParams& p, const Capture& c) {
 
 CheckResult run(const EdgeAtPositionParams& p, const Capture& c) {
   const ReachedFn reached = [&] {
-    return times_reached(c, position_fn(c), p.spec.position, p.spec.modulus, p.spec.from, p.spec.to);
+    return times_reached(c, position_fn(c), p.spec.position, p.spec.tolerance, p.spec.modulus, p.spec.from,
+                         p.spec.to);
   };
   return check_edge_at_position(line(c, p.output), position_fn(c), c.speed, p.spec, reached);
 }

@@ -712,15 +712,28 @@ TEST(Registry, AnEdgeDueWhereTheShaftNeverWentIsAnError) {
   EXPECT_EQ(find(never, "e.edges").outcome, rig::Outcome::Error);
   EXPECT_EQ(find(never, "e.edges").detail,
             "nothing judged: the shaft never reached position 10.5 (the stimulus never came)");
-  // Reached exactly (10 counts at 10 ms, then still) counts as reached.
-  EXPECT_EQ(find(eap({{"position", 10}}), "e.edges").outcome, rig::Outcome::Fail);
+  // Reached exactly (10 counts at 10 ms), then standing within the tolerance (1 count) of it to
+  // the end: a board within the tolerance may still fire, so nothing is judged.
+  EXPECT_EQ(find(eap({{"position", 10}}), "e.edges").outcome, rig::Outcome::Error);
+  EXPECT_EQ(
+      find(eap({{"position", 10}}), "e.edges").detail,
+      "nothing judged against min_edges: the shaft reached position 10 0 time(s) (and once more with the "
+      "shaft still within 1 counts of it when the span ended: a board within the tolerance may fire "
+      "after that), fewer than min_edges (1); high edges: 0");
+  // 9 is passed through its band [8, 10] by 10 ms: reached, the board's fail.
+  EXPECT_EQ(find(eap({{"position", 9}}), "e.edges").outcome, rig::Outcome::Fail);
+  EXPECT_EQ(find(eap({{"position", 9.000001}}), "e.edges").outcome, rig::Outcome::Error);
   // With a modulus of 8, position 10.5 is 2.5: reached at 2.5 ms.
   EXPECT_EQ(find(eap({{"position", 10.5}, {"modulus", 8}}), "e.edges").outcome, rig::Outcome::Fail);
   // The span judged: [from_us, to_us], inclusive. Position 5 is reached at 5 ms exactly.
   EXPECT_EQ(find(eap({{"from_us", 6000}}), "e.edges").outcome, rig::Outcome::Error);
   EXPECT_EQ(find(eap({{"from_us", 5000}}), "e.edges").outcome, rig::Outcome::Fail);
   EXPECT_EQ(find(eap({{"from_us", 5000.001}}), "e.edges").outcome, rig::Outcome::Error);
-  EXPECT_EQ(find(eap({{"to_us", 5000}}), "e.edges").outcome, rig::Outcome::Fail);
+  // ... and the band's far edge (6 counts, at 6 ms) reached by to_us: a board within the
+  // tolerance fires by then.
+  EXPECT_EQ(find(eap({{"to_us", 6000}}), "e.edges").outcome, rig::Outcome::Fail);
+  EXPECT_EQ(find(eap({{"to_us", 5999.999}}), "e.edges").outcome, rig::Outcome::Error);
+  EXPECT_EQ(find(eap({{"to_us", 5000}}), "e.edges").outcome, rig::Outcome::Error);
   EXPECT_EQ(find(eap({{"to_us", 4999.999}}), "e.edges").outcome, rig::Outcome::Error);
   EXPECT_EQ(find(eap({{"to_us", 4999.999}}), "e.edges").detail,
             "nothing judged: the shaft never reached position 5 up to 4999999 ns (the stimulus never came)");
