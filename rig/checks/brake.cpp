@@ -55,7 +55,8 @@ CheckResult check_brake_stop(Nanos applied, std::optional<Standstill> still,
   const double limit = to_ms(spec.limit);
   const std::string where =
       still->exact()
-          ? fmt::format("standstill at {} ns (from the motion)", still->latest.count())
+          ? fmt::format("standstill at {} ns ({})", still->latest.count(),
+                        still->rule.empty() ? std::string("from the motion") : still->rule)
           : fmt::format("standstill in [{}, {}] ns (last count change, + one count at the final speed "
                         "bound): stop time {} .. {} ms, judged on the upper end",
                         still->earliest.count(), still->latest.count(), earliest, measured);
@@ -71,9 +72,10 @@ CheckResult check_brake_stop(Nanos applied, std::optional<Standstill> still,
     r.measurements.push_back(measure(
         spec.name + ".reported", *spec.reported_ms, "ms", window.low_ms, window.high_ms,
         fmt::format("board reported {} ms; a correct board with a {} ms stop timer tick reports within "
-                    "[{}, {}] ms: from the last count change ({} ns) - 1 tick to the standstill ({} ns) + "
+                    "[{}, {}] ms: from the {} ({} ns) - 1 tick to the standstill ({} ns) + "
                     "1 tick, after the brake applied at {} ns",
                     *spec.reported_ms, to_ms(*spec.report_tick), window.low_ms, window.high_ms,
+                    still->rule.empty() ? std::string("last count change") : "standstill by " + still->rule,
                     still->last_change().count(), still->latest.count(), applied.count())));
   } else if (spec.reported_ms) {
     r.measurements.push_back(measure(spec.name + ".reported", *spec.reported_ms, "ms",

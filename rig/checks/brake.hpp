@@ -38,6 +38,8 @@ struct Standstill {
   // The encoder count's last change before the standstill, which a board timing the stop from
   // count changes sees as its end (nullopt: earliest, as read from count changes).
   std::optional<Nanos> last_count_change{};
+  // How a board's own standstill rule placed it (empty: the shaft's standstill), for the details.
+  std::string rule{};
   [[nodiscard]] bool exact() const { return earliest == latest; }
   [[nodiscard]] Nanos last_change() const { return last_count_change.value_or(earliest); }
 };

@@ -20,6 +20,7 @@
 #include "rig/checks/frames.hpp"
 #include "rig/checks/pulse_width.hpp"
 #include "rig/checks/shaft_move.hpp"
+#include "rig/checks/standstill.hpp"
 #include "rig/checks/throughput.hpp"
 #include "rig/checks/words.hpp"
 
@@ -88,6 +89,9 @@ struct BrakeParams {
   Level applied_level = Level::Low;
   std::optional<std::string> reported{}; // the observation holding the board's stop time, ms
   std::optional<std::string> fault_output{};
+  // The board's own standstill rule (ANS1 L1042): stopped once the count changed by less than
+  // complete_stop_count over stop_window; its stop time ends stop_window before that (L1052).
+  std::optional<StopCountRule> stop_rule{};
 };
 
 struct PulseWidthParams {

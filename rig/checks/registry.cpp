@@ -305,6 +305,10 @@ CheckParams brake(std::string_view name, const Table& t) {
   if (t.has("reported")) p.reported = t.str("reported");
   if (t.has("fault_output")) p.fault_output = t.str("fault_output");
   p.spec.check_fault = p.fault_output.has_value();
+  if (t.has("stop_window_ms") && !t.has("complete_stop_count"))
+    throw ParamError("stop_window_ms", "only with complete_stop_count");
+  if (t.has("complete_stop_count"))
+    p.stop_rule = StopCountRule{t.num("complete_stop_count"), t.ms("stop_window_ms", Nanos{125'000'000})};
   return p;
 }
 
@@ -463,7 +467,13 @@ std::vector<CheckKind> make_kinds() {
                      kMs),
             P("fault_output", Str, false, "the stop-time fault output line"),
             P("fault_level", Lvl, false, "the fault output's level on a fault (low)"),
-            P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time")},
+            P("fault_from_reported", ParamType::Boolean, false, "expect the fault from the reported time"),
+            P("complete_stop_count", Num, false,
+              "the board's standstill rule: stopped once the count changed by less than this over "
+              "stop_window_ms, the stop ending stop_window_ms before (ANS1 CSC, L1042, L1052); default: "
+              "the shaft's own standstill",
+              between(1.0, 1e9)),
+            duration(P("stop_window_ms", Num, false, "with complete_stop_count: the window (125)"), kMs)},
            brake));
   k.push_back(kind(
       "edge_at_position", "every edge of an output at a position, within a tolerance",
@@ -732,6 +742,23 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
     return erred(fmt::format(
         "nothing judged: the shaft already stood still (by {} ns) when the brake was applied at {} ns",
         still->latest.count(), applied.count()));
+  if (p.stop_rule) {
+    // The board's standstill, not the shaft's: the count's change over the window fell below
+    // the complete stop count (a creeping shaft may never stand still for the rig).
+    const auto seen = stop_count_standstill(position_fn(c), *p.stop_rule, applied, c.end);
+    if (seen && *seen <= applied)
+      return erred(fmt::format("nothing judged: the count already changed by less than {} over {} ms when "
+                               "the brake was applied at {} ns",
+                               p.stop_rule->counts, to_ms(p.stop_rule->window), applied.count()));
+    if (!seen)
+      return failed(".stop_time",
+                    fmt::format("no standstill: the count never changed by less than {} over {} ms "
+                                "after the brake was applied at {} ns",
+                                p.stop_rule->counts, to_ms(p.stop_rule->window), applied.count()));
+    const std::string rule = fmt::format("the count changed by less than {} over the {} ms after it",
+                                         p.stop_rule->counts, to_ms(p.stop_rule->window));
+    return check_brake_stop(applied, Standstill{*seen, *seen, std::nullopt, rule}, fault, s);
+  }
   if (still) still->earliest = std::max(still->earliest, applied);
   // What a board timing the stop from count changes sees as its end (report_window()).
   const std::vector<PositionSample>& counts = c.counts.empty() ? c.motion : c.counts;

@@ -423,6 +423,64 @@ TEST(Registry, RefiningKeysWithoutWhatTheyRefineAreBadInput) {
 
 // The board's stop timer tick replaces the fixed report tolerance: one or the other, and a
 // tick of 0 would time nothing.
+// The ANS1's own standstill (L1042): stopped once the count changed by less than the Complete
+// Stop Count (CSC) in 125 ms, the stop time ending 125 ms before (L1052). The shaft brakes to a
+// stop at 300 ms, 4,096 counts, as d(t) = (300 ms - t)^2 / K counts short of it (K exact in
+// binary: 102,400 counts/s^2). The count is floor(position): its change over a window ending
+// after the stop is the whole counts short of 4,096 at the window's start, under CSC once that
+// is CSC - 1 or less. CSC 9: 8 counts short at 287.5 ms exactly, (12.5 ms)^2 / K = 8.
+TEST(Registry, BrakeStandstillByTheBoardsCompleteStopCount) {
+  constexpr double kK = 19'531'250'000'000.0; // 2e18 / 102,400: ns^2 per count
+  Capture c;
+  c.position = [&](Nanos t) {
+    const double before = static_cast<double>(std::max(300_ms - t, Nanos{0}).count());
+    return 4096.0 - before * before / kK;
+  };
+  c.lines["rig.brake"] = {};
+  c.end = 600_ms;
+  const auto brake = [&](json extra) {
+    json t{{"applied_ms", 100}, {"limit_ms", 187.5}, {"complete_stop_count", 9}};
+    if (!extra.is_null()) t.update(extra); // {} is null
+    return run_check("brake", build("brake_stop_time", t, "brake"), c);
+  };
+  EXPECT_EQ(find(brake({}), "brake.stop_time").value, 187.5);
+  EXPECT_EQ(brake({}).outcome(), rig::Outcome::Pass); // exactly at the limit
+  EXPECT_EQ(brake({{"limit_ms", 187.499999}}).outcome(), rig::Outcome::Fail);
+  // CSC 1: the count's last change, at the stop itself (200 ms after 100 ms), as without it.
+  // (4096 less a few 1e-14 counts rounds to 4096 a few ns before the stop.)
+  EXPECT_NEAR(find(brake({{"complete_stop_count", 1}}), "brake.stop_time").value, 200.0, 1e-5);
+  EXPECT_EQ(find(brake({{"complete_stop_count", 1}, {"limit_ms", 200}}), "brake.stop_time").outcome,
+            rig::Outcome::Pass);
+  // A 250 ms window: 8 counts short at 287.5 ms, seen 250 ms later (before the stop, every
+  // 250 ms holds thousands of counts).
+  EXPECT_EQ(find(brake({{"stop_window_ms", 250}}), "brake.stop_time").value, 187.5);
+  // A shaft that runs 10,000 counts/s to 100 ms and then creeps at 9.98 counts per 125 ms
+  // never stops, yet a CSC of 10 calls it still once a window holds only the creep (from
+  // 100 ms: 10 ms after the brake at 90 ms); at 10 counts per 125 ms it is never still for
+  // it: no standstill, the board's fail.
+  for (const double per_window : {9.98, 10.0}) {
+    c.position = [&](Nanos t) {
+      return t < 100_ms ? t.seconds() * 1e4 : 1000.0 + (t - 100_ms).seconds() / 0.125 * per_window;
+    };
+    const auto r = brake({{"complete_stop_count", 10}, {"limit_ms", 10}, {"applied_ms", 90}});
+    if (per_window < 10.0) {
+      EXPECT_EQ(find(r, "brake.stop_time").value, 10.0);
+      EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
+    } else {
+      EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
+    }
+  }
+  // Already under CSC when the brake is applied: nothing to time, an error.
+  c.position = [](Nanos) { return 5.0; };
+  EXPECT_EQ(brake({}).outcome(), rig::Outcome::Error);
+  // stop_window_ms refines complete_stop_count; CSC below 1 could never be met.
+  EXPECT_EQ(problem("brake_stop_time", json{{"applied_ms", 1}, {"limit_ms", 1}, {"stop_window_ms", 125}}),
+            "stop_window_ms");
+  EXPECT_EQ(
+      problem("brake_stop_time", json{{"applied_ms", 1}, {"limit_ms", 1}, {"complete_stop_count", 0.5}}),
+      "complete_stop_count");
+}
+
 TEST(Registry, BrakeReportTickIsATickOrATolerance) {
   const json base{{"limit_ms", 150}, {"applied_ms", 1}, {"reported", "w"}};
   auto with = [&](json extra) {
@@ -553,7 +611,8 @@ TEST(Registry, EveryDurationIsAtLeastOneNanosecondOnceRounded) {
   const std::map<std::string, json> base = {
       {"throughput", {{"output", "o"}, {"limit_us", 300}, {"setpoint", 100}}},
       {"debounce", debounce_base()},
-      {"brake_stop_time", {{"limit_ms", 100}, {"applied_ms", 1}, {"reported", "w"}}}};
+      {"brake_stop_time",
+       {{"limit_ms", 100}, {"applied_ms", 1}, {"reported", "w"}, {"complete_stop_count", 1}}}};
   std::set<std::string> swept;
   for (const CheckKind& k : check_kinds())
     for (const ParamSpec& p : k.params) {
@@ -586,7 +645,8 @@ TEST(Registry, EveryDurationIsAtLeastOneNanosecondOnceRounded) {
   EXPECT_EQ(swept,
             (std::set<std::string>{"throughput.timeout_us", "throughput.quiet_us", "throughput.step_us",
                                    "debounce.filter_us", "debounce.narrow_us", "debounce.wide_us",
-                                   "debounce.resolution_us", "brake_stop_time.report_tick_ms"}));
+                                   "debounce.resolution_us", "brake_stop_time.report_tick_ms",
+                                   "brake_stop_time.stop_window_ms"}));
   // The probe of the auditor's case: narrow_us = 0.0004 would have probed a 0 ns pulse.
   auto narrow = debounce_base();
   narrow["narrow_us"] = 0.0004;
