@@ -36,10 +36,18 @@ HostWords HostInterface::status() const {
 void HostInterface::scan() {
   const bool transmit = (commands_[0] & kTransmitBit) != 0;
   if (transmit && !transmit_seen_) {
+    // The block takes effect from the next scan; that scan writes the response (the data words
+    // computed with the block in force) and then sets Acknowledge (L1705), so the words a host
+    // reads with Acknowledge never predate the block.
     execute(commands_);
-    ack_ = true; // also for a rejected block [MODEL A43]
+    responding_ = true;
+    device_.wake(); // the responding scan must run, whatever the block changed
   } else if (!transmit) {
     ack_ = false;
+    responding_ = false;
+  } else if (responding_) {
+    ack_ = true; // also for a rejected block [MODEL A43]
+    responding_ = false;
   }
   transmit_seen_ = transmit;
 }
@@ -47,6 +55,7 @@ void HostInterface::scan() {
 Ans1Setup HostInterface::power_up() {
   transmit_seen_ = (commands_[0] & kTransmitBit) != 0;
   ack_ = false;
+  responding_ = false;
   error_ = latched_ = ErrorCode::None;
   hardware_fault_ = false;
   selection_ = DataSelection{};
