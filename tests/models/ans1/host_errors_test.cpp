@@ -147,6 +147,36 @@ TEST(HostErrors, IncompatibleParametersAreParameterConflicts) {
   });
 }
 
+// CB11: only the Counter Overflow Output has requirements -- a limit programmed (L2208) and a
+// mode other than "No Output" (L2212). The mode (L2213-L2214) and the limit (0..999,999,999,
+// L2181) may each be programmed alone, in either order. A limit of 0 counts as none [MODEL]
+// (a count never reaches it from below).
+TEST(HostErrors, OnlyTheCounterOverflowOutputNeedsAModeAndALimit) {
+  for (const int mode : {1, 2}) {
+    HostRig rig;
+    EXPECT_EQ(rig.send(block(11, {9}, {{1, 3}, {3, mode}})), ErrorCode::None) << "mode before limit";
+    EXPECT_EQ(rig.send(block(11, {11}, {{1, 3}, {5, 0}, {6, 0}})), ErrorCode::None) << "limit 0 with a mode";
+    EXPECT_EQ(rig.send(block(11, {8}, {{1, 3}, {2, 4}})), ErrorCode::ParameterConflict) << "output, limit 0";
+    EXPECT_EQ(rig.send(block(11, {4, 11}, {{1, 3}, {5, 0}, {6, 1}})), ErrorCode::None) << "limit 1";
+    EXPECT_EQ(rig.send(block(11, {8}, {{1, 3}, {2, 4}})), ErrorCode::None) << "output with mode and limit";
+    EXPECT_EQ(rig.send(block(11, {11}, {{1, 3}, {5, 0}, {6, 0}})), ErrorCode::ParameterConflict)
+        << "limit 0 under an output";
+    EXPECT_EQ(rig.send(block(11, {4, 9}, {{1, 3}, {3, 0}})), ErrorCode::ParameterConflict)
+        << "mode 0 under an output";
+    const HostWords da8 = rig.select(8);
+    EXPECT_EQ(da8[14], 4) << "batch 3 output kept";
+    EXPECT_EQ(da8[15], mode) << "batch 3 mode kept";
+    EXPECT_EQ(da8[18], 1) << "batch 3 limit kept";
+    EXPECT_EQ(rig.send(block(11, {4, 8}, {{1, 3}, {2, 0}})), ErrorCode::None) << "output removed";
+    EXPECT_EQ(rig.send(block(11, {11}, {{1, 3}, {5, 0}, {6, 0}})), ErrorCode::None) << "limit 0 again";
+    EXPECT_EQ(rig.send(block(11, {9}, {{1, 3}, {3, 0}})), ErrorCode::None) << "mode 0 again";
+  }
+  HostRig rig; // limit first, then mode, then output; the largest limit (W-15)
+  EXPECT_EQ(rig.send(block(11, {11}, {{1, 0}, {5, 0x3B9A}, {6, 0xC9FF}})), ErrorCode::None);
+  EXPECT_EQ(rig.send(block(11, {9}, {{1, 0}, {3, 2}})), ErrorCode::None);
+  EXPECT_EQ(rig.send(block(11, {8}, {{1, 0}, {2, 16}})), ErrorCode::None);
+}
+
 TEST(HostErrors, OverlappingPairsAreSetpointOverlapErrors) {
   // L1898: pairs [10, 20) and [15, 30) on one output share 15..19.
   HostRig rig;
