@@ -64,17 +64,21 @@ Ans1Setup HostInterface::power_up() {
     s.position = saved_global_->position;
     s.monitors.brake = saved_global_->monitors.brake;
   }
-  const auto& p = programs_[active_program_];
-  if (active_program_ != 0 && p) {
-    if (!p->checksum_ok) {
-      hardware_fault_ = true; // the program read from memory fails its checksum (L2298)
-      return s;
-    }
-    s.outputs = p->setup.outputs;
-    s.shift_register = p->setup.shift_register;
-    s.monitors.die = p->setup.monitors.die;
-    s.monitors.production = p->setup.monitors.production;
+  const auto& p = programs_[active_program_]; // slot 0 never holds one
+  if (!p) {
+    // None loaded, or it was deleted (L2236): factory defaults, and no program is active (DA0
+    // w17, L2338).
+    active_program_ = 0;
+    return s;
   }
+  if (!p->checksum_ok) {
+    hardware_fault_ = true; // the program read from memory fails its checksum (L2298)
+    return s;
+  }
+  s.outputs = p->setup.outputs;
+  s.shift_register = p->setup.shift_register;
+  s.monitors.die = p->setup.monitors.die;
+  s.monitors.production = p->setup.monitors.production;
   return s;
 }
 
