@@ -2,6 +2,7 @@
 
 #include "models/ans1/ans1.hpp"
 #include "models/ans1/data_block.hpp"
+#include "models/ans1/positions_fit.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -75,6 +76,13 @@ Ans1Setup HostInterface::power_up() {
     hardware_fault_ = true; // the program read from memory fails its checksum (L2298)
     return s;
   }
+  if (!positions_fit(p->setup, s.position.full_scale_count)) {
+    // A position beyond the saved FSC does not run [MODEL, positions_fit.hpp]: factory
+    // defaults, as after Load 40, and 1011 shows why until Clear Errors.
+    active_program_ = 0;
+    error_ = latched_ = ErrorCode::ParameterConflict;
+    return s;
+  }
   s.outputs = p->setup.outputs;
   s.shift_register = p->setup.shift_register;
   s.monitors.die = p->setup.monitors.die;
@@ -91,7 +99,9 @@ void HostInterface::execute(const HostWords& words) {
   const Ans1Setup current = device_.setup();
   HostContext context;
   context.active_program = active_program_;
-  for (std::size_t k = 1; k < programs_.size(); ++k) context.stored[k] = programs_[k].has_value();
+  for (std::size_t k = 1; k < programs_.size(); ++k) {
+    context.stored[k] = programs_[k] ? &programs_[k]->setup : nullptr;
+  }
   const DecodedBlock d = decode_command_block(words, current, context);
 
   if (d.actions.clear_errors) { // L1711: programming and hardware errors
