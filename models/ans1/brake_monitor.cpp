@@ -12,15 +12,22 @@ namespace {
 }
 } // namespace
 
-void BrakeMonitor::configure(const BrakeSetup& setup) {
+void BrakeMonitor::configure(const BrakeSetup& setup, std::optional<bool> released_now) {
+  const bool same_input = primed_ && setup.input == setup_.input;
   setup_ = setup;
   phase_ = Phase::Idle;
-  primed_ = false;
   if (setup.input == 0) {
+    primed_ = false;
     status_ = BrakeStatus{};
     start_fault_ = false;
     stop_fault_ = false;
+    return;
   }
+  if (same_input) return; // the ticks go on sampling the same input
+  // An inactive->active transition after the monitor is programmed is a release (L1054,
+  // L2614): compare the first tick with the level now, not with the first tick's own.
+  primed_ = released_now.has_value();
+  if (released_now) released_ = *released_now;
 }
 
 void BrakeMonitor::clear_errors() {

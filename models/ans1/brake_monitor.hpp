@@ -11,12 +11,14 @@
 //             a turn), because CSC is defined on that base whatever CPC/FSC are (L1046);
 //   gmp:      Global Machine Position, only recorded as released/applied position.
 // The input is sampled on the tick (1 ms resolution, L640); an edge is a change between two
-// ticks. Results: status(); faults: start_fault()/stop_fault() (true = fault; the fault output
-// is then OFF [MODEL A5, chapter 3: normally on, off = fault]). An overrun trips on the tick it
-// becomes certain (start: no motion when the limit is passed; stop: no standstill by limit +
-// 125 ms), not only when the press next moves or stops.
+// ticks, or between the level the input had when the setup took effect and the first tick.
+// Results: status(); faults: start_fault()/stop_fault() (true = fault; the fault output is then
+// OFF [MODEL A5, chapter 3: normally on, off = fault]). An overrun trips on the tick it becomes
+// certain (start: no motion when the limit is passed; stop: no standstill by limit + 125 ms),
+// not only when the press next moves or stops.
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "core/time.hpp"
 #include "models/ans1/monitor_setup.hpp"
@@ -59,8 +61,12 @@ public:
       : never_faults_(never_faults), sample_start_(sample_start) {}
 
   // A new setup ends any running cycle; measured times and faults are kept unless the monitor
-  // is disabled (input 0), which clears them.
-  void configure(const BrakeSetup& setup);
+  // is disabled (input 0), which clears them. `released_now`: the input's level as the setup
+  // takes effect (the device's last scan read it), so a release after it is an edge at the next
+  // tick (L1054, L2614); none before the device's first scan, when the first tick takes the
+  // level. A new setup on the input the monitor already samples keeps the level its last tick
+  // saw: an edge since that tick is found at the next one.
+  void configure(const BrakeSetup& setup, std::optional<bool> released_now = std::nullopt);
   void tick(Nanos now, bool released, std::int64_t pos4096, std::uint16_t gmp);
   // The debounce samples (and the decision a ms after the last) due at or before `now`; tick()
   // takes those due by its own time, so only a sample start off the whole ms needs this.
@@ -99,7 +105,7 @@ private:
   bool never_faults_;
   Nanos sample_start_;
   Phase phase_ = Phase::Idle;
-  bool primed_ = false;   // the first tick after configure only records the level
+  bool primed_ = false;   // released_ holds a level to compare the next tick with
   bool released_ = false; // level seen at the previous tick
   Nanos t0_{};            // start of the running cycle (release or application tick)
   std::int64_t start_pos_ = 0;

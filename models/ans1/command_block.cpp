@@ -1,6 +1,7 @@
 #include "models/ans1/command_block.hpp"
 
 #include "models/ans1/command_block_fields.hpp"
+#include "models/ans1/positions_fit.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -110,8 +111,12 @@ ErrorCode decode_global(const HostWords& w, DecodedBlock& out) {
   if (has(w[0], 10) && !in_range(smo, -(fsc - 1), fsc - 1)) return ErrorCode::Parameter;
   const int mpv = has(w[0], 11) ? w[5] : p.preset_value;
   if (has(w[0], 11) && (!in_range(mpv, 0, fsc - 1) || !in_range(w[6], 0, 16))) return ErrorCode::Parameter;
-  // A new CPC or FSC that the kept values no longer fit is a conflict [MODEL].
+  // A new CPC or FSC that the kept values no longer fit is a conflict [MODEL]: SMO, MPV and
+  // every programmed position of the outputs and monitors (positions_fit.hpp).
   if (fsc > cpc || !in_range(smo, -(fsc - 1), fsc - 1) || mpv > fsc - 1) return ErrorCode::ParameterConflict;
+  if (fsc < p.full_scale_count && !positions_fit(out.setup, static_cast<std::uint16_t>(fsc))) {
+    return ErrorCode::ParameterConflict;
+  }
 
   if (has(w[0], 7)) set_bit_parameters(p, w[1]);
   p.counts_per_cycle = static_cast<std::uint16_t>(cpc);
@@ -144,8 +149,11 @@ ErrorCode decode_save_restore(const HostWords& w, const HostContext& ctx, Decode
     // Factory defaults are load-only (L2245); "save to the active program" needs one [MODEL].
     if (slot == kFactoryProgram || slot == 0) return ErrorCode::ParameterConflict;
   }
-  if (cmd.load_program && cmd.slot >= 1 && cmd.slot <= kProgramSlots && !ctx.stored[cmd.slot]) {
-    return ErrorCode::Parameter; // nothing stored there [MODEL]
+  if (cmd.load_program && cmd.slot >= 1 && cmd.slot <= kProgramSlots) {
+    const Ans1Setup* stored = ctx.stored[cmd.slot];
+    if (stored == nullptr) return ErrorCode::Parameter; // nothing stored there [MODEL]
+    // Its positions must fit the FSC in force, which a program does not carry [MODEL].
+    if (!positions_fit(*stored, out.setup.position.full_scale_count)) return ErrorCode::ParameterConflict;
   }
   out.actions.program = cmd;
   return ErrorCode::None;

@@ -90,8 +90,8 @@ struct BlockActions {
 
 // What the decoder needs to know besides the setup.
 struct HostContext {
-  std::uint8_t active_program = 0;              // 0 = none loaded yet
-  std::array<bool, kProgramSlots + 1> stored{}; // stored[k]: slot k (1..39) holds a program
+  std::uint8_t active_program = 0;                          // 0 = none loaded yet
+  std::array<const Ans1Setup*, kProgramSlots + 1> stored{}; // stored[k]: slot k's program (1..39), or null
 };
 
 struct DecodedBlock {

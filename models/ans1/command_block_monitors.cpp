@@ -113,10 +113,11 @@ ErrorCode decode_counters(const HostWords& w, DecodedBlock& out) {
   if (has(w[0], 9)) c.overflow_mode = static_cast<OverflowMode>(w[3]);
   if (has(w[0], 10)) c.only_good_cycles = w[4] == 1;
   if (has(w[0], 11)) c.limit = limit;
-  if (has(w[0], 8) || has(w[0], 9) || has(w[0], 11)) {
-    // Mode 0 has no output (L2211); an output needs a mode and a limit (L2208).
-    if (c.overflow_mode == OverflowMode::None && c.overflow_output != 0) return ErrorCode::ParameterConflict;
-    if (c.overflow_mode != OverflowMode::None && c.limit == 0) return ErrorCode::ParameterConflict;
+  // Only an assigned output has requirements: mode 0 is "No Output" (L2212) and the output needs
+  // a Counter Limit Value programmed (L2208; a limit of 0 is none [MODEL], it is never reached).
+  // A mode or a limit (0 included, L2181) alone conflicts with nothing, in either order.
+  if (c.overflow_output != 0 && (c.overflow_mode == OverflowMode::None || c.limit == 0)) {
+    return ErrorCode::ParameterConflict;
   }
   if (has(w[0], 12)) out.actions.counter_preset = CounterPreset{id, preset};
   return ErrorCode::None;

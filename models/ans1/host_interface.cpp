@@ -2,6 +2,7 @@
 
 #include "models/ans1/ans1.hpp"
 #include "models/ans1/data_block.hpp"
+#include "models/ans1/positions_fit.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -36,10 +37,18 @@ HostWords HostInterface::status() const {
 void HostInterface::scan() {
   const bool transmit = (commands_[0] & kTransmitBit) != 0;
   if (transmit && !transmit_seen_) {
+    // The block takes effect from the next scan; that scan writes the response (the data words
+    // computed with the block in force) and then sets Acknowledge (L1705), so the words a host
+    // reads with Acknowledge never predate the block.
     execute(commands_);
-    ack_ = true; // also for a rejected block [MODEL A43]
+    responding_ = true;
+    device_.wake(); // the responding scan must run, whatever the block changed
   } else if (!transmit) {
     ack_ = false;
+    responding_ = false;
+  } else if (responding_) {
+    ack_ = true; // also for a rejected block [MODEL A43]
+    responding_ = false;
   }
   transmit_seen_ = transmit;
 }
@@ -47,6 +56,7 @@ void HostInterface::scan() {
 Ans1Setup HostInterface::power_up() {
   transmit_seen_ = (commands_[0] & kTransmitBit) != 0;
   ack_ = false;
+  responding_ = false;
   error_ = latched_ = ErrorCode::None;
   hardware_fault_ = false;
   selection_ = DataSelection{};
@@ -55,17 +65,28 @@ Ans1Setup HostInterface::power_up() {
     s.position = saved_global_->position;
     s.monitors.brake = saved_global_->monitors.brake;
   }
-  const auto& p = programs_[active_program_];
-  if (active_program_ != 0 && p) {
-    if (!p->checksum_ok) {
-      hardware_fault_ = true; // the program read from memory fails its checksum (L2298)
-      return s;
-    }
-    s.outputs = p->setup.outputs;
-    s.shift_register = p->setup.shift_register;
-    s.monitors.die = p->setup.monitors.die;
-    s.monitors.production = p->setup.monitors.production;
+  const auto& p = programs_[active_program_]; // slot 0 never holds one
+  if (!p) {
+    // None loaded, or it was deleted (L2236): factory defaults, and no program is active (DA0
+    // w17, L2338).
+    active_program_ = 0;
+    return s;
   }
+  if (!p->checksum_ok) {
+    hardware_fault_ = true; // the program read from memory fails its checksum (L2298)
+    return s;
+  }
+  if (!positions_fit(p->setup, s.position.full_scale_count)) {
+    // A position beyond the saved FSC does not run [MODEL, positions_fit.hpp]: factory
+    // defaults, as after Load 40, and 1011 shows why until Clear Errors.
+    active_program_ = 0;
+    error_ = latched_ = ErrorCode::ParameterConflict;
+    return s;
+  }
+  s.outputs = p->setup.outputs;
+  s.shift_register = p->setup.shift_register;
+  s.monitors.die = p->setup.monitors.die;
+  s.monitors.production = p->setup.monitors.production;
   return s;
 }
 
@@ -78,7 +99,9 @@ void HostInterface::execute(const HostWords& words) {
   const Ans1Setup current = device_.setup();
   HostContext context;
   context.active_program = active_program_;
-  for (std::size_t k = 1; k < programs_.size(); ++k) context.stored[k] = programs_[k].has_value();
+  for (std::size_t k = 1; k < programs_.size(); ++k) {
+    context.stored[k] = programs_[k] ? &programs_[k]->setup : nullptr;
+  }
   const DecodedBlock d = decode_command_block(words, current, context);
 
   if (d.actions.clear_errors) { // L1711: programming and hardware errors

@@ -8,8 +8,9 @@
 //   host.read(k) / host.status()                      status word k = 0..19
 //                                                     (Modbus input register k)
 //   Handshake (L1705, L2296): write words 1..19 and word 0 with Transmit (bit 15) = 0; then
-//   set Transmit = 1; the device acts on the 0->1 edge at its next scan and sets Acknowledge
-//   (status w0 bit 15); read the result; clear Transmit; Acknowledge drops at the next scan.
+//   set Transmit = 1; the device acts on the 0->1 edge at its next scan, and the scan after it,
+//   the first to run with the block in force, writes the response and sets Acknowledge (status
+//   w0 bit 15); read the result; clear Transmit; Acknowledge drops at the next scan.
 //   Status word 0: 15 Ack, 14 Heartbeat, 13 Hardware Fault, 12 Resolver Fault, 11..8 error
 //   code (error_codes.hpp), 7 RPM Clamped, 6 Output Forced, 4..0 data block number.
 //
@@ -57,6 +58,8 @@ public:
   [[nodiscard]] ErrorCode error() const { return error_; }
   [[nodiscard]] bool acknowledge() const { return ack_; }
   [[nodiscard]] bool transmit_seen() const { return transmit_seen_; }
+  // A block was executed; the next scan writes its response and sets Acknowledge.
+  [[nodiscard]] bool responding() const { return responding_; }
   [[nodiscard]] const DataSelection& selection() const { return selection_; }
   [[nodiscard]] std::uint8_t active_program() const { return active_program_; }
   [[nodiscard]] bool hardware_fault() const { return hardware_fault_; }
@@ -83,6 +86,7 @@ private:
   HostWords commands_{};
   bool transmit_seen_ = false; // Transmit level at the previous scan
   bool ack_ = false;
+  bool responding_ = false; // executed at the last scan: Acknowledge at this one
   ErrorCode error_ = ErrorCode::None;
   ErrorCode latched_ = ErrorCode::None; // the last 1001-1100, until Clear Errors (L2306-L2309)
   bool hardware_fault_ = false;

@@ -1,6 +1,7 @@
 #include "models/ans1/monitors.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace hilrig::models::ans1 {
 
@@ -13,7 +14,12 @@ Monitors::Monitors(MonitorFaults faults, Nanos brake_sample_start)
 
 void Monitors::configure(const MonitorSetup& setup, std::uint16_t full_scale_count) {
   setup_ = setup;
-  if (!(setup.brake == brake_.setup())) brake_.configure(setup.brake);
+  if (!(setup.brake == brake_.setup())) {
+    // The brake input's level as the last scan read it, once a scan has read the inputs.
+    std::optional<bool> released_now;
+    if (started_ && setup.brake.input != 0) released_now = (inputs_ & bit(setup.brake.input)) != 0;
+    brake_.configure(setup.brake, released_now);
+  }
   die_.configure(setup.die, full_scale_count);
   counters_.configure(setup.production, full_scale_count);
 }

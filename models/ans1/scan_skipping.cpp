@@ -32,7 +32,7 @@ struct Ans1::ScanSnapshot {
              std::uint16_t>
       masks;
   std::tuple<std::uint16_t, Nanos, std::int8_t> rotation;
-  std::tuple<bool, bool, ErrorCode, bool> host;
+  std::tuple<bool, bool, bool, ErrorCode, bool> host;
   friend bool operator==(const ScanSnapshot&, const ScanSnapshot&) = default;
 };
 
@@ -49,7 +49,7 @@ Ans1::ScanSnapshot Ans1::snapshot() const {
       {masks_.calc, masks_.simple, masks_.pulse, masks_.window, masks_.shift_register, masks_.rpm,
        masks_.timer},
       {time_of_rotation_, last_wrap_, last_wrap_direction_},
-      {host_.transmit_seen(), host_.acknowledge(), host_.error(), host_.hardware_fault()},
+      {host_.transmit_seen(), host_.acknowledge(), host_.responding(), host_.error(), host_.hardware_fault()},
   };
 }
 

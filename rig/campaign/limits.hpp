@@ -26,7 +26,7 @@ inline constexpr std::int64_t kMaxWord = 0xFFFF;
 inline constexpr Nanos kMaxEdgeTolerance = seconds(1);
 
 // Shaft speed: the boards report speed as a signed 16-bit rpm word, +-32767 (ANS1
-// docs/spec/ans1.md L1019, manual L2019-L2020); the Series 2700 tach stops at 5000 rpm (L578).
+// docs/spec/ans1.md L1024, manual L2019-L2020); the Series 2700 tach stops at 5000 rpm (L578).
 inline constexpr double kMaxRpm = 32'767.0;
 // The slowest cruise of a trapezoid or press stroke: 0.01 rpm (the ANS1's speed word's
 // resolution is 1 rpm; below this a move's time overflows the run).

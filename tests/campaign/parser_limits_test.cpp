@@ -122,7 +122,7 @@ TEST(CampaignLimits, CampaignTimesOutsideTheRigsRangeAreRefused) {
 // ---- speeds the rig cannot make ------------------------------------------------------------
 
 TEST(CampaignLimits, SpeedsBeyondTheSpeedWordAreRefused) {
-  // +-32767 rpm: the boards' signed rpm word (docs/spec/ans1.md L1019). 100 lines make 218,447
+  // +-32767 rpm: the boards' signed rpm word (docs/spec/ans1.md L1024). 100 lines make 218,447
   // counts/s at that speed, under the 10^6 counts/s bound.
   const std::string want = "t.toml:21:13: motion.move[0].speed_rpm: a speed in rpm in -32767 .. 32767";
   for (const char* bad : {"9.2e18", "1e12", "32767.01", "-32767.01", "32768"})

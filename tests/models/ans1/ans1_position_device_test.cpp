@@ -500,6 +500,44 @@ TEST(Ans1Device, BrakeStartOverrunOutputAndItsNeverFaultsVariant) {
   }
 }
 
+TEST(Ans1Device, BrakeReleasedRightAfterCommandBlock8IsTimed) {
+  // The start time runs from the brake input's inactive-to-active transition (L1054-L1056);
+  // DA19 w3 is the position where it made it (L2614). CB8 (input 5, CSC 10, start limit 300 ms
+  // on output 6, stop limit 50 ms on output 7) is executed by the scan at 1.010 ms with input 5
+  // inactive; the monitor's first 1 ms tick is at 2 ms. A release at any time after that scan
+  // -- before the first tick, at it, after it -- is timed: the shaft never moves, so the start
+  // exceeds its limit and output 6 goes off (L1056, [MODEL A5]); the released position is GMP =
+  // SMO = 100 (L780). A release that scan already reads is no transition after programming.
+  const Nanos executed = 1010_us;
+  HostWords cb8{};
+  cb8[0] = static_cast<std::uint16_t>(kTransmitBit | 0x3F00U | 8U);
+  cb8[1] = 5;
+  cb8[2] = 10;
+  cb8[3] = 300;
+  cb8[4] = 6;
+  cb8[5] = 50;
+  cb8[6] = 7;
+  for (const Params& params : {Params{}, testing::every_period()}) {
+    for (const Nanos after :
+         {-10_us, -1_ns, 0_ns, 1_ns, 10_us, 500_us, 990_us - 1_ns, 990_us, 990_us + 1_ns, 1990_us, 2_ms}) {
+      Bench bench(params);
+      PositionSetup position = testing::encoder_setup(4096, 360);
+      position.scaled_offset = 100;
+      bench.device().configure_position(position);
+      bench.scheduler().at(1005_us, [&bench, &cb8] { bench.device().host().write_block(cb8); });
+      bench.input_at(executed + after, 5, true);
+      bench.run_until(500_ms);
+      const bool released_after_programming = after > 0_ns;
+      const BrakeMonitor& brake = bench.device().monitors().brake();
+      ASSERT_EQ(brake.setup().input, 5);
+      EXPECT_EQ(brake.status().released_position, released_after_programming ? 100 : 0) << after.count();
+      EXPECT_EQ(brake.start_fault(), released_after_programming) << after.count();
+      EXPECT_EQ(bench.pin(6), released_after_programming ? Level::Low : Level::High) << after.count();
+      EXPECT_EQ(bench.pin(7), Level::High) << after.count();
+    }
+  }
+}
+
 } // namespace
 } // namespace hilrig::models::ans1
 

@@ -423,5 +423,56 @@ TEST(BrakeMonitor, ClearErrorsHoldsWhileTheFailedBrakeIsStillTimed) {
   EXPECT_EQ(rig.brake.phase(), Phase::Stopping);
 }
 
+// The level the brake input has when CB8 takes effect (L1054-L1056, L2614): a release after it
+// is an inactive-to-active transition the first tick must see, whether it comes before that
+// tick or not; a level already active then is no transition.
+TEST(BrakeMonitor, ReleaseBetweenTheSetupAndTheFirstTickIsTimed) {
+  for (const bool released_when_programmed : {false, true}) {
+    BrakeMonitor brake;
+    brake.configure(setup_with(10, 0, 0), released_when_programmed);
+    brake.tick(milliseconds(1), true, 0, 42);
+    EXPECT_EQ(brake.phase(), released_when_programmed ? Phase::Idle : Phase::Starting);
+    EXPECT_EQ(brake.status().released_position, released_when_programmed ? 0 : 42);
+  }
+}
+
+TEST(BrakeMonitor, WithoutALevelAtTheSetupTheFirstTickTakesIt) {
+  // Programmed before the device has read its inputs (power-up): an input already active at the
+  // first tick is the press's state, not a release.
+  BrakeMonitor active;
+  active.configure(setup_with(10, 0, 0));
+  active.tick(milliseconds(1), true, 0, 42);
+  EXPECT_EQ(active.phase(), Phase::Idle);
+  EXPECT_EQ(active.status().released_position, 0);
+  // Inactive at the first tick: the next active tick is a release.
+  BrakeMonitor inactive;
+  inactive.configure(setup_with(10, 0, 0));
+  inactive.tick(milliseconds(1), false, 0, 42);
+  EXPECT_EQ(inactive.phase(), Phase::Idle);
+  inactive.tick(milliseconds(2), true, 0, 43);
+  EXPECT_EQ(inactive.phase(), Phase::Starting);
+  EXPECT_EQ(inactive.status().released_position, 43);
+}
+
+TEST(BrakeMonitor, ANewSetupOnTheSameInputKeepsTheLevelItsLastTickSaw) {
+  // Tick at 1 ms: applied. The input is released at 1.3 ms and new limits arrive at 1.5 ms: the
+  // ticks go on sampling input 3, so the 2 ms tick finds the release. A new input starts from
+  // its own level when programmed.
+  BrakeMonitor brake;
+  brake.configure(setup_with(10, 0, 0), false);
+  brake.tick(milliseconds(1), false, 0, 10);
+  brake.configure(setup_with(10, 300, 50), true);
+  brake.tick(milliseconds(2), true, 0, 20);
+  EXPECT_EQ(brake.phase(), Phase::Starting);
+  EXPECT_EQ(brake.status().released_position, 20);
+
+  BrakeSetup other = setup_with(10, 300, 50);
+  other.input = 4;
+  brake.configure(other, true);
+  brake.tick(milliseconds(3), true, 0, 30);
+  EXPECT_EQ(brake.phase(), Phase::Idle);
+  EXPECT_EQ(brake.status().released_position, 20);
+}
+
 } // namespace
 } // namespace hilrig::models::ans1

@@ -147,6 +147,94 @@ TEST(HostErrors, IncompatibleParametersAreParameterConflicts) {
   });
 }
 
+// Every position a program block takes is 0..FSC-1 (L1800, L1890-L1891, L1867-L1868,
+// L2005-L2006, L2056-L2063, L2139-L2141, L2158), as SMO and MPV are (L1801-L1802). The manual
+// does not say what a smaller FSC does to them; [MODEL] (models/ans1/positions_fit.hpp): a CB2
+// that would leave one outside its range is refused with 1011 and applies nothing. Each case
+// programs its largest position 200 (an offset of -200): FSC 200 is refused, FSC 201 (the
+// position at FSC - 1) is accepted (with Clear Errors, bit 4, for the 1011 before it).
+TEST(HostErrors, AFullScaleCountAProgrammedPositionWouldNotFitIsAConflict) {
+  const std::vector<std::pair<const char*, HostWords>> programs{
+      {"CB2 SMO", block(2, {10}, {{4, 200}})},
+      {"CB2 MPV", block(2, {11}, {{5, 200}})},
+      {"CB3 From", block(3, {10}, {{1, 5}, {4, 200}, {5, 10}})},
+      {"CB3 To", block(3, {10}, {{1, 5}, {4, 10}, {5, 200}})},
+      {"CB3 To of pair 4", block(3, {13}, {{1, 5}, {16, 150}, {17, 200}})},
+      {"CB3 LS offset", block(3, {8}, {{1, 5}, {2, -200}})},
+      {"CB3 LS preset value", block(3, {9}, {{1, 5}, {2, 0}, {3, 200}})},
+      {"CB6 window high", block(6, {8}, {{1, 5}, {18, 10}, {19, 200}})},
+      {"CB7 trailing edge of window 4", block(7, {9}, {{2, 5}, {3, 2}, {10, 150}, {11, 200}})},
+      {"CB9 sensing window To", block(9, {8}, {{1, 5}, {2, 10}, {3, 200}, {4, 20}})},
+      {"CB9 shift position", block(9, {8}, {{1, 5}, {2, 10}, {3, 20}, {4, 200}})},
+      {"CB10 increment position", block(10, {8}, {{1, 200}})},
+  };
+  for (const auto& [what, program] : programs) {
+    HostRig rig;
+    ASSERT_EQ(rig.send(program), ErrorCode::None) << what;
+    EXPECT_EQ(rig.send(block(2, {9}, {{3, 200}})), ErrorCode::ParameterConflict) << what;
+    EXPECT_EQ(rig.select(0)[7], 360) << what << ": nothing applied";
+    EXPECT_EQ(rig.send(block(2, {4, 9}, {{3, 201}})), ErrorCode::None) << what;
+    EXPECT_EQ(rig.select(0)[7], 201) << what;
+  }
+}
+
+// A stitched pair must still hold two Ons and an Off (L868) in the new FSC. The pair 300 -> 100
+// wraps: its length is 100 + FSC - 300, so On 40 + Off 60 (140 counts) fits down to FSC 340.
+TEST(HostErrors, AFullScaleCountAStitchedPairWouldNotFitIsAConflict) {
+  HostRig rig;
+  ASSERT_EQ(rig.send(block(3, {10}, {{1, 5}, {4, 300}, {5, 100}, {6, 40}, {7, 60}})), ErrorCode::None);
+  EXPECT_EQ(rig.send(block(2, {9}, {{3, 339}})), ErrorCode::ParameterConflict);
+  EXPECT_EQ(rig.send(block(2, {4, 9}, {{3, 340}})), ErrorCode::None);
+  // Once the pair is deleted (CB3 bit 6), nothing stops a smaller FSC.
+  ASSERT_EQ(rig.send(block(3, {6}, {{1, 5}})), ErrorCode::None);
+  EXPECT_EQ(rig.send(block(2, {9}, {{3, 10}})), ErrorCode::None);
+}
+
+// The same rule for a stored program (CB15 Load, L2237): it carries no FSC, so its positions
+// must fit the one in force.
+TEST(HostErrors, LoadingAProgramWhosePositionsExceedTheFullScaleCountIsAConflict) {
+  HostRig rig;
+  ASSERT_EQ(rig.send(block(3, {10}, {{1, 5}, {4, 10}, {5, 200}})), ErrorCode::None);
+  ASSERT_EQ(rig.send(block(15, {9}, {{1, 3}})), ErrorCode::None); // save program 3
+  ASSERT_EQ(rig.send(block(3, {6}, {{1, 5}})), ErrorCode::None);  // delete the pair in RAM
+  ASSERT_EQ(rig.send(block(2, {9}, {{3, 200}})), ErrorCode::None);
+  EXPECT_EQ(rig.send(block(15, {8}, {{1, 3}})), ErrorCode::ParameterConflict);
+  EXPECT_EQ(rig.select(1, 5)[3], 0) << "nothing loaded";
+  ASSERT_EQ(rig.send(block(2, {4, 9}, {{3, 201}})), ErrorCode::None);
+  EXPECT_EQ(rig.send(block(15, {8}, {{1, 3}})), ErrorCode::None);
+  EXPECT_EQ(rig.select(1, 5)[3], 200);
+}
+
+// CB11: only the Counter Overflow Output has requirements -- a limit programmed (L2208) and a
+// mode other than "No Output" (L2212). The mode (L2213-L2214) and the limit (0..999,999,999,
+// L2181) may each be programmed alone, in either order. A limit of 0 counts as none [MODEL]
+// (a count never reaches it from below).
+TEST(HostErrors, OnlyTheCounterOverflowOutputNeedsAModeAndALimit) {
+  for (const int mode : {1, 2}) {
+    HostRig rig;
+    EXPECT_EQ(rig.send(block(11, {9}, {{1, 3}, {3, mode}})), ErrorCode::None) << "mode before limit";
+    EXPECT_EQ(rig.send(block(11, {11}, {{1, 3}, {5, 0}, {6, 0}})), ErrorCode::None) << "limit 0 with a mode";
+    EXPECT_EQ(rig.send(block(11, {8}, {{1, 3}, {2, 4}})), ErrorCode::ParameterConflict) << "output, limit 0";
+    EXPECT_EQ(rig.send(block(11, {4, 11}, {{1, 3}, {5, 0}, {6, 1}})), ErrorCode::None) << "limit 1";
+    EXPECT_EQ(rig.send(block(11, {8}, {{1, 3}, {2, 4}})), ErrorCode::None) << "output with mode and limit";
+    EXPECT_EQ(rig.send(block(11, {11}, {{1, 3}, {5, 0}, {6, 0}})), ErrorCode::ParameterConflict)
+        << "limit 0 under an output";
+    EXPECT_EQ(rig.send(block(11, {4, 9}, {{1, 3}, {3, 0}})), ErrorCode::ParameterConflict)
+        << "mode 0 under an output";
+    const HostWords da8 = rig.select(8);
+    EXPECT_EQ(da8[14], 4) << "batch 3 output kept";
+    EXPECT_EQ(da8[15], mode) << "batch 3 mode kept";
+    EXPECT_EQ(da8[18], 1) << "batch 3 limit kept";
+    EXPECT_EQ(rig.send(block(11, {4, 8}, {{1, 3}, {2, 0}})), ErrorCode::None) << "output removed";
+    EXPECT_EQ(rig.send(block(11, {11}, {{1, 3}, {5, 0}, {6, 0}})), ErrorCode::None) << "limit 0 again";
+    EXPECT_EQ(rig.send(block(11, {9}, {{1, 3}, {3, 0}})), ErrorCode::None) << "mode 0 again";
+  }
+  HostRig rig; // limit first, then mode, then output; the largest limit (W-15)
+  EXPECT_EQ(rig.send(block(11, {11}, {{1, 0}, {5, 0x3B9A}, {6, 0xC9FF}})), ErrorCode::None);
+  EXPECT_EQ(rig.send(block(11, {9}, {{1, 0}, {3, 2}})), ErrorCode::None);
+  EXPECT_EQ(rig.send(block(11, {8}, {{1, 0}, {2, 16}})), ErrorCode::None);
+}
+
 TEST(HostErrors, OverlappingPairsAreSetpointOverlapErrors) {
   // L1898: pairs [10, 20) and [15, 30) on one output share 15..19.
   HostRig rig;

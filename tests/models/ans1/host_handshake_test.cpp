@@ -59,11 +59,38 @@ TEST(HostHandshake, AcknowledgeFollowsTransmitStepByStep) {
   rig.host.write(0, kTransmitBit);
   EXPECT_FALSE(rig.host.acknowledge()); // nothing happens until the device scans
   rig.step();
-  EXPECT_TRUE(rig.host.acknowledge());
+  EXPECT_FALSE(rig.host.acknowledge()); // this scan executed the block
+  rig.step();
+  EXPECT_TRUE(rig.host.acknowledge()); // the next one wrote the response (L1705)
   rig.host.write(0, 0);
   EXPECT_TRUE(rig.host.acknowledge());
   rig.step();
   EXPECT_FALSE(rig.host.acknowledge());
+}
+
+TEST(HostHandshake, WordsReadWithAcknowledgeShowTheBlockInForce) {
+  // L1705: on the Transmit edge the ANS1 acts upon the block, writes the response to the input
+  // data, then sets Acknowledge: what a host reads with Acknowledge is the block in force.
+  // A still shaft at count 0 (slave mode) with SMO g: GMP = g mod 360 (L780); output 1 with
+  // LS offset 10 reads LS position (GMP + 10) mod 360 (DA16 w19, L1867, L2559), and its pair
+  // [100, 101) (L1890) turns it on at LS position 100 only, i.e. at GMP 90 (DA16 w9, L2542).
+  HostRig rig;
+  rig.use_slave_position();
+  ASSERT_EQ(rig.send(block(3, {8, 10}, {{1, 1}, {2, 10}, {4, 100}, {5, 101}})), ErrorCode::None);
+  rig.select(16, 1);
+  for (int smo = -359; smo <= 359; ++smo) {
+    const HostWords status = rig.transact(block(2, {10}, {{4, smo}}));
+    const int gmp = (smo + 360) % 360;
+    ASSERT_EQ(status[1], gmp) << "SMO " << smo;
+    ASSERT_EQ(status[19], (gmp + 10) % 360) << "SMO " << smo;
+    ASSERT_EQ(status[9] & 1U, gmp == 90 ? 1U : 0U) << "SMO " << smo;
+  }
+  // An output force (CB1 w4/w5, L1773) shows in the output states read with Acknowledge.
+  for (int n = 2; n <= kOutputCount; ++n) {
+    const int mask = 1 << (n - 1);
+    const HostWords status = rig.transact(block(1, {9}, {{4, mask}, {5, mask}}));
+    ASSERT_EQ(status[9], mask) << "output " << n; // output 1 is off at GMP 359
+  }
 }
 
 TEST(HostHandshake, RejectedBlockIsStillAcknowledged) {

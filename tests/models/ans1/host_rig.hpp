@@ -28,6 +28,7 @@ inline HostWords block(unsigned number, std::initializer_list<int> bits_set,
 }
 
 struct HostRig {
+  static constexpr int kScansToAcknowledge = 2; // executing scan, responding scan
   Scheduler scheduler;
   Ans1 device;
   HostInterface& host;
@@ -45,7 +46,8 @@ struct HostRig {
     step();
     EXPECT_EQ(host.read(0) & kAcknowledgeBit, 0) << "Ack before Transmit";
     host.write(0, static_cast<std::uint16_t>(words[0] | kTransmitBit));
-    step();
+    // Polled as a host does: one scan executes the block, the next responds with Acknowledge.
+    for (int scan = 0; scan < kScansToAcknowledge && (host.read(0) & kAcknowledgeBit) == 0; ++scan) step();
     const HostWords status = host.status();
     EXPECT_NE(status[0] & kAcknowledgeBit, 0) << "no Ack after Transmit";
     host.write(0, words[0]);

@@ -86,6 +86,48 @@ TEST(Ans1PowerCycle, FactoryDefaultsEraseTheSavedGlobalParameters) {
   EXPECT_EQ(rig.select(0)[7], 720);
 }
 
+// L2236: after Delete All Programs "Parameter values of the active program will remain in RAM.
+// If power is cycled before these parameters are saved to a program, the ANS1 will power up
+// with factory default settings". Until then DA0 w17 (L2338) names the program last read, which
+// Save to slot 0 still writes (L2244); after the power cycle no program is active: w17 = 0, and
+// Save to slot 0 has nowhere to go (1011, as on a fresh module).
+TEST(Ans1PowerCycle, AfterDeleteAllProgramsAndAPowerCycleNoProgramIsActive) {
+  HostRig rig;
+  ASSERT_EQ(rig.send(pair7(10, 20)), ErrorCode::None);
+  ASSERT_EQ(rig.send(block(15, {9}, {{1, 5}})), ErrorCode::None); // save program 5
+  ASSERT_EQ(rig.send(block(15, {5})), ErrorCode::None);           // delete all programs
+  EXPECT_EQ(rig.select(0)[17], 5);
+  EXPECT_EQ(on7(rig), 10); // still in RAM
+  cycle(rig);
+  EXPECT_EQ(rig.select(0)[17], 0);
+  EXPECT_EQ(on7(rig), 0);
+  EXPECT_EQ(rig.send(block(15, {9}, {{1, 0}})), ErrorCode::ParameterConflict);
+}
+
+// positions_fit.hpp [MODEL]: a stored program is never run with a position beyond the FSC in
+// force (every position is 0..FSC-1, L1890-L1891). Program 4 holds the pair 10 -> 200; the
+// saved global FSC is 200 (refused at power-up: factory defaults as after Load 40, no program
+// active, 1011 shown until Clear Errors) or 201 (it runs).
+TEST(Ans1PowerCycle, AStoredProgramBeyondTheSavedFullScaleCountDoesNotRun) {
+  for (const int fsc : {200, 201}) {
+    HostRig rig;
+    ASSERT_EQ(rig.send(pair7(10, 200)), ErrorCode::None);
+    ASSERT_EQ(rig.send(block(15, {9}, {{1, 4}})), ErrorCode::None); // save program 4
+    ASSERT_EQ(rig.send(block(3, {6}, {{1, 7}})), ErrorCode::None);  // delete the pair in RAM
+    ASSERT_EQ(rig.send(block(2, {9}, {{3, fsc}})), ErrorCode::None);
+    ASSERT_EQ(rig.send(block(15, {10})), ErrorCode::None); // Save Global
+    cycle(rig);
+    const bool runs = fsc == 201;
+    EXPECT_EQ(error_from_status(rig.host.read(0)), runs ? ErrorCode::None : ErrorCode::ParameterConflict)
+        << fsc;
+    EXPECT_EQ(rig.select(0)[7], fsc);
+    EXPECT_EQ(rig.select(0)[17], runs ? 4 : 0) << fsc;
+    EXPECT_EQ(rig.select(1, 7)[3], runs ? 200 : 0) << fsc;
+    EXPECT_TRUE(rig.host.program_stored(4)) << fsc;
+    EXPECT_EQ(rig.send(block(0, {4})), ErrorCode::None) << fsc;
+  }
+}
+
 // L2306-L2309: a programming error stays through later valid blocks until Clear Errors; it is
 // RAM, so a power cycle clears it too [MODEL]. Forced outputs (CB1 w4/w5) are RAM as well.
 TEST(Ans1PowerCycle, ErrorsAndForcesDoNotSurvive) {
