@@ -140,7 +140,7 @@ void Amci4501::program() {
 void Amci4501::reset_measurement() {
   ++generation_;
   cancel_timeout();
-  set_cycle_output(false);
+  end_cycle_output();
   phase_ = Phase::Idle;
   window_ = false;
   in_pulse_ = false;
@@ -215,6 +215,12 @@ void Amci4501::defer(Nanos t, Op op, bool on, std::uint8_t first, std::span<cons
 
 void Amci4501::fire() {
   const Nanos now = scheduler_.now();
+  // The module's own timer before the responses due at its instant, whichever was scheduled
+  // first: a cycle that times out at t shows nothing that would land at t.
+  if (timeout_event_.valid() && timeout_due_ == now) {
+    scheduler_.cancel(timeout_event_);
+    on_timeout();
+  }
   // Apply in order of due time (equal: in order deferred); entries not yet due stay.
   while (true) {
     auto next = deferred_.end();
@@ -278,9 +284,20 @@ void Amci4501::set_cycle_output(bool on) {
   cycle_driver_.set(on ? params_.cycle_output_on : !params_.cycle_output_on);
 }
 
+// The cycle (mode 1) or the enable window (mode 2) ended at once, not by an input edge (a
+// Time Out, a new measurement): the output turns off now, and a change still on its way to it
+// is dropped. That change answered an edge inside the cycle; landing after the cycle ended,
+// an ON would stay on with no window to end it (L12: the output matches the Latch only in
+// the window and turns off at the window's end; L7: active while counting).
+void Amci4501::end_cycle_output() {
+  std::erase_if(deferred_, [](const Deferred& d) { return d.op == Op::CycleOutput; });
+  if (cycle_output_on_) set_cycle_output(false);
+}
+
 void Amci4501::arm_timeout(Nanos from) {
   cancel_timeout();
-  timeout_event_ = scheduler_.at(from + timeout_of(config_, params_), [this] { on_timeout(); });
+  timeout_due_ = from + timeout_of(config_, params_);
+  timeout_event_ = scheduler_.at(timeout_due_, [this] { on_timeout(); });
 }
 
 void Amci4501::cancel_timeout() {

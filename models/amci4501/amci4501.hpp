@@ -129,6 +129,7 @@ private:
   void apply(const Deferred& d);
   void publish(std::span<const std::uint16_t> words, std::uint8_t first);
   void set_cycle_output(bool on);
+  void end_cycle_output();
   void on_velocity_window(std::uint32_t epoch);
 
   // host
@@ -177,6 +178,7 @@ private:
   std::array<std::int64_t, 2> on_tick_{};
   std::array<std::int64_t, 2> on_position_{};
   EventId timeout_event_{};
+  Nanos timeout_due_{0}; // when timeout_event_ fires
   std::int64_t velocity_ref_ = 0;
   std::uint32_t velocity_epoch_ = 0; // bumped at power-up: the timer chain before it stops
 

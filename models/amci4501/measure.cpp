@@ -213,7 +213,7 @@ void Amci4501::on_timeout() {
   timeout_error_ = true;
   const Phase was = phase_;
   phase_ = Phase::Idle;
-  if (config_.mode == 1 || (config_.mode == 2 && in_pulse_)) set_cycle_output(false);
+  end_cycle_output(); // modes 1 and 2; in the others the output is never on (L277)
   window_ = false;
   in_pulse_ = false;
   if (config_.mode == 4 && params_.fw_version >= 3) {

@@ -39,4 +39,25 @@ std::string range_text(duts::ParamKind kind, const duts::ParamRange& range) {
   return fmt::format("{} .. {}", bound(range.min), bound(range.max));
 }
 
+std::string kind_text(duts::ParamKind kind) {
+  switch (kind) {
+  case duts::ParamKind::Integer:
+    return "an integer";
+  case duts::ParamKind::Number:
+    return "a number";
+  case duts::ParamKind::Duration: // a bare number is refused (duration.hpp): say why
+    return R"(a duration with a unit, like "250us", "10ms" or "1.5s")";
+  case duts::ParamKind::Boolean:
+    return "true or false";
+  case duts::ParamKind::Text:
+    return "a string";
+  }
+  return "a value";
+}
+
+std::string param_range_text(std::string_view device, const duts::ParamInfo& param) {
+  return fmt::format("{}{} ({} {})", param.kind == duts::ParamKind::Text ? "" : "a value in ",
+                     range_text(param.kind, param.range), device, param.description);
+}
+
 } // namespace hilrig::campaign

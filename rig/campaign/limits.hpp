@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "core/time.hpp"
 #include "rig/duts/dut.hpp"
@@ -78,6 +79,16 @@ namespace hilrig::campaign {
 [[nodiscard]] std::string duration_text(Nanos d);
 // "1us .. 1ms", "-32768 .. 32767", "one of rising, falling".
 [[nodiscard]] std::string range_text(duts::ParamKind kind, const duts::ParamRange& range);
+// What a value of the kind is written as, after "expected " in an error: "an integer", "a
+// number", "a duration with a unit, like ...", "true or false", "a string". The campaign
+// reader and `hilrig serve --param` name a value of the wrong kind with it.
+[[nodiscard]] std::string kind_text(duts::ParamKind kind);
+// A number written as nan or inf (TOML allows both; no campaign quantity is either).
+inline constexpr std::string_view kNotFiniteText = "a finite number (nan and inf are not values here)";
+// A device parameter's valid values, for a value of its kind outside them: "a value in 0s ..
+// 10ms (amci4501 input edge to response (L281))", "one of rising, falling (amci4501 ...)". The campaign
+// reader and `hilrig serve --param` say it alike.
+[[nodiscard]] std::string param_range_text(std::string_view device, const duts::ParamInfo& param);
 // Whether `text` is a traceability label (limits::kMaxLabel), and the range an error names.
 [[nodiscard]] bool is_label(const std::string& text);
 [[nodiscard]] std::string label_range();

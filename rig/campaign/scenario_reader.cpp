@@ -141,9 +141,7 @@ private:
       v = r.string(info.name);
       break;
     }
-    if (!duts::in_range(info.range, v))
-      r.fail(info.name, fmt::format("{}{} ({} {})", info.kind == ParamKind::Text ? "" : "a value in ",
-                                    range_text(info.kind, info.range), info_->name, info.description));
+    if (!duts::in_range(info.range, v)) r.fail(info.name, param_range_text(info_->name, info));
     return v;
   }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "rig/campaign/duration.hpp"
+#include "rig/campaign/limits.hpp"
 
 namespace hilrig::campaign {
 
@@ -50,13 +51,13 @@ std::optional<std::string> TableReader::opt_string(std::string_view name) {
   const toml::node* n = node(name);
   if (n == nullptr) return std::nullopt;
   const auto* s = n->as_string();
-  if (s == nullptr) fail(name, "expected a string");
+  if (s == nullptr) fail(name, "expected " + kind_text(duts::ParamKind::Text));
   return s->get();
 }
 
 std::string TableReader::string(std::string_view name) {
   auto v = opt_string(name);
-  if (!v) fail(name, "missing: expected a string");
+  if (!v) fail(name, "missing: expected " + kind_text(duts::ParamKind::Text));
   return *v;
 }
 
@@ -64,13 +65,13 @@ std::optional<std::int64_t> TableReader::opt_integer(std::string_view name) {
   const toml::node* n = node(name);
   if (n == nullptr) return std::nullopt;
   const auto* i = n->as_integer();
-  if (i == nullptr) fail(name, "expected an integer");
+  if (i == nullptr) fail(name, "expected " + kind_text(duts::ParamKind::Integer));
   return i->get();
 }
 
 std::int64_t TableReader::integer(std::string_view name) {
   auto v = opt_integer(name);
-  if (!v) fail(name, "missing: expected an integer");
+  if (!v) fail(name, "missing: expected " + kind_text(duts::ParamKind::Integer));
   return *v;
 }
 
@@ -79,16 +80,15 @@ std::optional<double> TableReader::opt_number(std::string_view name) {
   if (n == nullptr) return std::nullopt;
   if (const auto* i = n->as_integer()) return static_cast<double>(i->get());
   if (const auto* f = n->as_floating_point()) {
-    // TOML allows nan and inf; no campaign quantity is either.
-    if (!std::isfinite(f->get())) fail(name, "a finite number (nan and inf are not values here)");
+    if (!std::isfinite(f->get())) fail(name, std::string(kNotFiniteText));
     return f->get();
   }
-  fail(name, "expected a number");
+  fail(name, "expected " + kind_text(duts::ParamKind::Number));
 }
 
 double TableReader::number(std::string_view name) {
   auto v = opt_number(name);
-  if (!v) fail(name, "missing: expected a number");
+  if (!v) fail(name, "missing: expected " + kind_text(duts::ParamKind::Number));
   return *v;
 }
 
@@ -96,13 +96,13 @@ std::optional<bool> TableReader::opt_boolean(std::string_view name) {
   const toml::node* n = node(name);
   if (n == nullptr) return std::nullopt;
   const auto* b = n->as_boolean();
-  if (b == nullptr) fail(name, "expected true or false");
+  if (b == nullptr) fail(name, "expected " + kind_text(duts::ParamKind::Boolean));
   return b->get();
 }
 
 bool TableReader::boolean(std::string_view name) {
   auto v = opt_boolean(name);
-  if (!v) fail(name, "missing: expected true or false");
+  if (!v) fail(name, "missing: expected " + kind_text(duts::ParamKind::Boolean));
   return *v;
 }
 
@@ -110,13 +110,13 @@ std::optional<Nanos> TableReader::opt_duration(std::string_view name) {
   const toml::node* n = node(name);
   if (n == nullptr) return std::nullopt;
   auto d = duration_of(*n);
-  if (!d) fail(name, "expected a duration with a unit, like \"250us\", \"10ms\" or \"1.5s\"");
+  if (!d) fail(name, "expected " + kind_text(duts::ParamKind::Duration));
   return d;
 }
 
 Nanos TableReader::duration(std::string_view name) {
   auto v = opt_duration(name);
-  if (!v) fail(name, "missing: expected a duration with a unit, like \"10ms\"");
+  if (!v) fail(name, "missing: expected " + kind_text(duts::ParamKind::Duration));
   return *v;
 }
 

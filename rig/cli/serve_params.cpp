@@ -1,56 +1,67 @@
 #include "rig/cli/serve_params.hpp"
 
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
+#include <string_view>
 
 #include "rig/campaign/duration.hpp"
+#include "rig/campaign/limits.hpp"
 
 namespace hilrig::cli {
 
 namespace {
 
-std::string range_text(const duts::ParamInfo& p) {
-  if (p.kind == duts::ParamKind::Boolean) return "true or false";
-  if (!p.range.choices.empty()) return fmt::format("one of {}", fmt::join(p.range.choices, ", "));
-  if (std::isinf(p.range.min) && std::isinf(p.range.max))
-    return std::string("any ") + duts::to_string(p.kind);
-  if (p.kind == duts::ParamKind::Duration) return fmt::format("{} ns .. {} ns", p.range.min, p.range.max);
-  return fmt::format("{} .. {}", p.range.min, p.range.max);
+// The whole text as a number of type T (from_chars: no leading space, nothing after it; a
+// leading '+' as TOML allows), or nullopt.
+template <typename T, typename... Base> std::optional<T> whole(std::string_view text, Base... base) {
+  if (text.starts_with('+')) text.remove_prefix(1);
+  T v{};
+  const char* end = text.data() + text.size();
+  const auto r = std::from_chars(text.data(), end, v, base...);
+  if (text.empty() || r.ec != std::errc{} || r.ptr != end) return std::nullopt;
+  return v;
 }
 
-std::optional<duts::ParamValue> parse_value(const duts::ParamInfo& p, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    switch (p.kind) {
-    case duts::ParamKind::Integer: {
-      const long long v = std::stoll(text, &used, 0);
-      if (used != text.size()) return std::nullopt;
-      return duts::ParamValue{static_cast<std::int64_t>(v)};
-    }
-    case duts::ParamKind::Number: {
-      const double v = std::stod(text, &used);
-      if (used != text.size() || !std::isfinite(v)) return std::nullopt;
-      return duts::ParamValue{v};
-    }
-    case duts::ParamKind::Duration: {
-      const auto v = campaign::parse_duration(text);
-      if (!v) return std::nullopt;
-      return duts::ParamValue{*v};
-    }
-    case duts::ParamKind::Boolean:
-      if (text == "true") return duts::ParamValue{true};
-      if (text == "false") return duts::ParamValue{false};
-      return std::nullopt;
-    case duts::ParamKind::Text:
-      return duts::ParamValue{text};
-    }
-  } catch (const std::exception&) { // stoll / stod: not a number, or out of range
+// The text as the parameter's kind, written as a campaign writes it: an integer in decimal (or
+// hex after 0x, as TOML; "010" is ten, not octal 8), a finite number, a duration with its unit,
+// true or false, a word. Else throws what a campaign's [dut.params] says of the same value
+// (rig/campaign/limits.hpp), after `where`.
+duts::ParamValue parse_value(const duts::ParamInfo& p, const std::string& text, const std::string& where) {
+  const auto wrong_kind = [&] {
+    return std::invalid_argument(where + ": expected " + campaign::kind_text(p.kind));
+  };
+  switch (p.kind) {
+  case duts::ParamKind::Integer: {
+    const bool hex = text.starts_with("0x") || text.starts_with("0X");
+    const std::string_view digits = std::string_view(text).substr(hex ? 2 : 0);
+    if (hex && (digits.empty() || std::isxdigit(static_cast<unsigned char>(digits.front())) == 0))
+      throw wrong_kind(); // no sign after 0x
+    const auto v = whole<std::int64_t>(digits, hex ? 16 : 10);
+    if (!v) throw wrong_kind();
+    return *v;
   }
-  return std::nullopt;
+  case duts::ParamKind::Number: {
+    const auto v = whole<double>(text);
+    if (!v) throw wrong_kind();
+    if (!std::isfinite(*v)) throw std::invalid_argument(where + ": " + std::string(campaign::kNotFiniteText));
+    return *v;
+  }
+  case duts::ParamKind::Duration: {
+    const auto v = campaign::parse_duration(text);
+    if (!v) throw wrong_kind();
+    return *v;
+  }
+  case duts::ParamKind::Boolean:
+    if (text != "true" && text != "false") throw wrong_kind();
+    return text == "true";
+  case duts::ParamKind::Text:
+    break;
+  }
+  return text;
 }
 
 } // namespace
@@ -70,10 +81,12 @@ duts::DutParams serve_params(const duts::DutInfo& device, const std::vector<std:
       throw std::invalid_argument("--param " + key + ": " + device.name + " has no such parameter (" + names +
                                   ")");
     }
-    const auto value = parse_value(*p, text);
-    if (!value || !duts::in_range(p->range, *value))
-      throw std::invalid_argument("--param " + key + "=" + text + ": valid: " + range_text(*p));
-    given[key] = *value;
+    // The same words as a campaign's [dut.params] (rig/campaign/limits.hpp).
+    const std::string where = "--param " + key + "=" + text;
+    duts::ParamValue value = parse_value(*p, text, where);
+    if (!duts::in_range(p->range, value))
+      throw std::invalid_argument(where + ": " + campaign::param_range_text(device.name, *p));
+    given[key] = std::move(value);
   }
   return device.with_defaults(given);
 }

@@ -103,5 +103,30 @@ TEST(Amci4501ControlBits, AModeChangeStillStartsAfresh) {
   EXPECT_FALSE(b.cycle_edges[1].on);
 }
 
+TEST(Amci4501ControlBits, AModeChangeDropsAnOutputChangeStillOnItsWay) {
+  // A mode change ends the cycle (mode 1) or the window (mode 2) at once: an output change
+  // still on its way (one throughput, 125 us, after its edge, L281) never lands (L7, L12).
+  // Mode 1: Start at 1 ms, ON due at 1,125 us; the mode changes at 1,124 / 1,125 / 1,126 us.
+  for (const auto& [at, edges] :
+       {std::pair{us(1124), 0u}, std::pair{us(1125), 0u}, std::pair{us(1126), 2u}}) {
+    Bench b;
+    one_turn(b);
+    b.scheduler.at(at, [&b] { b.program(control::kMode3, {1000}); });
+    b.run_until(50_ms);
+    EXPECT_EQ(b.cycle_edges.size(), edges) << at.count();
+    EXPECT_FALSE(b.module->cycle_output_on()) << at.count();
+  }
+  // Mode 2: window 100..300 opens at 1,990 us, Latch on at 3 ms (ON due at 3,125 us); the
+  // mode changes to 1 at 3,100 us.
+  Bench b;
+  b.program_window(100, 300);
+  b.burst(150, us(1000), us(10));
+  b.latch_pulse(3_ms, 1_ms);
+  b.scheduler.at(us(3100), [&b] { b.program(0, {1000}); });
+  b.run_until(10_ms);
+  EXPECT_TRUE(b.cycle_edges.empty());
+  EXPECT_FALSE(b.module->cycle_output_on());
+}
+
 } // namespace
 } // namespace hilrig::models::amci4501::test

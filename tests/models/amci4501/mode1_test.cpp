@@ -180,6 +180,33 @@ TEST(Amci4501Mode1, TimeoutBlocksUntilCleared) {
   EXPECT_EQ(b.word(1), 7);
 }
 
+// L7: the Cycle Output is active "while the encoder pulses are being counted"; a Time Out
+// abandons the cycle (L93), so the output is off from then on, even when its turn-on (one
+// throughput after Start, L281) has not landed yet. A throughput of at least the timeout is
+// beyond the manual's 125 us but a campaign may set it (the knob `hilrig power` turns). Start
+// at 1 ms, timeout 1 ms: Time Out at 2 ms.
+TEST(Amci4501Mode1, TimeoutDropsATurnOnStillOnItsWay) {
+  for (const auto& [throughput, pulse] :
+       {std::pair{us(999), true}, std::pair{us(1000), false}, std::pair{us(1001), false}}) {
+    Params p;
+    p.throughput = throughput;
+    Bench b(p);
+    b.program_mode(1, 1);
+    b.start_pulse(1_ms, us(200));
+    b.run_until(10_ms);
+    EXPECT_TRUE(b.bit(status::kTimeout)) << throughput.count();
+    EXPECT_FALSE(b.module->cycle_output_on()) << throughput.count();
+    if (pulse) {
+      ASSERT_EQ(b.cycle_edges.size(), 2u);
+      EXPECT_EQ(b.cycle_edges[0].time, 1_ms + throughput);
+      EXPECT_EQ(b.cycle_edges[1].time, 2_ms);
+      EXPECT_FALSE(b.cycle_edges[1].on);
+    } else {
+      EXPECT_TRUE(b.cycle_edges.empty()) << throughput.count(); // lands at or after Time Out
+    }
+  }
+}
+
 // L119: "The module will not update the input image table data until the timeout error has
 // been cleared" - the velocity word too (L114). Timeout 60 ms, Start at 1 ms and no Latch:
 // Time Out at 61 ms. F(15000, 40,005 us, 10 us) runs 40.005-190.0 ms at 100,000 counts/s.

@@ -186,6 +186,61 @@ TEST(Amci4501Mode2, EncoderStopsInWindowTimesOut) {
   EXPECT_FALSE(b.bit(status::kNewValue));
 }
 
+// L12: "The cycle output will match the latch input during the first two transitions of the
+// latch input in the enable window. The cycle output will turn off at the end of the enable
+// window"; a Time Out ends the window, the cycle abandoned (L93, L119). The output answers a
+// Latch edge one throughput (125 us, L281) after it, so an answer to an edge 125 us or less
+// before the Time Out would land at or after the window's end: it is dropped, the output stays
+// off.
+// Window 100..300 opens at 1,990 us and the encoder stops inside it; timeout 5 ms: Time Out at
+// T = 6,990 us. A 1 ms Latch pulse, its leading edge swept across T.
+TEST(Amci4501Mode2, TimeoutDropsALeadingEdgesAnswerStillOnItsWay) {
+  struct Case {
+    std::int64_t lead_us;
+    std::vector<std::pair<std::int64_t, bool>> edges; // the Cycle Output's (us, on)
+  };
+  const std::vector<Case> cases{
+      {5990, {{6115, true}, {6990, false}}}, // well before: on 125 us later, off at T
+      {6864, {{6989, true}, {6990, false}}}, // 126 us before: on 1 us before T
+      {6865, {}},                            // 125 us before: would land at T
+      {6945, {}},                            // 45 us before (the audit's case)
+      {6990, {}},                            // at T: the Latch edge (scheduled first) is in the window
+      {6991, {}},                            // after T: no window
+  };
+  for (const Case& c : cases) {
+    Bench b;
+    b.program_window(100, 300, 5);
+    b.burst(150, us(1000), us(10));
+    b.latch_pulse(us(c.lead_us), 1_ms);
+    b.run_until(20_ms);
+    EXPECT_TRUE(b.bit(status::kTimeout)) << c.lead_us;
+    EXPECT_FALSE(b.bit(status::kNewValue)) << c.lead_us;
+    EXPECT_FALSE(b.module->cycle_output_on()) << c.lead_us;
+    std::vector<std::pair<std::int64_t, bool>> seen;
+    for (const CapturedEdge& e : b.cycle_edges) seen.emplace_back(e.time.count() / 1000, e.on);
+    EXPECT_EQ(seen, c.edges) << "leading edge at " << c.lead_us << " us";
+  }
+}
+
+// The same for a trailing edge: an OFF still on its way at the Time Out is overtaken by the
+// window's end (L12), at T. A pulse from T - 1 ms; its trailing edge 126 us, 125 us and 45 us
+// before T (same window and timeout as above).
+TEST(Amci4501Mode2, TimeoutTurnsTheOutputOffAtOnce) {
+  const Nanos t_out = us(6990);
+  for (const auto& [trail, off_at] : {std::pair{t_out - us(126), t_out - 1_us},
+                                      std::pair{t_out - us(125), t_out}, std::pair{t_out - us(45), t_out}}) {
+    Bench b;
+    b.program_window(100, 300, 5);
+    b.burst(150, us(1000), us(10));
+    b.latch_pulse(t_out - 1_ms, trail - (t_out - 1_ms));
+    b.run_until(20_ms);
+    ASSERT_EQ(b.cycle_edges.size(), 2u) << trail.count();
+    EXPECT_EQ(b.cycle_edges[0].time, t_out - us(875));
+    EXPECT_EQ(b.cycle_edges[1].time, off_at) << trail.count();
+    EXPECT_FALSE(b.cycle_edges[1].on);
+  }
+}
+
 // L119 with L114: mode 2's velocity word 5 is frozen while Time Out is set. Window
 // 100..300, timeout 50 ms; F(150, 1,000 us, 10 us) opens the window at 1,990 us and stops
 // inside it: Time Out at 51,990 us. F(10000, 60,005 us, 10 us) runs 60.005-160.0 ms: the
