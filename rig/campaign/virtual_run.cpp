@@ -67,6 +67,9 @@ public:
                                  s_.dut.backend));
     const duts::DutInfo* info = duts::find_dut(s_.dut.model);
     if (info == nullptr) throw RigFault("no DUT model " + s_.dut.model);
+    // Until the board is attached, what it and the rig's sources drive is where the lines
+    // start: a board output's power-up level is its initial level, not an edge at 0.
+    bus_.set_powering_up(true);
     make_lines();
     drive_resolver();
     drive_ssi();
@@ -79,6 +82,7 @@ public:
     std::map<std::string, std::string, std::less<>> pins;
     for (const Wire& w : s_.wiring) pins[w.board] = w.rig;
     dut_->attach(bus_, pins);
+    bus_.set_powering_up(false);
     schedule_board_faults();
     schedule_power_cycles();
     for (const PanelEvent& p : s_.panel) sched_.at(p.at, [this, i = p.action] { dut_->panel(i); });
