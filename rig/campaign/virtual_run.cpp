@@ -120,14 +120,19 @@ private:
   void make_lines() {
     for (const Wire& w : s_.wiring) {
       if (w.analog) continue; // an analog channel, not a line
+      // A line a plant or the [ssi] transducer synthesizes goes through the drive too, so a
+      // signal fault on it overrides the source (RigDrive::source).
       if (plant_ && plant_->drives(w.rig)) {
         virt::DigitalLine& line = bus_.line(w.rig, plant_->initial_level(w.rig));
-        plant_->own(w.rig, line.driver());
+        drive_.own(w.rig, line.driver());
+        plant_->own(w.rig, drive_.source(w.rig));
         owned_.push_back(&line.driver());
         continue;
       }
       if (w.rig == s_.ssi.data_line) { // the transducer's (drive_ssi), idle high
-        owned_.push_back(&bus_.line(w.rig, Level::High).driver());
+        virt::DigitalLine& line = bus_.line(w.rig, Level::High);
+        drive_.own(w.rig, line.driver());
+        owned_.push_back(&line.driver());
         continue;
       }
       virt::DigitalLine& line = bus_.line(w.rig, drive_.initial_level(w.rig));
@@ -259,7 +264,7 @@ private:
     ssi_ =
         std::make_unique<signals::SsiSlave>(params, signals::counts_from_turns(turns, spec.counts_per_turn));
     ssi_node_ = std::make_unique<signals::SsiSlaveNode>(sched_, *ssi_, bus_.line(spec.clock_line).reader(),
-                                                        bus_.line(spec.data_line).driver());
+                                                        drive_.source(spec.data_line));
   }
 
   // [[device_fault]] of the board itself: the model raises it at `at`, its condition ends at
