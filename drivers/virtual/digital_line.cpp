@@ -28,6 +28,10 @@ struct DigitalLine::Impl {
   void drive(Level level) {
     if (level == driven) return; // the same level again is not an edge
     driven = level;
+    if (powering_up) {
+      start_at(level);
+      return;
+    }
     if (delay == Nanos::zero() && last_delivery <= scheduler.now()) {
       deliver(level);
       return;
@@ -36,6 +40,12 @@ struct DigitalLine::Impl {
     // even when the delay was shortened meanwhile.
     last_delivery = std::max(scheduler.now() + delay, last_delivery);
     scheduler.at(last_delivery, [this, level] { deliver(level); });
+  }
+
+  // The level the line starts at, as if it had been made with it.
+  void start_at(Level level) {
+    seen = level;
+    if (trace != nullptr) trace->set_initial(signal, is_high(level) ? 1 : 0);
   }
 
   void deliver(Level level) {
@@ -55,6 +65,7 @@ struct DigitalLine::Impl {
   Level driven;
   Level seen;
   Nanos delay{0};
+  bool powering_up = false;
   Nanos last_delivery = Nanos::min();
   std::uint64_t edges = 0;
   Driver driver{*this};
@@ -79,6 +90,8 @@ void DigitalLine::set_propagation_delay(Nanos delay) {
 }
 
 Nanos DigitalLine::propagation_delay() const { return impl_->delay; }
+
+void DigitalLine::set_powering_up(bool on) { impl_->powering_up = on; }
 
 LineOutput& DigitalLine::driver() { return impl_->driver; }
 

@@ -11,8 +11,14 @@ DigitalLine& VirtualBus::line(std::string_view name, Level initial) {
              .emplace(std::string(name),
                       std::make_unique<DigitalLine>(scheduler_, std::string(name), initial, trace_))
              .first;
+    it->second->set_powering_up(powering_up_);
   }
   return *it->second;
+}
+
+void VirtualBus::set_powering_up(bool on) {
+  powering_up_ = on;
+  for (auto& entry : lines_) entry.second->set_powering_up(on);
 }
 
 CanBus& VirtualBus::can(std::string_view name, const CanBitTiming& timing) {

@@ -31,6 +31,10 @@ public:
 
   // Each accessor creates the named thing on first use and returns the same one after.
   DigitalLine& line(std::string_view name, Level initial = Level::Low);
+  // Every digital line, made now or later, powers up (DigitalLine::set_powering_up) until
+  // this is called again with false: a run powers the bus up while it makes the board, so the
+  // levels the board drives at power-up are where its lines start, not edges at time 0.
+  void set_powering_up(bool on);
   CanBus& can(std::string_view name, const CanBitTiming& timing = {});
   SerialLink& serial(std::string_view name, const SerialFormat& format = {});
   AnalogChannel& analog(std::string_view name);
@@ -38,6 +42,7 @@ public:
 private:
   Scheduler& scheduler_;
   TraceRecorder* trace_;
+  bool powering_up_ = false;
   std::map<std::string, std::unique_ptr<DigitalLine>, std::less<>> lines_;
   std::map<std::string, std::unique_ptr<CanBus>, std::less<>> cans_;
   std::map<std::string, std::unique_ptr<SerialLink>, std::less<>> serials_;

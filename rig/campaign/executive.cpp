@@ -45,6 +45,12 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
   for (const Wire& w : s.wiring)
     if (names_line(s, w.rig)) named.push_back(w.rig);
   c.lines = v.trace->edges_of(named);
+  for (const std::string& name : named) {
+    const std::int64_t i = v.trace->find(name);
+    if (i < 0) continue;
+    const SignalInfo& info = v.trace->signals()[static_cast<std::size_t>(i)];
+    if (info.kind == SignalKind::Wire && info.has_initial) c.initial[name] = level_of(info.initial != 0);
+  }
   for (const Wire& w : s.wiring)
     if (w.direction == duts::PinDirection::Input) c.rig_driven.insert(w.rig);
   const signals::MotionProfile* profile = &v.profile;

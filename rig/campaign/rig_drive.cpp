@@ -1,5 +1,7 @@
 #include "rig/campaign/rig_drive.hpp"
 
+#include <stdexcept>
+
 #include "rig/campaign/executive.hpp"
 #include "rig/campaign/run_trace.hpp"
 #include "rig/campaign/scenario_reader.hpp"
@@ -28,8 +30,19 @@ Level RigDrive::initial_level(std::string_view rig) const {
   return Level::Low;
 }
 
-void RigDrive::own(const std::string& rig, LineOutput& out) {
-  driven_[rig] = DrivenLine{&out, initial_level(rig), 0};
+void RigDrive::own(const std::string& rig, LineOutput& out) { driven_[rig] = DrivenLine{&out, out.driven()}; }
+
+LineOutput& RigDrive::source(const std::string& rig) {
+  DrivenLine* d = find(rig);
+  if (d == nullptr) throw std::logic_error("RigDrive::source: the drive does not own " + rig);
+  d->sourced = true;
+  return sources_.emplace_back(*this, rig, *d);
+}
+
+void RigDrive::Source::set(Level level) {
+  if (level == level_) return; // the same level again is not an edge
+  level_ = level;
+  if (!drive_.lost(rig_, drive_.sched_.now())) line_.want(level);
 }
 
 RigDrive::DrivenLine* RigDrive::find(std::string_view rig) {
@@ -37,11 +50,25 @@ RigDrive::DrivenLine* RigDrive::find(std::string_view rig) {
   return it == driven_.end() ? nullptr : &it->second;
 }
 
+RigDrive::DrivenLine* RigDrive::own_encoder(std::string_view rig) {
+  DrivenLine* d = find(rig);
+  return d != nullptr && !d->sourced ? d : nullptr;
+}
+
+bool RigDrive::lost(std::string_view rig, Nanos t) {
+  bool lost = false;
+  for (MissingEdges& m : missing_) {
+    if (m.fault.line != rig || t < m.fault.at || t >= m.fault.until) continue;
+    if (++m.seen % m.fault.every == 0) lost = true;
+  }
+  return lost;
+}
+
 void RigDrive::start(const std::vector<Stimulus>& faults, const std::optional<Stimulus>& probe,
                      bool record_motion) {
   record_motion_ = record_motion;
-  enc_a_ = find(kEncoderA);
-  enc_b_ = find(kEncoderB);
+  enc_a_ = own_encoder(kEncoderA);
+  enc_b_ = own_encoder(kEncoderB);
   checks::append_motion(motion_, {Nanos{0}, static_cast<double>(count_)});
   for (const Stimulus& f : faults)
     if (f.kind == StimulusKind::MissingEdges) missing_.push_back(MissingEdges{f, 0});
@@ -78,13 +105,7 @@ void RigDrive::encoder_edge() {
   if (record_motion_) checks::append_motion(motion_, {e.time, static_cast<double>(e.count)});
   const bool on_a = e.channel == signals::QuadChannel::A;
   DrivenLine* line = on_a ? enc_a_ : enc_b_;
-  const std::string_view name = on_a ? kEncoderA : kEncoderB;
-  bool lost = false;
-  for (MissingEdges& m : missing_) {
-    if (m.fault.line != name || e.time < m.fault.at || e.time >= m.fault.until) continue;
-    if (++m.seen % m.fault.every == 0) lost = true;
-  }
-  if (line != nullptr && !lost) line->want(e.level);
+  if (!lost(on_a ? kEncoderA : kEncoderB, e.time) && line != nullptr) line->want(e.level);
   next_edge_ = pull_edge();
   schedule_edge();
 }
@@ -129,11 +150,15 @@ void RigDrive::schedule(const Stimulus& st) {
     break;
   }
   case StimulusKind::Glitch:
+    // The line inverted for the width, whatever the level it is wanted at meanwhile (a
+    // source's edges inside the glitch come out inverted too).
     sched_.at(st.at, [d] {
-      if (d->forced == 0) d->out->set(!d->intended);
+      ++d->inverted;
+      d->show();
     });
     sched_.at(st.at + st.width, [d] {
-      if (d->forced == 0) d->out->set(d->intended);
+      --d->inverted;
+      d->show();
     });
     break;
   case StimulusKind::Stuck:
@@ -143,7 +168,8 @@ void RigDrive::schedule(const Stimulus& st) {
     });
     if (st.until != Nanos::max())
       sched_.at(st.until, [d] {
-        if (--d->forced == 0) d->out->set(d->intended);
+        --d->forced;
+        d->show();
       });
     break;
   case StimulusKind::MissingEdges:

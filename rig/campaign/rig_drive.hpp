@@ -3,7 +3,9 @@
 // from the motion (with missing-edge faults), the discrete stimuli, signal faults, a probe
 // pulse and the press brake. The virtual run drives bus lines with it; the hardware run
 // drives recording outputs with it to precompute the RT loop's edge schedule, so both
-// backends play the same edges.
+// backends play the same edges. A line another source synthesizes (the [ssi] transducer's
+// DATA, a plant's encoder or valve monitor) is driven through it too (source()), so a signal
+// fault overrides that source as it does the drive's own encoder.
 
 #include <array>
 #include <cstddef>
@@ -13,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/line.hpp"
@@ -42,8 +45,14 @@ public:
   // The level a rig line starts at: the encoder's from the start count, a brake line's
   // released level, otherwise low.
   [[nodiscard]] Level initial_level(std::string_view rig) const;
-  // Hands the drive one line it owns (a board input), already at initial_level(rig).
+  // Hands the drive one line it owns (a board input), at the level it starts at
+  // (initial_level(rig), or its source's).
   void own(const std::string& rig, LineOutput& out);
+  // What another source drives an owned line through: its levels are the line's unless a
+  // signal fault overrides them (a stuck level holds, a glitch inverts, a missing edge of
+  // enc.A/enc.B is lost). The drive's own encoder then leaves the line to the source. Lives
+  // as long as the drive; throws std::logic_error for a line not owned.
+  [[nodiscard]] LineOutput& source(const std::string& rig);
   // Schedules everything up to the scenario's end. Throws RigFault for a stimulus on a
   // line the rig does not own.
   void start(const std::vector<Stimulus>& faults, const std::optional<Stimulus>& probe, bool record_motion);
@@ -59,15 +68,34 @@ public:
   [[nodiscard]] std::vector<checks::PositionSample>& motion() { return motion_; }
 
 private:
-  // A line the rig drives: the level the stimulus wants, and faults that override it.
+  // A line the rig drives: the level the stimulus (or source) wants, and faults that
+  // override it.
   struct DrivenLine {
     LineOutput* out = nullptr;
     Level intended = Level::Low;
-    int forced = 0; // stuck faults in force
+    int forced = 0;       // stuck faults in force: the line holds the last one's level
+    int inverted = 0;     // glitches in force: the line is the opposite of `intended`
+    bool sourced = false; // another source drives it (source())
     void want(Level l) {
       intended = l;
-      if (forced == 0) out->set(l);
+      show();
     }
+    // The line as the faults in force leave it (a stuck fault sets its own level).
+    void show() {
+      if (forced == 0) out->set(inverted > 0 ? !intended : intended);
+    }
+  };
+  // The LineOutput a source drives through: each change of its level is an edge, lost to a
+  // missing_edges fault in force or wanted of the line.
+  struct Source final : LineOutput {
+    Source(RigDrive& drive, std::string rig, DrivenLine& line)
+        : drive_(drive), rig_(std::move(rig)), line_(line), level_(line.intended) {}
+    void set(Level level) override;
+    [[nodiscard]] Level driven() const override { return level_; }
+    RigDrive& drive_;
+    std::string rig_;
+    DrivenLine& line_;
+    Level level_;
   };
   struct MissingEdges {
     Stimulus fault;
@@ -88,6 +116,11 @@ private:
   };
 
   DrivenLine* find(std::string_view rig);
+  // The encoder line the drive's own solver plays (nullptr: not owned, or sourced).
+  DrivenLine* own_encoder(std::string_view rig);
+  // Whether an edge of `rig` at `t` is lost to a missing_edges fault in force (each fault
+  // counts the edges in its span and loses every n-th).
+  bool lost(std::string_view rig, Nanos t);
   void fire() override { encoder_edge(); }
   void encoder_edge();
   // Schedules next_edge_ (when there is one by the end).
@@ -106,6 +139,7 @@ private:
   std::size_t edge_next_ = 0, edge_filled_ = 0;
   std::map<std::string, Level, std::less<>> brake_level_;
   std::map<std::string, DrivenLine, std::less<>> driven_;
+  std::deque<Source> sources_; // stable addresses: the sources hold them
   DrivenLine* enc_a_ = nullptr;
   DrivenLine* enc_b_ = nullptr;
   std::optional<signals::QuadEdge> next_edge_;

@@ -48,8 +48,8 @@ public:
     (void)build_motion(file_, out.scenario.motion,
                        out.scenario.encoder); // a move that cannot follow is bad input
     read_plant_table(out.scenario);
-    read_stimuli(out.scenario);
     read_ssi(out.scenario);
+    read_stimuli(out.scenario);
     read_host(out.scenario);
     read_device_faults(out.scenario);
     read_power_cycles(out.scenario);
@@ -308,10 +308,6 @@ private:
       r.fail("clock",
              fmt::format("a rig line wired to the board's clock output (\"{}\" is not)", ssi.clock_line));
     ssi.data_line = driven_line(s, r, "data")->rig;
-    for (const Stimulus& st : s.stimuli)
-      if (st.line == ssi.data_line)
-        r.fail("data", fmt::format("a line no [[stimulus]] drives (the transducer does; \"{}\" has one)",
-                                   ssi.data_line));
     signals::SsiFrameFormat& f = ssi.format;
     f.frame_bits = static_cast<unsigned>(r.opt_integer("frame_bits").value_or(25));
     if (f.frame_bits < 1 || f.frame_bits > 32) r.fail("frame_bits", "clocks a frame in 1..32");
@@ -336,6 +332,17 @@ private:
     if (ssi.monoflop <= Nanos{0} || ssi.monoflop > milliseconds(1))
       r.fail("monoflop", "a monoflop time above 0, at most 1ms (typically 12 to 20 us, L1091)");
     r.finish();
+  }
+
+  // What synthesizes a rig line, if anything does: the encoder (or the plant turning it), a
+  // press plant's valve, the [ssi] transducer. A stimulus that drives levels would fight it;
+  // only a signal fault goes on such a line, and overrides it.
+  static std::optional<std::string> synthesized_by(const Scenario& s, std::string_view line) {
+    if (is_encoder_line(line)) return s.plant ? "the plant's encoder" : "the encoder";
+    if (s.plant && !s.plant->valve_monitor.empty() && line == s.plant->valve_monitor)
+      return "the plant's valve (valve_monitor)";
+    if (!s.ssi.data_line.empty() && line == s.ssi.data_line) return "the [ssi] transducer";
+    return std::nullopt;
   }
 
   const Wire* driven_line(const Scenario& s, TableReader& r, std::string_view key) {
@@ -504,9 +511,9 @@ private:
       r.fail("kind", fmt::format("{}: one of {}", fault_only ? "a signal fault" : "a stimulus kind", names));
     }
     st.kind = info->kind;
-    if (!info->signal_fault && encoder)
+    if (const auto by = synthesized_by(s, st.line); by && !info->signal_fault)
       r.fail("line",
-             fmt::format("a discrete input line; {} is driven by the encoder (use a signal fault)", st.line));
+             fmt::format("a discrete input line; {} is driven by {} (use a signal fault)", st.line, *by));
     switch (st.kind) {
     case StimulusKind::Level:
       st.level = r.level("level");
@@ -896,6 +903,9 @@ private:
       if (const auto problem = check_time_problem(s, *kind, table)) r.fail(problem->key, problem->expected);
       if (auto* move = std::get_if<checks::ShaftMoveParams>(&c.params)) move->spec.profile = profile_of(s, r);
       if (const auto* d = std::get_if<checks::DebounceParams>(&c.params)) {
+        // The probe is a pulse the rig drives: on a synthesized line it would fight the source.
+        if (const auto by = synthesized_by(s, d->plan.input))
+          r.fail("input", fmt::format("a discrete input line; {} is driven by {}", d->plan.input, *by));
         // Every start phase's probe pulse, the widest too, ends within the run: a pulse still
         // running at the end could not be seen accepted, and a board within the limits would fail.
         const Nanos last = d->probe_starts(c.probe_at).back();

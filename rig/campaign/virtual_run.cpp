@@ -67,6 +67,9 @@ public:
                                  s_.dut.backend));
     const duts::DutInfo* info = duts::find_dut(s_.dut.model);
     if (info == nullptr) throw RigFault("no DUT model " + s_.dut.model);
+    // Until the board is attached, what it and the rig's sources drive is where the lines
+    // start: a board output's power-up level is its initial level, not an edge at 0.
+    bus_.set_powering_up(true);
     make_lines();
     drive_resolver();
     drive_ssi();
@@ -79,6 +82,7 @@ public:
     std::map<std::string, std::string, std::less<>> pins;
     for (const Wire& w : s_.wiring) pins[w.board] = w.rig;
     dut_->attach(bus_, pins);
+    bus_.set_powering_up(false);
     schedule_board_faults();
     schedule_power_cycles();
     for (const PanelEvent& p : s_.panel) sched_.at(p.at, [this, i = p.action] { dut_->panel(i); });
@@ -116,14 +120,19 @@ private:
   void make_lines() {
     for (const Wire& w : s_.wiring) {
       if (w.analog) continue; // an analog channel, not a line
+      // A line a plant or the [ssi] transducer synthesizes goes through the drive too, so a
+      // signal fault on it overrides the source (RigDrive::source).
       if (plant_ && plant_->drives(w.rig)) {
         virt::DigitalLine& line = bus_.line(w.rig, plant_->initial_level(w.rig));
-        plant_->own(w.rig, line.driver());
+        drive_.own(w.rig, line.driver());
+        plant_->own(w.rig, drive_.source(w.rig));
         owned_.push_back(&line.driver());
         continue;
       }
       if (w.rig == s_.ssi.data_line) { // the transducer's (drive_ssi), idle high
-        owned_.push_back(&bus_.line(w.rig, Level::High).driver());
+        virt::DigitalLine& line = bus_.line(w.rig, Level::High);
+        drive_.own(w.rig, line.driver());
+        owned_.push_back(&line.driver());
         continue;
       }
       virt::DigitalLine& line = bus_.line(w.rig, drive_.initial_level(w.rig));
@@ -255,7 +264,7 @@ private:
     ssi_ =
         std::make_unique<signals::SsiSlave>(params, signals::counts_from_turns(turns, spec.counts_per_turn));
     ssi_node_ = std::make_unique<signals::SsiSlaveNode>(sched_, *ssi_, bus_.line(spec.clock_line).reader(),
-                                                        bus_.line(spec.data_line).driver());
+                                                        drive_.source(spec.data_line));
   }
 
   // [[device_fault]] of the board itself: the model raises it at `at`, its condition ends at

@@ -516,7 +516,8 @@ std::vector<CheckKind> make_kinds() {
       kind("shaft_move",
            "a stepper shaft seen by its step and direction lines: net steps, duration, peak speed, reversals",
            {P("step_line", Str, true, "one edge per step"), P("dir_line", Str, true, "High = CW"),
-            P("dir_initial", Lvl, false, "dir_line before its first edge (low)"),
+            P("dir_initial", Lvl, false,
+              "dir_line before its first edge when the capture did not read its level (low)"),
             instant(P("from_ms", Num, true,
                       "window start: the command or the stop trigger; steps after it count", time),
                     kMs),
@@ -804,6 +805,8 @@ CheckResult run(const FrameDecodesParams& p, const Capture& c) {
 CheckResult run(const ShaftMoveParams& p, const Capture& c) {
   ShaftMoveSpec s = p.spec;
   if (!p.to_given) s.to = c.end;
+  // The direction the capture saw the line start at, over the campaign's assumption.
+  if (const auto it = c.initial.find(p.dir_line); it != c.initial.end()) s.dir_initial = it->second;
   return check_shaft_move(line(c, p.step_line), line(c, p.dir_line), s);
 }
 

@@ -24,6 +24,10 @@ namespace hilrig::checks {
 // What one run captured, as plain data the executive fills from its trace.
 struct Capture {
   std::map<std::string, std::vector<Edge>, std::less<>> lines; // every captured line, by trace name
+  // Each captured line's level at the capture's start, where it is known (the trace's initial
+  // value): where a line starts is no edge, so a check that needs the level before the first
+  // edge (shaft_move's direction) reads it here.
+  std::map<std::string, Level, std::less<>> initial{};
   // The lines the rig drives into the board (its stimuli): an edge missing there is the
   // campaign's, and a check waiting for it judged nothing (an error, not the board's fail).
   std::set<std::string, std::less<>> rig_driven{};

@@ -161,9 +161,13 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
     out_signal.push_back(trace->declare(p.rig));
     trace->set_initial(out_signal.back(), is_high(p.initial) ? 1 : 0);
   }
+  // Each captured line's level as the trace has it so far: read before the run, it is where
+  // the line starts, and a sample at the level a line already has is no edge.
+  std::vector<std::optional<Level>> in_level(plan.inputs.size());
   for (std::size_t i = 0; i < plan.inputs.size(); ++i) {
     in_signal.push_back(trace->declare(plan.inputs[i].rig));
-    if (const auto l = ports.input_level(i)) trace->set_initial(in_signal.back(), is_high(*l) ? 1 : 0);
+    in_level[i] = ports.input_level(i);
+    if (in_level[i]) trace->set_initial(in_signal.back(), is_high(*in_level[i]) ? 1 : 0);
   }
 
   rig::SpscRing<LoopSample> ring(kRingCapacity);
@@ -261,6 +265,10 @@ VirtualRun run_hardware(const RunInputs& in, const DrivePlan& plan, RigPorts& po
     if (x.line >= (output ? out_signal.size() : in_signal.size())) continue;
     const std::uint32_t sig = output ? out_signal[x.line] : in_signal[x.line];
     const Nanos t = x.actual - start;
+    if (!output) {
+      if (in_level[x.line] == x.level) continue; // e.g. an event queued before the level was read
+      in_level[x.line] = x.level;
+    }
     if (t < Nanos{0}) {
       trace->set_initial(sig, is_high(x.level) ? 1 : 0); // an input edge while the rig set up
       continue;

@@ -195,5 +195,27 @@ TEST(Smd23eCheckKinds, RegistryValidatesTheirParameters) {
   EXPECT_EQ(problem("word_bits", json{{"observation", "sw1"}, {"mask", 0}, {"value", 0}}), "mask");
 }
 
+// Where the direction line starts is no edge (a board output's power-up level): the check takes
+// it from the capture, over dir_initial, and dir_initial only where the capture did not read it.
+TEST(ShaftMove, TheDirectionLineStartsWhereTheCaptureReadIt) {
+  const CheckParams cw =
+      build_check_params(*find_check_kind("shaft_move"), "m",
+                         json{{"step_line", "s"}, {"dir_line", "d"}, {"from_ms", 0}, {"steps", 2}});
+  Capture c;
+  c.lines["s"] = toggles({1_ms, 2_ms});
+  c.lines["d"] = {};
+  c.end = 3_ms;
+  EXPECT_EQ(run_check("m", cw, c).outcome(), Outcome::Fail); // dir_initial low: -2 steps
+  c.initial["d"] = Level::High;
+  EXPECT_EQ(run_check("m", cw, c).outcome(), Outcome::Pass);
+  const CheckParams told_high = build_check_params(
+      *find_check_kind("shaft_move"), "m",
+      json{{"step_line", "s"}, {"dir_line", "d"}, {"dir_initial", "high"}, {"from_ms", 0}, {"steps", 2}});
+  c.initial["d"] = Level::Low; // read low: CCW whatever dir_initial says
+  EXPECT_EQ(run_check("m", told_high, c).outcome(), Outcome::Fail);
+  c.initial.clear();
+  EXPECT_EQ(run_check("m", told_high, c).outcome(), Outcome::Pass);
+}
+
 } // namespace
 } // namespace hilrig::checks

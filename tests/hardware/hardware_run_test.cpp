@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rig/campaign/campaign_parser.hpp"
@@ -255,6 +258,59 @@ TEST(HardwareRun, AnyCanOverrunIsARigFaultNamingEachKind) {
   const campaign::VirtualRun all = run_with_overruns({2, 3, 4});
   EXPECT_NE(all.rig_fault.find("CAN can9: 9 frame(s) lost"), std::string::npos) << all.rig_fault;
   EXPECT_EQ(measurement(all, "rig.can.socket_rx_drops")->value, 4.0);
+}
+
+// A capture that reads its one line (ls1) high before the run, then reports the given edges at
+// the run's start plus their offsets, once. The rig's writes go nowhere.
+class ScriptedCapture final : public RigPorts {
+public:
+  explicit ScriptedCapture(std::vector<InputEdge> script) : script_(std::move(script)) {}
+  RtOutputPort& outputs() override { return out_; }
+  RtInputPort* inputs() override { return &in_; }
+  campaign::HostWords* host() override { return nullptr; }
+  ResolverCan* resolver() override { return nullptr; }
+  std::optional<Level> input_level(std::size_t /*i*/) override { return Level::High; }
+  void begin(Nanos start) override {
+    for (InputEdge& e : script_) e.time += start;
+  }
+
+private:
+  struct Out final : RtOutputPort {
+    void write(std::uint16_t /*line*/, Level /*level*/) noexcept override {}
+  };
+  struct In final : RtInputPort {
+    explicit In(ScriptedCapture& capture) : c(capture) {}
+    std::size_t poll(std::span<InputEdge> out) noexcept override {
+      std::size_t n = 0;
+      while (c.next_ < c.script_.size() && n < out.size()) out[n++] = c.script_[c.next_++];
+      return n;
+    }
+    ScriptedCapture& c;
+  };
+  std::vector<InputEdge> script_;
+  std::size_t next_ = 0;
+  Out out_;
+  In in_{*this};
+};
+
+// The level a captured line is read at before the run is where it starts (trace.vcd's
+// $dumpvars), and a sample at the level the line already has is no edge: the board driving
+// the line high from power-up gives no edge at 0, and checks see only its real changes.
+TEST(HardwareRun, ALineReadHighBeforeTheRunStartsHighWithNoEdge) {
+  Loop f;
+  ScriptedCapture ports({{Nanos{0}, 0, Level::High},
+                         {Nanos{1'000'000}, 0, Level::Low},
+                         {Nanos{2'000'000}, 0, Level::High},
+                         {Nanos{3'000'000}, 0, Level::High}});
+  const campaign::VirtualRun hw = run_hardware(f.in, f.plan, ports, f.options);
+  ASSERT_EQ(hw.rig_fault, "");
+  const std::int64_t ls1 = hw.trace->find("ls1");
+  ASSERT_GE(ls1, 0);
+  const SignalInfo& info = hw.trace->signals().at(static_cast<std::size_t>(ls1));
+  ASSERT_TRUE(info.has_initial);
+  EXPECT_EQ(info.initial, 1);
+  EXPECT_EQ(hw.trace->edges_of("ls1"),
+            (std::vector<Edge>{{Nanos{1'000'000}, Level::Low}, {Nanos{2'000'000}, Level::High}}));
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <vector>
 
 using namespace hilrig;
 using namespace hilrig::literals;
@@ -61,4 +62,41 @@ TEST(VirtualBus, SameScenarioTwiceGivesTheSameHash) {
     return trace.content_hash();
   };
   EXPECT_EQ(run(), run());
+}
+
+// A board drives its outputs' idle levels as it powers up: while the bus powers up, a level
+// driven is where the line starts (readers' level, the trace's initial value in $dumpvars),
+// with no edge and no reader called, on a line made before power-up and on one made during it.
+// After power-up every change is an edge again, at time 0 too.
+TEST(VirtualBus, LevelsDrivenWhilePoweringUpAreWhereTheLinesStart) {
+  Scheduler s;
+  TraceRecorder trace;
+  VirtualBus bus(s, &trace);
+  auto& co = bus.line("co", Level::Low); // the rig's wiring, made before the board
+  LineInput& in = co.reader();
+  std::vector<Edge> seen;
+  in.on_edge([&](const Edge& e) { seen.push_back(e); });
+  bus.set_powering_up(true);
+  co.driver().set(Level::High); // the board's idle level
+  auto& clk = bus.line("clk");  // made while the board powers up
+  clk.driver().set(Level::High);
+  clk.driver().set(Level::Low);
+  clk.driver().set(Level::High);
+  bus.set_powering_up(false);
+  EXPECT_EQ(in.level(), Level::High);
+  EXPECT_TRUE(seen.empty());
+  EXPECT_EQ(co.edge_count(), 0U);
+  EXPECT_EQ(clk.edge_count(), 0U);
+
+  co.driver().set(Level::Low); // at time 0, after power-up: an edge
+  s.at(1_us, [&] { co.driver().set(Level::High); });
+  s.run_until_idle();
+  const std::vector<Edge> edges{{0_us, Level::Low}, {1_us, Level::High}};
+  EXPECT_EQ(seen, edges);
+  EXPECT_EQ(trace.edges_of("co"), edges);
+  EXPECT_TRUE(trace.edges_of("clk").empty());
+  std::ostringstream vcd;
+  write_vcd(trace, vcd);
+  // Both start high in $dumpvars; the first change of co is the edge at 0 after power-up.
+  EXPECT_NE(vcd.str().find("$dumpvars\n1!\n1\"\n$end\n0!\n#1000\n1!\n"), std::string::npos) << vcd.str();
 }
