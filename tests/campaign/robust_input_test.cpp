@@ -1,5 +1,6 @@
 // Bad input found by a robustness audit, each refused before anything runs (exit 2, naming
-// what and where) without losing what was already captured, and incomplete evidence judged 3.
+// what and where) without losing what was already captured, and incomplete evidence or a failed
+// write judged 3.
 
 #include <sys/wait.h>
 
@@ -10,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -187,6 +190,42 @@ TEST(RobustInput, CompareWarnsOfAThresholdThatNamesNothing) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("warning: --threshold nosuch: no measurement"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("--threshold max"), std::string::npos) << r.err;
+}
+
+// Every *.tmp left anywhere under dir (the docs promise none after a failed write).
+std::vector<std::string> tmp_files_under(const fs::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.path().extension() == ".tmp") found.push_back(e.path().string());
+  return found;
+}
+
+// A file size limit (`ulimit -f`) is a failed write as a full disk is (docs/campaigns.md, "The
+// output directory"): exit 3 with the system's reason and no *.tmp left, not a process killed by
+// SIGXFSZ (exit 153, no message, trace.vcd.tmp left). The limit is in 512-byte blocks (popen's
+// sh is dash): 64 blocks cut this campaign's report.html (over 200 kB) with or without traces,
+// 1024 its trace.vcd (over 1 MB) and the trace spill the runs record into.
+TEST(RobustInput, AFileSizeLimitIsAFailedWriteNotAKill) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_file_size");
+  const std::pair<const char*, const char*> cases[] = {{"64", "all"}, {"64", "none"}, {"1024", "all"}};
+  for (const auto& [blocks, trace] : cases) {
+    SCOPED_TRACE(std::string("ulimit -f ") + blocks + ", --trace " + trace);
+    const fs::path out = dir / (std::string("out") + blocks + trace);
+    const Result r = hilrig("run " + kPass + " --epoch 1 --out " + out.string() + " --trace " + trace,
+                            std::string("ulimit -f ") + blocks + "; ");
+    EXPECT_EQ(r.status, 3) << r.err;
+    EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
+    EXPECT_EQ(tmp_files_under(out), std::vector<std::string>{});
+  }
+  // Every command that writes: merge's output under the same limit fails the same way.
+  ASSERT_EQ(hilrig("run " + kPass + " --out " + (dir / "whole").string() + " --trace none").status, 0);
+  const Result merged = hilrig("merge " + (dir / "merged" / "m.json").string() + " " +
+                                   (dir / "whole" / "results.json").string(),
+                               "ulimit -f 8; ");
+  EXPECT_NE(merged.status, 0) << merged.err;
+  EXPECT_LT(merged.status, 128) << "killed by a signal";
+  EXPECT_NE(merged.err.find("File too large"), std::string::npos) << merged.err;
+  EXPECT_EQ(tmp_files_under(dir / "merged"), std::vector<std::string>{});
 }
 
 } // namespace
