@@ -13,6 +13,7 @@
 
 #include "rig/cli/directory_lock.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/same_file.hpp"
 #include "rig/results/atomic_file.hpp"
 #include "rig/results/junit.hpp"
 #include "rig/results/merge.hpp"
@@ -35,22 +36,6 @@ namespace fs = std::filesystem;
 fs::path beside(const fs::path& out, const char* file) {
   if (out.filename() == "results.json") return out.parent_path() / file;
   return out.parent_path() / (out.stem().string() + "." + file);
-}
-
-// Whether two paths name one file: the same file when both exist (a hard link, a symbolic
-// link, "a/../a"), else the same path once the links and dots of its existing part resolve.
-bool same_file(const fs::path& a, const fs::path& b) {
-  std::error_code ec;
-  if (fs::exists(a, ec) && fs::exists(b, ec)) {
-    const bool same = fs::equivalent(a, b, ec);
-    if (!ec) return same;
-  }
-  const auto resolved = [](const fs::path& p) {
-    std::error_code e;
-    const fs::path r = fs::weakly_canonical(fs::absolute(p), e);
-    return e ? fs::absolute(p).lexically_normal() : r;
-  };
-  return resolved(a) == resolved(b);
 }
 
 // A merge whose output (or the junit.xml or report.html beside it) is one of its inputs would

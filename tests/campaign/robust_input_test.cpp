@@ -228,5 +228,34 @@ TEST(RobustInput, AFileSizeLimitIsAFailedWriteNotAKill) {
   EXPECT_EQ(tmp_files_under(dir / "merged"), std::vector<std::string>{});
 }
 
+// `trend --out` naming one of its inputs, by any spelling (the path as given, a symbolic link,
+// "DIR/../DIR/results.json"), would replace that night's results.json with the page: refused, 2,
+// the input as it was and no page written; one file given twice is not two nights.
+TEST(RobustInput, TrendRefusesToOverwriteAnInputOrReadOneTwice) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_trend_inputs");
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "night").string()).status, 0);
+  const fs::path results = dir / "night" / "results.json";
+  const std::string before = test::read_file(results);
+  fs::create_symlink(results, dir / "alias.json");
+  const std::string other_spelling = (dir / "night" / ".." / "night" / "results.json").string();
+  for (const std::string& out : {results.string(), (dir / "alias.json").string(), other_spelling}) {
+    const Result r = hilrig("trend " + results.string() + " --out " + out);
+    EXPECT_EQ(r.status, 2) << out << ": " << r.err;
+    EXPECT_NE(r.err.find("is also an input"), std::string::npos) << r.err;
+    EXPECT_EQ(test::read_file(results), before);
+  }
+  for (const std::string& again : {results.string(), (dir / "alias.json").string(), other_spelling}) {
+    const Result r =
+        hilrig("trend " + results.string() + " " + again + " --out " + (dir / "t.html").string());
+    EXPECT_EQ(r.status, 2) << again << ": " << r.err;
+    EXPECT_NE(r.err.find("are one file given twice"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "t.html"));
+  }
+  // Beside it under another name, it is written.
+  const Result ok = hilrig("trend " + results.string() + " --out " + (dir / "night" / "trend.html").string());
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(test::read_file(results), before);
+}
+
 } // namespace
 } // namespace hilrig::robust_input
