@@ -7,21 +7,6 @@
 
 namespace hilrig::cli {
 
-namespace {
-
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-} // namespace
-
-bool is_run_evidence(const std::string& name) {
-  if (ends_with(name, ".tmp")) return is_run_evidence(name.substr(0, name.size() - 4));
-  return name == "results.json" || name == "junit.xml" || name == "report.html" || name == "runs.jsonl" ||
-         name == "can.log" || name == kDirectoryLockName ||
-         (name.starts_with("trace") && ends_with(name, ".vcd")) || ends_with(name, ".gtkw");
-}
-
 OutputDirectory::OutputDirectory(const std::filesystem::path& dir) {
   // --out naming a file (or a path through one) is the user's to change: bad input, not a rig
   // fault. Other failures (permissions, a full disk) keep the errno text.

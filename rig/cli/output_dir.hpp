@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "rig/cli/directory_lock.hpp"
+#include "rig/cli/run_evidence.hpp"
 
 namespace hilrig::cli {
 
@@ -25,9 +26,6 @@ class ForeignOutput : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
 };
-
-// Whether hilrig run writes a file of this name (so a new campaign may remove it).
-[[nodiscard]] bool is_run_evidence(const std::string& name);
 
 class OutputDirectory {
 public:

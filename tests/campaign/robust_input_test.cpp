@@ -257,5 +257,37 @@ TEST(RobustInput, TrendRefusesToOverwriteAnInputOrReadOneTwice) {
   EXPECT_EQ(test::read_file(results), before);
 }
 
+// A merge written into a shard's run directory under the name of a file the run wrote (its
+// trace.vcd, which the merged result links to, its junit.xml) would replace that evidence:
+// refused, 2, every file as it was and nothing written (not even NAME.junit.xml beside it).
+TEST(RobustInput, MergeRefusesToWriteOverAShardsOwnFiles) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_merge_run_files");
+  for (const char* k : {"0", "1"})
+    ASSERT_EQ(
+        hilrig("run " + kPass + " --shard " + k + "/2 --epoch 1 --out " + (dir / "s").string() + k).status,
+        0);
+  const fs::path s0 = dir / "s0";
+  const std::string inputs = (s0 / "results.json").string() + " " + (dir / "s1" / "results.json").string();
+  ASSERT_TRUE(fs::exists(s0 / "trace.vcd"));
+  const std::string trace = test::read_file(s0 / "trace.vcd");
+  const std::string junit = test::read_file(s0 / "junit.xml");
+  for (const char* name : {"trace.vcd", "junit.xml", "report.html", "runs.jsonl", "can.log"}) {
+    const Result r = hilrig("merge " + (s0 / name).string() + " " + inputs);
+    EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+    EXPECT_NE(r.err.find("the run's own file beside the input"), std::string::npos) << r.err;
+  }
+  // The other shard's directory, and a spelling through "..", alike.
+  const Result other = hilrig("merge " + (dir / "s1" / "trace.vcd").string() + " " + inputs);
+  EXPECT_EQ(other.status, 2) << other.err;
+  const Result dots = hilrig("merge " + (dir / "s1" / ".." / "s0" / "trace.vcd").string() + " " + inputs);
+  EXPECT_EQ(dots.status, 2) << dots.err;
+  EXPECT_EQ(test::read_file(s0 / "trace.vcd"), trace);
+  EXPECT_EQ(test::read_file(s0 / "junit.xml"), junit);
+  for (const char* name : {"trace.junit.xml", "trace.report.html", "junit.junit.xml", "can.junit.xml"})
+    EXPECT_FALSE(fs::exists(s0 / name)) << name;
+  // Merged files named as no run's file, beside the shards, are still written.
+  EXPECT_EQ(hilrig("merge " + (dir / "merged.json").string() + " " + inputs).status, 0);
+}
+
 } // namespace
 } // namespace hilrig::robust_input
