@@ -7,7 +7,7 @@
 
 namespace hilrig::cli {
 
-OutputDirectory::OutputDirectory(const std::filesystem::path& dir) {
+OutputDirectory::OutputDirectory(const std::filesystem::path& dir, Holds holds) {
   // --out naming a file (or a path through one) is the user's to change: bad input, not a rig
   // fault. Other failures (permissions, a full disk) keep the errno text.
   std::error_code ec;
@@ -25,6 +25,7 @@ OutputDirectory::OutputDirectory(const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> evidence;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
+    if (holds == Holds::Suite && entry.is_directory()) continue; // a campaign's own, cleared when it runs
     if (!entry.is_regular_file() || !is_run_evidence(name))
       throw ForeignOutput(fmt::format("--out {}: holds {}, which hilrig run does not write: give an empty or "
                                       "new directory, or one an earlier hilrig run wrote",

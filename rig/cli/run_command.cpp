@@ -429,6 +429,20 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
     return kBadInput;
   }
 
+  // OUT itself, for the whole suite: locked against a second run, and cleared of the files of
+  // a single campaign run there earlier, so none of its results.json or trace sits beside the
+  // suite's index as if it were the suite's.
+  std::optional<OutputDirectory> out_dir;
+  try {
+    out_dir.emplace(o.out, OutputDirectory::Holds::Suite);
+  } catch (const ForeignOutput& e) {
+    err << "hilrig run: " << e.what() << '\n';
+    return kBadInput;
+  } catch (const std::exception& e) {
+    err << "hilrig run: rig fault: " << e.what() << '\n';
+    return kRigFault;
+  }
+
   std::size_t total_runs = 0;
   for (const auto& p : prepared) total_runs += p->runs.size();
   RunProgress progress(err, progress_mode(o), total_runs, true);
