@@ -538,12 +538,14 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
 
 std::string interruption_text(const rig::CampaignResult& result, const std::string& out_dir) {
   // The signal stopped a run in the middle, or landed between two runs (the run before it
-  // finished whole and the next never started).
+  // finished whole and the next never started). A run it stopped is in the results (marked
+  // interrupted) but is not done: it is not counted among the runs done.
   const bool mid_run = result.last_run_interrupted;
+  const std::size_t whole = result.totals.runs - (mid_run && result.totals.runs > 0 ? 1 : 0);
   return fmt::format("hilrig run: interrupted by {}: {} of {} run(s) done, {}; results written to {}",
-                     result.interrupted.value_or("a signal"), result.totals.runs, result.planned_runs,
+                     result.interrupted.value_or("a signal"), whole, result.planned_runs,
                      mid_run
-                         ? "the last stopped early with every rig-driven line at its inactive level"
+                         ? "and the next stopped early with every rig-driven line at its inactive level"
                          : "the signal landed between runs (every run done is whole; none started after it)",
                      out_dir);
 }

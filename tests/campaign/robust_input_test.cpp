@@ -289,5 +289,35 @@ TEST(RobustInput, MergeRefusesToWriteOverAShardsOwnFiles) {
   EXPECT_EQ(hilrig("merge " + (dir / "merged.json").string() + " " + inputs).status, 0);
 }
 
+// The messages of bad input say what was wrong where it was: a campaign given as --rig is named
+// as one read as a rig config; a file that is not there has no 0:0 position and gives the
+// system's reason; a results file of another version names the version found and the one read.
+TEST(RobustInput, MessagesNameWhatWasReadAndFound) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_messages");
+  const Result rig = hilrig("run " + kPass + " --out " + (dir / "rig").string() + " --rig " + kPass);
+  EXPECT_EQ(rig.status, 2) << rig.err;
+  EXPECT_NE(rig.err.find("campaign: a campaign file's table, in a file read as a rig config"),
+            std::string::npos)
+      << rig.err;
+  EXPECT_FALSE(fs::exists(dir / "rig" / "results.json"));
+  const std::string nowhere = (dir / "nowhere.toml").string();
+  const Result missing = hilrig("run " + kPass + " --out " + (dir / "rig").string() + " --rig " + nowhere);
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(missing.err,
+            nowhere + ": file: a readable rig config file (cannot open it: No such file or directory)\n");
+  const fs::path huge = test::write_file(dir, "huge.toml", std::string(1048577, '#'));
+  const Result big = hilrig("check " + huge.string());
+  EXPECT_EQ(big.status, 2);
+  EXPECT_EQ(big.err, huge.string() + ": file: a campaign file of at most 1048576 bytes\n");
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "ran").string()).status, 0);
+  nlohmann::json results = nlohmann::json::parse(test::read_file(dir / "ran" / "results.json"));
+  results["version"] = 3;
+  std::ofstream(dir / "v3.json") << results.dump();
+  const Result v3 = hilrig("merge " + (dir / "m.json").string() + " " + (dir / "v3.json").string());
+  EXPECT_EQ(v3.status, 2);
+  EXPECT_NE(v3.err.find("unsupported version 3: hilrig "), std::string::npos) << v3.err;
+  EXPECT_NE(v3.err.find(" reads version 2"), std::string::npos) << v3.err;
+}
+
 } // namespace
 } // namespace hilrig::robust_input
