@@ -3,6 +3,7 @@
 // write judged 3.
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "tests/campaign/hilrig_process.hpp"
@@ -317,6 +319,35 @@ TEST(RobustInput, MessagesNameWhatWasReadAndFound) {
   EXPECT_EQ(v3.status, 2);
   EXPECT_NE(v3.err.find("unsupported version 3: hilrig "), std::string::npos) << v3.err;
   EXPECT_NE(v3.err.find(" reads version 2"), std::string::npos) << v3.err;
+}
+
+// `latency --cpu N` beyond the machine's CPUs would run unpinned (its header saying so in
+// passing), and a --duration shorter than one --interval measures no wake-up (a table of 0 µs):
+// both refused before anything runs, 2, naming the range. The last CPU and exactly one interval
+// are measured (priority 0: no SCHED_FIFO needed).
+TEST(RobustInput, LatencyRefusesACpuItHasNotAndADurationWithoutAWakeUp) {
+  const long cpus = ::sysconf(_SC_NPROCESSORS_CONF);
+  ASSERT_GT(cpus, 0);
+  const Result beyond = hilrig(fmt::format("latency --priority 0 --duration 0.01 --quiet --cpu {}", cpus));
+  EXPECT_EQ(beyond.status, 2) << beyond.err;
+  EXPECT_NE(beyond.err.find(fmt::format("--cpu {}: this machine has CPUs 0 .. {}", cpus, cpus - 1)),
+            std::string::npos)
+      << beyond.err;
+  EXPECT_EQ(beyond.out, "");
+  const Result last = hilrig(fmt::format("latency --priority 0 --duration 0.01 --quiet --cpu {}", cpus - 1));
+  EXPECT_EQ(last.status, 0) << last.err;
+  for (const char* duration : {"1e-9", "0.000999"}) {
+    const Result short_one =
+        hilrig(std::string("latency --priority 0 --quiet --interval 1000 --duration ") + duration);
+    EXPECT_EQ(short_one.status, 2) << duration << ": " << short_one.err;
+    EXPECT_NE(short_one.err.find("shorter than one --interval (1000 us): at least 0.001 s"),
+              std::string::npos)
+        << short_one.err;
+    EXPECT_EQ(short_one.out, "");
+  }
+  const Result one = hilrig("latency --priority 0 --quiet --interval 1000 --duration 0.001");
+  EXPECT_EQ(one.status, 0) << one.err;
+  EXPECT_NE(one.out.find("C:      1 "), std::string::npos) << one.out;
 }
 
 } // namespace
