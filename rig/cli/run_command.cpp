@@ -402,7 +402,8 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
     return kBadInput;
   }
   // Every campaign is checked before the first one runs: one bad file stops the suite with
-  // every problem listed, as a single campaign stops before its first run.
+  // every bad file listed (each with its first problem), as a single campaign stops before its
+  // first run.
   std::vector<std::unique_ptr<Prepared>> prepared;
   std::vector<SuiteEntry> chosen;
   int status = kPassed;
