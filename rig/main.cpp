@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iterator>
@@ -43,6 +44,11 @@ constexpr Command kCommands[] = {
 } // namespace
 
 int main(int argc, char** argv) {
+  // A file size limit (`ulimit -f`) would kill the process with SIGXFSZ in the middle of a
+  // write, with no message and a *.tmp left behind. Ignored, the write fails with EFBIG instead
+  // and every command's own error path runs: the system's reason ("File too large"), no *.tmp,
+  // and the exit status the command gives a failed write (docs/campaigns.md, "The output directory").
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"hilrig: a real-time hardware-in-the-loop test rig for AMCI boards"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("hilrig ") + hilrig::rig::tool_version());

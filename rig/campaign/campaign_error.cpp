@@ -7,6 +7,9 @@ namespace hilrig::campaign {
 namespace {
 std::string describe(const std::string& file, SourcePos where, const std::string& key,
                      const std::string& expected) {
+  // A problem of the whole file (too big, not there) has no line: "file: key: ...", not a 0:0
+  // no editor can go to.
+  if (where.line == 0) return fmt::format("{}: {}: {}", file, key, expected);
   return fmt::format("{}:{}:{}: {}: {}", file, where.line, where.column, key, expected);
 }
 } // namespace

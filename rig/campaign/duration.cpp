@@ -6,7 +6,15 @@
 
 namespace hilrig::campaign {
 
-std::optional<Nanos> parse_duration(std::string_view text) {
+namespace {
+
+// What a duration's text holds: a duration, one too long to hold (with its sign), or none.
+struct DurationText {
+  std::optional<Nanos> value;
+  int too_long = 0; // +1 or -1 when the number with its unit is beyond kMaxDurationText
+};
+
+DurationText read_duration(std::string_view text) {
   struct Unit {
     std::string_view suffix;
     double ns;
@@ -18,13 +26,30 @@ std::optional<Nanos> parse_duration(std::string_view text) {
     const std::string_view number = text.substr(0, text.size() - u.suffix.size());
     double value = 0.0;
     const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
-    if (ec != std::errc{} || end != number.data() + number.size() || !std::isfinite(value))
-      return std::nullopt;
+    if (end != number.data() + number.size()) return {};
+    const int sign = number.starts_with('-') ? -1 : 1;
+    if (ec == std::errc::result_out_of_range) {
+      // Too large for a double ("1e400"), or too small ("1e-400": zero nanoseconds).
+      const std::string copy(number);
+      if (std::isinf(std::strtod(copy.c_str(), nullptr))) return {std::nullopt, sign};
+      return {Nanos{0}, 0};
+    }
+    if (ec != std::errc{} || !std::isfinite(value)) return {};
     const double ns = value * u.ns;
-    if (std::fabs(ns) > 9.0e18) return std::nullopt;
-    return Nanos{static_cast<std::int64_t>(std::llround(ns))};
+    if (std::fabs(ns) > static_cast<double>(kMaxDurationText.count())) return {std::nullopt, sign};
+    return {Nanos{static_cast<std::int64_t>(std::llround(ns))}, 0};
   }
-  return std::nullopt;
+  return {};
+}
+
+} // namespace
+
+std::optional<Nanos> parse_duration(std::string_view text) { return read_duration(text).value; }
+
+std::optional<Nanos> parse_duration_clamped(std::string_view text) {
+  const DurationText d = read_duration(text);
+  if (d.too_long != 0) return Nanos{d.too_long * kMaxDurationText.count()};
+  return d.value;
 }
 
 } // namespace hilrig::campaign

@@ -9,7 +9,18 @@
 
 namespace hilrig::campaign {
 
-// The duration, or nullopt when the text is not a number followed by ns, us, ms or s.
+// The longest duration a text gives, either way: 9e18 ns (about 285 years; a 64-bit count of
+// nanoseconds holds 292).
+inline constexpr Nanos kMaxDurationText{9'000'000'000'000'000'000};
+
+// The duration, or nullopt when the text is not a number followed by ns, us, ms or s, or is
+// one longer than kMaxDurationText either way.
 [[nodiscard]] std::optional<Nanos> parse_duration(std::string_view text);
+
+// As parse_duration, but a number with a unit too long to hold ("1e400s",
+// "99999999999999999999s") reads as kMaxDurationText (its negative when negative): it is a
+// duration, out of every key's range, and the range check that follows names that range
+// instead of calling it "not a duration". The campaign reader reads every duration this way.
+[[nodiscard]] std::optional<Nanos> parse_duration_clamped(std::string_view text);
 
 } // namespace hilrig::campaign

@@ -3,7 +3,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstddef>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -123,7 +125,9 @@ std::string read_toml_text(const std::string& path, std::string_view what) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status))
-    throw CampaignError(path, SourcePos{}, "file", fmt::format("a readable {} (cannot open it)", what));
+    throw CampaignError(
+        path, SourcePos{}, "file",
+        fmt::format("a readable {} (cannot open it: {})", what, ec ? ec.message() : std::strerror(ENOENT)));
   if (!fs::is_regular_file(status))
     throw CampaignError(path, SourcePos{}, "file",
                         fmt::format("a regular {} ({} is {})", what, path, kind_of(status.type())));

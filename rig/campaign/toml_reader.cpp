@@ -19,7 +19,7 @@ SourcePos pos_of(const toml::source_region& region) {
 std::optional<Nanos> duration_of(const toml::node& node) {
   const auto* s = node.as_string();
   if (s == nullptr) return std::nullopt;
-  return parse_duration(s->get());
+  return parse_duration_clamped(s->get()); // "1e400s" is out of the key's range, named by its check
 }
 
 TableReader::TableReader(const std::string& file, const toml::table& table, std::string path)

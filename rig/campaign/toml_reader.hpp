@@ -66,7 +66,8 @@ private:
   std::set<std::string, std::less<>> asked_;
 };
 
-// Value of a duration node: a string with a unit. nullopt when it is not one.
+// Value of a duration node: a string with a unit. nullopt when it is not one; one too long to
+// hold is kMaxDurationText (rig/campaign/duration.hpp), for the key's range check to refuse.
 [[nodiscard]] std::optional<Nanos> duration_of(const toml::node& node);
 
 } // namespace hilrig::campaign

@@ -5,8 +5,12 @@
 
 #include <algorithm>
 #include <sys/resource.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <memory>
+#include <optional>
+#include <string>
 #include <thread>
 
 #include "core/clock.hpp"
@@ -49,9 +53,29 @@ std::string spread_text(const rig::Spread& s) {
   return fmt::format("{} / {} / {}", s.p50.count(), s.p99.count(), s.max.count());
 }
 
+// Options the loop cannot honour, refused before anything is measured (exit 2): a CPU the
+// machine does not have (the thread would run unpinned, its header saying so in passing), and a
+// duration shorter than one interval (no wake-up at all: a table of zeros is no measurement).
+std::optional<std::string> refusal(const LatencyOptions& o) {
+  const long cpus = ::sysconf(_SC_NPROCESSORS_CONF);
+  if (o.cpu >= 0 && cpus > 0 && o.cpu >= cpus)
+    return fmt::format("--cpu {}: this machine has CPUs 0 .. {}", o.cpu, cpus - 1);
+  const double interval_s = static_cast<double>(o.interval_us) * 1e-6;
+  if (o.duration_s < interval_s)
+    return fmt::format("--duration {}: shorter than one --interval ({} us): at least {} s", o.duration_s,
+                       o.interval_us, interval_s);
+  return std::nullopt;
+}
+
 int run_latency(const LatencyOptions& o) {
+  if (const auto problem = refusal(o)) {
+    std::fputs(fmt::format("hilrig latency: {}\n", *problem).c_str(), stderr);
+    return kBadInput;
+  }
   auto histogram = std::make_unique<rig::LatencyHistogram>();
-  const auto loops = static_cast<std::uint64_t>(o.duration_s * 1e6 / static_cast<double>(o.interval_us));
+  // At least one: a duration of exactly one interval is one wake-up, however the division rounds.
+  const auto loops = std::max<std::uint64_t>(
+      1, static_cast<std::uint64_t>(o.duration_s * 1e6 / static_cast<double>(o.interval_us)));
   rig::RtSetupReport setup;
   // Made and written before the loop (no page of it is new to the loop).
   std::unique_ptr<rig::WakeupTrace> trace;
@@ -79,6 +103,10 @@ int run_latency(const LatencyOptions& o) {
   rt.join();
 
   const auto& h = *histogram;
+  if (h.count() == 0) { // stopped by a signal before the first wake-up
+    std::fputs("hilrig latency: no wake-up measured (stopped before the first)\n", stderr);
+    return kRigFault;
+  }
   fmt::print("# hilrig latency: SCHED_FIFO priority {} ({}), cpu {} ({}), memory {}\n", o.priority,
              setup.scheduled ? "applied" : "NOT applied",
              o.cpu < 0 ? std::string("any") : std::to_string(o.cpu), setup.pinned ? "pinned" : "not pinned",

@@ -13,11 +13,14 @@
 
 #include "rig/cli/directory_lock.hpp"
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/run_evidence.hpp"
+#include "rig/cli/same_file.hpp"
 #include "rig/results/atomic_file.hpp"
 #include "rig/results/junit.hpp"
 #include "rig/results/merge.hpp"
 #include "rig/results/report_html.hpp"
 #include "rig/results/results_json.hpp"
+#include "rig/results/run_log.hpp"
 
 namespace hilrig::cli {
 namespace {
@@ -37,46 +40,38 @@ fs::path beside(const fs::path& out, const char* file) {
   return out.parent_path() / (out.stem().string() + "." + file);
 }
 
-// Whether two paths name one file: the same file when both exist (a hard link, a symbolic
-// link, "a/../a"), else the same path once the links and dots of its existing part resolve.
-bool same_file(const fs::path& a, const fs::path& b) {
-  std::error_code ec;
-  if (fs::exists(a, ec) && fs::exists(b, ec)) {
-    const bool same = fs::equivalent(a, b, ec);
-    if (!ec) return same;
-  }
-  const auto resolved = [](const fs::path& p) {
-    std::error_code e;
-    const fs::path r = fs::weakly_canonical(fs::absolute(p), e);
-    return e ? fs::absolute(p).lexically_normal() : r;
-  };
-  return resolved(a) == resolved(b);
-}
-
 // A merge whose output (or the junit.xml or report.html beside it) is one of its inputs would
-// replace a shard's evidence with the merged result: refused before anything is read. A run
-// log's directory holds its run's own results.json, junit.xml and report.html, so a merge of
-// several shards does not write those either; folding one run's own log into them, `hilrig
-// merge OUT/results.json OUT/runs.jsonl`, is the kill recovery (docs/campaigns.md) and stays.
+// replace a shard's evidence with the merged result, and one written under the name of a file
+// `hilrig run` writes (trace.vcd, junit.xml, runs.jsonl, ...) into the directory of a run whose
+// results.json or runs.jsonl is an input would replace that run's own evidence (a trace the
+// merged result links to): both refused before anything is read. Another name there
+// (merged.json, merged.junit.xml) keeps the run's files. Folding one run's own log into its
+// results.json, junit.xml and report.html, `hilrig merge OUT/results.json OUT/runs.jsonl`, is the
+// kill recovery (docs/campaigns.md) and stays.
 void refuse_overwriting_an_input(const MergeArgs& a) {
   const fs::path out(a.out);
   const std::vector<fs::path> written{out, beside(out, "junit.xml"), beside(out, "report.html")};
+  const bool kill_recovery = a.shards.size() == 1 && fs::path(a.shards.front()).extension() == ".jsonl";
+  const auto directory = [](const fs::path& p) {
+    return p.parent_path().empty() ? fs::path(".") : p.parent_path();
+  };
   for (const std::string& input : a.shards) {
-    std::vector<fs::path> kept{input};
     const fs::path in(input);
-    if (in.extension() == ".jsonl" && a.shards.size() > 1)
-      for (const char* name : {"results.json", "junit.xml", "report.html"})
-        kept.push_back(in.parent_path() / name);
-    for (const fs::path& w : written)
-      for (const fs::path& k : kept)
-        if (same_file(w, k))
-          throw std::invalid_argument(
-              k == in ? fmt::format("{} is also an input ({}): the merge would overwrite it; write the merge "
-                                    "elsewhere (e.g. merged.json)",
-                                    w.string(), input)
-                      : fmt::format("{} is the run's own file beside the input {}: the merge would overwrite "
-                                    "it; write the merge elsewhere (e.g. merged.json)",
-                                    w.string(), input));
+    const bool a_runs_own = in.filename() == "results.json" || in.filename() == rig::kRunLogName;
+    for (const fs::path& w : written) {
+      if (same_file(w, in))
+        throw std::invalid_argument(
+            fmt::format("{} is also an input ({}): the merge would overwrite it; write "
+                        "the merge elsewhere (e.g. merged.json)",
+                        w.string(), input));
+      const std::string name = w.filename().string();
+      const bool folded_back = kill_recovery && (w != out || name == "results.json");
+      if (a_runs_own && is_run_evidence(name) && !folded_back && same_file(directory(w), directory(in)))
+        throw std::invalid_argument(
+            fmt::format("{} is the run's own file beside the input {}: the merge would "
+                        "overwrite it; write the merge elsewhere (e.g. merged.json)",
+                        w.string(), input));
+    }
   }
 }
 

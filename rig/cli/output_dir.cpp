@@ -7,22 +7,7 @@
 
 namespace hilrig::cli {
 
-namespace {
-
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-} // namespace
-
-bool is_run_evidence(const std::string& name) {
-  if (ends_with(name, ".tmp")) return is_run_evidence(name.substr(0, name.size() - 4));
-  return name == "results.json" || name == "junit.xml" || name == "report.html" || name == "runs.jsonl" ||
-         name == "can.log" || name == kDirectoryLockName ||
-         (name.starts_with("trace") && ends_with(name, ".vcd")) || ends_with(name, ".gtkw");
-}
-
-OutputDirectory::OutputDirectory(const std::filesystem::path& dir) {
+OutputDirectory::OutputDirectory(const std::filesystem::path& dir, Holds holds) {
   // --out naming a file (or a path through one) is the user's to change: bad input, not a rig
   // fault. Other failures (permissions, a full disk) keep the errno text.
   std::error_code ec;
@@ -40,6 +25,7 @@ OutputDirectory::OutputDirectory(const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> evidence;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
+    if (holds == Holds::Suite && entry.is_directory()) continue; // a campaign's own, cleared when it runs
     if (!entry.is_regular_file() || !is_run_evidence(name))
       throw ForeignOutput(fmt::format("--out {}: holds {}, which hilrig run does not write: give an empty or "
                                       "new directory, or one an earlier hilrig run wrote",

@@ -9,11 +9,17 @@
 // runs (ForeignOutput, exit 2: choose another --out); otherwise every earlier campaign's evidence is removed
 // (results.json, junit.xml, report.html, runs.jsonl, trace*.vcd, can.log, *.gtkw and their *.tmp), so no
 // trace or CAN log of an earlier campaign is mistaken for this one's.
+//
+// A suite's OUT is taken the same way for the whole suite, but holds the campaigns' own
+// directories (OUT/<name>/, each taken and cleared when its campaign runs): there a
+// subdirectory is not foreign, and the files of a single campaign run there earlier
+// (results.json, runs.jsonl, trace.vcd, ...) are removed as any earlier evidence is.
 
 #include <filesystem>
 #include <stdexcept>
 
 #include "rig/cli/directory_lock.hpp"
+#include "rig/cli/run_evidence.hpp"
 
 namespace hilrig::cli {
 
@@ -26,14 +32,14 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-// Whether hilrig run writes a file of this name (so a new campaign may remove it).
-[[nodiscard]] bool is_run_evidence(const std::string& name);
-
 class OutputDirectory {
 public:
+  // What the directory holds: one campaign's files, or a suite's (its junit.xml and index
+  // report.html beside a directory per campaign).
+  enum class Holds { Campaign, Suite };
   // Creates dir, takes its lock and clears the evidence of an earlier campaign; throws
   // OutputBusy or ForeignOutput as above, std::runtime_error with the errno text otherwise.
-  explicit OutputDirectory(const std::filesystem::path& dir);
+  explicit OutputDirectory(const std::filesystem::path& dir, Holds holds = Holds::Campaign);
 
 private:
   DirectoryLock lock_;

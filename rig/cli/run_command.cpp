@@ -402,7 +402,8 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
     return kBadInput;
   }
   // Every campaign is checked before the first one runs: one bad file stops the suite with
-  // every problem listed, as a single campaign stops before its first run.
+  // every bad file listed (each with its first problem), as a single campaign stops before its
+  // first run.
   std::vector<std::unique_ptr<Prepared>> prepared;
   std::vector<SuiteEntry> chosen;
   int status = kPassed;
@@ -427,6 +428,20 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
     for (const std::string& t : o.checks.tags) what += fmt::format(" --tag {}{}", t, did_you_mean(t, names));
     err << fmt::format("hilrig run:{}: no campaign of the suite has such a check\n", what);
     return kBadInput;
+  }
+
+  // OUT itself, for the whole suite: locked against a second run, and cleared of the files of
+  // a single campaign run there earlier, so none of its results.json or trace sits beside the
+  // suite's index as if it were the suite's.
+  std::optional<OutputDirectory> out_dir;
+  try {
+    out_dir.emplace(o.out, OutputDirectory::Holds::Suite);
+  } catch (const ForeignOutput& e) {
+    err << "hilrig run: " << e.what() << '\n';
+    return kBadInput;
+  } catch (const std::exception& e) {
+    err << "hilrig run: rig fault: " << e.what() << '\n';
+    return kRigFault;
   }
 
   std::size_t total_runs = 0;
@@ -524,12 +539,14 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
 
 std::string interruption_text(const rig::CampaignResult& result, const std::string& out_dir) {
   // The signal stopped a run in the middle, or landed between two runs (the run before it
-  // finished whole and the next never started).
+  // finished whole and the next never started). A run it stopped is in the results (marked
+  // interrupted) but is not done: it is not counted among the runs done.
   const bool mid_run = result.last_run_interrupted;
+  const std::size_t whole = result.totals.runs - (mid_run && result.totals.runs > 0 ? 1 : 0);
   return fmt::format("hilrig run: interrupted by {}: {} of {} run(s) done, {}; results written to {}",
-                     result.interrupted.value_or("a signal"), result.totals.runs, result.planned_runs,
+                     result.interrupted.value_or("a signal"), whole, result.planned_runs,
                      mid_run
-                         ? "the last stopped early with every rig-driven line at its inactive level"
+                         ? "and the next stopped early with every rig-driven line at its inactive level"
                          : "the signal landed between runs (every run done is whole; none started after it)",
                      out_dir);
 }

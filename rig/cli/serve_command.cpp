@@ -169,16 +169,23 @@ void serve_main(const ServeArgs& args) {
     o.tcp_limits.idle_timeout = *idle;
   }
   if (!args.byte_timeout.empty()) {
+    // On TCP the MBAP header says where a frame ends: there is no next-byte wait to set.
+    if (o.link == ServeLink::Tcp)
+      bad_input("--byte-timeout " + args.byte_timeout +
+                ": applies to an RTU link only (--modbus-rtu or --pty); a Modbus TCP frame ends where its "
+                "MBAP length says");
     const auto wait = campaign::parse_duration(args.byte_timeout);
-    if (o.link == ServeLink::Tcp || !wait || *wait < Nanos{0} || *wait > seconds(10)) {
+    if (!wait || *wait < Nanos{0} || *wait > seconds(10)) {
       bad_input("--byte-timeout " + args.byte_timeout +
                 ": an RTU link's wait for a frame's next byte, 0s..10s, like \"100ms\"");
     }
     o.byte_timeout = *wait;
   }
   if (!args.scan.empty()) {
+    if (o.device != "ans1")
+      bad_input("--scan " + args.scan + ": applies to the ans1 only (its scan period), not to " + o.device);
     const auto scan = campaign::parse_duration(args.scan);
-    if (o.device != "ans1" || !scan || *scan < microseconds(1) || *scan > milliseconds(1)) {
+    if (!scan || *scan < microseconds(1) || *scan > milliseconds(1)) {
       bad_input("--scan " + args.scan + ": the ans1's scan period, 1us..1ms, like \"100us\"");
     }
     o.scan_period = *scan;

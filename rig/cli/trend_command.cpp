@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/same_file.hpp"
 #include "rig/results/results_json.hpp"
 #include "rig/results/trend_html.hpp"
 
@@ -21,10 +22,28 @@ struct TrendArgs {
   std::string out;
 };
 
+// An --out that is one of the nights' results.json (by any spelling) would replace that night's
+// evidence with the page, and one file given twice would be drawn as two nights: both refused
+// before anything is read or written.
+void refuse_overwriting_or_repeating_an_input(const TrendArgs& a) {
+  for (std::size_t i = 0; i < a.files.size(); ++i) {
+    if (same_file(a.out, a.files[i]))
+      throw std::invalid_argument(fmt::format("--out {} is also an input ({}): the trend would overwrite it; "
+                                              "write the page elsewhere (e.g. trend.html)",
+                                              a.out, a.files[i]));
+    for (std::size_t j = 0; j < i; ++j)
+      if (same_file(a.files[j], a.files[i]))
+        throw std::invalid_argument(fmt::format("{} and {} are one file given twice: give each night's "
+                                                "results.json once",
+                                                a.files[j], a.files[i]));
+  }
+}
+
 int run_trend(const TrendArgs& a) {
   std::vector<rig::CampaignResult> results;
   std::vector<rig::Night> nights;
   try {
+    refuse_overwriting_or_repeating_an_input(a);
     results.reserve(a.files.size());
     for (const std::string& f : a.files) results.push_back(rig::read_results_file(f));
     for (std::size_t i = 0; i < results.size(); ++i)

@@ -234,6 +234,12 @@ const GpioLine* RigConfig::line_for(std::string_view rig) const {
 
 RigConfig parse_rig_config(std::string_view text, const std::string& file_name) {
   const toml::table root = campaign::parse_toml(text, file_name);
+  // A campaign given as --rig by mistake is named as one, not by the first of its tables that a
+  // rig config has otherwise ([[host]] actions where a rig's [host] link would be).
+  if (const toml::node* c = root.get("campaign"))
+    throw CampaignError(file_name, campaign::pos_of(*c), "campaign",
+                        "a campaign file's table, in a file read as a rig config: --rig takes the rig "
+                        "config (docs/rig-config.md), the campaign is the file given before it");
   return Reader(file_name, root).read();
 }
 

@@ -419,7 +419,9 @@ CampaignResult campaign_from_json(const json& j) {
   const char* w = "results";
   if (get<std::string>(j, "format", w) != kResultsFormat)
     throw std::runtime_error("results: not a hilrig results file");
-  if (get<int>(j, "version", w) != kResultsVersion) throw std::runtime_error("results: unsupported version");
+  if (const int version = get<int>(j, "version", w); version != kResultsVersion)
+    throw std::runtime_error(fmt::format("results: unsupported version {}: hilrig {} reads version {}",
+                                         version, tool_version(), kResultsVersion));
   CampaignResult r;
   r.campaign = get<std::string>(j, "campaign", w);
   r.device = get<std::string>(j, "device", w);

@@ -65,8 +65,11 @@ void read_records(const std::filesystem::path& path, const std::function<void(Ca
     try {
       const json j = json::parse(line);
       if (!header) {
-        if (!j.is_object() || !j.contains("run_log") || j.at("run_log") != kRunLogVersion)
-          throw std::runtime_error("not a hilrig run log (version 1)");
+        if (!j.is_object() || !j.contains("run_log"))
+          throw std::runtime_error(fmt::format("not a hilrig run log (version {})", kRunLogVersion));
+        if (j.at("run_log") != kRunLogVersion)
+          throw std::runtime_error(fmt::format("run log: unsupported version {}: hilrig {} reads version {}",
+                                               j.at("run_log").dump(), tool_version(), kRunLogVersion));
         on_header(campaign_from_json(j.at("results")));
         header = true;
       } else {

@@ -186,16 +186,29 @@ TEST(CommandLine, ServeFaultListsTheChoices) {
       << r.err;
 }
 
-// --byte-timeout is an RTU link's: on TCP, or beyond 0s..10s, it is refused before anything serves.
+// --byte-timeout is an RTU link's (docs/serve.md): beyond 0s..10s it is refused naming the range,
+// and on TCP, whatever its value, naming the link it applies to; before anything serves. So is
+// --scan, the ANS1's scan period, given for another device.
 TEST(CommandLine, ServeByteTimeoutIsAnRtuDurationInItsRange) {
-  for (const char* args :
-       {"serve ans1 --modbus-tcp 0 --byte-timeout 100ms", "serve ans1 --pty --byte-timeout 11s",
-        "serve ans1 --pty --byte-timeout -1ms", "serve ans1 --pty --byte-timeout soon"}) {
+  for (const char* args : {"serve ans1 --pty --byte-timeout 11s", "serve ans1 --pty --byte-timeout -1ms",
+                           "serve ans1 --pty --byte-timeout soon"}) {
     SCOPED_TRACE(args);
     const Result r = hilrig(args);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("an RTU link's wait for a frame's next byte, 0s..10s"), std::string::npos) << r.err;
   }
+  for (const char* value : {"0s", "100ms", "10s"}) {
+    const Result tcp =
+        hilrig(std::string("serve ans1 --modbus-tcp 0 --byte-timeout ") + value, "timeout 20 ");
+    EXPECT_EQ(tcp.status, 2) << value;
+    EXPECT_NE(tcp.err.find(std::string("--byte-timeout ") + value + ": applies to an RTU link only"),
+              std::string::npos)
+        << tcp.err;
+    EXPECT_EQ(tcp.err.find("0s..10s"), std::string::npos) << tcp.err;
+  }
+  const Result scan = hilrig("serve pls2700 --modbus-tcp 0 --scan 100us", "timeout 20 ");
+  EXPECT_EQ(scan.status, 2);
+  EXPECT_NE(scan.err.find("--scan 100us: applies to the ans1 only"), std::string::npos) << scan.err;
 }
 
 // `hilrig serve --help` names every device's fault variants, the same list a wrong one is

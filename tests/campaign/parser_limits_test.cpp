@@ -15,6 +15,7 @@
 
 #include "campaign_text.hpp"
 #include "rig/campaign/campaign_parser.hpp"
+#include "rig/campaign/duration.hpp"
 #include "rig/campaign/limits.hpp"
 #include "rig/campaign/toml_file.hpp"
 #include "rig/duts/dut.hpp"
@@ -117,6 +118,39 @@ TEST(CampaignLimits, CampaignTimesOutsideTheRigsRangeAreRefused) {
         << good;
   EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nedge_tolerance = \"-1us\""),
                           "t.toml:4:18: campaign.edge_tolerance: a duration in 1ns .. 1s"));
+}
+
+// A duration too long for 64-bit nanoseconds is a duration out of range, not "a duration with a
+// unit" missing: the key's range is named as for one just past it (docs/campaigns.md, "Ranges
+// and limits"), either sign; one too short to hold is 0 ns, as 0.4ns rounds.
+TEST(CampaignLimits, DurationsTooLongToHoldAreOutOfTheKeysRange) {
+  for (const char* too_long : {"\"99999999999999999999s\"", "\"1e400s\"", "\"20000000000000000000000ns\"",
+                               "\"9000000001s\"", "\"-1e400s\""})
+    EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, fmt::format("end = {}", too_long)),
+                            "t.toml:3:7: campaign.end: a duration in 1ns .. 3600s"))
+        << too_long;
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"1e-400s\""),
+                          "t.toml:3:7: campaign.end: a duration in 1ns .. 3600s"));
+  // A swept one and a device parameter name their own ranges.
+  EXPECT_TRUE(
+      rejected_at(test::kValidCampaign + "[[sweep]]\nkey = \"dut.params.scan\"\nvalues = [\"1e400s\"]\n",
+                  "t.toml:33:11: dut.params.scan: a value in 1us .. 100ms"));
+  // Still not a duration: no unit, or not a number.
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"1e400\""),
+                          "t.toml:3:7: campaign.end: expected a duration with a unit"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 3, "end = \"infs\""),
+                          "t.toml:3:7: campaign.end: expected a duration with a unit"));
+}
+
+TEST(CampaignLimits, DurationTextIsClampedOnlyBeyondWhatItHolds) {
+  EXPECT_EQ(parse_duration_clamped("9000000000s"), kMaxDurationText); // the longest held, exactly
+  EXPECT_EQ(parse_duration("9000000000s"), kMaxDurationText);
+  EXPECT_EQ(parse_duration_clamped("9000000001s"), kMaxDurationText); // one second beyond: clamped
+  EXPECT_EQ(parse_duration("9000000001s"), std::nullopt);             // and refused unclamped
+  EXPECT_EQ(parse_duration_clamped("-1e400s"), Nanos{-kMaxDurationText.count()});
+  EXPECT_EQ(parse_duration_clamped("1e-400s"), Nanos{0});
+  EXPECT_EQ(parse_duration_clamped("1e400"), std::nullopt); // no unit
+  EXPECT_EQ(parse_duration_clamped("nans"), std::nullopt);
 }
 
 // ---- speeds the rig cannot make ------------------------------------------------------------

@@ -340,6 +340,24 @@ TEST(CampaignParser, ErrorThatASweepPointMakesNamesThePoint) {
   EXPECT_NE(got.find("(in sweep point encoder.lines=1000000)"), std::string::npos) << got;
 }
 
+// An error the file has whatever the point (a name too long, an unknown key, a bad repeat) is
+// the file's: it names no sweep point, as the point has nothing to do with it (one a point makes
+// still names it: ErrorThatASweepPointMakesNamesThePoint).
+TEST(CampaignParser, ErrorOfTheFileWhateverThePointNamesNoPoint) {
+  const std::string sweep = "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", \"100us\"]\n";
+  const std::string name65 = replace_line(test::kValidCampaign, 2, "name = \"" + std::string(65, 'n') + "\"");
+  const std::string unknown = replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nsede = 1");
+  const std::string repeat = replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 0");
+  for (const std::string& text : {name65 + sweep, unknown + sweep, repeat + sweep}) {
+    const std::string got = error_of(text);
+    EXPECT_EQ(got.find("(in sweep point"), std::string::npos) << got;
+  }
+  EXPECT_TRUE(
+      rejected_at(name65 + sweep, "t.toml:2:8: campaign.name: the campaign's name: 1 .. 64 printable"));
+  EXPECT_TRUE(rejected_at(unknown + sweep, "t.toml:4:1: campaign.sede: unknown key"));
+  EXPECT_TRUE(rejected_at(repeat + sweep, "t.toml:4:10: campaign.repeat: a repetition count in 1 .. 10000"));
+}
+
 TEST(CampaignParser, SweepsMakeTheCartesianProductLastAxisFastest) {
   const std::string text = replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 2") +
                            "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", \"100us\"]\n"

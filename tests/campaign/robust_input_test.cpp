@@ -1,7 +1,9 @@
 // Bad input found by a robustness audit, each refused before anything runs (exit 2, naming
-// what and where) without losing what was already captured, and incomplete evidence judged 3.
+// what and where) without losing what was already captured, and incomplete evidence or a failed
+// write judged 3.
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -10,7 +12,10 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "tests/campaign/hilrig_process.hpp"
@@ -187,6 +192,162 @@ TEST(RobustInput, CompareWarnsOfAThresholdThatNamesNothing) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("warning: --threshold nosuch: no measurement"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("--threshold max"), std::string::npos) << r.err;
+}
+
+// Every *.tmp left anywhere under dir (the docs promise none after a failed write).
+std::vector<std::string> tmp_files_under(const fs::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.path().extension() == ".tmp") found.push_back(e.path().string());
+  return found;
+}
+
+// A file size limit (`ulimit -f`) is a failed write as a full disk is (docs/campaigns.md, "The
+// output directory"): exit 3 with the system's reason and no *.tmp left, not a process killed by
+// SIGXFSZ (exit 153, no message, trace.vcd.tmp left). The limit is in 512-byte blocks (popen's
+// sh is dash): 64 blocks cut this campaign's report.html (over 200 kB) with or without traces,
+// 1024 its trace.vcd (over 1 MB) and the trace spill the runs record into.
+TEST(RobustInput, AFileSizeLimitIsAFailedWriteNotAKill) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_file_size");
+  const std::pair<const char*, const char*> cases[] = {{"64", "all"}, {"64", "none"}, {"1024", "all"}};
+  for (const auto& [blocks, trace] : cases) {
+    SCOPED_TRACE(std::string("ulimit -f ") + blocks + ", --trace " + trace);
+    const fs::path out = dir / (std::string("out") + blocks + trace);
+    const Result r = hilrig("run " + kPass + " --epoch 1 --out " + out.string() + " --trace " + trace,
+                            std::string("ulimit -f ") + blocks + "; ");
+    EXPECT_EQ(r.status, 3) << r.err;
+    EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
+    EXPECT_EQ(tmp_files_under(out), std::vector<std::string>{});
+  }
+  // Every command that writes: merge's output under the same limit fails the same way.
+  ASSERT_EQ(hilrig("run " + kPass + " --out " + (dir / "whole").string() + " --trace none").status, 0);
+  const Result merged = hilrig("merge " + (dir / "merged" / "m.json").string() + " " +
+                                   (dir / "whole" / "results.json").string(),
+                               "ulimit -f 8; ");
+  EXPECT_NE(merged.status, 0) << merged.err;
+  EXPECT_LT(merged.status, 128) << "killed by a signal";
+  EXPECT_NE(merged.err.find("File too large"), std::string::npos) << merged.err;
+  EXPECT_EQ(tmp_files_under(dir / "merged"), std::vector<std::string>{});
+}
+
+// `trend --out` naming one of its inputs, by any spelling (the path as given, a symbolic link,
+// "DIR/../DIR/results.json"), would replace that night's results.json with the page: refused, 2,
+// the input as it was and no page written; one file given twice is not two nights.
+TEST(RobustInput, TrendRefusesToOverwriteAnInputOrReadOneTwice) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_trend_inputs");
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "night").string()).status, 0);
+  const fs::path results = dir / "night" / "results.json";
+  const std::string before = test::read_file(results);
+  fs::create_symlink(results, dir / "alias.json");
+  const std::string other_spelling = (dir / "night" / ".." / "night" / "results.json").string();
+  for (const std::string& out : {results.string(), (dir / "alias.json").string(), other_spelling}) {
+    const Result r = hilrig("trend " + results.string() + " --out " + out);
+    EXPECT_EQ(r.status, 2) << out << ": " << r.err;
+    EXPECT_NE(r.err.find("is also an input"), std::string::npos) << r.err;
+    EXPECT_EQ(test::read_file(results), before);
+  }
+  for (const std::string& again : {results.string(), (dir / "alias.json").string(), other_spelling}) {
+    const Result r =
+        hilrig("trend " + results.string() + " " + again + " --out " + (dir / "t.html").string());
+    EXPECT_EQ(r.status, 2) << again << ": " << r.err;
+    EXPECT_NE(r.err.find("are one file given twice"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "t.html"));
+  }
+  // Beside it under another name, it is written.
+  const Result ok = hilrig("trend " + results.string() + " --out " + (dir / "night" / "trend.html").string());
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(test::read_file(results), before);
+}
+
+// A merge written into a shard's run directory under the name of a file the run wrote (its
+// trace.vcd, which the merged result links to, its junit.xml) would replace that evidence:
+// refused, 2, every file as it was and nothing written (not even NAME.junit.xml beside it).
+TEST(RobustInput, MergeRefusesToWriteOverAShardsOwnFiles) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_merge_run_files");
+  for (const char* k : {"0", "1"})
+    ASSERT_EQ(
+        hilrig("run " + kPass + " --shard " + k + "/2 --epoch 1 --out " + (dir / "s").string() + k).status,
+        0);
+  const fs::path s0 = dir / "s0";
+  const std::string inputs = (s0 / "results.json").string() + " " + (dir / "s1" / "results.json").string();
+  ASSERT_TRUE(fs::exists(s0 / "trace.vcd"));
+  const std::string trace = test::read_file(s0 / "trace.vcd");
+  const std::string junit = test::read_file(s0 / "junit.xml");
+  for (const char* name : {"trace.vcd", "junit.xml", "report.html", "runs.jsonl", "can.log"}) {
+    const Result r = hilrig("merge " + (s0 / name).string() + " " + inputs);
+    EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+    EXPECT_NE(r.err.find("the run's own file beside the input"), std::string::npos) << r.err;
+  }
+  // The other shard's directory, and a spelling through "..", alike.
+  const Result other = hilrig("merge " + (dir / "s1" / "trace.vcd").string() + " " + inputs);
+  EXPECT_EQ(other.status, 2) << other.err;
+  const Result dots = hilrig("merge " + (dir / "s1" / ".." / "s0" / "trace.vcd").string() + " " + inputs);
+  EXPECT_EQ(dots.status, 2) << dots.err;
+  EXPECT_EQ(test::read_file(s0 / "trace.vcd"), trace);
+  EXPECT_EQ(test::read_file(s0 / "junit.xml"), junit);
+  for (const char* name : {"trace.junit.xml", "trace.report.html", "junit.junit.xml", "can.junit.xml"})
+    EXPECT_FALSE(fs::exists(s0 / name)) << name;
+  // Merged files named as no run's file, beside the shards, are still written.
+  EXPECT_EQ(hilrig("merge " + (dir / "merged.json").string() + " " + inputs).status, 0);
+}
+
+// The messages of bad input say what was wrong where it was: a campaign given as --rig is named
+// as one read as a rig config; a file that is not there has no 0:0 position and gives the
+// system's reason; a results file of another version names the version found and the one read.
+TEST(RobustInput, MessagesNameWhatWasReadAndFound) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_messages");
+  const Result rig = hilrig("run " + kPass + " --out " + (dir / "rig").string() + " --rig " + kPass);
+  EXPECT_EQ(rig.status, 2) << rig.err;
+  EXPECT_NE(rig.err.find("campaign: a campaign file's table, in a file read as a rig config"),
+            std::string::npos)
+      << rig.err;
+  EXPECT_FALSE(fs::exists(dir / "rig" / "results.json"));
+  const std::string nowhere = (dir / "nowhere.toml").string();
+  const Result missing = hilrig("run " + kPass + " --out " + (dir / "rig").string() + " --rig " + nowhere);
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(missing.err,
+            nowhere + ": file: a readable rig config file (cannot open it: No such file or directory)\n");
+  const fs::path huge = test::write_file(dir, "huge.toml", std::string(1048577, '#'));
+  const Result big = hilrig("check " + huge.string());
+  EXPECT_EQ(big.status, 2);
+  EXPECT_EQ(big.err, huge.string() + ": file: a campaign file of at most 1048576 bytes\n");
+  ASSERT_EQ(hilrig("run " + kPass + " --trace none --out " + (dir / "ran").string()).status, 0);
+  nlohmann::json results = nlohmann::json::parse(test::read_file(dir / "ran" / "results.json"));
+  results["version"] = 3;
+  std::ofstream(dir / "v3.json") << results.dump();
+  const Result v3 = hilrig("merge " + (dir / "m.json").string() + " " + (dir / "v3.json").string());
+  EXPECT_EQ(v3.status, 2);
+  EXPECT_NE(v3.err.find("unsupported version 3: hilrig "), std::string::npos) << v3.err;
+  EXPECT_NE(v3.err.find(" reads version 2"), std::string::npos) << v3.err;
+}
+
+// `latency --cpu N` beyond the machine's CPUs would run unpinned (its header saying so in
+// passing), and a --duration shorter than one --interval measures no wake-up (a table of 0 µs):
+// both refused before anything runs, 2, naming the range. The last CPU and exactly one interval
+// are measured (priority 0: no SCHED_FIFO needed).
+TEST(RobustInput, LatencyRefusesACpuItHasNotAndADurationWithoutAWakeUp) {
+  const long cpus = ::sysconf(_SC_NPROCESSORS_CONF);
+  ASSERT_GT(cpus, 0);
+  const Result beyond = hilrig(fmt::format("latency --priority 0 --duration 0.01 --quiet --cpu {}", cpus));
+  EXPECT_EQ(beyond.status, 2) << beyond.err;
+  EXPECT_NE(beyond.err.find(fmt::format("--cpu {}: this machine has CPUs 0 .. {}", cpus, cpus - 1)),
+            std::string::npos)
+      << beyond.err;
+  EXPECT_EQ(beyond.out, "");
+  const Result last = hilrig(fmt::format("latency --priority 0 --duration 0.01 --quiet --cpu {}", cpus - 1));
+  EXPECT_EQ(last.status, 0) << last.err;
+  for (const char* duration : {"1e-9", "0.000999"}) {
+    const Result short_one =
+        hilrig(std::string("latency --priority 0 --quiet --interval 1000 --duration ") + duration);
+    EXPECT_EQ(short_one.status, 2) << duration << ": " << short_one.err;
+    EXPECT_NE(short_one.err.find("shorter than one --interval (1000 us): at least 0.001 s"),
+              std::string::npos)
+        << short_one.err;
+    EXPECT_EQ(short_one.out, "");
+  }
+  const Result one = hilrig("latency --priority 0 --quiet --interval 1000 --duration 0.001");
+  EXPECT_EQ(one.status, 0) << one.err;
+  EXPECT_NE(one.out.find("C:      1 "), std::string::npos) << one.out;
 }
 
 } // namespace

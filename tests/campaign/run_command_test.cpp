@@ -374,11 +374,15 @@ TEST(RunCommand, SignalBetweenRunsIsReportedAsSuch) {
             std::string::npos)
       << text;
   EXPECT_EQ(text.find("stopped early"), std::string::npos) << text;
-  // A run the signal cut short is still reported as stopped early.
+  // A run the signal cut short is reported as stopped early, and not as done: with no run
+  // finished before it, none of the 4 is done.
   rig::CampaignResult cut = r;
   cut.runs[0].interrupted = true;
   rig::finalize(cut);
-  EXPECT_NE(interruption_text(cut, "out").find("the last stopped early"), std::string::npos);
+  const std::string cut_text = interruption_text(cut, "out");
+  EXPECT_NE(cut_text.find("interrupted by SIGTERM: 0 of 4 run(s) done, and the next stopped early"),
+            std::string::npos)
+      << cut_text;
 }
 
 // Streaming the runs: with a recorder the executive keeps no run whatever the run count (the
@@ -811,6 +815,41 @@ TEST(RunSuite, SingleFileKeepsItsOutputsInOut) {
             "reference-pls-pass: 4 run(s), 4 passed, 0 failed, 0 errored; faults caught 0/0; verdict pass\n"
             "report: " +
                 (dir / "out" / "report.html").string() + "\n");
+}
+
+// A suite run into a directory a single campaign wrote: that campaign's results.json, run log
+// and trace are removed first, as any earlier campaign's are (docs/campaigns.md, "The output
+// directory"), so none sits beside the suite's junit.xml and index as the suite's. A file hilrig
+// does not write there is refused (2) and a directory another run holds (3), nothing run.
+TEST(RunSuite, ASingleCampaignsFilesInOutAreClearedFirst) {
+  const fs::path dir = scratch("suite_over_single");
+  const fs::path out = dir / "out";
+  ASSERT_EQ(run(campaign::test::shipped("reference_pls_pass.toml"), out), 0);
+  for (const char* f : {"results.json", "runs.jsonl", "trace.vcd"}) ASSERT_TRUE(fs::exists(out / f)) << f;
+  const std::string a = write_file(dir, "a.toml", passing_campaign("a")).string();
+  const std::string b = write_file(dir, "b.toml", passing_campaign("b")).string();
+  const SuiteRun r = run_suite({a, b}, out);
+  EXPECT_EQ(r.status, 0) << r.err;
+  for (const char* f : {"results.json", "runs.jsonl", "trace.vcd"}) EXPECT_FALSE(fs::exists(out / f)) << f;
+  for (const char* sub : {"a", "b"}) EXPECT_TRUE(fs::exists(out / sub / "results.json")) << sub;
+  EXPECT_NE(hilrig::test::read_file(out / "junit.xml").find("<testsuites name=\"hilrig suite: "),
+            std::string::npos);
+  // Run again over itself: the suite's own files and directories are taken as they are.
+  EXPECT_EQ(run_suite({a, b}, out).status, 0);
+
+  const fs::path foreign = scratch("suite_over_foreign");
+  write_file(foreign, "notes.txt", "mine\n");
+  const SuiteRun f = run_suite({a, b}, foreign);
+  EXPECT_EQ(f.status, 2);
+  EXPECT_NE(f.err.find("holds notes.txt, which hilrig run does not write"), std::string::npos) << f.err;
+  EXPECT_FALSE(fs::exists(foreign / "a"));
+  EXPECT_EQ(hilrig::test::read_file(foreign / "notes.txt"), "mine\n");
+
+  const OutputDirectory held(dir / "busy"); // another run holds it
+  const SuiteRun busy = run_suite({a, b}, dir / "busy");
+  EXPECT_EQ(busy.status, 3);
+  EXPECT_NE(busy.err.find("another hilrig run is writing this directory"), std::string::npos) << busy.err;
+  EXPECT_FALSE(fs::exists(dir / "busy" / "a"));
 }
 
 // ---- --only and --tag --------------------------------------------------------------------

@@ -264,11 +264,14 @@ class Browser:
 
 
 def trend_problems(hilrig, browser, scratch, reports):
-    """hilrig trend over two nights of one campaign (the same results twice): a figure per
-    measurement, each drawn with its limits on the canvas, and no JavaScript error."""
+    """hilrig trend over two nights of one campaign (the same results in two files: one file
+    given twice is refused): a figure per measurement, each drawn with its limits on the
+    canvas, and no JavaScript error."""
     night = next(r for r in reports if r.parent.name == "ans1_throughput").parent / "results.json"
+    second = scratch / "second-night.json"
+    shutil.copyfile(night, second)
     page = scratch / "trend.html"
-    subprocess.run([hilrig, "trend", str(night), str(night), "--out", str(page)], capture_output=True)
+    subprocess.run([hilrig, "trend", str(night), str(second), "--out", str(page)], capture_output=True)
     if not page.exists():
         return ["hilrig trend wrote no page"]
     found = browser.inspect(page, scratch / "trend.png")
