@@ -74,4 +74,34 @@ inline ::testing::AssertionResult rejected_at(const std::string& text, const std
   return ::testing::AssertionFailure() << "expected prefix \"" << prefix << "\", got \"" << got << "\"";
 }
 
+// A reference PLS whose EN input is debounced by a 1 ms filter (its param), judged by a
+// debounce check (filter 1000 us ± 250, probes 100 .. 3000 us from 1 ms); the check's table
+// ends the text, so cases append keys to it.
+inline const std::string kDebounce = R"([campaign]
+name = "debounce"
+end = "6ms"
+[dut]
+model = "reference_pls"
+[dut.params]
+preset = 150
+filter = "1ms"
+[[wiring]]
+rig = "en"
+board = "EN"
+[[wiring]]
+rig = "ls1"
+board = "OUT"
+[[check]]
+kind = "debounce"
+name = "en_filter"
+input = "en"
+output = "ls1"
+filter_us = 1000
+tolerance_us = 250
+narrow_us = 100
+wide_us = 3000
+resolution_us = 5
+probe_at = "1ms"
+)";
+
 } // namespace hilrig::campaign::test

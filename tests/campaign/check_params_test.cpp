@@ -55,36 +55,15 @@ TEST(CheckParams, ACampaignWithNoCheckIsBadInput) {
 // running at campaign.end could not be seen accepted, so a board within the limits would fail.
 // Here the last start is at 1 ms + 180 us (scan_us 200 over 10 phases) and wide_us is 3 ms.
 std::string debounce_ending(const std::string& end) {
-  return R"([campaign]
-name = "debounce"
-end = ")" +
-         end + R"("
-[dut]
-model = "reference_pls"
-[[wiring]]
-rig = "en"
-board = "EN"
-[[wiring]]
-rig = "ls1"
-board = "OUT"
-[[check]]
-kind = "debounce"
-name = "en_filter"
-input = "en"
-output = "ls1"
-filter_us = 1000
-tolerance_us = 250
-narrow_us = 100
-wide_us = 3000
-scan_us = 200
-probe_at = "1ms"
-)";
+  std::string t = test::kDebounce + "scan_us = 200\n";
+  t.replace(t.find("end = \"6ms\""), 11, "end = \"" + end + "\"");
+  return t;
 }
 
 TEST(CheckParams, DebounceProbesEndWithinTheRun) {
   EXPECT_EQ(error_of(debounce_ending("4.18ms")), "accepted");
   EXPECT_EQ(error_of(debounce_ending("4.179999ms")),
-            "t.toml:20:11: check[0].wide_us: a probe that ends within the run: the last start phase at 1.18 "
+            "t.toml:23:11: check[0].wide_us: a probe that ends within the run: the last start phase at 1.18 "
             "ms + wide_us ends at 4.18 ms, after campaign.end (4.179999 ms)");
 }
 

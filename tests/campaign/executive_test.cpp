@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "campaign_text.hpp"
+
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -198,35 +200,8 @@ TEST(Executive, RunSeedsDependOnIndexAndBaseSeed) {
 // EN wired and held by the shaft inside the window (count 150): a pulse on EN turns OUT
 // on only when EN is high at a scan at least `filter` (1 ms) after it rose. With scans
 // every 200 us the narrowest accepted pulse is in (1000, 1200] us; with no filter, (0, 200].
-const std::string kDebounce = R"([campaign]
-name = "debounce"
-end = "6ms"
-[dut]
-model = "reference_pls"
-[dut.params]
-preset = 150
-filter = "1ms"
-[[wiring]]
-rig = "en"
-board = "EN"
-[[wiring]]
-rig = "ls1"
-board = "OUT"
-[[check]]
-kind = "debounce"
-name = "en_filter"
-input = "en"
-output = "ls1"
-filter_us = 1000
-tolerance_us = 250
-narrow_us = 100
-wide_us = 3000
-resolution_us = 5
-probe_at = "1ms"
-)";
-
 TEST(Executive, DebounceBoundaryFoundByBisection) {
-  const Campaign c = parse_campaign(kDebounce, "t.toml");
+  const Campaign c = parse_campaign(test::kDebounce, "t.toml");
   const auto r = run_everything(c);
   const auto* boundary = find(r.runs[0], "en_filter.boundary");
   ASSERT_NE(boundary, nullptr);
@@ -237,7 +212,8 @@ TEST(Executive, DebounceBoundaryFoundByBisection) {
 
 TEST(Executive, DebounceCatchesAnUnfilteredInput) {
   const Campaign c = parse_campaign(
-      kDebounce + "[[fault]]\nname = \"nf\"\nvariant = \"no-filter\"\ncaught_by = \"en_filter\"\n", "t.toml");
+      test::kDebounce + "[[fault]]\nname = \"nf\"\nvariant = \"no-filter\"\ncaught_by = \"en_filter\"\n",
+      "t.toml");
   const auto r = run_everything(c);
   ASSERT_EQ(r.runs.size(), 2U);
   const auto* boundary = find(r.runs[1], "en_filter.boundary");
@@ -254,7 +230,7 @@ TEST(Executive, DebounceCatchesAnUnfilteredInput) {
 // us apart, so a filter one bin (20 us) longer shows a boundary over 1200 us at some start and
 // one bin shorter a boundary under 1000 us: both fail, whatever the board's phase (the seed).
 std::string phased_debounce(const std::string& filter, std::uint64_t seed) {
-  std::string t = kDebounce;
+  std::string t = test::kDebounce;
   const auto swap = [&t](const std::string& from, const std::string& to) {
     t.replace(t.find(from), from.size(), to);
   };

@@ -264,56 +264,56 @@ TEST(Registry, DebouncePlanThenCheck) {
             "wide_us");
 }
 
+// ans1_debounce's check (filter 27,500 us ± 500, probes 5 .. 60 ms) with `extra` keys.
+json ans1_debounce_with(json extra) {
+  json t{{"filter_us", 27500}, {"tolerance_us", 500}, {"narrow_us", 5000},
+         {"wide_us", 60000},   {"input", "i"},        {"output", "o"}};
+  if (!extra.is_null()) t.update(extra); // {} is null
+  return t;
+}
+
 TEST(Registry, DebounceStartPhasesAreValidatedWithTheirKey) {
-  const json base{{"filter_us", 27500}, {"tolerance_us", 500}, {"narrow_us", 5000},
-                  {"wide_us", 60000},   {"input", "i"},        {"output", "o"}};
-  const auto with = [&](json extra) {
-    json t = base;
-    t.update(extra);
-    return t;
-  };
   // scan_us given: probe_phases defaults to phase_bins (10), each start's coverage reported.
-  const auto p = std::get<DebounceParams>(build("debounce", with({{"scan_us", 1000}})));
+  const auto p = std::get<DebounceParams>(build("debounce", ans1_debounce_with({{"scan_us", 1000}})));
   ASSERT_TRUE(p.phase);
   EXPECT_EQ(p.phase->scan, 1_ms);
   EXPECT_EQ(p.probe_phases, 10U);
   EXPECT_EQ(
-      std::get<DebounceParams>(build("debounce", with({{"scan_us", 1000}, {"phase_bins", 4}}))).probe_phases,
+      std::get<DebounceParams>(build("debounce", ans1_debounce_with({{"scan_us", 1000}, {"phase_bins", 4}})))
+          .probe_phases,
       4U);
-  EXPECT_EQ(std::get<DebounceParams>(build("debounce", json(base))).probe_phases, 1U);
-  EXPECT_EQ(problem("debounce", with({{"probe_phases", 5}})), "probe_phases"); // only with scan_us
-  EXPECT_EQ(problem("debounce", with({{"phase_bins", 5}})), "phase_bins");
+  EXPECT_EQ(std::get<DebounceParams>(build("debounce", ans1_debounce_with({}))).probe_phases, 1U);
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"probe_phases", 5}})),
+            "probe_phases"); // only with scan_us
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"phase_bins", 5}})), "phase_bins");
   for (const double bad : {0.0, 1001.0, 2.5, -1.0})
-    EXPECT_EQ(problem("debounce", with({{"scan_us", 1000}, {"probe_phases", bad}})), "probe_phases") << bad;
-  EXPECT_EQ(problem("debounce", with({{"scan_us", 0.5}, {"probe_phases", 501}})), "probe_phases"); // > 1/ns
-  EXPECT_EQ(problem("debounce", with({{"scan_us", 0}})), "scan_us");
+    EXPECT_EQ(problem("debounce", ans1_debounce_with({{"scan_us", 1000}, {"probe_phases", bad}})),
+              "probe_phases")
+        << bad;
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"scan_us", 0.5}, {"probe_phases", 501}})),
+            "probe_phases"); // > 1/ns
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"scan_us", 0}})), "scan_us");
   // The limit probe a hair short of filter - tolerance must be a pulse.
-  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27500}})), "tolerance_us");
-  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27499.999}})), "tolerance_us");             // 0 ns
-  EXPECT_EQ(problem("debounce", with({{"tolerance_us", 27499.998}, {"narrow_us", 0.001}})), "ok"); // 1 ns
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"tolerance_us", 27500}})), "tolerance_us");
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"tolerance_us", 27499.999}})), "tolerance_us"); // 0 ns
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"tolerance_us", 27499.998}, {"narrow_us", 0.001}})),
+            "ok"); // 1 ns
 }
 
 // narrow_us and wide_us bracket a board outside [filter - tolerance, filter + tolerance]: a
 // narrowest probe that a board within the limits may accept, or a widest one it may reject,
 // is refused. Limits 27,000 .. 28,000 us (filter 27,500, tolerance 500, as ans1_debounce).
 TEST(Registry, DebounceProbeWidthsLieOutsideTheLimits) {
-  const json base{{"filter_us", 27500}, {"tolerance_us", 500}, {"narrow_us", 5000},
-                  {"wide_us", 60000},   {"input", "i"},        {"output", "o"}};
-  const auto with = [&](json extra) {
-    json t = base;
-    t.update(extra);
-    return t;
-  };
-  EXPECT_EQ(problem("debounce", with({{"narrow_us", 26999.999}})), "ok");    // 1 ns short of 27 ms
-  EXPECT_EQ(problem("debounce", with({{"narrow_us", 27000}})), "narrow_us"); // may be accepted
-  EXPECT_EQ(problem("debounce", with({{"narrow_us", 27000.001}})), "narrow_us");
-  EXPECT_EQ(problem("debounce", with({{"wide_us", 28000}})), "ok");          // must be accepted
-  EXPECT_EQ(problem("debounce", with({{"wide_us", 27999.999}})), "wide_us"); // may be rejected
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"narrow_us", 26999.999}})), "ok"); // 1 ns short of 27 ms
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"narrow_us", 27000}})), "narrow_us"); // may be accepted
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"narrow_us", 27000.001}})), "narrow_us");
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"wide_us", 28000}})), "ok");          // must be accepted
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"wide_us", 27999.999}})), "wide_us"); // may be rejected
   // A pulse width is 1 ns .. 3600 s (docs/campaigns.md, "Times").
-  EXPECT_EQ(problem("debounce", with({{"wide_us", 3.6e9}})), "ok");
-  EXPECT_EQ(problem("debounce", with({{"wide_us", 3.6e9 + 0.001}})), "wide_us");
-  EXPECT_EQ(problem("debounce", with({{"narrow_us", 0.001}})), "ok");
-  EXPECT_EQ(problem("debounce", with({{"narrow_us", 0.0004}})), "narrow_us"); // 0 ns
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"wide_us", 3.6e9}})), "ok");
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"wide_us", 3.6e9 + 0.001}})), "wide_us");
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"narrow_us", 0.001}})), "ok");
+  EXPECT_EQ(problem("debounce", ans1_debounce_with({{"narrow_us", 0.0004}})), "narrow_us"); // 0 ns
 }
 
 // A p99 limit above limit_us could never fail (every latency is judged against limit_us).
