@@ -85,8 +85,8 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
       const std::string open =
           reaches.open_at_end
               ? fmt::format(
-                    " (and once more with the shaft still within {} counts of it when the span ended: "
-                    "a board within the tolerance may fire after that)",
+                    ", the last with the shaft still within {} counts of it when the span ended (a board "
+                    "within the tolerance may fire after that: not judged)",
                     c.tolerance)
               : std::string();
       Measurement m =
@@ -96,7 +96,8 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
                                   c.target, span)
                     : fmt::format("nothing judged against min_edges: the shaft reached {} {} time(s){}{}, "
                                   "fewer than min_edges ({}); {} edges: {}",
-                                  c.target, times, span, open, c.min_edges, level_name(c.level), n));
+                                  c.target, times + (reaches.open_at_end ? 1 : 0), span, open, c.min_edges,
+                                  level_name(c.level), n));
       m.value = static_cast<double>(n);
       m.lower = static_cast<double>(c.min_edges);
       r.measurements.insert(r.measurements.begin(), std::move(m));

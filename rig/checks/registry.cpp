@@ -876,7 +876,9 @@ std::string expected_text(const ParamSpec& p) {
   // The least number that rounds to 1 ns: half a ns in the unit (0.0005 us, 0.0000005 ms).
   std::string least = fmt::format("{:.9f}", 0.5 / p.duration_ns);
   least.erase(least.find_last_not_of('0') + 1);
-  return fmt::format("{} >= {} (at least 1 ns once rounded to whole ns)", expected_text(p.type, {}), least);
+  const std::string most = p.range.max ? fmt::format(" and <= {}", *p.range.max) : std::string();
+  return fmt::format("{} >= {}{} (at least 1 ns once rounded to whole ns)", expected_text(p.type, {}), least,
+                     most);
 }
 
 const std::vector<CheckKind>& check_kinds() {

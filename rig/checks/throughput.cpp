@@ -75,7 +75,11 @@ CheckResult check_throughput(std::span<const Nanos> crossings, std::span<const E
       ++missing;
     }
   }
-  std::string missing_detail = "every crossing produced an output edge";
+  std::string missing_detail =
+      cut == 0 ? "every crossing produced an output edge"
+               : fmt::format("every crossing judged produced an output edge ({} not judged: "
+                             "the capture ended within limit_us of it)",
+                             cut);
   if (first_missing) {
     // Without `early` the search starts at the crossing; an open end (no timeout, the last
     // crossing) is not a time to print.

@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "rig/cli/exit_status.hpp"
+#include "rig/cli/run_evidence.hpp"
 #include "rig/cli/same_file.hpp"
 #include "rig/results/results_json.hpp"
 #include "rig/results/trend_html.hpp"
@@ -22,15 +24,25 @@ struct TrendArgs {
   std::string out;
 };
 
-// An --out that is one of the nights' results.json (by any spelling) would replace that night's
-// evidence with the page, and one file given twice would be drawn as two nights: both refused
-// before anything is read or written.
+// An --out that is one of the nights' results.json (by any spelling), or a file `hilrig run`
+// wrote beside one (its trace.vcd, junit.xml, ...), would replace that night's evidence with the
+// page, and one file given twice would be drawn as two nights: all refused before anything is
+// read or written.
 void refuse_overwriting_or_repeating_an_input(const TrendArgs& a) {
+  const std::filesystem::path out(a.out);
+  const auto directory = [](const std::filesystem::path& p) {
+    return p.parent_path().empty() ? std::filesystem::path(".") : p.parent_path();
+  };
   for (std::size_t i = 0; i < a.files.size(); ++i) {
     if (same_file(a.out, a.files[i]))
       throw std::invalid_argument(fmt::format("--out {} is also an input ({}): the trend would overwrite it; "
                                               "write the page elsewhere (e.g. trend.html)",
                                               a.out, a.files[i]));
+    if (is_run_evidence(out.filename().string()) && same_file(directory(out), directory(a.files[i])))
+      throw std::invalid_argument(
+          fmt::format("--out {} is the run's own file beside the input {}: the trend "
+                      "would overwrite it; write the page elsewhere (e.g. trend.html)",
+                      a.out, a.files[i]));
     for (std::size_t j = 0; j < i; ++j)
       if (same_file(a.files[j], a.files[i]))
         throw std::invalid_argument(fmt::format("{} and {} are one file given twice: give each night's "

@@ -253,6 +253,19 @@ TEST(RobustInput, TrendRefusesToOverwriteAnInputOrReadOneTwice) {
     EXPECT_NE(r.err.find("are one file given twice"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "t.html"));
   }
+  // Beside it under the name of a file the run wrote: refused, the run's file as it was.
+  for (const char* name : {"trace.vcd", "junit.xml", "report.html", "runs.jsonl"}) {
+    const fs::path file = dir / "night" / name;
+    const bool existed = fs::exists(file);
+    const std::string kept = existed ? test::read_file(file) : std::string();
+    const Result r = hilrig("trend " + results.string() + " --out " + file.string());
+    EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+    EXPECT_NE(r.err.find("is the run's own file beside the input"), std::string::npos) << r.err;
+    EXPECT_EQ(fs::exists(file), existed) << name;
+    if (existed) {
+      EXPECT_EQ(test::read_file(file), kept) << name;
+    }
+  }
   // Beside it under another name, it is written.
   const Result ok = hilrig("trend " + results.string() + " --out " + (dir / "night" / "trend.html").string());
   EXPECT_EQ(ok.status, 0) << ok.err;

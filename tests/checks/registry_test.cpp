@@ -312,6 +312,8 @@ TEST(Registry, DebounceProbeWidthsLieOutsideTheLimits) {
   // A pulse width is 1 ns .. 3600 s (docs/campaigns.md, "Times").
   EXPECT_EQ(problem("debounce", ans1_debounce_with({{"wide_us", 3.6e9}})), "ok");
   EXPECT_EQ(problem("debounce", ans1_debounce_with({{"wide_us", 3.6e9 + 0.001}})), "wide_us");
+  EXPECT_EQ(message("debounce", ans1_debounce_with({{"wide_us", 3.6e9 + 0.001}})),
+            "a finite number >= 0.0005 and <= 3600000000 (at least 1 ns once rounded to whole ns)");
   EXPECT_EQ(problem("debounce", ans1_debounce_with({{"narrow_us", 0.001}})), "ok");
   EXPECT_EQ(problem("debounce", ans1_debounce_with({{"narrow_us", 0.0004}})), "narrow_us"); // 0 ns
 }
@@ -630,9 +632,11 @@ TEST(Registry, EveryDurationIsAtLeastOneNanosecondOnceRounded) {
         t[p.name] = v;
         return t;
       };
-      const std::string rule = p.duration_ns == 1e3
-                                   ? "a finite number >= 0.0005 (at least 1 ns once rounded to whole ns)"
-                                   : "a finite number >= 0.0000005 (at least 1 ns once rounded to whole ns)";
+      // A probe width also has its ceiling, 3600 s (docs/campaigns.md, "Times"), named with it.
+      const std::string most = p.range.max ? " and <= 3600000000" : "";
+      const std::string rule =
+          std::string(p.duration_ns == 1e3 ? "a finite number >= 0.0005" : "a finite number >= 0.0000005") +
+          most + " (at least 1 ns once rounded to whole ns)";
       for (const double refused : {half_ns * 0.01, half_ns * 0.8, half_ns * 0.9999}) {
         EXPECT_EQ(problem(k.name.c_str(), with(refused)), p.name) << refused;
         EXPECT_EQ(message(k.name.c_str(), with(refused)), rule) << refused;
@@ -777,9 +781,9 @@ TEST(Registry, AnEdgeDueWhereTheShaftNeverWentIsAnError) {
   EXPECT_EQ(find(eap({{"position", 10}}), "e.edges").outcome, rig::Outcome::Error);
   EXPECT_EQ(
       find(eap({{"position", 10}}), "e.edges").detail,
-      "nothing judged against min_edges: the shaft reached position 10 0 time(s) (and once more with the "
-      "shaft still within 1 counts of it when the span ended: a board within the tolerance may fire "
-      "after that), fewer than min_edges (1); high edges: 0");
+      "nothing judged against min_edges: the shaft reached position 10 1 time(s), the last with the shaft "
+      "still within 1 counts of it when the span ended (a board within the tolerance may fire after "
+      "that: not judged), fewer than min_edges (1); high edges: 0");
   // 9 is passed through its band [8, 10] by 10 ms: reached, the board's fail.
   EXPECT_EQ(find(eap({{"position", 9}}), "e.edges").outcome, rig::Outcome::Fail);
   EXPECT_EQ(find(eap({{"position", 9.000001}}), "e.edges").outcome, rig::Outcome::Error);
