@@ -133,9 +133,13 @@ int run_merge(const MergeArgs& a) {
     const std::string results_text = rig::to_json_text(merged);
     const std::string junit_text = rig::to_junit_xml(merged, clock);
     const std::string report_text = rig::to_report_html(merged);
-    rig::write_file_atomically(a.out, results_text);
-    rig::write_file_atomically(junit, junit_text);
-    rig::write_file_atomically(report, report_text);
+    try {
+      rig::write_file_atomically(a.out, results_text);
+      rig::write_file_atomically(junit, junit_text);
+      rig::write_file_atomically(report, report_text);
+    } catch (const std::exception& e) {
+      throw WriteFailed(e.what());
+    }
     std::fputs(fmt::format("merged {} shards: {} runs, verdict {}; wrote {}, {}, {}\n", a.shards.size(),
                            merged.runs.size(), rig::to_string(merged.verdict), a.out, junit.string(),
                            report.string())
@@ -159,6 +163,9 @@ int run_merge(const MergeArgs& a) {
       status = kRigFault;
     else if (merged.verdict != rig::Outcome::Pass)
       status = kCheckFailed;
+  } catch (const WriteFailed& e) {
+    std::fprintf(stderr, "hilrig merge: %s\n", e.what());
+    return kRigFault;
   } catch (const MergeTarget::Busy& e) {
     std::fprintf(stderr, "hilrig merge: %s\n", e.what());
     return kRigFault; // as `hilrig run` on a directory in use: the rig cannot do it now

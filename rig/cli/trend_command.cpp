@@ -61,7 +61,15 @@ int run_trend(const TrendArgs& a) {
     for (std::size_t i = 0; i < results.size(); ++i)
       // A night is named by when it ran, when its results say so; else by its file.
       nights.push_back(rig::Night{&results[i], results[i].started_at.value_or(a.files[i]), a.files[i]});
-    rig::write_file_atomically(a.out, rig::to_trend_html(nights));
+    const std::string page = rig::to_trend_html(nights);
+    try {
+      rig::write_file_atomically(a.out, page);
+    } catch (const std::exception& e) {
+      throw WriteFailed(e.what());
+    }
+  } catch (const WriteFailed& e) {
+    std::fputs(fmt::format("hilrig trend: {}\n", e.what()).c_str(), stderr);
+    return kRigFault; // as `hilrig run` exits when it cannot write
   } catch (const std::exception& e) {
     std::fputs(fmt::format("hilrig trend: {}\n", e.what()).c_str(), stderr);
     return kBadInput;
