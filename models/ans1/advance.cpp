@@ -27,9 +27,11 @@ std::int32_t to_counts(double t_ms, double abs_speed, std::uint16_t fsc, double 
     clamped = true;
     return fsc - 1;
   }
+  // Up to exactly one cycle (FSC counts) the advance is not clamped (L2313) and DA19 shows
+  // it as it is (L2621, L2622); only the AdvanceWrongScale variant's scale can go beyond.
   const double counts = std::round(ms_times_rpm * fsc / 60000.0 * scale);
-  if (counts > fsc - 1) {
-    return fsc - 1;
+  if (counts > fsc) {
+    return fsc;
   }
   return static_cast<std::int32_t>(counts);
 }

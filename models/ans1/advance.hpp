@@ -24,8 +24,9 @@ struct AdvanceCounts {
   friend bool operator==(const AdvanceCounts&, const AdvanceCounts&) = default;
 };
 
-// a = t[ms] * |S| * FSC / 60000, rounded to the nearest count ([MODEL]); an advance longer
-// than one cycle (t * |S| > 60000) is clamped to FSC - 1 counts ([MODEL]). `scale` multiplies
+// a = t[ms] * |S| * FSC / 60000, rounded to the nearest count ([MODEL]), at most FSC (one
+// cycle); an advance longer than one cycle (t * |S| > 60000) is clamped to FSC - 1 counts
+// ([MODEL]). `scale` multiplies
 // the result (1 for the correct model; the AdvanceWrongScale variant uses 2).
 [[nodiscard]] AdvanceCounts advance_counts(const OutputSetup& setup, double speed_rpm, std::uint16_t fsc,
                                            double scale = 1.0);

@@ -41,11 +41,19 @@ void OutputChannel::preset(std::uint16_t gmp, std::optional<std::uint16_t> value
 
 EdgeShift OutputChannel::edge_shift(const ScanState& scan) const {
   // Edges move against the direction of travel, so they fire early whichever way it turns.
-  int direction = scan.speed > 0.0 ? 1 : (scan.speed < 0.0 ? -1 : 0);
-  if (scan.advance_wrong_sign) {
-    direction = -direction;
+  const int travel = scan.speed > 0.0 ? 1 : (scan.speed < 0.0 ? -1 : 0);
+  const int direction = scan.advance_wrong_sign ? -travel : travel;
+  const std::int32_t lead = direction * advances_.lead;
+  const std::int32_t trail = direction * advances_.trail;
+  // Lead and Trail Advance Times compensate the device's activation and release (L888) and
+  // advance the output's leading and trailing edges (L2621, L2622). Turning backwards the
+  // output turns on at To and off at From, so To takes the lead and From the trail, and the
+  // trail advanced past the lead forces the pair off as forward (L890). The Variable mode's
+  // times belong to the setpoints by name (L912, L913).
+  if (travel < 0 && setup_.advance_mode == AdvanceMode::Fixed) {
+    return EdgeShift{trail, lead, lead};
   }
-  return EdgeShift{direction * advances_.lead, direction * advances_.trail};
+  return EdgeShift{lead, trail, lead};
 }
 
 void OutputChannel::keep_quiet(QuietInterval& quiet, const ScanState& scan) const {
@@ -64,11 +72,11 @@ void OutputChannel::keep_quiet(QuietInterval& quiet, const ScanState& scan) cons
     const PairArc arc = pair_arc(span, scan.fsc, shift, scan.late_wrap_to);
     quiet.keep_arc(scan.gmp, arc.start - setup_.ls_offset, arc.length, scan.fsc);
     if (pair.stitched()) {
-      // pair_on's stitched rule: the pattern at d = p - From + lead, which a GMP step moves by
+      // pair_on's stitched rule: the pattern at d = p - From + stitch shift, which a GMP step moves by
       // one; keep the run of d around the present one.
       const std::uint16_t p = ls_position(scan.gmp, scan.fsc);
       const auto d =
-          static_cast<std::int32_t>(wrap(static_cast<std::int64_t>(p) - pair.from + shift.lead, scan.fsc));
+          static_cast<std::int32_t>(wrap(static_cast<std::int64_t>(p) - pair.from + shift.stitch, scan.fsc));
       const StitchRun run =
           stitch_run(d, pair_length(pair, scan.fsc), pair.on_stitch, pair.off_stitch, scan.fsc);
       quiet.keep_run(scan.gmp, d - run.first, run.last - d);

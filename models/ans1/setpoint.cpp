@@ -68,7 +68,7 @@ PairArc pair_arc(const SetpointPair& pair, std::uint16_t fsc, EdgeShift shift, b
   if (late_wrap_to && pair.from > pair.to) {
     ++length;
   }
-  return {static_cast<std::int64_t>(pair.from) - shift.lead, length + shift.lead - shift.trail};
+  return {static_cast<std::int64_t>(pair.from) - shift.from, length + shift.from - shift.to};
 }
 
 bool pair_on(std::uint16_t p, const SetpointPair& pair, std::uint16_t fsc, EdgeShift shift,
@@ -79,7 +79,7 @@ bool pair_on(std::uint16_t p, const SetpointPair& pair, std::uint16_t fsc, EdgeS
   if (pair.stitched()) {
     const std::int32_t length = pair_length(pair, fsc);
     const auto d =
-        static_cast<std::int32_t>(wrap(static_cast<std::int64_t>(p) - pair.from + shift.lead, fsc));
+        static_cast<std::int32_t>(wrap(static_cast<std::int64_t>(p) - pair.from + shift.stitch, fsc));
     return d < length && stitch_on(d, length, pair.on_stitch, pair.off_stitch);
   }
   const PairArc arc = pair_arc(pair, fsc, shift, late_wrap_to);

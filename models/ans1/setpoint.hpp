@@ -12,10 +12,13 @@ namespace hilrig::models::ans1 {
 
 // How far each edge of a pair moves against the direction of travel, in counts: positive
 // moves the edge to a lower position (earlier when GMP increases). The device takes them
-// from the advances with the sign of the speed.
+// from the advances with the sign of the speed (OutputChannel::edge_shift says which
+// advance goes with which edge).
 struct EdgeShift {
-  std::int32_t lead = 0;  // the From edge
-  std::int32_t trail = 0; // the To edge
+  std::int32_t from = 0; // the From edge
+  std::int32_t to = 0;   // the To edge
+  // How far a stitched pair's pattern moves as a whole: the lead advance's shift ([MODEL], A38).
+  std::int32_t stitch = 0;
 };
 
 // (To - From) mod FSC; FSC when From == To != 0; 0 for an unused pair.
@@ -41,7 +44,7 @@ struct StitchRun {
 [[nodiscard]] StitchRun stitch_run(std::int32_t d, std::int32_t length, std::int32_t on, std::int32_t off,
                                    std::int32_t fsc);
 
-// The pair's state at p with advanced edges. A stitched pair moves as a whole by the lead
+// The pair's state at p with advanced edges. A stitched pair moves as a whole by the stitch
 // shift ([MODEL], A38). When the trail edge is advanced to or past the lead edge the pair is
 // off (L890); when the advanced pair covers a whole cycle it is on everywhere.
 // late_wrap_to is the SetpointOffByOneAtWrap fault: a wrapping pair keeps To itself on.

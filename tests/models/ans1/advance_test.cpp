@@ -60,6 +60,25 @@ TEST(Ans1Advance, LongerThanOneCycleIsClamped) {
   EXPECT_TRUE(advance_counts(fixed(32767, 32767), 32767.0, 360).clamped);
 }
 
+TEST(Ans1Advance, ExactlyOneCycleIsShownWholeAndNotClamped) {
+  // RPM Clamped only when an advance exceeds one machine cycle (L2313); DA19 w9/w10 show the
+  // counts the edge is advanced (L2621, L2622). At 100 RPM a cycle takes 600 ms = 360 counts.
+  for (const double speed : {100.0, -100.0}) {
+    const AdvanceCounts at = advance_counts(fixed(600, 600), speed, 360);
+    EXPECT_FALSE(at.clamped) << speed;
+    EXPECT_EQ(at.lead, 360) << speed;
+    EXPECT_EQ(at.trail, 360) << speed;
+    const AdvanceCounts inside = advance_counts(fixed(599, 599), speed, 360); // 359.4
+    EXPECT_FALSE(inside.clamped) << speed;
+    EXPECT_EQ(inside.lead, 359) << speed;
+    EXPECT_EQ(inside.trail, 359) << speed;
+    const AdvanceCounts beyond = advance_counts(fixed(601, 0), speed, 360); // held at FSC - 1
+    EXPECT_TRUE(beyond.clamped) << speed;
+    EXPECT_EQ(beyond.lead, 359) << speed;
+    EXPECT_TRUE(advance_counts(fixed(0, 601), speed, 360).clamped) << speed;
+  }
+}
+
 TEST(Ans1Advance, RoundsToTheNearestCount) {
   // 10 ms at 125 RPM on FSC 360: 7.5 counts -> 8; at 124 RPM, 7.44 -> 7.
   EXPECT_EQ(advance_counts(fixed(10, 0), 125.0, 360).lead, 8);

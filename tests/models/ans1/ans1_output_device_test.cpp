@@ -274,9 +274,9 @@ Nanos count_time_100rpm(std::int64_t n) { return 3_us + 150_us * (n - 1); }
 struct AdvanceRun {
   Bench bench;
   AdvanceRun(const OutputSetup& o, Variant variant = Variant::Correct, int direction = +1,
-             std::int64_t counts = 3 * 4000, Nanos period = 150_us)
+             std::int64_t counts = 3 * 4000, Nanos period = 150_us, std::uint16_t fsc = 360)
       : bench(Params{}, variant) {
-    bench.device().configure_position(encoder_setup(4000, 360));
+    bench.device().configure_position(encoder_setup(4000, fsc));
     bench.device().configure_output(9, o);
     bench.quadrature_run(3_us, period, counts, direction);
     bench.run_until(3_us + period * counts);
@@ -317,14 +317,45 @@ TEST(Ans1Outputs, TrailAdvanceMovesTheOffEdge) {
 }
 
 TEST(Ans1Outputs, AdvanceInReverseFiresEarlyInTheDirectionOfTravel) {
-  // Turning backwards at 100 RPM, lead 6 counts: the From edge (where the output now turns
-  // off) moves up to 106; the output drops when GMP goes below 106, i.e. from q = 1178 to
-  // 1177 (1177 * 360 / 4000 = 105.9). After n backward counts q = 4000 - n: n = 2823, and
-  // 6823 in the second cycle. It turns on at GMP 199 (To, no trail): q 2222, n = 1778 + 4000.
-  AdvanceRun run(advanced(10, 0), Variant::Correct, -1);
+  // Turning backwards the output turns on at To and off at From; the Lead Advance Time
+  // compensates the activation and the Trail the release (L888, L2621, L2622). At -100 RPM
+  // lead 10 ms = 6 counts moves the turn-on edge up to 206 and trail 20 ms = 12 counts the
+  // turn-off edge up to 112. After n backward counts q = 4000 - n and GMP = q * 360 / 4000:
+  // GMP falls below 206 at q = 2288 (n = 1712) and below 112 at q = 1244 (n = 2756); plus
+  // 4000 in the second cycle.
+  AdvanceRun run(advanced(10, 20), Variant::Correct, -1);
   EXPECT_EQ(run.bench.device().speed_rpm(), -100);
-  EXPECT_EQ(run.bench.first_edge(9, Level::Low, 600_ms), count_time_100rpm(6823) + 17_us);
-  EXPECT_EQ(run.bench.first_edge(9, Level::High, 600_ms), count_time_100rpm(5778) + 17_us);
+  EXPECT_EQ(run.bench.device().advances(9).lead, 6);
+  EXPECT_EQ(run.bench.device().advances(9).trail, 12);
+  EXPECT_EQ(run.bench.first_edge(9, Level::High, 600_ms), count_time_100rpm(5712) + 17_us);
+  EXPECT_EQ(run.bench.first_edge(9, Level::Low, 600_ms), count_time_100rpm(6756) + 17_us);
+}
+
+// FSC 600 at 100 RPM: 1000 counts/s, so an advance of t ms is t counts. Pair [100, 200) is 100
+// counts long and lead 10 ms moves its turn-on edge 10 counts: a trail of 110 ms meets it.
+// L890: the trail advanced to the lead forces the output off, whichever way the shaft turns.
+OutputSetup forced_off_pair(std::uint16_t trail) { return advanced(10, trail); }
+
+TEST(Ans1Outputs, TrailOneCountShortOfTheLeadLeavesAOneCountPulseBothWays) {
+  // Forward: on at GMP 90 (q = 600), off at GMP 91 (q = 607), second cycle.
+  AdvanceRun fwd(forced_off_pair(109), Variant::Correct, +1, 3 * 4000, 150_us, 600);
+  EXPECT_EQ(fwd.bench.first_edge(9, Level::High, 600_ms), count_time_100rpm(4000 + 600) + 17_us);
+  EXPECT_EQ(fwd.bench.first_edge(9, Level::Low, 600_ms), count_time_100rpm(4000 + 607) + 17_us);
+  // Reverse: the turn-on edge To 200 + 10 = 210, the turn-off edge From 100 + 109 = 209. GMP
+  // falls below 210 at q = 1399 (n = 2601) and below 209 at q = 1393 (n = 2607).
+  AdvanceRun rev(forced_off_pair(109), Variant::Correct, -1, 3 * 4000, 150_us, 600);
+  EXPECT_EQ(rev.bench.first_edge(9, Level::High, 600_ms), count_time_100rpm(4000 + 2601) + 17_us);
+  EXPECT_EQ(rev.bench.first_edge(9, Level::Low, 600_ms), count_time_100rpm(4000 + 2607) + 17_us);
+}
+
+TEST(Ans1Outputs, TrailAtOrPastTheLeadForcesTheOutputOffBothWays) {
+  for (const std::uint16_t trail : {std::uint16_t{110}, std::uint16_t{111}}) {
+    for (const int direction : {+1, -1}) {
+      AdvanceRun run(forced_off_pair(trail), Variant::Correct, direction, 3 * 4000, 150_us, 600);
+      EXPECT_EQ(run.bench.device().advances(9).trail, trail);
+      EXPECT_FALSE(run.bench.first_edge(9, Level::High, 600_ms).has_value()) << trail << " " << direction;
+    }
+  }
 }
 
 TEST(Ans1Outputs, VariableAdvance) {
