@@ -57,6 +57,7 @@ struct BrakeSpec {
   bool check_fault = false;         // judge the stop-time fault output
   Level fault_level = Level::Low;   // [MODEL] ANS1 ch. 3: outputs normally on, off = fault
   bool fault_from_reported = false; // expect the fault from the reported time, not the measured one
+  std::string application{};        // how the application was chosen among several, for the details
 };
 
 // Measurements: "<name>.stop_time" (ms, upper limit, window applied..standstill),
@@ -70,10 +71,12 @@ struct BrakeSpec {
 [[nodiscard]] CheckResult check_brake_stop(Nanos applied, std::span<const PositionSample> motion,
                                            Nanos trace_end, std::span<const Edge> fault_output,
                                            const BrakeSpec& spec);
-// With the standstill already known (nullopt: the shaft never stood still in the trace). The
-// stop time is judged conservatively on `latest`: it fails when the interval's upper end is
-// over the limit, and the detail says when it was an interval.
-[[nodiscard]] CheckResult check_brake_stop(Nanos applied, std::optional<Standstill> still,
+// With the standstill already known (nullopt: no standstill proven by trace_end). The stop
+// time is judged conservatively on `latest`: it fails when the interval's upper end is over
+// the limit, and the detail says when it was an interval. Without a standstill the stop is
+// longer than trace_end - applied: over the limit for certain once that reaches the limit (a
+// fail), else not judged (an error: the capture ended before the stop could be timed).
+[[nodiscard]] CheckResult check_brake_stop(Nanos applied, std::optional<Standstill> still, Nanos trace_end,
                                            std::span<const Edge> fault_output, const BrakeSpec& spec);
 
 // What a board with a stop timer tick of `tick` may report (ms, inclusive), brake applied at

@@ -14,6 +14,7 @@
 #include "core/line.hpp"
 #include "core/time.hpp"
 #include "rig/checks/brake.hpp"
+#include "rig/checks/brake_application.hpp"
 #include "rig/checks/crossings.hpp"
 #include "rig/checks/debounce.hpp"
 #include "rig/checks/edge_position.hpp"
@@ -84,10 +85,11 @@ struct EdgeAtPositionParams {
 
 struct BrakeParams {
   BrakeSpec spec;                 // reported_ms is filled from the capture's observation
-  std::optional<Nanos> applied{}; // applied_ms; or the first edge of brake_line to applied_level
+  std::optional<Nanos> applied{}; // applied_ms; or the application of brake_line the board times
   std::string brake_line{};
   Level applied_level = Level::Low;
-  std::optional<std::string> reported{}; // the observation holding the board's stop time, ms
+  BrakeDebounce debounce = BrakeDebounce::None; // applied_debounce: which application that is
+  std::optional<std::string> reported{};        // the observation holding the board's stop time, ms
   std::optional<std::string> fault_output{};
   // The board's own standstill rule (ANS1 L1042): stopped once the count changed by less than
   // complete_stop_count over stop_window; its stop time ends stop_window before that (L1052).

@@ -293,8 +293,8 @@ CheckParams brake(std::string_view name, const Table& t) {
   // The tick places the board's report (reported) and the fault it decides from it (fault_output).
   if (t.has("report_tick_ms") && !t.has("reported") && !t.has("fault_output"))
     throw ParamError("report_tick_ms", "only with reported or fault_output");
-  if (t.has("applied_level") && !t.has("brake_line"))
-    throw ParamError("applied_level", "only with brake_line");
+  for (const char* key : {"applied_level", "applied_debounce"})
+    if (t.has(key) && !t.has("brake_line")) throw ParamError(key, "only with brake_line");
   if (t.has("fault_from_reported") && !(t.has("reported") && t.has("fault_output")))
     throw ParamError("fault_from_reported", "only with reported and fault_output");
   p.spec.fault_level = t.level("fault_level", Level::Low);
@@ -302,6 +302,9 @@ CheckParams brake(std::string_view name, const Table& t) {
   p.applied = t.opt_ms("applied_ms");
   p.brake_line = t.str("brake_line");
   p.applied_level = t.level("applied_level", Level::Low);
+  const std::string debounce = t.str("applied_debounce", "none");
+  if (debounce != "none" && debounce != "ans1") throw ParamError("applied_debounce", "\"none\" or \"ans1\"");
+  p.debounce = debounce == "ans1" ? BrakeDebounce::Ans1 : BrakeDebounce::None;
   if (t.has("reported")) p.reported = t.str("reported");
   if (t.has("fault_output")) p.fault_output = t.str("fault_output");
   p.spec.check_fault = p.fault_output.has_value();
@@ -458,6 +461,9 @@ std::vector<CheckKind> make_kinds() {
            {P("limit_ms", Num, true, "stop time limit (inclusive)", time),
             P("brake_line", Str, false, "the brake input line; or applied_ms"),
             P("applied_level", Lvl, false, "level of brake_line that applies the brake (low)"),
+            P("applied_debounce", Str, false,
+              "which application of brake_line the board times: none (the first; a line that returns "
+              "before the standstill is an error) or ans1 (the first the ANS1 qualifies, L1038-L1040)"),
             instant(P("applied_ms", Num, false, "when the brake was applied", time), kMs),
             P("reported", Str, false, "observation holding the board's stop time, ms"),
             P("report_tolerance_ms", Num, false, "|reported - measured| allowed (2)", time),
@@ -707,18 +713,35 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
     return r;
   };
   Nanos applied{0};
+  std::span<const Edge> brake;
   if (p.applied) {
     applied = *p.applied;
   } else {
-    const auto e = next_edge(line(c, p.brake_line), c.begin, Nanos::max(), p.applied_level);
-    if (!e && c.rig_driven.contains(p.brake_line)) // the rig's own stimulus never came
-      return erred(
-          fmt::format("nothing judged: the rig never applied the brake on its line '{}' (no edge to {})",
-                      p.brake_line, level_name(p.applied_level)));
-    if (!e)
-      return failed(".stop_time",
-                    fmt::format("missing edge: the brake line '{}' never applied the brake", p.brake_line));
-    applied = e->time;
+    brake = line(c, p.brake_line);
+    const auto known = c.initial.find(p.brake_line);
+    const Level before = known != c.initial.end() ? known->second
+                         : brake.empty()          ? !p.applied_level
+                                                  : !brake.front().level;
+    const BrakeApplication a = brake_application(brake, before, p.applied_level, c.begin, c.end, p.debounce);
+    const std::string noise =
+        a.rejected.empty()
+            ? std::string{}
+            : fmt::format("; the ANS1's debounce (L1038-L1040) dropped {} as noise, the first at {} ns",
+                          a.rejected.size() == 1 ? std::string("one application")
+                                                 : fmt::format("{} applications", a.rejected.size()),
+                          a.rejected.front().count());
+    if (!a.applied && c.rig_driven.contains(p.brake_line)) // the rig's own stimulus never came
+      return erred(fmt::format(
+          "nothing judged: the rig never applied the brake on its line '{}' (no {} to {}{})", p.brake_line,
+          p.debounce == BrakeDebounce::None ? "edge" : "qualified edge", level_name(p.applied_level), noise));
+    if (!a.applied)
+      return failed(".stop_time", fmt::format("missing edge: the brake line '{}' never applied the brake{}",
+                                              p.brake_line, noise));
+    applied = *a.applied;
+    if (!a.rejected.empty())
+      s.application = fmt::format("the first application the ANS1's debounce qualifies, L1038-L1040; {} "
+                                  "dropped as noise before it, the first at {} ns",
+                                  a.rejected.size(), a.rejected.front().count());
   }
   if (p.reported) {
     const rig::Observation* last = nullptr;
@@ -743,6 +766,18 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
     return erred(fmt::format(
         "nothing judged: the shaft already stood still (by {} ns) when the brake was applied at {} ns",
         still->latest.count(), applied.count()));
+  // A line that leaves the applied level before the stop ends applied the brake more than once:
+  // which application a board times is its debounce's, so without one named nothing is judged
+  // (a glitch before the real application would otherwise time the stop from the glitch).
+  if (!p.applied && p.debounce == BrakeDebounce::None) {
+    const Nanos until = still ? still->latest : c.end;
+    if (const auto back = next_edge(brake, applied, until, !p.applied_level))
+      return erred(fmt::format(
+          "nothing judged: the brake line '{}' went back to {} at {} ns after applying the brake at {} ns, "
+          "before the stop ended: which application the board times is its debounce's; name it with "
+          "applied_debounce (\"ans1\": L1038-L1040) or give applied_ms",
+          p.brake_line, level_name(!p.applied_level), back->time.count(), applied.count()));
+  }
   if (p.stop_rule) {
     // The board's standstill, not the shaft's: the count's change over the window fell below
     // the complete stop count (a creeping shaft may never stand still for the rig).
@@ -751,14 +786,22 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
       return erred(fmt::format("nothing judged: the count already changed by less than {} over {} ms when "
                                "the brake was applied at {} ns",
                                p.stop_rule->counts, to_ms(p.stop_rule->window), applied.count()));
-    if (!seen)
-      return failed(".stop_time",
-                    fmt::format("no standstill: the count never changed by less than {} over {} ms "
-                                "after the brake was applied at {} ns",
-                                p.stop_rule->counts, to_ms(p.stop_rule->window), applied.count()));
+    if (!seen) {
+      // Not still by the capture's end: the board's stop ends after end - window, if at all.
+      const Nanos seen_to = c.end - p.stop_rule->window;
+      const std::string why =
+          fmt::format("the count never changed by less than {} over {} ms between the brake applied at {} ns "
+                      "and the capture's end, so the board's stop time is over {} ms",
+                      p.stop_rule->counts, to_ms(p.stop_rule->window), applied.count(),
+                      to_ms(std::max(seen_to - applied, Nanos{0})));
+      if (seen_to - applied >= s.limit)
+        return failed(".stop_time", fmt::format("no standstill: {}, the {} ms limit", why, to_ms(s.limit)));
+      return erred(fmt::format("nothing judged: {}, within the {} ms limit (campaign.end cuts the stop)", why,
+                               to_ms(s.limit)));
+    }
     const std::string rule = fmt::format("the count changed by less than {} over the {} ms after it",
                                          p.stop_rule->counts, to_ms(p.stop_rule->window));
-    return check_brake_stop(applied, Standstill{*seen, *seen, std::nullopt, rule}, fault, s);
+    return check_brake_stop(applied, Standstill{*seen, *seen, std::nullopt, rule}, c.end, fault, s);
   }
   if (still) still->earliest = std::max(still->earliest, applied);
   // What a board timing the stop from count changes sees as its end (report_window()).
@@ -766,7 +809,7 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
   if (still)
     if (const auto last = standstill_after(counts, applied, c.end); last && *last <= still->latest)
       still->last_count_change = std::min(*last, still->earliest);
-  return check_brake_stop(applied, still, fault, s);
+  return check_brake_stop(applied, still, c.end, fault, s);
 }
 
 CheckResult run(const PulseWidthParams& p, const Capture& c) {

@@ -7,20 +7,6 @@
 
 namespace hilrig::checks {
 
-namespace {
-
-// The direction line's level at t (edges at t included: the sensor sets DIR before STEP).
-Level level_at(std::span<const Edge> dir, Nanos t, Level initial) {
-  Level l = initial;
-  for (const Edge& e : dir) {
-    if (e.time > t) break;
-    l = e.level;
-  }
-  return l;
-}
-
-} // namespace
-
 CheckResult check_shaft_move(std::span<const Edge> step, std::span<const Edge> dir,
                              const ShaftMoveSpec& spec) {
   CheckResult r;

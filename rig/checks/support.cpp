@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <utility>
 
 namespace hilrig::checks {
@@ -20,6 +21,12 @@ std::optional<Edge> next_edge(std::span<const Edge> edges, Nanos from, Nanos unt
     if (i->level == level) return *i;
   }
   return std::nullopt;
+}
+
+Level level_at(std::span<const Edge> edges, Nanos t, Level before) {
+  const auto it =
+      std::upper_bound(edges.begin(), edges.end(), t, [](Nanos x, const Edge& e) { return x < e.time; });
+  return it == edges.begin() ? before : std::prev(it)->level;
 }
 
 const char* level_name(Level l) { return is_high(l) ? "high" : "low"; }

@@ -32,6 +32,10 @@ using HeldFn = std::function<Nanos(Nanos)>;
 [[nodiscard]] std::optional<Edge> next_edge(std::span<const Edge> edges, Nanos from, Nanos until,
                                             Level level);
 
+// A line's level at t, from its edges (times ascending) and its level before the first: an edge
+// at exactly t has happened.
+[[nodiscard]] Level level_at(std::span<const Edge> edges, Nanos t, Level before);
+
 [[nodiscard]] const char* level_name(Level l);
 
 } // namespace hilrig::checks

@@ -80,7 +80,7 @@ TEST(Ans1BrakeReport, TheBoardsReportLiesInTheWindowForEveryBrakeAndPhase) {
     const checks::Standstill still{ns_of(s.stop()), ns_of(s.stop()), ns_of(s.last_change())};
     checks::BrakeSpec spec{
         .name = "b", .limit = seconds(10), .reported_ms = reported, .report_tick = milliseconds(1)};
-    const rig::CheckResult r = checks::check_brake_stop(ns_of(s.t_a), still, {}, spec);
+    const rig::CheckResult r = checks::check_brake_stop(ns_of(s.t_a), still, Nanos::max(), {}, spec);
     ASSERT_EQ(r.outcome(), Outcome::Pass) << i << ": a " << s.a << " v0 " << s.v0 << " p0 " << s.p0 << " t_a "
                                           << s.t_a << ": " << r.measurements.back().detail;
   }

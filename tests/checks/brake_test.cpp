@@ -5,6 +5,7 @@
 
 #include "check_test_support.hpp"
 #include "rig/checks/brake.hpp"
+#include "rig/checks/brake_application.hpp"
 #include "rig/checks/standstill.hpp"
 
 namespace hilrig::checks {
@@ -71,14 +72,14 @@ Standstill exactly_at(Nanos t) { return Standstill{t, t}; }
 TEST(BrakeStop, PassesAtTheLimitAndFailsOneMillisecondOrOneNanosecondOver) {
   // Applied 100 ms, exact standstill 300 ms: 200 ms stop time.
   const BrakeSpec spec{.name = "brake", .limit = 200_ms};
-  auto r = check_brake_stop(100_ms, exactly_at(300_ms), {}, spec);
+  auto r = check_brake_stop(100_ms, exactly_at(300_ms), Nanos::max(), {}, spec);
   EXPECT_EQ(r.outcome(), rig::Outcome::Pass);
   EXPECT_EQ(find(r, "brake.stop_time").value, 200.0);
   EXPECT_EQ(find(r, "brake.stop_time").unit, "ms");
   ASSERT_TRUE(find(r, "brake.stop_time").window);
   EXPECT_EQ(find(r, "brake.stop_time").window->end, 300_ms);
   for (const Nanos stop : {301_ms, 300_ms + 1_ns}) {
-    r = check_brake_stop(100_ms, exactly_at(stop), {}, spec);
+    r = check_brake_stop(100_ms, exactly_at(stop), Nanos::max(), {}, spec);
     EXPECT_EQ(r.outcome(), rig::Outcome::Fail) << stop.count();
   }
 }
@@ -112,10 +113,23 @@ TEST(BrakeStop, ExactStandstillPastTheTraceIsNoStandstill) {
   EXPECT_EQ(exact_standstill(600_ms, 600_ms)->latest, 600_ms);
 }
 
-TEST(BrakeStop, StillMovingAtTheEndOfTheTraceIsANamedFailure) {
-  const auto r = check_brake_stop(100_ms, shaft_stopping_at(600_ms), 600_ms, {}, {.name = "b", .limit = 1_s});
+// Still moving when the trace ends 500 ms after the brake: the stop is longer than 500 ms,
+// over a 500 ms limit for certain (a fail); against 500 ms + 1 ns it may still end within it,
+// so the cut stop is not judged (an error), never a fail of a board that may be in spec.
+TEST(BrakeStop, StillMovingAtTheEndOfTheTraceFailsOnlyPastTheLimit) {
+  const auto r =
+      check_brake_stop(100_ms, shaft_stopping_at(600_ms), 600_ms, {}, {.name = "b", .limit = 500_ms});
   EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
   EXPECT_NE(find(r, "b.stop_time").detail.find("no standstill"), std::string::npos);
+  const auto cut =
+      check_brake_stop(100_ms, shaft_stopping_at(600_ms), 600_ms, {}, {.name = "b", .limit = 500_ms + 1_ns});
+  EXPECT_EQ(cut.outcome(), rig::Outcome::Error);
+  EXPECT_NE(find(cut, "b.stop_time").detail.find("nothing judged"), std::string::npos);
+  EXPECT_EQ(check_brake_stop(100_ms, std::nullopt, 600_ms, {}, {.name = "b", .limit = 500_ms}).outcome(),
+            rig::Outcome::Fail);
+  EXPECT_EQ(
+      check_brake_stop(100_ms, std::nullopt, 600_ms, {}, {.name = "b", .limit = 500_ms + 1_ns}).outcome(),
+      rig::Outcome::Error);
 }
 
 TEST(BrakeStop, ReportedStopTimeAgainstMeasured) {
@@ -138,13 +152,15 @@ TEST(BrakeStop, FaultOutputMustAssertExactlyWhenTheLimitIsExceeded) {
   const std::vector<Edge> none;
   BrakeSpec spec{.name = "b", .limit = 150_ms, .check_fault = true};
   // Over the limit: the fault must assert.
-  EXPECT_EQ(find(check_brake_stop(100_ms, motion, fault, spec), "b.fault_output").outcome,
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, Nanos::max(), fault, spec), "b.fault_output").outcome,
             rig::Outcome::Pass);
-  EXPECT_EQ(find(check_brake_stop(100_ms, motion, none, spec), "b.fault_output").outcome, rig::Outcome::Fail);
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, Nanos::max(), none, spec), "b.fault_output").outcome,
+            rig::Outcome::Fail);
   // Exactly at the limit: no fault expected; one asserted is a failure.
   spec.limit = 200_ms;
-  EXPECT_EQ(find(check_brake_stop(100_ms, motion, none, spec), "b.fault_output").outcome, rig::Outcome::Pass);
-  EXPECT_EQ(find(check_brake_stop(100_ms, motion, fault, spec), "b.fault_output").outcome,
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, Nanos::max(), none, spec), "b.fault_output").outcome,
+            rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, motion, Nanos::max(), fault, spec), "b.fault_output").outcome,
             rig::Outcome::Fail);
 }
 
@@ -154,9 +170,12 @@ TEST(BrakeStop, FaultOutputFromAnIntervalAcrossTheLimitAcceptsEither) {
   const Standstill still{300_ms, 310_ms};
   const std::vector<Edge> fault{{400_ms, Level::Low}};
   const BrakeSpec spec{.name = "b", .limit = 205_ms, .check_fault = true};
-  EXPECT_EQ(find(check_brake_stop(100_ms, still, fault, spec), "b.fault_output").outcome, rig::Outcome::Pass);
-  EXPECT_EQ(find(check_brake_stop(100_ms, still, {}, spec), "b.fault_output").outcome, rig::Outcome::Pass);
-  EXPECT_EQ(find(check_brake_stop(100_ms, still, {}, spec), "b.stop_time").outcome, rig::Outcome::Fail);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, Nanos::max(), fault, spec), "b.fault_output").outcome,
+            rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, Nanos::max(), {}, spec), "b.fault_output").outcome,
+            rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, Nanos::max(), {}, spec), "b.stop_time").outcome,
+            rig::Outcome::Fail);
 }
 
 // ans1 manual (seeds/000_08a2edf5547d4d1e.txt:1042, 1052, 640): the board takes the shaft as
@@ -178,7 +197,7 @@ TEST(BrakeStop, ReportedStopTimeIsJudgedAgainstTheWindowACorrectBoardCanReport) 
         std::pair{140.0, rig::Outcome::Pass}, std::pair{148.0, rig::Outcome::Pass},
         std::pair{139.0, rig::Outcome::Fail}, std::pair{149.0, rig::Outcome::Fail}}) {
     spec.reported_ms = reported;
-    const auto r = check_brake_stop(100_ms, still, {}, spec);
+    const auto r = check_brake_stop(100_ms, still, Nanos::max(), {}, spec);
     EXPECT_EQ(find(r, "b.reported").outcome, outcome) << reported;
     EXPECT_NE(find(r, "b.reported").detail.find("[139.3, 148.9] ms"), std::string::npos)
         << find(r, "b.reported").detail;
@@ -203,14 +222,94 @@ TEST(BrakeStop, WithTheBoardsTickTheFaultOutputIsExpectedFromTheReportWindow) {
   const std::vector<Edge> fault{{400_ms, Level::Low}};
   const std::vector<Edge> none;
   BrakeSpec spec{.name = "b", .limit = 145_ms, .report_tick = 1_ms, .check_fault = true};
-  EXPECT_EQ(find(check_brake_stop(100_ms, still, fault, spec), "b.fault_output").outcome, rig::Outcome::Pass);
-  EXPECT_EQ(find(check_brake_stop(100_ms, still, none, spec), "b.fault_output").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, Nanos::max(), fault, spec), "b.fault_output").outcome,
+            rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, Nanos::max(), none, spec), "b.fault_output").outcome,
+            rig::Outcome::Pass);
   spec.limit = 139_ms;
-  EXPECT_EQ(find(check_brake_stop(100_ms, still, fault, spec), "b.fault_output").outcome, rig::Outcome::Pass);
-  EXPECT_EQ(find(check_brake_stop(100_ms, still, none, spec), "b.fault_output").outcome, rig::Outcome::Fail);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, Nanos::max(), fault, spec), "b.fault_output").outcome,
+            rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, Nanos::max(), none, spec), "b.fault_output").outcome,
+            rig::Outcome::Fail);
   spec.limit = 149_ms;
-  EXPECT_EQ(find(check_brake_stop(100_ms, still, fault, spec), "b.fault_output").outcome, rig::Outcome::Fail);
-  EXPECT_EQ(find(check_brake_stop(100_ms, still, none, spec), "b.fault_output").outcome, rig::Outcome::Pass);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, Nanos::max(), fault, spec), "b.fault_output").outcome,
+            rig::Outcome::Fail);
+  EXPECT_EQ(find(check_brake_stop(100_ms, still, Nanos::max(), none, spec), "b.fault_output").outcome,
+            rig::Outcome::Pass);
+}
+
+// The ANS1's brake debounce (manual L1038-L1040): a transition to "applied" (low) at t0 starts
+// a cycle; 16 samples 1 ms apart from t0 + 16 ms; 8 released samples abort it; at t0 + 32 ms,
+// fewer than 12 applied samples abort it. An application pulse of width w (applied from t0,
+// released at t0 + w) holds sample k (at t0 + 16 + k ms) applied when 16 + k < w ms: 12 applied
+// samples need w > 27 ms. A pulse of exactly 27 ms is noise, 27 ms + 1 ns qualifies.
+std::vector<Edge> pulse_low(Nanos at, Nanos width) { return {{at, Level::Low}, {at + width, Level::High}}; }
+
+BrakeApplication ans1(const std::vector<Edge>& line, Nanos end = 1'000_ms) {
+  return brake_application(line, Level::High, Level::Low, 0_ms, end, BrakeDebounce::Ans1);
+}
+
+TEST(BrakeApplication, Ans1QualifiesAPulseLongerThan27Ms) {
+  EXPECT_FALSE(ans1(pulse_low(100_ms, 27_ms)).applied);
+  EXPECT_EQ(ans1(pulse_low(100_ms, 27_ms)).rejected, std::vector<Nanos>{100_ms});
+  EXPECT_EQ(ans1(pulse_low(100_ms, 27_ms + 1_ns)).applied, 100_ms);
+  EXPECT_TRUE(ans1(pulse_low(100_ms, 27_ms + 1_ns)).rejected.empty());
+  // Neither the manual's 16 ms before sampling nor the width below it matters: a 2 ms glitch
+  // and a 15.9 ms pulse are noise; a line that stays applied qualifies.
+  for (const Nanos w : {1_us, 2_ms, 15'900_us, 16_ms, 23_ms, 24_ms, 25_ms, 26'999'999_ns})
+    EXPECT_FALSE(ans1(pulse_low(100_ms, w)).applied) << w.count();
+  EXPECT_EQ(ans1({{100_ms, Level::Low}}).applied, 100_ms);
+}
+
+// The glitch before the real application is dropped and the real one is timed; a board
+// timing from the glitch would report a stop 65 ms too long (the check's fail of a correct
+// board this rule prevents).
+TEST(BrakeApplication, Ans1TimesTheApplicationAfterANoisyOne) {
+  std::vector<Edge> line = pulse_low(60_ms, 2_ms);
+  line.push_back({125_ms, Level::Low});
+  const auto a = ans1(line);
+  EXPECT_EQ(a.applied, 125_ms);
+  EXPECT_EQ(a.rejected, std::vector<Nanos>{60_ms});
+  // Without a debounce the first transition is the application.
+  EXPECT_EQ(brake_application(line, Level::High, Level::Low, 0_ms, 1'000_ms, BrakeDebounce::None).applied,
+            60_ms);
+  // A transition before `from` starts no cycle.
+  EXPECT_EQ(brake_application(line, Level::High, Level::Low, 61_ms, 1'000_ms, BrakeDebounce::Ans1).applied,
+            125_ms);
+}
+
+// Contact bounce within the first 16 ms is never sampled: the cycle is timed from the first
+// transition. Released during the sampling: 4 released samples (16..19 ms) leave 12 applied,
+// it qualifies at t0; 5 (16..20 ms) leave 11, noise at 32 ms, and since the line is applied
+// then, the debounce restarts at once, re-timed to 32 ms (digest A9).
+TEST(BrakeApplication, Ans1SamplesFrom16MsAndRestartsWhenStillApplied) {
+  std::vector<Edge> bounce{{100_ms, Level::Low}};
+  for (int i = 0; i < 3; ++i) {
+    bounce.push_back({100_ms + (2 * i + 1) * 1_ms, Level::High});
+    bounce.push_back({100_ms + (2 * i + 2) * 1_ms, Level::Low});
+  }
+  EXPECT_EQ(ans1(bounce).applied, 100_ms);
+  const auto released = [](Nanos until) {
+    return std::vector<Edge>{{100_ms, Level::Low}, {116_ms, Level::High}, {100_ms + until, Level::Low}};
+  };
+  EXPECT_EQ(ans1(released(20_ms)).applied, 100_ms);
+  EXPECT_EQ(ans1(released(20_ms + 1_ns)).applied, 132_ms);
+  EXPECT_EQ(ans1(released(20_ms + 1_ns)).rejected, std::vector<Nanos>{100_ms});
+  // The 8th released sample (at 23 ms) aborts it at once; the line is released then, so the
+  // next cycle starts at its next transition, 140 ms.
+  std::vector<Edge> late{{100_ms, Level::Low}, {116_ms, Level::High}, {140_ms, Level::Low}};
+  const auto a = ans1(late);
+  EXPECT_EQ(a.applied, 140_ms);
+  EXPECT_EQ(a.rejected, std::vector<Nanos>{100_ms});
+}
+
+// A cycle whose decision (t0 + 32 ms) falls after the capture's end qualified nothing the rig
+// saw: no application, not the transition itself.
+TEST(BrakeApplication, Ans1DecisionAfterTheCaptureEndsQualifiesNothing) {
+  const std::vector<Edge> line{{100_ms, Level::Low}};
+  EXPECT_FALSE(ans1(line, 131'999'999_ns).applied);
+  EXPECT_EQ(ans1(line, 132_ms).applied, 100_ms);
+  EXPECT_FALSE(brake_application(line, Level::High, Level::Low, 0_ms, 99_ms, BrakeDebounce::None).applied);
 }
 
 } // namespace

@@ -396,6 +396,51 @@ TEST(Registry, BrakeWithNoStopToTimeIsAnError) {
   EXPECT_EQ(find(run_check("b", p, c), "b.stop_time").outcome, rig::Outcome::Pass);
 }
 
+// A brake line that applied more than once before the stop ended: without the board's
+// debounce named, which application it times is unknown, so nothing is judged; with the
+// ANS1's (L1038-L1040) a 2 ms glitch at 60 ms is noise and the stop is timed from 125 ms.
+TEST(Registry, BrakeLineThatBouncedNeedsTheBoardsDebounce) {
+  Capture c;
+  c.lines["brake"] = {{60_ms, Level::Low}, {62_ms, Level::High}, {125_ms, Level::Low}};
+  c.initial["brake"] = Level::High;
+  c.rig_driven = {"brake"};
+  c.motion = {{0_ms, 0.0}, {225_ms, 100.0}};
+  c.standstill = [](Nanos) { return std::optional<Nanos>{225_ms}; };
+  c.end = 600_ms;
+  const json brake{{"limit_ms", 100}, {"brake_line", "brake"}};
+  const auto r = run_check("b", build("brake_stop_time", brake, "b"), c);
+  EXPECT_EQ(find(r, "b.stop_time").outcome, rig::Outcome::Error);
+  EXPECT_NE(find(r, "b.stop_time").detail.find("applied_debounce"), std::string::npos);
+  json debounced = brake;
+  debounced["applied_debounce"] = "ans1";
+  const auto d = run_check("b", build("brake_stop_time", debounced, "b"), c);
+  EXPECT_EQ(find(d, "b.stop_time").value, 100.0); // 225 - 125 ms, exactly at the limit
+  EXPECT_EQ(d.outcome(), rig::Outcome::Pass);
+  debounced["limit_ms"] = 99.999999;
+  EXPECT_EQ(run_check("b", build("brake_stop_time", debounced, "b"), c).outcome(), rig::Outcome::Fail);
+  // The line returning to released only after the stop ended is no second application.
+  c.lines["brake"] = {{125_ms, Level::Low}, {225_ms, Level::High}};
+  EXPECT_EQ(find(run_check("b", build("brake_stop_time", brake, "b"), c), "b.stop_time").outcome,
+            rig::Outcome::Pass);
+  c.lines["brake"] = {{125_ms, Level::Low}, {224'999'999_ns, Level::High}};
+  EXPECT_EQ(find(run_check("b", build("brake_stop_time", brake, "b"), c), "b.stop_time").outcome,
+            rig::Outcome::Error);
+  // Every application noise: the rig's stimulus never applied the brake for the board.
+  c.lines["brake"] = {{60_ms, Level::Low}, {62_ms, Level::High}};
+  debounced["limit_ms"] = 100;
+  EXPECT_EQ(find(run_check("b", build("brake_stop_time", debounced, "b"), c), "b.stop_time").outcome,
+            rig::Outcome::Error);
+  EXPECT_EQ(
+      problem("brake_stop_time", json{{"limit_ms", 1}, {"applied_ms", 1}, {"applied_debounce", "ans1"}}),
+      "applied_debounce");
+  EXPECT_EQ(
+      problem("brake_stop_time", json{{"limit_ms", 1}, {"brake_line", "b"}, {"applied_debounce", "ANS1"}}),
+      "applied_debounce");
+  EXPECT_EQ(
+      problem("brake_stop_time", json{{"limit_ms", 1}, {"brake_line", "b"}, {"applied_debounce", "none"}}),
+      "ok");
+}
+
 // A key that only refines another does nothing alone: refused like a typo, not ignored.
 TEST(Registry, RefiningKeysWithoutWhatTheyRefineAreBadInput) {
   const json brake{{"limit_ms", 100}, {"applied_ms", 1}};
@@ -448,6 +493,15 @@ TEST(Registry, BrakeStandstillByTheBoardsCompleteStopCount) {
   EXPECT_EQ(find(brake({}), "brake.stop_time").value, 187.5);
   EXPECT_EQ(brake({}).outcome(), rig::Outcome::Pass); // exactly at the limit
   EXPECT_EQ(brake({{"limit_ms", 187.499999}}).outcome(), rig::Outcome::Fail);
+  // The board sees that standstill at 412.5 ms (287.5 + 125). A capture ending 1 ns sooner
+  // cuts the stop: its time is over 187.499999 ms, within the 187.5 ms limit, not judged (an
+  // error); against a limit 1 ns shorter it is over the limit for certain (a fail).
+  c.end = 412'500'000_ns;
+  EXPECT_EQ(brake({}).outcome(), rig::Outcome::Pass);
+  c.end = 412'499'999_ns;
+  EXPECT_EQ(brake({}).outcome(), rig::Outcome::Error);
+  EXPECT_EQ(brake({{"limit_ms", 187.499999}}).outcome(), rig::Outcome::Fail);
+  c.end = 600_ms;
   // CSC 1: the count's last change, at the stop itself (200 ms after 100 ms), as without it.
   // (4096 less a few 1e-14 counts rounds to 4096 a few ns before the stop.)
   EXPECT_NEAR(find(brake({{"complete_stop_count", 1}}), "brake.stop_time").value, 200.0, 1e-5);
