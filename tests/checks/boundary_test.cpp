@@ -137,6 +137,46 @@ TEST(Boundary, PulseStillOpenAtTheEndFailsOnceOverMax) {
   }
 }
 
+// The 4501's Cycle Output in mode 1 is on while a registration cycle runs, from Start to
+// Latch (seeds/001 L7), each edge one throughput time (125 us, L281) after its input: Start at
+// 1 ms, Latch at 3 ms give a pulse from 1.125 ms to 3.125 ms, 2000 us. With max_us 2000 and
+// the run ending inside it, the pulse is no complete pulse and no missing edge: open up to
+// max_us (end = 3.125 ms, the very instant it closes, is still open: the closing edge is
+// after the end) the check judged nothing, an error; open 1 ns over max_us it already failed.
+TEST(Boundary, PulseCutByTheEndIsAnErrorUntilItOutgrowsMax) {
+  PulseWidthSpec s;
+  s.min = 2000_us;
+  s.max = 2000_us;
+  const Nanos on = 1_ms + 125_us;
+  const std::vector<Edge> open = {{on, Level::High}};
+  for (int d = -2; d <= 2; ++d) {
+    SCOPED_TRACE(d);
+    const auto r = check_pulse_width(open, s, on + 2000_us + Nanos{d});
+    EXPECT_EQ(r.outcome(), d <= 0 ? Outcome::Error : Outcome::Fail);
+    if (d <= 0) {
+      EXPECT_EQ(find(r, "pulse.count").detail.find("missing edge"), std::string::npos);
+    } else {
+      EXPECT_EQ(find(r, "pulse.longest").outcome, Outcome::Fail);
+    }
+  }
+  // The run outlasts the pulse: 2000 us, exactly at both limits, passes.
+  const std::vector<Edge> closed = {{on, Level::High}, {3_ms + 125_us, Level::Low}};
+  EXPECT_EQ(check_pulse_width(closed, s, 3_ms + 200_us).outcome(), Outcome::Pass);
+  // min_pulses 2 with one complete pulse and the second cut: the cut one may still count.
+  s.min_pulses = 2;
+  const std::vector<Edge> second = {
+      {on, Level::High}, {3_ms + 125_us, Level::Low}, {5_ms + 125_us, Level::High}};
+  EXPECT_EQ(find(check_pulse_width(second, s, 6_ms), "pulse.count").outcome, Outcome::Error);
+  // ... but min_pulses 3: even if it closed, one pulse too few. A fail.
+  s.min_pulses = 3;
+  EXPECT_EQ(find(check_pulse_width(second, s, 6_ms), "pulse.count").outcome, Outcome::Fail);
+  // A line never driven to the level has no pulse at all: a missing edge, a fail.
+  s.min_pulses = 1;
+  const auto never = check_pulse_width({}, s, 6_ms);
+  EXPECT_EQ(never.outcome(), Outcome::Fail);
+  EXPECT_NE(find(never, "pulse.count").detail.find("missing edge"), std::string::npos);
+}
+
 TEST(Boundary, DebounceBoundaryInclusiveAtFilterPlusTolerance) {
   DebounceSpec s{"d", 500_us, 300_ns}; // boundary in [499.7, 500.3] us
   for (int d = -3; d <= 3; ++d) {
