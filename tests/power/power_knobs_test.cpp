@@ -266,7 +266,7 @@ TEST(PowerKnobs, KnobValuesOutsideTheirRangeAreBadInput) {
   EXPECT_EQ(with("clock_period_error = \"1us\""), "accepted");
   EXPECT_EQ(with("clock_period_error = \"-1us\""), "accepted");
   EXPECT_NE(with("clock_period_error = \"1001ns\"")
-                .find("t.toml:29:22: dut.params.clock_period_error: a value in -1us .. 1us"),
+                .find("t.toml:40:22: dut.params.clock_period_error: a value in -1us .. 1us"),
             std::string::npos)
       << with("clock_period_error = \"1001ns\"");
   EXPECT_NE(with("frame_period_error = \"-101us\"").find("frame_period_error: a value in -100us .. 100us"),
