@@ -64,8 +64,8 @@ CheckResult judge_edges(std::span<const Edge> output, const PositionFn& position
     }
     Measurement m =
         measure(fmt::format("{}.edge{}", c.name, n), fired, "counts", want - c.tolerance, want + c.tolerance,
-                fmt::format("{} edge at {} ns fired at {:.3f} counts; expected {} ± {}", level_name(c.level),
-                            e.time.count(), fired, how, c.tolerance),
+                fmt::format("{} edge at {} ns fired at {} counts; expected {} ± {}", level_name(c.level),
+                            e.time.count(), fired + 0.0, how, c.tolerance),
                 window, e.time);
     // Wrapped, the value keeps the rounding of the position as read (4e10 counts: ~1e-5) but
     // its limits are small numbers (101 +- tol: a slack of ~1e-10), so a board exactly at the
@@ -130,8 +130,12 @@ CheckResult check_advance(std::span<const Edge> output, const PositionFn& positi
   return judge_edges(output, position, speed, c, reached, "advance_counts", [&](double s) {
     const double adv =
         spec.advance_counts ? *spec.advance_counts : s * static_cast<double>(spec.advance.count()) / 1e9;
-    return std::pair{spec.setpoint - adv, fmt::format("{} - {:.3f} (speed {:.3f} counts/s) = {:.3f}",
-                                                      spec.setpoint, adv, s, spec.setpoint - adv)};
+    // Shortest round-trip digits (a value a hair off never reads as another); + 0.0 makes -0 a 0,
+    // and a negative advance (reverse motion) reads "+ 0.125", not "- -0.125".
+    const double a = adv + 0.0;
+    return std::pair{spec.setpoint - adv,
+                     fmt::format("{} {} {} (speed {} counts/s) = {}", spec.setpoint, a < 0 ? '+' : '-',
+                                 std::abs(a), s + 0.0, spec.setpoint - adv + 0.0)};
   });
 }
 

@@ -35,11 +35,21 @@ CheckResult check_pulse_width(std::span<const Edge> line, const PulseWidthSpec& 
         spec.name + ".count", fmt::format("nothing judged: no complete {} pulse", level_name(spec.level))));
     return r;
   }
-  r.measurements.push_back(
-      measure(spec.name + ".count", static_cast<double>(count), "", static_cast<double>(spec.min_pulses),
-              std::nullopt,
-              count == 0 ? fmt::format("missing edge: no complete {} pulse", level_name(spec.level))
-                         : fmt::format("{} {} pulses", count, level_name(spec.level))));
+  if (in_pulse && !open_too_long && count < spec.min_pulses && count + 1 >= spec.min_pulses) {
+    // Short of min_pulses only by the pulse the run ended inside: it may still close in time,
+    // so the count is not known (nothing judged), not a missing edge.
+    r.measurements.push_back(error(
+        spec.name + ".count",
+        fmt::format("nothing judged: {} complete {} pulses of {} wanted; the run ended inside one from {} ns "
+                    "that may still complete",
+                    count, level_name(spec.level), spec.min_pulses, start.count())));
+  } else {
+    r.measurements.push_back(
+        measure(spec.name + ".count", static_cast<double>(count), "", static_cast<double>(spec.min_pulses),
+                std::nullopt,
+                count == 0 ? fmt::format("missing edge: no complete {} pulse", level_name(spec.level))
+                           : fmt::format("{} {} pulses", count, level_name(spec.level))));
+  }
   if (open_too_long) {
     const TraceWindow& w = *open_too_long;
     r.measurements.push_back(measure_time(

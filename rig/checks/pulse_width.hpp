@@ -22,7 +22,9 @@ struct PulseWidthSpec {
 // Measurements: "<name>.count" (lower min_pulses), "<name>.shortest" (us, lower min),
 // "<name>.longest" (us, upper max); windows are the pulses that set them. A pulse still
 // open at `end` (the end of the run) is not counted, unless it is already longer than max:
-// then it is the longest, at least (end - start), and fails.
+// then it is the longest, at least (end - start), and fails. Fewer complete pulses than
+// min_pulses only because the run ended inside one leaves `.count` an error (nothing judged):
+// that pulse may still have closed in time.
 [[nodiscard]] CheckResult check_pulse_width(std::span<const Edge> line, const PulseWidthSpec& spec,
                                             std::optional<Nanos> end = std::nullopt);
 

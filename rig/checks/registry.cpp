@@ -850,7 +850,8 @@ CheckResult run(const ShaftMoveParams& p, const Capture& c) {
   if (!p.to_given) s.to = c.end;
   // The direction the capture saw the line start at, over the campaign's assumption.
   if (const auto it = c.initial.find(p.dir_line); it != c.initial.end()) s.dir_initial = it->second;
-  return check_shaft_move(line(c, p.step_line), line(c, p.dir_line), s);
+  s.to_given = p.to_given;
+  return check_shaft_move(line(c, p.step_line), line(c, p.dir_line), s, c.end);
 }
 
 struct Lines {

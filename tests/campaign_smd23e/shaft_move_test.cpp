@@ -63,6 +63,7 @@ TEST(ShaftMove, WindowCountsStepsStrictlyAfterFromAndUpToTo) {
   ShaftMoveSpec s;
   s.from = 2_ms;
   s.to = 3_ms;
+  s.to_given = true; // the campaign closed the window: its steps are counted, the move runs on
   s.steps = 1;
   EXPECT_EQ(check_shaft_move(step, dir, s).outcome(), Outcome::Pass);
 }
@@ -204,7 +205,7 @@ TEST(ShaftMove, TheDirectionLineStartsWhereTheCaptureReadIt) {
   Capture c;
   c.lines["s"] = toggles({1_ms, 2_ms});
   c.lines["d"] = {};
-  c.end = 3_ms;
+  c.end = 5_ms; // still 3 ms after the last step, more than twice its 1 ms interval: the move is over
   EXPECT_EQ(run_check("m", cw, c).outcome(), Outcome::Fail); // dir_initial low: -2 steps
   c.initial["d"] = Level::High;
   EXPECT_EQ(run_check("m", cw, c).outcome(), Outcome::Pass);

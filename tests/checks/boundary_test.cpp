@@ -13,6 +13,7 @@
 
 #include "check_test_support.hpp"
 #include "rig/checks/registry.hpp"
+#include "rig/checks/shaft_move.hpp"
 #include "rig/checks/word_bits.hpp"
 
 namespace hilrig::checks {
@@ -137,6 +138,46 @@ TEST(Boundary, PulseStillOpenAtTheEndFailsOnceOverMax) {
   }
 }
 
+// The 4501's Cycle Output in mode 1 is on while a registration cycle runs, from Start to
+// Latch (seeds/001 L7), each edge one throughput time (125 us, L281) after its input: Start at
+// 1 ms, Latch at 3 ms give a pulse from 1.125 ms to 3.125 ms, 2000 us. With max_us 2000 and
+// the run ending inside it, the pulse is no complete pulse and no missing edge: open up to
+// max_us (end = 3.125 ms, the very instant it closes, is still open: the closing edge is
+// after the end) the check judged nothing, an error; open 1 ns over max_us it already failed.
+TEST(Boundary, PulseCutByTheEndIsAnErrorUntilItOutgrowsMax) {
+  PulseWidthSpec s;
+  s.min = 2000_us;
+  s.max = 2000_us;
+  const Nanos on = 1_ms + 125_us;
+  const std::vector<Edge> open = {{on, Level::High}};
+  for (int d = -2; d <= 2; ++d) {
+    SCOPED_TRACE(d);
+    const auto r = check_pulse_width(open, s, on + 2000_us + Nanos{d});
+    EXPECT_EQ(r.outcome(), d <= 0 ? Outcome::Error : Outcome::Fail);
+    if (d <= 0) {
+      EXPECT_EQ(find(r, "pulse.count").detail.find("missing edge"), std::string::npos);
+    } else {
+      EXPECT_EQ(find(r, "pulse.longest").outcome, Outcome::Fail);
+    }
+  }
+  // The run outlasts the pulse: 2000 us, exactly at both limits, passes.
+  const std::vector<Edge> closed = {{on, Level::High}, {3_ms + 125_us, Level::Low}};
+  EXPECT_EQ(check_pulse_width(closed, s, 3_ms + 200_us).outcome(), Outcome::Pass);
+  // min_pulses 2 with one complete pulse and the second cut: the cut one may still count.
+  s.min_pulses = 2;
+  const std::vector<Edge> second = {
+      {on, Level::High}, {3_ms + 125_us, Level::Low}, {5_ms + 125_us, Level::High}};
+  EXPECT_EQ(find(check_pulse_width(second, s, 6_ms), "pulse.count").outcome, Outcome::Error);
+  // ... but min_pulses 3: even if it closed, one pulse too few. A fail.
+  s.min_pulses = 3;
+  EXPECT_EQ(find(check_pulse_width(second, s, 6_ms), "pulse.count").outcome, Outcome::Fail);
+  // A line never driven to the level has no pulse at all: a missing edge, a fail.
+  s.min_pulses = 1;
+  const auto never = check_pulse_width({}, s, 6_ms);
+  EXPECT_EQ(never.outcome(), Outcome::Fail);
+  EXPECT_NE(find(never, "pulse.count").detail.find("missing edge"), std::string::npos);
+}
+
 TEST(Boundary, DebounceBoundaryInclusiveAtFilterPlusTolerance) {
   DebounceSpec s{"d", 500_us, 300_ns}; // boundary in [499.7, 500.3] us
   for (int d = -3; d <= 3; ++d) {
@@ -160,6 +201,125 @@ TEST(Boundary, ShaftMoveDurationSweptInNanoseconds) {
     const std::vector<Edge> step = {{1_ms, Level::High}, {6'100'000_ns + Nanos{d}, Level::Low}};
     EXPECT_EQ(check_shaft_move(step, {}, s).outcome(), d <= 0 ? Outcome::Pass : Outcome::Fail);
   }
+}
+
+// The SMD23E manual's trapezoid (seeds/003 L919-L928; steps/ms/s x 1000 = steps/s², L848-L851):
+// v_s = 1000, v_p = 10000 steps/s, A = D = 100 steps/ms/s (a = d = 1e5 steps/s²), N = 4000,
+// commanded at 0. Each ramp takes (v_p - v_s) / a = 90 ms and (v_p² - v_s²) / 2a = 495 steps;
+// the cruise 3010 steps / v_p = 301 ms: T = 90 + 301 + 90 = 481 ms, the last step exactly at
+// 481 ms. Step k falls where the position reaches k; `slow` stretches time (a slow clock).
+std::vector<Edge> smd23e_trapezoid(double slow = 1.0) {
+  constexpr double vs = 1000.0, vp = 10000.0, a = 1e5;
+  std::vector<Edge> out;
+  Level l = Level::Low;
+  for (int k = 1; k <= 4000; ++k) {
+    double t = 0.0;
+    if (k <= 495) {
+      t = (std::sqrt(vs * vs + 2.0 * a * k) - vs) / a;
+    } else if (k <= 3505) {
+      t = 0.090 + (k - 495) / vp;
+    } else {
+      t = 0.391 + (vp - std::sqrt(vp * vp - 2.0 * a * (k - 3505))) / a;
+    }
+    l = !l;
+    out.push_back({Nanos{std::llround(t * slow * 1e9)}, l});
+  }
+  return out;
+}
+
+// The window's end swept across the move's last step (481 ms): at it the move is whole (the
+// shaft then stands still to the run's end) and judged exactly; 1 ns before it the window cut
+// the move, and its duration is not known (an error), unless it already ran past
+// duration_max: with the profile (1 / v_s = 1 ms, L863) the last step 0.95 ms after the one
+// before is the same move, at least 481 ms long, over a 480.999999 ms limit.
+TEST(Boundary, ShaftMoveWindowEndSweptAcrossTheLastStep) {
+  const std::vector<Edge> step = smd23e_trapezoid();
+  ASSERT_EQ(step.back().time, 481_ms);
+  const std::vector<Edge> dir = {{0_ms, Level::High}};
+  const MoveProfile profile{
+      .start = 0_ms, .starting_speed = 1000, .speed = 10000, .accel = 1e5, .decel = 1e5, .steps = 4000};
+  for (const bool with_profile : {false, true}) {
+    SCOPED_TRACE(with_profile);
+    ShaftMoveSpec s;
+    s.name = "m";
+    s.to_given = true;
+    if (with_profile) s.profile = profile;
+    s.steps = 4000;
+    s.duration_max = 481_ms;
+    s.to = 481_ms;
+    auto r = check_shaft_move(step, dir, s, 850_ms);
+    EXPECT_EQ(r.outcome(), Outcome::Pass);
+    EXPECT_EQ(find(r, "m.duration").value, 481.0);
+    s.duration_max = 481_ms - 1_ns;
+    EXPECT_EQ(find(check_shaft_move(step, dir, s, 850_ms), "m.duration").outcome, Outcome::Fail);
+    s.to = 481_ms - 1_ns; // the last step falls 1 ns after the window
+    // The window the campaign closed holds 3999 steps: a count, judged.
+    EXPECT_EQ(find(check_shaft_move(step, dir, s, 850_ms), "m.steps").outcome, Outcome::Fail);
+    s.steps.reset();
+    s.duration_max = 481_ms;
+    r = check_shaft_move(step, dir, s, 850_ms);
+    EXPECT_EQ(find(r, "m.duration").outcome, Outcome::Error);
+    EXPECT_EQ(r.outcome(), Outcome::Error);
+    s.duration_max = 481_ms - 1_ns;
+    r = check_shaft_move(step, dir, s, 850_ms);
+    EXPECT_EQ(find(r, "m.duration").outcome, with_profile ? Outcome::Fail : Outcome::Error);
+    if (with_profile) {
+      EXPECT_EQ(find(r, "m.duration").value, 481.0); // to the next step, at least
+    }
+  }
+}
+
+// The run's end swept across the last step, no to_ms: the move is over only once the shaft
+// stood still more than twice its step interval (here its slowest, the last, 0.954 ms) before
+// the run ended; until then steps, duration, peak speed and reversals are errors.
+TEST(Boundary, ShaftMoveRunEndSweptAcrossTheLastStep) {
+  const std::vector<Edge> step = smd23e_trapezoid();
+  const std::vector<Edge> dir = {{0_ms, Level::High}};
+  const Nanos interval = step[3999].time - step[3998].time; // the slowest in the move
+  ShaftMoveSpec s;
+  s.name = "m";
+  s.steps = 4000;
+  s.duration_max = 481_ms;
+  s.peak_min = 10000;
+  s.reversals = 0;
+  for (const Nanos end : {481_ms - 1_ns, 481_ms, 481_ms + 2 * interval}) {
+    SCOPED_TRACE(end.count());
+    s.to = end; // no to_ms: the window ends with the run
+    const auto r = check_shaft_move(step, dir, s, end);
+    EXPECT_EQ(r.outcome(), Outcome::Error);
+    for (const char* m : {"m.steps", "m.duration", "m.peak_speed", "m.reversals"})
+      EXPECT_EQ(find(r, m).outcome, Outcome::Error) << m;
+  }
+  s.to = 481_ms + 2 * interval + 1_ns;
+  const auto r = check_shaft_move(step, dir, s, s.to);
+  EXPECT_EQ(r.outcome(), Outcome::Pass);
+  EXPECT_EQ(find(r, "m.duration").value, 481.0);
+}
+
+// A board 30 % slow (its move 625.3 ms) cut at 300 ms, by the run's end or by to_ms with the
+// capture going on: its 289.9 ms seen is under 481 ms, so nothing is judged, never a pass. Cut
+// at 500 ms it already ran 490+ ms: a fail. Speed already over peak_max, or a reversal more
+// than allowed, fails too.
+TEST(Boundary, ShaftMoveCutMoveFailsOnlyWhatIsAlreadyBeyond) {
+  const std::vector<Edge> step = smd23e_trapezoid(1.3);
+  const std::vector<Edge> dir = {{0_ms, Level::High}};
+  ShaftMoveSpec s;
+  s.name = "m";
+  s.duration_max = 481_ms;
+  s.to = 300_ms;
+  EXPECT_EQ(check_shaft_move(step, dir, s, 300_ms).outcome(), Outcome::Error);
+  s.to_given = true;
+  EXPECT_EQ(check_shaft_move(step, dir, s, 850_ms).outcome(), Outcome::Error);
+  s.to = 500_ms;
+  EXPECT_EQ(check_shaft_move(step, dir, s, 850_ms).outcome(), Outcome::Fail);
+  s.to = 850_ms;
+  EXPECT_EQ(check_shaft_move(step, dir, s, 850_ms).outcome(), Outcome::Fail); // whole: 625.3 ms
+  s.duration_max.reset();
+  s.to = 300_ms;
+  s.peak_max = 10000.0 / 1.3 - 1.0; // the slow board's cruise is 7692.3 steps/s
+  EXPECT_EQ(check_shaft_move(step, dir, s, 850_ms).outcome(), Outcome::Fail);
+  s.peak_max = 10000.0; // under it so far: a faster stretch may follow
+  EXPECT_EQ(check_shaft_move(step, dir, s, 850_ms).outcome(), Outcome::Error);
 }
 
 TEST(Boundary, WordWithinLimitsComparedWithTheOneEpsilon) {

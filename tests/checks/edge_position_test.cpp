@@ -187,5 +187,27 @@ TEST(EdgeAtPosition, JudgesOnlyTheEdgesInItsTimeSpan) {
       << find(r, "off.edges").detail;
 }
 
+// A detail sentence must not read a failing value as its limit, nor print "- -" or "-0".
+// The 4501's Cycle Output answers its input one throughput time late (125 us, seeds/001
+// L281); at 40,000 counts/s (600 rpm, 1000 lines x 4) a board 1 ns slower fires 0.00004
+// counts beyond position 45: to 3 decimals "45.000", its limit.
+TEST(EdgeAtPosition, DetailTellsAFailingValueFromItsLimit) {
+  const EdgeAtPositionSpec spec{.name = "pos", .position = 45.0, .tolerance = 0.0};
+  const std::vector<Edge> late{{1'125'001_ns, Level::High}}; // 45.00004 / 40,000 s
+  const auto r = check_edge_at_position(late, ramp(40'000.0), constant(40'000.0), spec);
+  EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
+  const std::string& d = find(r, "pos.edge0").detail;
+  EXPECT_NE(d.find("fired at 45.00004"), std::string::npos) << d;
+  // Reverse motion with no advance: the advance is -0 counts, read as 0, subtracted once.
+  const AdvanceSpec adv{.name = "adv", .setpoint = -125.0, .advance = 0_ms, .tolerance = 0.0};
+  const std::vector<Edge> at{{3'125'000_ns, Level::High}}; // -125 counts at -40,000 counts/s
+  const auto a = check_advance(at, ramp(-40'000.0), constant(-40'000.0), adv);
+  const std::string& ad = find(a, "adv.edge0").detail;
+  EXPECT_EQ(a.outcome(), rig::Outcome::Pass) << ad;
+  EXPECT_EQ(ad.find("- -"), std::string::npos) << ad;
+  EXPECT_EQ(ad.find("-0 "), std::string::npos) << ad;
+  EXPECT_NE(ad.find("-125 - 0 (speed -40000 counts/s) = -125"), std::string::npos) << ad;
+}
+
 } // namespace
 } // namespace hilrig::checks

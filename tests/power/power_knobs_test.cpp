@@ -46,10 +46,12 @@ void sweep_ns(const campaign::Campaign& c, const std::string& check, const std::
 // truncation). ssi7361_frame_timing judges the low halves at exactly 4 us (min = max). With the
 // clock period T + e: e = +1 ns gives halves of floor(8001 / 2) = 4000 ns (pass), e = +2 ns
 // 4001 ns (fail); e = -1 ns 3999 ns (fail). The high pulses: within a frame T - floor(T/2), and
-// from R25 to the next F1 TINT - (24 T + T/2) (L1090-L1091: TINT 500 us), 304 us at e = 0, the
-// check's max; e = -1 ns makes it 500000 - (24 * 7999 + 3999) = 304025 ns (fail); a longer
-// clock only shortens it, so the clock period never fails that limit upward (the frame timer
-// does: frame_start).
+// from R25 to the next F1 TINT - (24 T + T/2) (L1090-L1091: TINT 500 us), 304 us at e = 0, under
+// the check's max of 312 us (304 us + the frame start's +- T/2 on both frames). Downward the
+// in-frame high fails first: e = -1 ns gives 7999 - 3999 = 4000 ns (pass), e = -2 ns 7998 -
+// 3999 = 3999 ns, under min_us 4; the gap reaches 312 us only at e = -327 ns. A longer clock
+// only shortens the gap and lengthens the in-frame high (which 312 us bounds loosely), so the
+// clock period never fails that check upward within the knob's range.
 TEST(PowerSsi7361, ClockHalvesFailOneOrTwoNanosecondsOffTheManualsPeriod) {
   const campaign::Campaign c = load("campaigns/ssi7361/ssi7361_frame_timing.toml");
   PowerOptions options;
@@ -75,10 +77,10 @@ TEST(PowerSsi7361, ClockHalvesFailOneOrTwoNanosecondsOffTheManualsPeriod) {
 
   const PowerRow& high_down = row_of(r, "clock_high", "down");
   ASSERT_TRUE(high_down.threshold && high_down.measured && high_down.limit) << high_down.reason;
-  EXPECT_NEAR(*high_down.threshold, -0.001, 1e-12);
-  EXPECT_EQ(high_down.measurement, "clock_high.longest");
-  EXPECT_DOUBLE_EQ(*high_down.measured, 304.025);
-  EXPECT_DOUBLE_EQ(*high_down.limit, 304.0);
+  EXPECT_NEAR(*high_down.threshold, -0.002, 1e-12);
+  EXPECT_EQ(high_down.measurement, "clock_high.shortest");
+  EXPECT_DOUBLE_EQ(*high_down.measured, 3.999);
+  EXPECT_DOUBLE_EQ(*high_down.limit, 4.0);
 
   const PowerRow& high_up = row_of(r, "clock_high", "up");
   EXPECT_FALSE(high_up.threshold.has_value());
@@ -264,7 +266,7 @@ TEST(PowerKnobs, KnobValuesOutsideTheirRangeAreBadInput) {
   EXPECT_EQ(with("clock_period_error = \"1us\""), "accepted");
   EXPECT_EQ(with("clock_period_error = \"-1us\""), "accepted");
   EXPECT_NE(with("clock_period_error = \"1001ns\"")
-                .find("t.toml:29:22: dut.params.clock_period_error: a value in -1us .. 1us"),
+                .find("t.toml:40:22: dut.params.clock_period_error: a value in -1us .. 1us"),
             std::string::npos)
       << with("clock_period_error = \"1001ns\"");
   EXPECT_NE(with("frame_period_error = \"-101us\"").find("frame_period_error: a value in -100us .. 100us"),
