@@ -65,7 +65,7 @@ void Smd23e::power_on() {
   flash_result_ = 0;
   cmd_err_ = in_err_ = move_complete_ = homed_ = hold_state_ = inv_par_ = false;
   limit_cond_ = stall_ = drv_fault_ = lock_cw_ = lock_ccw_ = false;
-  program_mode_ = transmit_segment_ = false;
+  program_mode_ = transmit_segment_ = segment_refused_ = false;
   net_loss_ = false;
   pos_invalid_ = true; // 0x6408 includes Position Invalid (L2284); a flash load leaves it set
   last_jerk_ = 0;
@@ -527,6 +527,11 @@ void Smd23e::process_command(const Words& previous) {
     if ((falling & msw::kProgramMove) != 0) {
       program_mode_ = false;
       transmit_segment_ = false;
+      if (segment_refused_) {
+        // "All of the segments ... must be written to the SMD23E before the move can be run"
+        // (L1179): a cycle with a refused segment leaves no move to run ([MODEL]).
+        segments_.clear();
+      }
       if ((lsw & lsw::kSaveAssembled) != 0) {
         flash_locked_ = true;
         flash_segments_ = segments_;
@@ -540,9 +545,11 @@ void Smd23e::process_command(const Words& previous) {
       transmit_segment_ = false;
       const auto offset = read_value(2, kMaxTarget);
       const auto spec = read_spec(true);
-      if (!offset || !spec || out_[8] != 0 || segments_.size() >= 16 ||
-          (!segments_.empty() && segments_.back().spec.vp == spec->vp)) {
-        command_error(); // L1118, L1196
+      // Equal speeds in consecutive segments are a Blend rule (L1118), judged at Run: the
+      // type is chosen only then (L1179, L2472).
+      if (!offset || !spec || out_[8] != 0 || segments_.size() >= 16) {
+        segment_refused_ = true;
+        command_error(); // L1118 (v_p >= v_s), L1196
       } else {
         segments_.push_back({*offset, *spec});
       }
@@ -690,6 +697,7 @@ void Smd23e::dispatch(std::uint16_t bit, bool indexed_start) {
     }
     program_mode_ = true;
     transmit_segment_ = true;
+    segment_refused_ = false;
     segments_.clear();
     return;
   case msw::kRunAssembled:

@@ -456,15 +456,6 @@ TEST_F(Smd23eMoves, HoldOnABlendUsesTheCurrentSegmentsDecelerationAndEndsTheMove
   EXPECT_EQ(position_word(), static_cast<std::int64_t>(std::floor(at_hold + 110.0)) + 2000);
 }
 
-TEST_F(Smd23eMoves, BlendSegmentWithTheSameSpeedAsThePreviousIsRejected) {
-  configure();
-  command(msw::kProgramMove);
-  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000});
-  write(msw::kProgramMove);
-  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000}); // same v_p
-  EXPECT_TRUE(bit1(sw1::kCommandError));
-}
-
 TEST_F(Smd23eMoves, AtMostSixteenSegments) {
   configure();
   command(msw::kProgramMove);
