@@ -364,7 +364,19 @@ void Smd23e::process_config(const Words& previous) {
     return; // no new configuration while Read Present Configuration is set
   }
   const auto c = validate_config(out_);
+  // Every write in Configuration Mode is "a configuration ... written" (L2846), "new
+  // Configuration Data" (L1132), the same words again included: the manual ties both to the
+  // write, not to a change or to entering the mode (spec §6.4 [A]). An invalid one is written
+  // too: "after any invalid configuration has been written to the driver" (L2830).
+  // It ends the move in every state, a Dwell Move's pause and a held move too ([MODEL]): the
+  // assembled move it runs is erased, a held move would resume under other settings, and
+  // after an invalid one the motor is not powered (L2828).
+  if (run_ || pause_event_.valid() || held_) {
+    immediate_stop();
+  }
+  pos_invalid_ = true; // a configuration written sets Position Invalid (L2846)
   if (!c) {
+    // Unconfigured again: commands ignored, 0x6408 as at power-up (L2239, L2284, L2372).
     config_error_ = true;
     configured_ = false;
     return;
@@ -372,14 +384,6 @@ void Smd23e::process_config(const Words& previous) {
   const bool save = (out_[1] & cfgw::kSaveConfig) != 0 && (previous[1] & cfgw::kSaveConfig) == 0;
   Config applied = *c;
   applied.words[1] = static_cast<std::uint16_t>(applied.words[1] & ~cfgw::kSaveConfig);
-  // Every valid write in Configuration Mode is "a configuration ... written" (L2846), "new
-  // Configuration Data" (L1132), the same words again included: the manual ties both to the
-  // write, not to a change or to entering the mode (spec §6.4 [A]).
-  // It ends the move in every state, a Dwell Move's pause and a held move too ([MODEL]): the
-  // assembled move it runs is erased, and a held move would resume under other settings.
-  if (run_ || pause_event_.valid() || held_) {
-    immediate_stop();
-  }
   cfg_ = applied;
   // A changed idle current takes effect only at the end of the first move after
   // re-configuration (L2350); the first configuration since power-up has nothing to keep.
@@ -389,8 +393,7 @@ void Smd23e::process_config(const Words& previous) {
   pending_idle_percent_ = applied.words[7];
   configured_ = true;
   config_error_ = false;
-  pos_invalid_ = true;         // a configuration written sets Position Invalid (L2846)
-  segments_ = flash_segments_; // and erases the RAM assembled move (L1132); a flash one stays ([MODEL])
+  segments_ = flash_segments_; // it erases the RAM assembled move (L1132); a flash one stays ([MODEL])
   last_motion_end_ = sched_.now();
   if (save) {
     flash_result_ = 0xAAAA;
