@@ -65,7 +65,7 @@ void Smd23e::power_on() {
   flash_result_ = 0;
   cmd_err_ = in_err_ = move_complete_ = homed_ = hold_state_ = inv_par_ = false;
   limit_cond_ = stall_ = drv_fault_ = lock_cw_ = lock_ccw_ = false;
-  program_mode_ = transmit_segment_ = false;
+  program_mode_ = transmit_segment_ = segment_refused_ = false;
   net_loss_ = false;
   pos_invalid_ = true; // 0x6408 includes Position Invalid (L2284); a flash load leaves it set
   last_jerk_ = 0;
@@ -364,7 +364,19 @@ void Smd23e::process_config(const Words& previous) {
     return; // no new configuration while Read Present Configuration is set
   }
   const auto c = validate_config(out_);
+  // Every write in Configuration Mode is "a configuration ... written" (L2846), "new
+  // Configuration Data" (L1132), the same words again included: the manual ties both to the
+  // write, not to a change or to entering the mode (spec §6.4 [A]). An invalid one is written
+  // too: "after any invalid configuration has been written to the driver" (L2830).
+  // It ends the move in every state, a Dwell Move's pause and a held move too ([MODEL]): the
+  // assembled move it runs is erased, a held move would resume under other settings, and
+  // after an invalid one the motor is not powered (L2828).
+  if (run_ || pause_event_.valid() || held_) {
+    immediate_stop();
+  }
+  pos_invalid_ = true; // a configuration written sets Position Invalid (L2846)
   if (!c) {
+    // Unconfigured again: commands ignored, 0x6408 as at power-up (L2239, L2284, L2372).
     config_error_ = true;
     configured_ = false;
     return;
@@ -372,14 +384,6 @@ void Smd23e::process_config(const Words& previous) {
   const bool save = (out_[1] & cfgw::kSaveConfig) != 0 && (previous[1] & cfgw::kSaveConfig) == 0;
   Config applied = *c;
   applied.words[1] = static_cast<std::uint16_t>(applied.words[1] & ~cfgw::kSaveConfig);
-  // Every valid write in Configuration Mode is "a configuration ... written" (L2846), "new
-  // Configuration Data" (L1132), the same words again included: the manual ties both to the
-  // write, not to a change or to entering the mode (spec §6.4 [A]).
-  // It ends the move in every state, a Dwell Move's pause and a held move too ([MODEL]): the
-  // assembled move it runs is erased, and a held move would resume under other settings.
-  if (run_ || pause_event_.valid() || held_) {
-    immediate_stop();
-  }
   cfg_ = applied;
   // A changed idle current takes effect only at the end of the first move after
   // re-configuration (L2350); the first configuration since power-up has nothing to keep.
@@ -389,8 +393,7 @@ void Smd23e::process_config(const Words& previous) {
   pending_idle_percent_ = applied.words[7];
   configured_ = true;
   config_error_ = false;
-  pos_invalid_ = true;         // a configuration written sets Position Invalid (L2846)
-  segments_ = flash_segments_; // and erases the RAM assembled move (L1132); a flash one stays ([MODEL])
+  segments_ = flash_segments_; // it erases the RAM assembled move (L1132); a flash one stays ([MODEL])
   last_motion_end_ = sched_.now();
   if (save) {
     flash_result_ = 0xAAAA;
@@ -527,6 +530,11 @@ void Smd23e::process_command(const Words& previous) {
     if ((falling & msw::kProgramMove) != 0) {
       program_mode_ = false;
       transmit_segment_ = false;
+      if (segment_refused_) {
+        // "All of the segments ... must be written to the SMD23E before the move can be run"
+        // (L1179): a cycle with a refused segment leaves no move to run ([MODEL]).
+        segments_.clear();
+      }
       if ((lsw & lsw::kSaveAssembled) != 0) {
         flash_locked_ = true;
         flash_segments_ = segments_;
@@ -540,9 +548,11 @@ void Smd23e::process_command(const Words& previous) {
       transmit_segment_ = false;
       const auto offset = read_value(2, kMaxTarget);
       const auto spec = read_spec(true);
-      if (!offset || !spec || out_[8] != 0 || segments_.size() >= 16 ||
-          (!segments_.empty() && segments_.back().spec.vp == spec->vp)) {
-        command_error(); // L1118, L1196
+      // Equal speeds in consecutive segments are a Blend rule (L1118), judged at Run: the
+      // type is chosen only then (L1179, L2472).
+      if (!offset || !spec || out_[8] != 0 || segments_.size() >= 16) {
+        segment_refused_ = true;
+        command_error(); // L1118 (v_p >= v_s), L1196
       } else {
         segments_.push_back({*offset, *spec});
       }
@@ -690,6 +700,7 @@ void Smd23e::dispatch(std::uint16_t bit, bool indexed_start) {
     }
     program_mode_ = true;
     transmit_segment_ = true;
+    segment_refused_ = false;
     segments_.clear();
     return;
   case msw::kRunAssembled:

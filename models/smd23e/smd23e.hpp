@@ -250,6 +250,7 @@ private:
   bool lock_ccw_ = false;
   bool program_mode_ = false;
   bool transmit_segment_ = false;
+  bool segment_refused_ = false; // a segment of this programming cycle was refused (L1196)
   std::uint16_t last_jerk_ = 0;
 
   std::array<Level, 3> raw_{Level::Low, Level::Low, Level::Low};

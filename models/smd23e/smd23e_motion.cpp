@@ -649,6 +649,12 @@ void Smd23e::start_assembled() {
     run_dwell_segment(0, out_[9]);
     return;
   }
+  for (std::size_t i = 1; i < segments_.size(); ++i) {
+    if (segments_[i].spec.vp == segments_[i - 1].spec.vp) {
+      command_error(); // a Blend segment's v_p must differ from the previous one's (L1118)
+      return;
+    }
+  }
   const int dir = (out_[1] & lsw::kBlendCcw) != 0 ? -1 : 1;
   // Blend: back to back; speed changes start at each boundary, up with the new segment's A,
   // down with the old segment's D; the last segment ends at v_s (L1117–1118).

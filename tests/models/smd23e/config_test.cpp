@@ -376,5 +376,57 @@ TEST_F(Smd23eConfig, M13InvertedSinkingSensorIsCompensatedByTheActiveLevel) {
   EXPECT_FALSE(bit2(sw2::kInput1));
 }
 
+// Position Invalid is "1" when "A configuration is written to the SMD23E" (L2846), and an
+// invalid one is written too: Configuration Error is "1 ... after any invalid configuration
+// has been written to the driver" (L2830). The unit is then unconfigured, does not power the
+// motor (L2828) and reads as at power-up, 0x6408 (L2284, L2372); a valid one reads 0x4408.
+// Cases: the Starting Speed's range 1 ... 1,999,999 (L863, L2268), at each end and one beyond.
+struct WrittenStartingSpeed {
+  const char* name;
+  std::int32_t vs;
+  bool valid;
+};
+
+class Smd23eConfigWritten : public Smd23eBench, public ::testing::WithParamInterface<WrittenStartingSpeed> {};
+
+TEST_P(Smd23eConfigWritten, InvalidatesThePositionValidOrNot) {
+  configure();
+  preset(5);
+  ASSERT_EQ(sw1(), sw1::kControllerOk | sw1::kStopped); // 0x4008: a valid position
+  dut.write_outputs(config_block(ConfigWords{.vs = GetParam().vs}));
+  EXPECT_EQ((sw1() & sw1::kConfigError) != 0, !GetParam().valid);
+  dut.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_EQ(sw1(), GetParam().valid ? 0x4408 : 0x6408);
+  EXPECT_EQ(bit2(sw2::kDriverEnabled), GetParam().valid);
+  configure(); // a valid configuration and a preset make it valid again (L992)
+  preset(5);
+  EXPECT_EQ(sw1(), sw1::kControllerOk | sw1::kStopped);
+}
+
+// [MODEL] as for a valid one (README): an invalid configuration written during a move stops
+// the step train at once, the more so as the unit no longer powers the motor (L2828) nor
+// accepts commands (L2239) that could stop it.
+TEST_F(Smd23eConfig, AnInvalidConfigurationWrittenDuringAMoveStopsIt) {
+  configure();
+  preset(0);
+  command(msw::kRelative, kDrive, MoveWords{.value = 1000}); // 0.1 s ramp (60 steps), then 1100/s
+  run_to(500_ms);
+  dut.write_outputs(config_block(ConfigWords{.vs = 0}));
+  EXPECT_EQ(dut.step_position(sched.now()), 500);
+  run_to(2_s);
+  EXPECT_EQ(dut.step_position(sched.now()), 500);
+  dut.write_outputs(Words{0, kDrive, 0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_EQ(sw1(), 0x6408); // stopped, no Move Complete (L2860)
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, Smd23eConfigWritten,
+                         ::testing::Values(WrittenStartingSpeed{"Zero", 0, false},
+                                           WrittenStartingSpeed{"One", 1, true},
+                                           WrittenStartingSpeed{"Top", 1'999'999, true},
+                                           WrittenStartingSpeed{"AboveTop", 2'000'000, false}),
+                         [](const ::testing::TestParamInfo<WrittenStartingSpeed>& i) {
+                           return std::string(i.param.name);
+                         });
+
 } // namespace
 } // namespace hilrig::models::smd23e::test

@@ -456,15 +456,6 @@ TEST_F(Smd23eMoves, HoldOnABlendUsesTheCurrentSegmentsDecelerationAndEndsTheMove
   EXPECT_EQ(position_word(), static_cast<std::int64_t>(std::floor(at_hold + 110.0)) + 2000);
 }
 
-TEST_F(Smd23eMoves, BlendSegmentWithTheSameSpeedAsThePreviousIsRejected) {
-  configure();
-  command(msw::kProgramMove);
-  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000});
-  write(msw::kProgramMove);
-  write(msw::kProgramMove | msw::kProgramSegment, kDrive, MoveWords{.value = 1000}); // same v_p
-  EXPECT_TRUE(bit1(sw1::kCommandError));
-}
-
 TEST_F(Smd23eMoves, AtMostSixteenSegments) {
   configure();
   command(msw::kProgramMove);
@@ -869,6 +860,33 @@ TEST_F(Smd23eHomingIgnoredLimit, TheIgnoredLimitVariantDrivesOnWithBothLimitsAct
   command(msw::kHomeCw);
   EXPECT_TRUE(bit1(sw1::kMovingCw));
   EXPECT_FALSE(bit1(sw1::kInputError));
+}
+
+// Only repeated relative moves or jogs go past ±8,388,607 (L876), up to the register's
+// 32,767,999 (L2910). [MODEL] (README): past it the register reads 32,767,999 while the count
+// goes on, and follows the count again once it is back in range.
+TEST_F(Smd23eMoves, TheMotorPositionRegisterReadsItsEndWhileTheCountIsPastIt) {
+  configure();
+  preset(8'388'607);
+  const auto relative = [this](std::int32_t offset) {
+    command(msw::kRelative, kDrive,
+            MoveWords{.value = offset, .vp = 2'999'999, .accel = 5000, .decel = 5000});
+    run_to(sched.now() + 10_s);
+    ASSERT_TRUE(bit1(sw1::kMoveComplete));
+  };
+  relative(8'388'607);
+  relative(8'388'607);
+  EXPECT_EQ(position_word(), 25'165'821); // in range: exact
+  relative(8'388'607);                    // the count is at 33,554,428
+  EXPECT_EQ(position_word(), 32'767'999);
+  const std::int64_t steps = dut.step_position(sched.now());
+  relative(-786'428); // count 32,768,000: one beyond the end
+  EXPECT_EQ(dut.step_position(sched.now()), steps - 786'428);
+  EXPECT_EQ(position_word(), 32'767'999);
+  relative(-1); // at the end
+  EXPECT_EQ(position_word(), 32'767'999);
+  relative(-1); // one inside
+  EXPECT_EQ(position_word(), 32'767'998);
 }
 
 } // namespace

@@ -29,6 +29,17 @@ TEST(Smd23eMultiWord, M24RegisterExtremes) {
   EXPECT_EQ(decode_multiword(0x7FFF, 0x03E7), 32'767'999);
 }
 
+// [MODEL] (README): a value past either end of the registers' range (L876, L2910) is reported
+// as that end; at the end and one inside it is exact.
+TEST(Smd23eMultiWord, ValuesPastTheRegisterEndsReadAsTheEnds) {
+  EXPECT_EQ(encode_multiword(32'767'998), (MultiWord{0x7FFF, 998}));
+  EXPECT_EQ(encode_multiword(32'767'999), (MultiWord{0x7FFF, 999}));
+  EXPECT_EQ(encode_multiword(32'768'000), (MultiWord{0x7FFF, 999}));
+  EXPECT_EQ(encode_multiword(-32'767'999), (MultiWord{0x8001, as_word(-999)}));
+  EXPECT_EQ(encode_multiword(-32'768'000), (MultiWord{0x8000, 0}));
+  EXPECT_EQ(encode_multiword(-32'768'001), (MultiWord{0x8000, 0}));
+}
+
 TEST(Smd23eMultiWord, RejectsLowerWordAbove999AndMixedSigns) {
   EXPECT_FALSE(decode_multiword(1, 1000).has_value());        // M-25's (1, 1000)
   EXPECT_FALSE(decode_multiword(1, as_word(-1)).has_value()); // (+1, −1)
