@@ -192,4 +192,16 @@ struct CheckResult {
   }
 };
 
+// The word one measurement reads, in its check's word (docs/campaigns.md, "each check's word"): in a
+// fault run a failing measurement of the check that caught the fault is "caught", any failing
+// one of a check not judged "not judged", never "fail". Every output that shows a measurement
+// (report.html, trend.html, compare) reads it from here, so none paints a caught fault red.
+[[nodiscard]] constexpr Judgement measurement_judgement(const CheckResult& check, const Measurement& m) {
+  if (check.judgement == Judgement::Caught || check.judgement == Judgement::NotJudged)
+    return m.outcome == Outcome::Pass ? Judgement::Pass : check.judgement;
+  return m.outcome == Outcome::Pass   ? Judgement::Pass
+         : m.outcome == Outcome::Fail ? Judgement::Fail
+                                      : Judgement::Error;
+}
+
 } // namespace hilrig::rig
