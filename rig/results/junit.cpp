@@ -93,7 +93,8 @@ std::vector<Case> cases_of(const RunResult& run) {
                          fmt::format("fault '{}' not caught: none of its must_catch checks ran", run.fault),
                          {}});
   }
-  if (!run.error.empty()) cases.push_back(Case{"rig", Verdict::Errored, run.error, run.error});
+  if (!run.error.empty())
+    cases.push_back(Case{std::string(kRigCheckName), Verdict::Errored, run.error, run.error});
   return cases;
 }
 

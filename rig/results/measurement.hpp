@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/time.hpp"
@@ -167,6 +168,13 @@ enum class Judgement { Pass, Fail, Caught, NotJudged, Error };
   }
   return "error";
 }
+
+// The rig's own entries among a run's checks: the host's handshakes (kind "handshake") and a
+// hardware run's timing (kind "rt_timing"; junit.xml's testcase for a rig fault has the name
+// too). A campaign's check may take neither (the campaign reader refuses them), so no output
+// holds two entries of one name.
+inline constexpr std::string_view kHostCheckName = "host";
+inline constexpr std::string_view kRigCheckName = "rig";
 
 // One check's result: its measurements, all of which must pass for the check to pass.
 struct CheckResult {
