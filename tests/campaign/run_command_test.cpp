@@ -682,6 +682,41 @@ TEST(RunSuite, ExitStatusIsTheWorstOfTheCampaigns) {
   EXPECT_FALSE(fs::exists(dir / "out2" / "junit.xml"));
 }
 
+// docs/campaigns.md (judgement table): `error`, a check that could not be judged, is not
+// `fail`. A suite's summary line and index word exit 1 by the verdict behind it. The
+// unjudged campaign's setpoint (5000 counts) is never crossed by a shaft that turns one
+// revolution of 400 counts each way, so its check judged nothing.
+TEST(RunSuite, ACampaignThatCouldNotBeJudgedIsNotCalledFailed) {
+  const fs::path dir = scratch("suite_unjudged");
+  std::string text = passing_campaign("unjudged");
+  text.replace(text.find("setpoint = 100"), 14, "setpoint = 5000");
+  const std::string unjudged = write_file(dir, "unjudged.toml", text).string();
+  const std::string pass = write_file(dir, "pass.toml", passing_campaign("pass")).string();
+  const std::string late = write_file(dir, "late.toml", late_campaign("late")).string();
+  SuiteRun r = run_suite({pass, unjudged}, dir / "out1");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.out.find("suite: 2 campaign(s), 1 passed, 0 with a failed check, 1 with a check that could not "
+                       "be judged, 0 bad input, 0 rig fault; exit 1 (a check could not be judged)"),
+            std::string::npos)
+      << r.out;
+  std::string index = hilrig::test::read_file(dir / "out1" / "report.html");
+  EXPECT_EQ(index.find("a check failed"), std::string::npos) << index;
+  EXPECT_NE(index.find("exit 1 (a check could not be judged)"), std::string::npos) << index;
+  EXPECT_NE(index.find("<td class=\"error\">a check could not be judged</td>"), std::string::npos) << index;
+  // A failed check beside it: each campaign in its own words, the suite's exit names both.
+  r = run_suite({late, unjudged}, dir / "out2");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.out.find("0 passed, 1 with a failed check, 1 with a check that could not be judged"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("exit 1 (a check failed, another could not be judged)"), std::string::npos) << r.out;
+  index = hilrig::test::read_file(dir / "out2" / "report.html");
+  EXPECT_NE(index.find("<td class=\"fail\">a check failed</td>"), std::string::npos) << index;
+  // A failed check alone reads as before.
+  r = run_suite({pass, late}, dir / "out3");
+  EXPECT_NE(r.out.find("exit 1 (a check failed)\n"), std::string::npos) << r.out;
+}
+
 TEST(RunSuite, WorstStatusRanksRigFaultOverBadInputOverFailure) {
   EXPECT_EQ(worst_status(0, 0), 0);
   EXPECT_EQ(worst_status(0, 1), 1);
