@@ -282,15 +282,18 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
       const bool passed = rig::run_outcome(output.result) == rig::Outcome::Pass;
       const bool first = &run == &p.runs.front();
       std::string kept; // the trace file the run's result links (its failure trace when it has one)
+      // A run that ran to its end: its trace ends there (a run the rig stopped ends where it stopped).
+      const std::optional<Nanos> trace_end =
+          output.result.error.empty() ? std::optional(p.c.scenario_of(run).end) : std::nullopt;
       if (first && rig::keeps_trace(o.trace, true, passed)) {
-        write_trace_files(dir, "trace", *output.trace, output.result, false);
+        write_trace_files(dir, "trace", *output.trace, output.result, false, trace_end);
         kept = "trace.vcd";
       }
       if (rig::keeps_trace(o.trace, false, passed) && failure_traces < kMaxFailureTraces) {
         ++failure_traces;
         const std::string stem = fmt::format("trace-run{}", run.index);
         if (kept.empty()) {
-          write_trace_files(dir, stem, *output.trace, output.result, true);
+          write_trace_files(dir, stem, *output.trace, output.result, true, trace_end);
         } else {
           link_trace_files(dir, "trace", stem, *output.trace, output.result); // the same bytes, once
         }

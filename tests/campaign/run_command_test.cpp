@@ -33,6 +33,7 @@
 #include "rig/results/run_log.hpp"
 #include "test_support.hpp"
 #include "tests/tools/scratch_files.hpp"
+#include "tests/tools/vcd_reader.hpp"
 
 namespace hilrig::cli {
 namespace {
@@ -81,6 +82,20 @@ TEST(RunCommand, FailedCheckExitsOne) {
   // The first run's failure trace is its trace.vcd: the same bytes (written once, linked).
   EXPECT_EQ(hilrig::test::read_file(dir / "out" / "trace-run0.vcd"),
             hilrig::test::read_file(dir / "out" / "trace.vcd"));
+}
+
+// docs/campaigns.md ("trace.vcd: the full trace of the shard's first run"): the trace ends at
+// the campaign's end (300 ms), not at its last change, so a viewer draws the levels held to
+// the end. The shaft's last move ends at 300.21 ms, after the end, so nothing changes at
+// 300 ms itself: the end is the last time stamp, once, after every change.
+TEST(RunCommand, TheTraceEndsAtTheCampaignsEnd) {
+  const fs::path out = scratch("trace_end");
+  ASSERT_EQ(run(write_file(out, "pass.toml", campaign::test::kPlsCampaign).string(), out / "out"), 0);
+  const hilrig::test::Vcd vcd = hilrig::test::read_vcd_file((out / "out" / "trace.vcd").string());
+  ASSERT_GE(vcd.times.size(), 2U);
+  EXPECT_EQ(vcd.times.back(), 300'000'000);
+  EXPECT_LT(vcd.times[vcd.times.size() - 2], 300'000'000);
+  for (std::size_t i = 1; i < vcd.times.size(); ++i) EXPECT_LT(vcd.times[i - 1], vcd.times[i]) << i;
 }
 
 // --trace: which runs keep their trace files. The campaigns: the inline reference PLS (one
