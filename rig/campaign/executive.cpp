@@ -80,7 +80,7 @@ checks::Capture capture_of(const Scenario& s, const VirtualRun& v) {
 // The host's writes, each timed to its Acknowledge, as one result entry.
 rig::CheckResult host_check(const std::vector<rig::Measurement>& handshakes) {
   rig::CheckResult c;
-  c.check = "host";
+  c.check = rig::kHostCheckName;
   c.kind = "handshake";
   c.measurements = handshakes;
   return c;
@@ -89,7 +89,7 @@ rig::CheckResult host_check(const std::vector<rig::Measurement>& handshakes) {
 // A hardware run's own timing (wake-up latency, edge errors) as one result entry.
 rig::CheckResult rig_check(const std::vector<rig::Measurement>& timing) {
   rig::CheckResult c;
-  c.check = "rig";
+  c.check = rig::kRigCheckName;
   c.kind = "rt_timing";
   c.measurements = timing;
   return c;

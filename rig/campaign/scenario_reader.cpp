@@ -19,6 +19,7 @@
 #include "rig/campaign/toml_reader.hpp"
 #include "rig/checks/registry.hpp"
 #include "rig/duts/device_programs.hpp"
+#include "rig/results/measurement.hpp"
 
 namespace hilrig::campaign {
 
@@ -830,6 +831,17 @@ private:
       if (!is_label(c.name)) r.fail("name", "the check's name: " + label_range());
       if (s.check(c.name) != nullptr)
         r.fail("name", fmt::format("a new check name (\"{}\" is used above)", c.name));
+      // Every output names a measurement "<check>" or "<check>.<what>": without a dot in a
+      // check's name no two checks' measurements can share a name ("on_forward.max" as a check
+      // would be check on_forward's max), and the rig's own entries keep theirs.
+      if (c.name.find('.') != std::string::npos)
+        r.fail("name", fmt::format("a check name without '.' (\"{}\": '.' joins a check's name to its "
+                                   "measurements', so it could read as another check's measurement)",
+                                   c.name));
+      if (c.name == rig::kHostCheckName || c.name == rig::kRigCheckName)
+        r.fail("name", fmt::format("a check name other than \"{}\" (the rig's own entry: \"host\" holds the "
+                                   "host's handshakes, \"rig\" a hardware run's timing and a rig fault)",
+                                   c.name));
       const checks::CheckKind* kind = checks::find_check_kind(c.kind);
       if (kind == nullptr) {
         std::vector<std::string> names;

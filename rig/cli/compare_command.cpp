@@ -78,7 +78,7 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--default-rel", args->default_rel,
                   "relative threshold for unnamed measurements (0.05 = 5%)")
       ->check(non_negative_number());
-  cmd->add_flag("--all", args->all, "list every measurement, not only drifts and regressions");
+  cmd->add_flag("--all", args->all, "list every measurement, not only drifts, regressions and improvements");
   cmd->callback([args] {
     const int code = run_compare(*args);
     if (code != kPassed) exit_with(code);

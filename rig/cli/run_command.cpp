@@ -218,6 +218,7 @@ struct Ran {
   std::filesystem::path log;
   rig::JunitClock clock;
   std::optional<rig::JunitSuiteBody> junit; // its part of a suite's junit.xml, when made while held
+  std::string not_run;                      // why it never started ("" when it did)
 };
 
 // Runs a prepared campaign into dir. The summary goes to out, the rest to err.
@@ -281,15 +282,18 @@ Ran execute(const RunOptions& o, Prepared& p, const std::filesystem::path& dir, 
       const bool passed = rig::run_outcome(output.result) == rig::Outcome::Pass;
       const bool first = &run == &p.runs.front();
       std::string kept; // the trace file the run's result links (its failure trace when it has one)
+      // A run that ran to its end: its trace ends there (a run the rig stopped ends where it stopped).
+      const std::optional<Nanos> trace_end =
+          output.result.error.empty() ? std::optional(p.c.scenario_of(run).end) : std::nullopt;
       if (first && rig::keeps_trace(o.trace, true, passed)) {
-        write_trace_files(dir, "trace", *output.trace, output.result, false);
+        write_trace_files(dir, "trace", *output.trace, output.result, false, trace_end);
         kept = "trace.vcd";
       }
       if (rig::keeps_trace(o.trace, false, passed) && failure_traces < kMaxFailureTraces) {
         ++failure_traces;
         const std::string stem = fmt::format("trace-run{}", run.index);
         if (kept.empty()) {
-          write_trace_files(dir, stem, *output.trace, output.result, true);
+          write_trace_files(dir, stem, *output.trace, output.result, true, trace_end);
         } else {
           link_trace_files(dir, "trace", stem, *output.trace, output.result); // the same bytes, once
         }
@@ -378,19 +382,6 @@ RunProgress::Mode progress_mode(const RunOptions& o) {
   return o.progress ? RunProgress::Mode::InPlace : RunProgress::Mode::Quiet;
 }
 
-const char* status_word(int status) {
-  switch (status) {
-  case kPassed:
-    return "passed";
-  case kCheckFailed:
-    return "a check failed";
-  case kBadInput:
-    return "bad input";
-  default:
-    return "rig fault";
-  }
-}
-
 // A suite: every campaign read and checked, then run (N at a time) into OUT/<subdir>/, then
 // the aggregated junit.xml and index report.html.
 int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
@@ -454,6 +445,7 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
   // Each campaign writes its own directory and its messages into its own buffers, printed in
   // suite order as soon as every campaign before it is done: the same text for any --jobs.
   const std::size_t n = prepared.size();
+  const auto suite_started = wall_start(o.epoch); // a campaign the stop kept from starting dates from here
   std::vector<Ran> ran(n);
   std::vector<std::ostringstream> outs(n);
   std::vector<std::ostringstream> errs(n);
@@ -467,6 +459,10 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
       if (stop.requested()) {
         errs[i] << fmt::format("hilrig run: {}: not run (stopped by {})\n", chosen[i].file, stop.reason());
         ran[i].status = kRigFault;
+        // Its junit testsuite carries the suite's start and host, as the campaigns that ran.
+        ran[i].clock.started_at = iso8601_utc(suite_started);
+        ran[i].clock.hostname = host_name();
+        ran[i].not_run = fmt::format("not run: the suite was stopped by {}", stop.reason());
       } else {
         ran[i] = execute(o, *prepared[i], o.out / chosen[i].subdir, &stop, progress, outs[i], errs[i],
                          &junit_held);
@@ -492,7 +488,8 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
   for (std::size_t i = 0; i < n; ++i) {
     status = worst_status(status, ran[i].status);
     rig::SuiteRow row{chosen[i].file, chosen[i].subdir, ran[i].status, ran[i].result, {}};
-    if (!ran[i].result) row.message = "no results: see the command's messages";
+    if (!ran[i].result)
+      row.message = ran[i].not_run.empty() ? "no results: see the command's messages" : ran[i].not_run;
     rows.push_back(std::move(row));
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -504,13 +501,15 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
                        ran[i].junit ? &*ran[i].junit : nullptr,
                        {}});
     else // a campaign without results is an error in junit.xml too, not a missing testsuite
-      junit.push_back(
-          {nullptr,
-           chosen[i].file,
-           ran[i].clock,
-           {},
-           nullptr,
-           fmt::format("no results: {} (see the command's messages)", status_word(ran[i].status))});
+      junit.push_back({nullptr,
+                       chosen[i].file,
+                       ran[i].clock,
+                       {},
+                       nullptr,
+                       ran[i].not_run.empty() ? fmt::format("no results: {} (see the command's messages)",
+                                                            rig::exit_words(ran[i].status))
+                                              : ran[i].not_run,
+                       prepared[i]->c.name});
   }
   const std::string title = "hilrig suite: " + [&] {
     std::string names;
@@ -526,11 +525,8 @@ int run_suite(const RunOptions& o, std::ostream& out, std::ostream& err) {
     err << "hilrig run: rig fault: " << e.what() << '\n';
     return kRigFault;
   }
-  std::size_t by_status[4] = {0, 0, 0, 0};
-  for (const Ran& r : ran) ++by_status[std::clamp(r.status, 0, 3)];
-  out << fmt::format("suite: {} campaign(s), {} passed, {} with a failed check, {} rig fault; exit {} ({})\n",
-                     n, by_status[kPassed], by_status[kCheckFailed], by_status[kRigFault], status,
-                     status_word(status));
+  const rig::SuiteTally tally = rig::tally(rows);
+  out << fmt::format("suite: {}; exit {} ({})\n", tally.text(), status, tally.exit_text(status));
   out << fmt::format("report: {}\n", (o.out / "report.html").string());
   return status;
 }

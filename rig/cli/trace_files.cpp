@@ -127,7 +127,7 @@ void write_gtkw_files(const std::filesystem::path& dir, const std::string& stem,
 } // namespace
 
 void write_trace_files(const std::filesystem::path& dir, const std::string& stem, TraceRecorder& trace,
-                       const rig::RunResult& run, bool gtkw_for_failures) {
+                       const rig::RunResult& run, bool gtkw_for_failures, std::optional<Nanos> end) {
   std::vector<TraceSample> marks;
   for (const rig::CheckResult& check : run.checks) {
     const std::vector<rig::TraceWindow> windows = windows_of(check);
@@ -139,8 +139,14 @@ void write_trace_files(const std::filesystem::path& dir, const std::string& stem
       marks.push_back(TraceSample{w.end, signal, 0, 0.0});
     }
   }
-  rig::write_file_atomically(dir / (stem + ".vcd"),
-                             [&](std::ostream& vcd) { write_vcd(trace, vcd, "", marks); });
+  // The run's end as a last time stamp when nothing changed at it: a viewer then draws the
+  // levels held to the end, and a reader tells a quiet end from a run cut short.
+  Nanos last = std::max(trace.latest_sample_time(), Nanos{0});
+  for (const TraceSample& m : marks) last = std::max(last, m.time);
+  rig::write_file_atomically(dir / (stem + ".vcd"), [&](std::ostream& vcd) {
+    write_vcd(trace, vcd, "", marks);
+    if (end && *end > last) vcd << '#' << end->count() << '\n';
+  });
   if (gtkw_for_failures) write_gtkw_files(dir, stem, trace, run);
 }
 

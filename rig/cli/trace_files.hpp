@@ -15,9 +15,11 @@
 namespace hilrig::cli {
 
 // Writes STEM.vcd (and, when gtkw_for_failures, a .gtkw per failed check) atomically: a crash
-// leaves a whole file or none. Declares the check.<name> wires on `trace`.
+// leaves a whole file or none. Declares the check.<name> wires on `trace`. `end`: the run's
+// end (campaign.end of a run that ran to it), written as a final "#<end>" when later than the
+// last change; none for a run cut short, whose trace ends where it stopped.
 void write_trace_files(const std::filesystem::path& dir, const std::string& stem, TraceRecorder& trace,
-                       const rig::RunResult& run, bool gtkw_for_failures);
+                       const rig::RunResult& run, bool gtkw_for_failures, std::optional<Nanos> end);
 // The same run's trace under a second stem: STEM.vcd a hard link to WRITTEN_STEM.vcd (written by
 // write_trace_files for this run, so the same bytes), and the .gtkw files of its failed checks.
 void link_trace_files(const std::filesystem::path& dir, const std::string& written_stem,

@@ -14,6 +14,7 @@ namespace {
 
 struct Entry {
   const Measurement* m;
+  const CheckResult* check; // the check that measured it: its word in the run
   bool matched = false;
 };
 
@@ -28,7 +29,7 @@ std::map<Key, Entry> index_of(const CampaignResult& r, std::vector<Key>* order) 
     for (const auto& c : run.checks) {
       for (const auto& m : c.measurements) {
         Key k{label, m.name};
-        if (out.emplace(k, Entry{&m}).second && order) order->push_back(std::move(k));
+        if (out.emplace(k, Entry{&m, &c}).second && order) order->push_back(std::move(k));
       }
     }
   }
@@ -49,11 +50,30 @@ Threshold threshold_for(const CompareOptions& o, const std::string& name) {
   return best ? *best : Threshold{"", o.default_rel, true};
 }
 
+// Beyond the threshold by the one comparison rule the checks use (judge(): inclusive, with
+// its epsilon), so a drift of exactly 5 % against 5 % is within, not flagged by the rounding
+// of 9.44065 / 188.813 = 0.05000000000000003.
 bool beyond(const Threshold& t, double base, double now) {
-  const double delta = std::fabs(now - base);
-  if (!t.relative) return delta > t.value;
-  if (base == 0.0) return delta > 0.0;
-  return delta / std::fabs(base) > t.value;
+  const double allowed = t.relative ? t.value * std::fabs(base) : t.value;
+  return judge(now, base - allowed, base + allowed) != Outcome::Pass;
+}
+
+bool bad(Judgement w) { return w == Judgement::Fail || w == Judgement::Error; }
+
+// What changed between the baseline's word and the new one, read by what the run is: in a
+// fault run a failing measurement of the catching check is the fault's evidence ("caught"),
+// so a check that stops catching is the regression and one that starts is an improvement;
+// a nominal run's pass -> fail is the regression and fail -> pass an improvement. nullopt:
+// the words tell nothing new, the values decide.
+std::optional<Drift> word_change(const CheckResult& bc, Judgement base, const CheckResult& nc,
+                                 Judgement now) {
+  const bool was_catching = bc.judgement == Judgement::Caught;
+  const bool is_catching = nc.judgement == Judgement::Caught;
+  if (was_catching && !is_catching && base == Judgement::Caught) return Drift::NoLongerCatches;
+  if (!was_catching && is_catching && now == Judgement::Caught) return Drift::NowCatches;
+  if (!bad(base) && bad(now)) return Drift::NewlyFails;
+  if (bad(base) && now == Judgement::Pass) return Drift::NowPasses;
+  return std::nullopt;
 }
 
 int rank(Outcome o) { return o == Outcome::Pass ? 0 : o == Outcome::Fail ? 1 : 2; }
@@ -100,6 +120,12 @@ const char* to_string(Drift d) {
     return "added";
   case Drift::NewlyFails:
     return "NEWLY FAILS";
+  case Drift::NowPasses:
+    return "now passes";
+  case Drift::NowCatches:
+    return "now catches";
+  case Drift::NoLongerCatches:
+    return "NO LONGER CATCHES";
   }
   return "?";
 }
@@ -107,6 +133,11 @@ const char* to_string(Drift d) {
 std::size_t Comparison::regressions() const {
   return static_cast<std::size_t>(
       std::count_if(rows.begin(), rows.end(), [](const DriftRow& r) { return r.regression(); }));
+}
+
+std::size_t Comparison::improvements() const {
+  return static_cast<std::size_t>(
+      std::count_if(rows.begin(), rows.end(), [](const DriftRow& r) { return r.improvement(); }));
 }
 
 bool Comparison::regression() const { return regressions() > 0 || rank(now_verdict) > rank(base_verdict); }
@@ -121,13 +152,14 @@ Comparison compare_results(const CampaignResult& base, const CampaignResult& now
   auto b = index_of(base, &base_order);
   auto n = index_of(now, &now_order);
   for (const auto& k : base_order) {
-    const Measurement& bm = *b.at(k).m;
+    const Entry& be = b.at(k);
+    const Measurement& bm = *be.m;
     DriftRow row;
     row.run = k.first;
     row.measurement = k.second;
     row.unit = bm.unit;
     row.base = bm.value;
-    row.base_outcome = bm.outcome;
+    row.base_word = measurement_judgement(*be.check, bm);
     row.threshold = threshold_for(options, k.second);
     const auto it = n.find(k);
     if (it == n.end()) {
@@ -138,9 +170,9 @@ Comparison compare_results(const CampaignResult& base, const CampaignResult& now
       row.now = nm.value;
       row.lower = nm.lower;
       row.upper = nm.upper;
-      row.now_outcome = nm.outcome;
-      if (bm.outcome == Outcome::Pass && nm.outcome != Outcome::Pass) {
-        row.drift = Drift::NewlyFails;
+      row.now_word = measurement_judgement(*it->second.check, nm);
+      if (const auto changed = word_change(*be.check, row.base_word, *it->second.check, row.now_word)) {
+        row.drift = *changed;
       } else if (bm.value == nm.value) {
         row.drift = Drift::Same;
       } else {
@@ -159,7 +191,7 @@ Comparison compare_results(const CampaignResult& base, const CampaignResult& now
     row.now = e.m->value;
     row.lower = e.m->lower;
     row.upper = e.m->upper;
-    row.now_outcome = e.m->outcome;
+    row.now_word = measurement_judgement(*e.check, *e.m);
     row.drift = Drift::Added;
     c.rows.push_back(std::move(row));
   }
@@ -205,9 +237,12 @@ std::string format_comparison(const Comparison& c, bool all) {
                        note.empty() ? std::string() : fmt::format(" ({})", note));
   }
   if (shown == 0) out += "(no measurement drifted)\n";
-  out += fmt::format("{} measurements compared, {} regressions; verdict {} -> {}{}\n", c.rows.size(),
-                     c.regressions(), to_string(c.base_verdict), to_string(c.now_verdict),
-                     rank(c.now_verdict) > rank(c.base_verdict) ? " (worse)" : "");
+  out += fmt::format("{} measurements compared, {} regressions, {} improvements; verdict {} -> {}{}\n",
+                     c.rows.size(), c.regressions(), c.improvements(), to_string(c.base_verdict),
+                     to_string(c.now_verdict),
+                     rank(c.now_verdict) > rank(c.base_verdict)   ? " (worse)"
+                     : rank(c.now_verdict) < rank(c.base_verdict) ? " (better)"
+                                                                  : "");
   return out;
 }
 

@@ -1,7 +1,10 @@
 #pragma once
-// Nightly regression: every measurement of a new results file against a baseline. A drift
-// beyond its threshold, a measurement that disappeared, or one that newly fails is a
-// regression. Measurements are matched by run name and measurement name.
+// Nightly regression: every measurement of a new results file against a baseline, each read
+// by what its run is (docs/campaigns.md "hilrig compare"). A drift beyond its threshold, a
+// measurement that disappeared, one that newly fails (a nominal run's pass -> fail or error) or,
+// in a fault run, a check that no longer catches the injected fault is a regression; a nominal
+// measurement that passes again and a check that now catches its fault are improvements.
+// Measurements are matched by run name and measurement name.
 
 #include <optional>
 #include <string>
@@ -29,7 +32,7 @@ struct CompareOptions {
   double default_rel = 0.05; // for measurements no threshold names
 };
 
-enum class Drift { Same, Within, Beyond, Missing, Added, NewlyFails };
+enum class Drift { Same, Within, Beyond, Missing, Added, NewlyFails, NowPasses, NowCatches, NoLongerCatches };
 [[nodiscard]] const char* to_string(Drift d);
 
 struct DriftRow {
@@ -39,13 +42,17 @@ struct DriftRow {
   std::optional<double> base;
   std::optional<double> now;
   std::optional<double> lower, upper; // the new result's limits (a newly failing value is read against them)
-  Outcome base_outcome = Outcome::Error;
-  Outcome now_outcome = Outcome::Error;
+  // The measurement's word in its run (measurement_judgement()): "caught" in a fault run is
+  // the fault's evidence, not a failure.
+  Judgement base_word = Judgement::Error;
+  Judgement now_word = Judgement::Error;
   Threshold threshold; // the one applied (name empty: the default)
   Drift drift = Drift::Same;
   [[nodiscard]] bool regression() const {
-    return drift == Drift::Beyond || drift == Drift::Missing || drift == Drift::NewlyFails;
+    return drift == Drift::Beyond || drift == Drift::Missing || drift == Drift::NewlyFails ||
+           drift == Drift::NoLongerCatches;
   }
+  [[nodiscard]] bool improvement() const { return drift == Drift::NowPasses || drift == Drift::NowCatches; }
 };
 
 struct Comparison {
@@ -53,6 +60,7 @@ struct Comparison {
   Outcome base_verdict = Outcome::Error;
   Outcome now_verdict = Outcome::Error;
   [[nodiscard]] std::size_t regressions() const;
+  [[nodiscard]] std::size_t improvements() const;
   [[nodiscard]] bool regression() const; // any row regressed, or the verdict got worse
 };
 

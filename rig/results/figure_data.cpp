@@ -417,16 +417,23 @@ json trend_figure(std::span<const TrendPoint> nights, const std::string& unit, s
   if (upper) shown.push_back(*upper);
   const auto [lo, hi] = std::minmax_element(shown.begin(), shown.end());
   const auto [y0, y1] = padded(*lo, *hi, 0.1, 1e-3);
-  json xs = json::array(), line = json::array(), labels = json::array();
-  json by_word[3] = {json::array(), json::array(), json::array()}; // pass, fail, error
+  json labels = json::array();
+  // One point series per word, in the report's colours (Judgement's order).
+  constexpr Judgement kWords[] = {Judgement::Pass, Judgement::Fail, Judgement::Caught, Judgement::NotJudged,
+                                  Judgement::Error};
+  json data = json::array(); // x, the joining line, then a series per word
+  for (std::size_t k = 0; k < 2 + std::size(kWords); ++k) data.push_back(json::array());
+  json series = json::array();
+  series.push_back(json{{"label", "value"}, {"colour", "#0969da"}, {"draw", "line"}});
+  for (const Judgement w : kWords)
+    series.push_back(json{{"label", to_string(w)}, {"colour", outcome_colour(w)}, {"draw", "points"}});
   for (std::size_t i = 0; i < nights.size(); ++i) {
     const TrendPoint& p = nights[i];
-    xs.push_back(i);
+    data[0].push_back(i);
     labels.push_back(p.label);
-    line.push_back(p.value ? json(*p.value) : json(nullptr));
-    for (std::size_t w = 0; w < 3; ++w)
-      by_word[w].push_back(p.value && static_cast<std::size_t>(p.outcome) == w ? json(*p.value)
-                                                                               : json(nullptr));
+    data[1].push_back(p.value ? json(*p.value) : json(nullptr));
+    for (std::size_t w = 0; w < std::size(kWords); ++w)
+      data[2 + w].push_back(p.value && p.word == kWords[w] ? json(*p.value) : json(nullptr));
   }
   json hlines = json::array();
   for (const auto& [limit, word] : {std::pair{lower, "lower"}, std::pair{upper, "upper"}})
@@ -442,12 +449,8 @@ json trend_figure(std::span<const TrendPoint> nights, const std::string& unit, s
                   {"max", static_cast<double>(nights.size()) - 0.5},
                   {"names", labels}}},
                 {"y", {{"label", unit == "us" ? "µs" : unit}, {"min", y0}, {"max", y1}}},
-                {"data", {xs, line, by_word[0], by_word[1], by_word[2]}},
-                {"series",
-                 {{{"label", "value"}, {"colour", "#0969da"}, {"draw", "line"}},
-                  {{"label", "pass"}, {"colour", outcome_colour(Judgement::Pass)}, {"draw", "points"}},
-                  {{"label", "fail"}, {"colour", outcome_colour(Judgement::Fail)}, {"draw", "points"}},
-                  {{"label", "error"}, {"colour", outcome_colour(Judgement::Error)}, {"draw", "points"}}}},
+                {"data", data},
+                {"series", series},
                 {"bands", json::array()},
                 {"vlines", json::array()},
                 {"hlines", hlines},

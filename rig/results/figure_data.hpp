@@ -73,13 +73,14 @@ struct Marker {
                                            std::optional<Nanos> origin = std::nullopt);
 
 // One night of a measurement's trend: its value (none when that night did not measure it)
-// and outcome; label names the night (its start time or file).
+// and the word it read that night (measurement_judgement(): a fault's evidence is "caught",
+// not "fail"); label names the night (its start time or file).
 struct TrendPoint {
   std::string label;
   std::optional<double> value;
-  Outcome outcome = Outcome::Error;
+  Judgement word = Judgement::Error;
 };
-// A measurement over the nights: each night's value as a point in its outcome's colour,
+// A measurement over the nights: each night's value as a point in its word's colour,
 // joined in order, with the limits as lines always on the canvas. Null when no night has a
 // value.
 [[nodiscard]] nlohmann::json trend_figure(std::span<const TrendPoint> nights, const std::string& unit,

@@ -93,7 +93,8 @@ std::vector<Case> cases_of(const RunResult& run) {
                          fmt::format("fault '{}' not caught: none of its must_catch checks ran", run.fault),
                          {}});
   }
-  if (!run.error.empty()) cases.push_back(Case{"rig", Verdict::Errored, run.error, run.error});
+  if (!run.error.empty())
+    cases.push_back(Case{std::string(kRigCheckName), Verdict::Errored, run.error, run.error});
   return cases;
 }
 
@@ -302,7 +303,10 @@ void write_junit_suite_xml(const std::string& name, const std::vector<JunitCampa
   out(testsuites_open(name, all));
   for (std::size_t i = 0; i < campaigns.size(); ++i) {
     if (campaigns[i].result == nullptr) {
-      const std::string stem = std::filesystem::path(campaigns[i].file).stem().string();
+      // Named as its results would be, so a CI's history of the campaign stays one series.
+      const std::string stem = campaigns[i].campaign.empty()
+                                   ? std::filesystem::path(campaigns[i].file).stem().string()
+                                   : campaigns[i].campaign;
       out(testsuite_open(stem, counts_of_campaign(campaigns[i]), campaigns[i].clock, std::to_string(i),
                          dotless(stem)));
       out("    <properties>\n" + property("campaign_file", campaigns[i].file) + "    </properties>\n");

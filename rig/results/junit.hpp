@@ -75,6 +75,7 @@ struct JunitCampaign {
   RunSource runs;                       // the campaign's runs when `result` does not hold them (its run log)
   const JunitSuiteBody* body = nullptr; // when given: junit_suite_body(*result, runs, clock), made before
   std::string no_result;                // why there is no result
+  std::string campaign{};               // its [campaign] name when there is none ("": the file's stem)
 };
 [[nodiscard]] std::string to_junit_suite_xml(const std::string& name,
                                              const std::vector<JunitCampaign>& campaigns);

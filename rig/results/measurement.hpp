@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/time.hpp"
@@ -168,6 +169,13 @@ enum class Judgement { Pass, Fail, Caught, NotJudged, Error };
   return "error";
 }
 
+// The rig's own entries among a run's checks: the host's handshakes (kind "handshake") and a
+// hardware run's timing (kind "rt_timing"; junit.xml's testcase for a rig fault has the name
+// too). A campaign's check may take neither (the campaign reader refuses them), so no output
+// holds two entries of one name.
+inline constexpr std::string_view kHostCheckName = "host";
+inline constexpr std::string_view kRigCheckName = "rig";
+
 // One check's result: its measurements, all of which must pass for the check to pass.
 struct CheckResult {
   std::string check; // the check's name in the campaign
@@ -191,5 +199,17 @@ struct CheckResult {
     return measurements.empty() ? Outcome::Error : o;
   }
 };
+
+// The word one measurement reads, in its check's word (docs/campaigns.md, "each check's word"): in a
+// fault run a failing measurement of the check that caught the fault is "caught", any failing
+// one of a check not judged "not judged", never "fail". Every output that shows a measurement
+// (report.html, trend.html, compare) reads it from here, so none paints a caught fault red.
+[[nodiscard]] constexpr Judgement measurement_judgement(const CheckResult& check, const Measurement& m) {
+  if (check.judgement == Judgement::Caught || check.judgement == Judgement::NotJudged)
+    return m.outcome == Outcome::Pass ? Judgement::Pass : check.judgement;
+  return m.outcome == Outcome::Pass   ? Judgement::Pass
+         : m.outcome == Outcome::Fail ? Judgement::Fail
+                                      : Judgement::Error;
+}
 
 } // namespace hilrig::rig

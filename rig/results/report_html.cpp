@@ -35,16 +35,6 @@ std::string badge_of(const char* word) {
 std::string badge(Outcome o) { return badge_of(to_string(o)); }
 std::string badge(Judgement j) { return badge_of(to_string(j)); }
 
-// A measurement shown in its check's word: in a fault run a failing measurement of the check
-// that caught the fault is "caught", any of a check not judged "not judged", never "fail".
-Judgement shown(const CheckResult& c, const Measurement& m) {
-  if (c.judgement == Judgement::Caught || c.judgement == Judgement::NotJudged)
-    return m.outcome == Outcome::Pass ? Judgement::Pass : c.judgement;
-  return m.outcome == Outcome::Pass   ? Judgement::Pass
-         : m.outcome == Outcome::Fail ? Judgement::Fail
-                                      : Judgement::Error;
-}
-
 std::string limit_cell(const std::optional<double>& v, const std::string& unit) {
   return v ? format_value(*v, unit) : "&#8212;";
 }
@@ -60,7 +50,7 @@ std::string figure(const nlohmann::json& data, const std::string& caption) {
 // The measurements with those not passing first (stable: in recorded order otherwise).
 std::vector<ShownMeasurement> failing_first(const CheckResult& c) {
   std::vector<ShownMeasurement> rows;
-  for (const auto& m : c.measurements) rows.push_back({&m, shown(c, m)});
+  for (const auto& m : c.measurements) rows.push_back({&m, measurement_judgement(c, m)});
   std::stable_partition(rows.begin(), rows.end(),
                         [](const ShownMeasurement& r) { return r.shown != Judgement::Pass; });
   return rows;
@@ -78,7 +68,7 @@ std::string brake_figures(const CheckResult& c, const RunResult& run) {
       marks.push_back({limit, "limit", "#cf222e", "limit"});
       right = std::max(right, limit);
     }
-    if (m.at) marks.push_back({*m.at, "standstill", outcome_colour(shown(c, m)), "event"});
+    if (m.at) marks.push_back({*m.at, "standstill", outcome_colour(measurement_judgement(c, m)), "event"});
     const Nanos span = std::max(right - m.window->begin, Nanos{1'000'000});
     s += figure(
         motion_figure(run.motion, marks, m.window->begin - span / 4, right + span / 4, m.window->begin),
@@ -132,7 +122,8 @@ std::string check_figures(const CheckResult& c, const RunResult& run) {
   if (!on_motion) {
     for (const Measurement* m : timing_figures(c)) {
       const WindowTrace* trace = trace_for(c, *m);
-      s += figure(timing_figure(as_drawn(c, *m), shown(c, *m), trace, expected_rate(c), c.expected_rate),
+      s += figure(timing_figure(as_drawn(c, *m), measurement_judgement(c, *m), trace, expected_rate(c),
+                                c.expected_rate),
                   fmt::format("{}: {}the expected window (shaded, limits dashed) and the captured edge",
                               xml_escape(m->name),
                               trace ? "the stimulus, the shaft's count and the output as captured; " : ""));
@@ -174,8 +165,8 @@ std::string check_section(const RunResult& run, const CheckResult& c, std::size_
                      "<td class=\"num\">{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
                      xml_escape(m.name),
                      xml_escape(format_value(m.value, m.unit, limit_beyond(m.value, m.lower, m.upper))),
-                     limit_cell(m.lower, m.unit), limit_cell(m.upper, m.unit), badge(shown(c, m)), window,
-                     xml_escape(m.detail));
+                     limit_cell(m.lower, m.unit), limit_cell(m.upper, m.unit),
+                     badge(measurement_judgement(c, m)), window, xml_escape(m.detail));
   }
   return s + "</table>\n</section>\n";
 }

@@ -50,12 +50,12 @@ std::string to_trend_html(std::span<const Night> nights) {
             it = index.emplace(key, series.size()).first;
             MeasurementTrend s{run.name, m.name, m.unit, {}, {}, {}};
             for (const Night& n : nights)
-              s.points.push_back(TrendPoint{n.label, std::nullopt, Outcome::Error});
+              s.points.push_back(TrendPoint{n.label, std::nullopt, Judgement::Error});
             series.push_back(std::move(s));
           }
           MeasurementTrend& s = series[it->second];
           s.points[night].value = m.value;
-          s.points[night].outcome = m.outcome;
+          s.points[night].word = measurement_judgement(check, m);
           s.lower = m.lower;
           s.upper = m.upper;
           s.unit = m.unit;
@@ -71,8 +71,9 @@ std::string to_trend_html(std::span<const Night> nights) {
     html += fmt::format("{}{} ({})", i == 0 ? "" : ", ", xml_escape(nights[i].label),
                         to_string(nights[i].result->verdict));
   html +=
-      fmt::format(".</p>\n<p>{} measurement(s); each point is one night's value in its outcome's colour, the "
-                  "dashed lines the last night's limits.</p>\n",
+      fmt::format(".</p>\n<p>{} measurement(s); each point is one night's value in the colour of the word it "
+                  "read (a fault's evidence is blue caught, a check not judged grey), the dashed lines the "
+                  "last night's limits.</p>\n",
                   series.size());
   for (const MeasurementTrend& s : series) {
     const auto limit = [](const std::optional<double>& v) {
@@ -82,10 +83,10 @@ std::string to_trend_html(std::span<const Night> nights) {
         "<section><h3>{} <small>({})</small></h3><p>limits [{} .. {}] {}; values:", xml_escape(s.name),
         xml_escape(s.run), limit(s.lower), limit(s.upper), xml_escape(s.unit));
     for (const TrendPoint& p : s.points)
-      html += p.value ? fmt::format(" {} ({})", *p.value, to_string(p.outcome)) : std::string(" -");
+      html += p.value ? fmt::format(" {} ({})", *p.value, to_string(p.word)) : std::string(" -");
     html += "</p>\n" +
             figure_html(trend_figure(s.points, s.unit, s.lower, s.upper),
-                        "each night's value (coloured by its outcome) and the last night's limits (dashed)") +
+                        "each night's value (coloured by its word) and the last night's limits (dashed)") +
             "</section>\n";
   }
   html += figure_scripts() + "</body></html>\n";

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -181,6 +182,46 @@ TEST(Interrupt, SigtermLeavesEveryOutputInactiveAndAReadablePartialReport) {
     ASSERT_FALSE(wire->values().empty()) << line;
     EXPECT_EQ(wire->values().back(), "0") << line;
   }
+}
+
+// docs/ci.md: junit.xml's timestamp and hostname are the start and the host; classnames
+// <campaign>.<run>. A suite stopped by SIGTERM in its first campaign never starts the second:
+// that campaign's testsuite carries the suite's start and the host (not 1970 and
+// "localhost"), its [campaign] name (not its file's stem) and says it was not run, and why.
+TEST(Interrupt, ASuiteCampaignTheStopKeptFromStartingSaysSoInJunit) {
+  const fs::path dir = fs::path(HILRIG_BINARY_DIR) / "tests" / "campaign" / "scratch" / "interrupt_suite";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "in");
+  std::ofstream(dir / "in" / "a_long.toml") << kLongCampaign;
+  std::string second = kLongCampaign;
+  second.replace(second.find("name = \"long\""), 13, "name = \"second-campaign\"");
+  std::ofstream(dir / "in" / "b_next.toml") << second;
+
+  Hilrig hilrig(dir / "in", dir / "out");
+  const std::string progress = hilrig.line(); // the first campaign's run has started
+  ASSERT_NE(progress.find("run 0"), std::string::npos) << progress;
+  ASSERT_EQ(::kill(hilrig.pid, SIGTERM), 0);
+  const std::string said = hilrig.rest();
+  const int status = hilrig.wait();
+  ASSERT_TRUE(WIFEXITED(status)) << said;
+  EXPECT_EQ(WEXITSTATUS(status), 3) << said;
+  EXPECT_NE(said.find("b_next.toml: not run (stopped by SIGTERM)"), std::string::npos) << said;
+
+  const std::string junit = hilrig::test::read_file(dir / "out" / "junit.xml");
+  const std::regex suite_re(R"re(<testsuite name="([^"]*)"[^>]*timestamp="([^"]*)" hostname="([^"]*)")re");
+  std::vector<std::smatch> suites;
+  for (auto it = std::sregex_iterator(junit.begin(), junit.end(), suite_re); it != std::sregex_iterator();
+       ++it)
+    suites.push_back(*it);
+  ASSERT_EQ(suites.size(), 2U) << junit;
+  EXPECT_EQ(suites[0][1], "long");
+  EXPECT_EQ(suites[1][1], "second-campaign") << junit;
+  // The suite's start: at or before the first campaign's (ISO 8601 UTC compares as text).
+  EXPECT_LE(suites[1][2].str(), suites[0][2].str()) << junit;
+  EXPECT_GE(suites[1][2].str(), "2020") << junit;
+  EXPECT_EQ(suites[1][3], suites[0][3]) << junit;
+  EXPECT_NE(junit.find("classname=\"second-campaign.campaign\""), std::string::npos) << junit;
+  EXPECT_NE(junit.find("message=\"not run: the suite was stopped by SIGTERM\""), std::string::npos) << junit;
 }
 
 // A crash (here SIGKILL, which no handler sees) after the first of two runs leaves the run log

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <string>
 
 #include "campaign_text.hpp"
@@ -176,6 +178,26 @@ TEST(CampaignParser, NamesArePrintableLabels) {
                           "t.toml:25:8: check[0].name: the check's name: 1 .. 64"));
   EXPECT_EQ(error_of(replace_line(test::kValidCampaign, 25, "name = \"" + std::string(64, 'n') + "\"")),
             "accepted");
+}
+
+// docs/campaigns.md ([[check]] name): measurements are named "<check>" or "<check>.<what>",
+// and the rig writes its own entries "host" (the handshakes) and "rig" (a rig fault's
+// testcase). A check named "on.max" (another check's measurement) or "host"/"rig" gave two
+// entries of one name in results.json, junit.xml and trace.vcd; the neighbours pass.
+TEST(CampaignParser, CheckNamesCannotCollideWithMeasurementsOrTheRigsEntries) {
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 25, "name = \"on.max\""),
+                          "t.toml:25:8: check[0].name: a check name without '.' (\"on.max\""));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 25, "name = \".\""),
+                          "t.toml:25:8: check[0].name: a check name without '.'"));
+  EXPECT_TRUE(
+      rejected_at(replace_line(test::kValidCampaign, 25, "name = \"host\""),
+                  "t.toml:25:8: check[0].name: a check name other than \"host\" (the rig's own entry"));
+  EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 25, "name = \"rig\""),
+                          "t.toml:25:8: check[0].name: a check name other than \"rig\""));
+  for (const char* near : {"hosts", "Host", "rigs", "on_max", "on-max", "host-words"})
+    EXPECT_EQ(error_of(replace_line(test::kValidCampaign, 25, fmt::format("name = \"{}\"", near))),
+              "accepted")
+        << near;
 }
 
 TEST(CampaignParser, UnknownCheckKindIsAnError) {

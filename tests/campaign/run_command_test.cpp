@@ -33,6 +33,7 @@
 #include "rig/results/run_log.hpp"
 #include "test_support.hpp"
 #include "tests/tools/scratch_files.hpp"
+#include "tests/tools/vcd_reader.hpp"
 
 namespace hilrig::cli {
 namespace {
@@ -81,6 +82,20 @@ TEST(RunCommand, FailedCheckExitsOne) {
   // The first run's failure trace is its trace.vcd: the same bytes (written once, linked).
   EXPECT_EQ(hilrig::test::read_file(dir / "out" / "trace-run0.vcd"),
             hilrig::test::read_file(dir / "out" / "trace.vcd"));
+}
+
+// docs/campaigns.md ("trace.vcd: the full trace of the shard's first run"): the trace ends at
+// the campaign's end (300 ms), not at its last change, so a viewer draws the levels held to
+// the end. The shaft's last move ends at 300.21 ms, after the end, so nothing changes at
+// 300 ms itself: the end is the last time stamp, once, after every change.
+TEST(RunCommand, TheTraceEndsAtTheCampaignsEnd) {
+  const fs::path out = scratch("trace_end");
+  ASSERT_EQ(run(write_file(out, "pass.toml", campaign::test::kPlsCampaign).string(), out / "out"), 0);
+  const hilrig::test::Vcd vcd = hilrig::test::read_vcd_file((out / "out" / "trace.vcd").string());
+  ASSERT_GE(vcd.times.size(), 2U);
+  EXPECT_EQ(vcd.times.back(), 300'000'000);
+  EXPECT_LT(vcd.times[vcd.times.size() - 2], 300'000'000);
+  for (std::size_t i = 1; i < vcd.times.size(); ++i) EXPECT_LT(vcd.times[i - 1], vcd.times[i]) << i;
 }
 
 // --trace: which runs keep their trace files. The campaigns: the inline reference PLS (one
@@ -680,6 +695,41 @@ TEST(RunSuite, ExitStatusIsTheWorstOfTheCampaigns) {
   EXPECT_EQ(r.err.rfind(bad + ":19:9: wiring[2].board:", 0), 0U) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out2" / "pass"));
   EXPECT_FALSE(fs::exists(dir / "out2" / "junit.xml"));
+}
+
+// docs/campaigns.md (judgement table): `error`, a check that could not be judged, is not
+// `fail`. A suite's summary line and index word exit 1 by the verdict behind it. The
+// unjudged campaign's setpoint (5000 counts) is never crossed by a shaft that turns one
+// revolution of 400 counts each way, so its check judged nothing.
+TEST(RunSuite, ACampaignThatCouldNotBeJudgedIsNotCalledFailed) {
+  const fs::path dir = scratch("suite_unjudged");
+  std::string text = passing_campaign("unjudged");
+  text.replace(text.find("setpoint = 100"), 14, "setpoint = 5000");
+  const std::string unjudged = write_file(dir, "unjudged.toml", text).string();
+  const std::string pass = write_file(dir, "pass.toml", passing_campaign("pass")).string();
+  const std::string late = write_file(dir, "late.toml", late_campaign("late")).string();
+  SuiteRun r = run_suite({pass, unjudged}, dir / "out1");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.out.find("suite: 2 campaign(s), 1 passed, 0 with a failed check, 1 with a check that could not "
+                       "be judged, 0 bad input, 0 rig fault; exit 1 (a check could not be judged)"),
+            std::string::npos)
+      << r.out;
+  std::string index = hilrig::test::read_file(dir / "out1" / "report.html");
+  EXPECT_EQ(index.find("a check failed"), std::string::npos) << index;
+  EXPECT_NE(index.find("exit 1 (a check could not be judged)"), std::string::npos) << index;
+  EXPECT_NE(index.find("<td class=\"error\">a check could not be judged</td>"), std::string::npos) << index;
+  // A failed check beside it: each campaign in its own words, the suite's exit names both.
+  r = run_suite({late, unjudged}, dir / "out2");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.out.find("0 passed, 1 with a failed check, 1 with a check that could not be judged"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("exit 1 (a check failed, another could not be judged)"), std::string::npos) << r.out;
+  index = hilrig::test::read_file(dir / "out2" / "report.html");
+  EXPECT_NE(index.find("<td class=\"fail\">a check failed</td>"), std::string::npos) << index;
+  // A failed check alone reads as before.
+  r = run_suite({pass, late}, dir / "out3");
+  EXPECT_NE(r.out.find("exit 1 (a check failed)\n"), std::string::npos) << r.out;
 }
 
 TEST(RunSuite, WorstStatusRanksRigFaultOverBadInputOverFailure) {

@@ -122,6 +122,13 @@ TEST(Junit, ASuiteCampaignWithoutResultsIsAnError) {
       << s;
   EXPECT_NE(s.find("<property name=\"campaign_file\" value=\"dir/locked.toml\"/>"), std::string::npos) << s;
   EXPECT_EQ(hilrig::test::count_of(s, "<testsuite "), 2U);
+  // Its [campaign] name when known (a campaign the suite's stop kept from starting): the
+  // testsuite and classname its results would have had, so CI keeps one history.
+  none.campaign = "locked-campaign";
+  const std::string named =
+      to_junit_suite_xml("nightly", {{&c, "x.toml", {}, runs_of(c), nullptr, {}}, none});
+  EXPECT_NE(named.find("<testsuite name=\"locked-campaign\" tests=\"1\""), std::string::npos) << named;
+  EXPECT_NE(named.find("classname=\"locked-campaign.campaign\""), std::string::npos) << named;
 }
 
 TEST(Junit, AFaultCaughtByOneOfItsCheckersHasNoFailure) {

@@ -2,6 +2,8 @@
 // in their unit and no float noise, figures drawn from what the results recorded.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -524,8 +526,9 @@ TEST(Figure, MotionPlotsSpeedAndPositionWithEventsAndMarkers) {
 }
 
 TEST(Figure, TrendKeepsTheLimitsOnTheCanvas) {
-  const std::vector<TrendPoint> nights{
-      {"mon", 10.0, Outcome::Pass}, {"tue", std::nullopt, Outcome::Error}, {"wed", 30.0, Outcome::Fail}};
+  const std::vector<TrendPoint> nights{{"mon", 10.0, Judgement::Pass},
+                                       {"tue", std::nullopt, Judgement::Error},
+                                       {"wed", 30.0, Judgement::Fail}};
   const nlohmann::json fig = trend_figure(nights, "us", 0.0, 100.0);
   const auto& chart = fig["charts"][0];
   EXPECT_LE(chart["y"]["min"].get<double>(), 0.0);
@@ -535,6 +538,33 @@ TEST(Figure, TrendKeepsTheLimitsOnTheCanvas) {
   EXPECT_EQ(chart["data"][2], nlohmann::json::parse("[10.0, null, null]")); // pass
   EXPECT_EQ(chart["data"][3], nlohmann::json::parse("[null, null, 30.0]")); // fail
   EXPECT_EQ(chart["x"]["names"], nlohmann::json::parse(R"(["mon", "tue", "wed"])"));
+}
+
+// docs/campaigns.md (report): "a failing measurement of a catching check reads caught, in
+// blue; a not-judged check's not judged, in grey; red is only fail". The trend draws each
+// point in the word report.html shows for it (measurement_judgement()), so a fault caught
+// every night is blue, never in the fail series.
+TEST(Figure, TrendDrawsEachPointInItsWordsSeries) {
+  const std::vector<TrendPoint> nights{{"mon", 35.0, Judgement::Caught}, {"tue", 36.0, Judgement::NotJudged}};
+  const nlohmann::json chart = trend_figure(nights, "us", std::nullopt, 20.0)["charts"][0];
+  std::map<std::string, std::pair<std::string, nlohmann::json>> by_label;
+  for (std::size_t k = 0; k < chart["series"].size(); ++k)
+    by_label[chart["series"][k]["label"]] = {chart["series"][k]["colour"], chart["data"][k + 1]};
+  EXPECT_EQ(by_label["caught"].first, outcome_colour(Judgement::Caught));
+  EXPECT_EQ(by_label["caught"].second, nlohmann::json::parse("[35.0, null]"));
+  EXPECT_EQ(by_label["not judged"].second, nlohmann::json::parse("[null, 36.0]"));
+  EXPECT_EQ(by_label["fail"].second, nlohmann::json::parse("[null, null]"));
+}
+
+// The caught fault of a sample campaign: its failing throughput.max (35 us over 20) reads
+// caught, the same word in report.html and in the shared routine the trend uses.
+TEST(Figure, AFaultsEvidenceReadsCaughtInEveryOutput) {
+  const CampaignResult c = test::sample_campaign(3); // run 2: fault "slow_output", caught
+  const CheckResult& throughput = c.runs[2].checks[0];
+  ASSERT_EQ(throughput.judgement, Judgement::Caught);
+  EXPECT_EQ(measurement_judgement(throughput, throughput.measurements[1]), Judgement::Caught);
+  EXPECT_EQ(measurement_judgement(throughput, throughput.measurements[0]), Judgement::Pass); // count 3 >= 1
+  EXPECT_EQ(measurement_judgement(c.runs[0].checks[0], c.runs[0].checks[0].measurements[1]), Judgement::Pass);
 }
 
 } // namespace

@@ -2,7 +2,8 @@
 # `hilrig trend` over three nights of one campaign (two clean, the third with the reference
 # PLS's late variant, whose latencies exceed their 300 us limit): one self-contained page with
 # a section per measurement (run and name) whose values, night by night, are the results.json
-# values, a point per night in its outcome's colour and the limit drawn; another campaign's
+# values, a point per night in its word's colour and the limit drawn; two passing nights of the
+# fault campaign show their caught faults blue and no red (docs/ci.md); another campaign's
 # results and a missing file are bad input (exit 2).
 # Usage: trend_test.sh HILRIG SOURCE_DIR SCRATCH_DIR
 set -euo pipefail
@@ -20,8 +21,7 @@ status=0
 "$hilrig" run late.toml --out n3 >/dev/null || status=$?
 [ "$status" = 1 ] || fail "the late night exited $status, not 1"
 
-"$hilrig" trend n1/results.json n2/results.json n3/results.json --out trend.html >trend.log
-python3 - trend.html n1/results.json n2/results.json n3/results.json <<'PY' || fail "the trend page does not show the nights"
+cat >check_trend.py <<'PY'
 import html, json, re, sys
 page = open(sys.argv[1]).read()
 nights = [json.load(open(p)) for p in sys.argv[2:]]
@@ -32,21 +32,25 @@ for i, n in enumerate(nights):
     for run in n["runs"]:
         for check in run["checks"]:
             for m in check["measurements"]:
-                expected.setdefault((run["name"], m["name"]), [None] * len(nights))[i] = (m["value"], m["outcome"], m["upper"])
+                # The word it reads (report.html's): a fault's evidence is caught, not fail.
+                word = m["outcome"]
+                if check["outcome"] in ("caught", "not judged") and word != "pass":
+                    word = check["outcome"]
+                expected.setdefault((run["name"], m["name"]), [None] * len(nights))[i] = (m["value"], word, m["upper"])
 sections = page.split("<section>")[1:]
 assert len(sections) == len(expected), f"{len(sections)} sections for {len(expected)} measurements"
-colour = {"pass": "#1a7f37", "fail": "#cf222e", "error": "#9a6700"}
+colour = {"pass": "#1a7f37", "fail": "#cf222e", "caught": "#0969da", "not judged": "#57606a", "error": "#9a6700"}
 late_failures = 0
 for s in sections:
     name, run = re.search(r"<h3>(.*?) <small>\((.*?)\)</small>", s).groups()
     want = expected[(html.unescape(run), html.unescape(name))]
-    values = re.findall(r" (-|[-0-9.e+]+(?: \((?:pass|fail|error)\))?)", re.search(r"values:(.*?)</p>", s).group(1))
+    values = re.findall(r" (-|[-0-9.e+]+(?: \((?:pass|fail|caught|not judged|error)\))?)", re.search(r"values:(.*?)</p>", s).group(1))
     assert len(values) == len(want), (name, values)
     for v, w in zip(values, want):
         if w is None:
             assert v == "-", (name, v)
             continue
-        number, outcome = re.match(r"([-0-9.e+]+) \((\w+)\)", v).groups()
+        number, outcome = re.match(r"([-0-9.e+]+) \(([\w ]+)\)", v).groups()
         assert abs(float(number) - w[0]) <= 1e-9 * max(1.0, abs(w[0])) and outcome == w[1], (name, v, w)
     # The figure's data (drawn by uPlot): each night's point sits in its outcome's series, in
     # that outcome's colour, and nowhere else.
@@ -64,9 +68,24 @@ for s in sections:
         assert any(h["at"] == upper and h["label"].startswith(f"upper limit {upper:g}") for h in chart["hlines"]), (name, upper, chart["hlines"])
     if want[-1][1] == "fail":
         late_failures += 1
-assert late_failures > 0, "the late night shows no failure"
-print(f"ok: {len(sections)} measurements over {len(nights)} nights, {late_failures} failing on the last")
+caught = sum(1 for w in expected.values() for p in w if p is not None and p[1] == "caught")
+if all(n["verdict"] == "pass" for n in nights):
+    # Passing nights: no red anywhere (the fault runs' evidence reads caught).
+    assert late_failures == 0 and "(fail)" not in page, "a passing night shows a failure"
+    assert caught > 0, "the fault nights show nothing caught"
+else:
+    assert late_failures > 0, "the late night shows no failure"
+print(f"ok: {len(sections)} measurements over {len(nights)} nights, {late_failures} failing on the last, {caught} caught")
 PY
+"$hilrig" trend n1/results.json n2/results.json n3/results.json --out trend.html >trend.log
+python3 check_trend.py trend.html n1/results.json n2/results.json n3/results.json || fail "the trend page does not show the nights"
+
+# Two passing nights of the fault campaign: every fault caught, so no red point.
+faults="$src/campaigns/reference/reference_pls_faults.toml"
+"$hilrig" run "$faults" --out f1 >/dev/null
+"$hilrig" run "$faults" --out f2 --seed 12 >/dev/null
+"$hilrig" trend f1/results.json f2/results.json --out faults.html >/dev/null
+python3 check_trend.py faults.html f1/results.json f2/results.json || fail "the fault nights' trend shows red"
 
 # Another campaign's results, and a file that is not there: bad input.
 "$hilrig" run "$src/campaigns/reference/reference_pls_faults.toml" --out other >/dev/null
