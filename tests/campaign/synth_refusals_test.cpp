@@ -80,6 +80,7 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
           {"ssi --first 3601s", "--first: 1ns .. 3600s (got 3601s)"},
           {"ssi --monoflop 3601s", "--monoflop: 0s .. 3600s (got 3601s)"},
           {"ssi --monoflop nan", "--monoflop: 0s .. 3600s (got nan)"},
+          {"ssi --monoflop 0", "--monoflop: a monoflop time above 0, at most 1ms"},
           {"ssi --output-delay 3601s", "--output-delay: 0s .. 3600s (got 3601s)"},
           {"ssi --late inf", "--late: 0s .. 3600s (got inf)"},
           {"resolver --duration 3601s", "--duration: 1ns .. 3600s (got 3601s)"},
@@ -99,7 +100,7 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
       });
   expect_written("synth_ok_times",
                  {"quadrature --duration 1ns", "quadrature --duration 1e-9", "resolver --duration 1ns",
-                  "ssi --first 1ns --frames 1", "ssi --monoflop 0 --output-delay 0 --frames 1",
+                  "ssi --first 1ns --frames 1", "ssi --monoflop 1ns --output-delay 0 --frames 1",
                   "ssi --first 3599.999s --frames 2"});
 }
 
