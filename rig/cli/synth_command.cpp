@@ -231,6 +231,12 @@ void apply_faults(signals::QuadratureTrace& trace, const QuadratureOptions& o) {
 
 // Accelerations in turns/s², as a campaign's rpm/s bound.
 constexpr double kMaxTurnsPerS2 = limits::kMaxRpmPerS / 60.0;
+// That bound in words: 1e6 / 60 = 16666.666... turns/s², its digits cut, not rounded (a
+// rounded 16666.7 would be a maximum that is refused).
+std::string max_rate_words() {
+  return fmt::format("{:.3f}... turns/s² ({} rpm/s)", std::floor(kMaxTurnsPerS2 * 1000.0) / 1000.0,
+                     limits::kMaxRpmPerS);
+}
 // A jerk ramp is this many profile segments at most (each is solved for its edges).
 constexpr int kMaxSteps = 1'000;
 // B moved past the next A edge but one is no longer a phase error of one encoder.
@@ -259,7 +265,7 @@ void check_speed(const QuadratureOptions& o) {
 
 // A rate (acceleration, brake) the profile needs (> 0) or may leave at 0.
 void check_rate(const std::string& option, double value, bool needed, const std::string& profile) {
-  const std::string range = fmt::format("{:.6g} turns/s² ({} rpm/s)", kMaxTurnsPerS2, limits::kMaxRpmPerS);
+  const std::string range = max_rate_words();
   if (needed && !(value > 0.0))
     throw CLI::ValidationError(
         option, fmt::format("a {} needs 0 < {} <= {} (got {})", profile, option.substr(2), range, value));
@@ -552,7 +558,7 @@ void add_quadrature(CLI::App& synth) {
   cmd->add_option("--profile", o->profile, "constant | trapezoid | scurve | press")
       ->check(CLI::IsMember({"constant", "trapezoid", "scurve", "press"}));
   cmd->add_option("--lines", o->lines, "lines per turn (X4: 4 counts per line)")->check(positive_number());
-  const std::string rate = fmt::format("0 .. {:.6g} turns/s²", kMaxTurnsPerS2);
+  const std::string rate = "0 .. " + max_rate_words();
   cmd->add_option("--rpm", o->rpm,
                   fmt::format("speed (constant, press) or max speed (trapezoid, scurve), RPM: -{0} .. {0}, "
                               "and at most {1} counts/s (X4); trapezoid, scurve, press: |rpm| >= {2}",

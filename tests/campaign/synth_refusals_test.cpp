@@ -101,7 +101,10 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
   expect_written("synth_ok_times",
                  {"quadrature --duration 1ns", "quadrature --duration 1e-9", "resolver --duration 1ns",
                   "ssi --first 1ns --frames 1", "ssi --monoflop 1ns --output-delay 0 --frames 1",
-                  "ssi --first 3599.999s --frames 2"});
+                  "ssi --first 3599.999s --frames 2",
+                  // The printed maximum rate, 16666.666... turns/s² (1e6 rpm/s / 60), is accepted.
+                  "quadrature --profile trapezoid --rpm 60 --turns 1 --accel 16666.666 --decel 16666.666",
+                  "quadrature --profile press --rpm 60 --brake 16666.666"});
 }
 
 // A level names its option and the item it is in; a value that looks like an option ("-inf")
