@@ -655,10 +655,16 @@ Train parse_train(const std::string& text) {
   if (t.width >= t.period)
     throw CLI::ValidationError("--train",
                                fmt::format("a width 0 < width < period {} (got {})", parts[1], parts[2]));
-  const double end = t.start.seconds() + t.period.seconds() * static_cast<double>(t.count);
-  if (end > limits::kMaxEnd.seconds())
-    throw CLI::ValidationError("--train", fmt::format("a train within 0 .. {} (got {}: it ends at {:.6g} s)",
-                                                      duration_words(limits::kMaxEnd), text, end));
+  // A train spans its first to its last edge, the last pulse's falling edge (docs/synth.md):
+  // start + (count - 1) x period + width, in ns. Exact in a double up to 2^53 ns (104 days);
+  // past that it is far beyond the limit anyway (and would overflow Nanos).
+  const double last = static_cast<double>(t.start.count()) +
+                      static_cast<double>(t.period.count()) * static_cast<double>(t.count - 1) +
+                      static_cast<double>(t.width.count());
+  if (last > static_cast<double>(limits::kMaxEnd.count()))
+    throw CLI::ValidationError("--train",
+                               fmt::format("a train within 0 .. {} (got {}: its last edge is at {:.9f} s)",
+                                           duration_words(limits::kMaxEnd), text, last * 1e-9));
   return t;
 }
 

@@ -97,6 +97,8 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
           // 125 kHz a frame is 500 us, so from 3599.999 s two end at 3600 s, three after.
           {"ssi --first 3599.999s --frames 3", "--frames: frames that end by 3600s"},
           {"ssi --first 3599.999s --frames 10000", "--frames: frames that end by 3600s"},
+          {"discrete --train 3599.5s,1s,0.500000001s,1", "its last edge is at 3600.000000001 s"},
+          {"discrete --train 3597.5s,1s,0.5s,4", "its last edge is at 3601.000000000 s"},
       });
   expect_written("synth_ok_times",
                  {"quadrature --duration 1ns", "quadrature --duration 1e-9", "resolver --duration 1ns",
@@ -104,7 +106,11 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
                   "ssi --first 3599.999s --frames 2",
                   // The printed maximum rate, 16666.666... turns/s² (1e6 rpm/s / 60), is accepted.
                   "quadrature --profile trapezoid --rpm 60 --turns 1 --accel 16666.666 --decel 16666.666",
-                  "quadrature --profile press --rpm 60 --brake 16666.666"});
+                  "quadrature --profile press --rpm 60 --brake 16666.666",
+                  // A train ends with its last pulse's falling edge: start + (count - 1) x
+                  // period + width = 3599.5 + 0 + 0.5 s and 3599.999999995 s + 5 ns = 3600 s.
+                  "discrete --train 3599.5s,1s,0.5s,1", "discrete --train 3599.999999995s,10ns,5ns,1",
+                  "discrete --train 3599s,1s,0.5s,1", "discrete --train 3597.5s,1s,0.5s,3"});
 }
 
 // A level names its option and the item it is in; a value that looks like an option ("-inf")
