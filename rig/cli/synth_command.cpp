@@ -832,7 +832,10 @@ Nanos parse_duration(const std::string& text, const std::string& option, Nanos l
         option, fmt::format("{} .. {} (got {})", duration_words(lo), duration_words(hi), text));
   };
   // As written first: NaN, infinities and huge values never reach the conversion to Nanos.
-  if (!(seconds >= lo.seconds() && seconds <= hi.seconds())) throw refuse();
+  // Half a ns of slack: a value is judged as it rounds (docs/synth.md "Ranges"), so 0.6ns on
+  // a 1ns option is 1 ns and 3600.0000000004s is 3600 s; below 0 stays refused.
+  const double lo_s = lo > Nanos::zero() ? lo.seconds() - 0.5e-9 : lo.seconds();
+  if (!(seconds >= lo_s && seconds <= hi.seconds() + 0.5e-9)) throw refuse();
   const Nanos t = Nanos::from_seconds(seconds);
   if (t < lo || t > hi) throw refuse();
   return t;

@@ -98,6 +98,9 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
           {"ssi --first 3599.999s --frames 3", "--frames: frames that end by 3600s"},
           {"ssi --first 3599.999s --frames 10000", "--frames: frames that end by 3600s"},
           {"discrete --train 3599.5s,1s,0.500000001s,1", "its last edge is at 3600.000000001 s"},
+          {"quadrature --duration 0.4ns", "--duration: 1ns .. 3600s (got 0.4ns)"},
+          {"discrete --set 3600.0000000006s=1", "--set: 0s .. 3600s (got 3600.0000000006s)"},
+          {"discrete --set -0.4ns=1", "--set: 0s .. 3600s (got -0.4ns)"},
           {"discrete --train 3597.5s,1s,0.5s,4", "its last edge is at 3601.000000000 s"},
       });
   expect_written("synth_ok_times",
@@ -110,7 +113,10 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
                   // A train ends with its last pulse's falling edge: start + (count - 1) x
                   // period + width = 3599.5 + 0 + 0.5 s and 3599.999999995 s + 5 ns = 3600 s.
                   "discrete --train 3599.5s,1s,0.5s,1", "discrete --train 3599.999999995s,10ns,5ns,1",
-                  "discrete --train 3599s,1s,0.5s,1", "discrete --train 3597.5s,1s,0.5s,3"});
+                  "discrete --train 3599s,1s,0.5s,1", "discrete --train 3597.5s,1s,0.5s,3",
+                  // Times are judged as they round to whole ns (docs/synth.md "Ranges").
+                  "quadrature --duration 0.6ns", "quadrature --duration 0.5ns",
+                  "ssi --first 0.5ns --frames 1", "discrete --set 3600.0000000004s=1"});
 }
 
 // A level names its option and the item it is in; a value that looks like an option ("-inf")
