@@ -124,6 +124,11 @@ void QuadratureEdgeSolver::start_piece(int piece) {
   // turning point the closed form puts just before it, the count still follows the ends.
   if (p_cend_ != p_c0_) p_dir_ = p_cend_ > p_c0_ ? 1 : -1;
   p_inv_v_ = p_linear_ ? 1.0 / p_v0_ : 0.0;
+  // Slowing towards its end: its speed there, in its direction, is what the closed form
+  // gives (0 at a turning point), never below 0 (a rounding of a stop).
+  p_slowing_ = !p_linear_ && seg_a_ * p_dir_ < 0.0;
+  const double v_end = pieces_ == 2 && piece == 0 ? 0.0 : seg_v_ + seg_a_ * seg_end_;
+  p_uend_ = std::max(0.0, v_end * p_dir_);
 }
 
 bool QuadratureEdgeSolver::advance() {
@@ -173,6 +178,16 @@ std::size_t QuadratureEdgeSolver::fill(std::span<QuadEdge> out) {
       double t;
       if (p_linear_) {
         t = p_t0_ + d * p_inv_v_;
+      } else if (p_slowing_ && step * (p_cend_ - h) < step * (h - p_c0_)) {
+        // Nearer the slow end of a decelerating piece: solved back from that end, where
+        // v_end² + 2·|a|·D adds two positive terms. Solved forward, v0² + 2·a·d cancels to
+        // a residue of the rounding (~1e-16·v0²) near the end, and its square root puts an
+        // edge on the end position up to microseconds early; from the end it lands on the
+        // end time itself (D = 0).
+        const double rest = std::max(0.0, step * (p_cend_ - h)); // D, counts still to go
+        const double root = std::sqrt(p_uend_ * p_uend_ - 2.0 * step * seg_a_ * rest);
+        const double denom = p_uend_ + root;
+        t = denom != 0.0 ? p_end_ - 2.0 * rest / denom : p_end_;
       } else {
         // Numerically stable root of c0 + v0·t + a·t²/2 = h (no cancellation near v0).
         const double root = std::sqrt(std::max(0.0, p_v0_ * p_v0_ + 2.0 * seg_a_ * d));

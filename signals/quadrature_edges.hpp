@@ -1,7 +1,10 @@
 #pragma once
 // Quadrature edge solver: the time of every A/B (and Z) edge, solved in closed form from
 // each segment's quadratic and rounded to the nearest nanosecond (halves up, counted from
-// the segment's start); no sampling. The edges take the count from count_at(start
+// the segment's start); no sampling. Each edge is solved from the nearer end of its
+// monotonic piece where the piece slows down (from the end, the root adds two positive
+// terms instead of cancelling to a rounding residue), so a move that stops on an edge's
+// position has that edge at its end time exactly. The edges take the count from count_at(start
 // position) to count_at(end position) exactly, one edge per count, wherever the profile
 // starts and ends (fractional positions, a move settled on a count boundary). A segment whose
 // velocity crosses zero is split at the turning point, so reversals inside a segment give
@@ -98,6 +101,8 @@ private:
   double p_t0_ = 0, p_c0_ = 0, p_v0_ = 0, p_end_ = 0, p_cend_ = 0, p_inv_v_ = 0;
   int p_dir_ = 0;
   bool p_linear_ = false;
+  bool p_slowing_ = false; // decelerating: edges near its end are solved back from the end
+  double p_uend_ = 0;      // |velocity| at the piece's end, counts/ns
 };
 
 // Calls f(const QuadEdge&) for every edge, in time order. Returns the final count.

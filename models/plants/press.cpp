@@ -211,7 +211,15 @@ Knot PressPlant::advance(Nanos until) {
   if (event(t0, 0.0, x_) > 0.0 && event(t0, static_cast<double>(n) * 1e-9, x1) <= 0.0) {
     const std::int64_t k =
         locate_event([&](std::int64_t ns) { return event(t0, static_cast<double>(ns) * 1e-9, at(ns)); }, n);
+    const Vec from = x_;
     x_ = at(k);
+    // A standstill is drawn into as one uniform deceleration from the step's start
+    // (campaign/plant_motion.cpp segment()): the shaft stands where that puts it. The true
+    // stop lies within the located ns, so this is within half a ns of travel of it, where
+    // the integrated angle at k is not: a crank that stops well inside a ns (a tiny inertia
+    // against the brake) is carried through the rest of it at its enormous deceleration,
+    // backwards, by far more than that.
+    if (mode_ == Mode::Free) x_(0) = from(0) + 0.5 * from(1) * static_cast<double>(k) * 1e-9;
     now_ = t0 + Nanos{k};
     on_event();
     return state();

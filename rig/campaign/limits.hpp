@@ -34,6 +34,13 @@ inline constexpr double kMaxRpm = 32'767.0;
 inline constexpr double kMinCruiseRpm = 0.01;
 // Accelerations and brake decelerations: 0 .. 10^6 rpm/s (a stop from 32767 rpm in 33 ms).
 inline constexpr double kMaxRpmPerS = 1'000'000.0;
+// An SSI transducer's monoflop time TM (the time bit 25 stays valid, "typically 12 to 20 uS",
+// 7361 manual L1091-1092): above 0, so that DATA returns to idle after a frame, at most 1 ms.
+// `[ssi] monoflop` and `hilrig synth ssi --monoflop` take this range.
+inline constexpr Nanos kMaxMonoflop = milliseconds(1);
+[[nodiscard]] constexpr bool monoflop_in_range(Nanos tm) { return tm > Nanos{0} && tm <= kMaxMonoflop; }
+inline constexpr std::string_view kMonoflopRange =
+    "a monoflop time above 0, at most 1ms (typically 12 to 20 us, L1091)";
 // Distances and start positions in turns, and strokes.
 inline constexpr double kMaxTurns = 10'000.0;
 inline constexpr std::int64_t kMaxStrokes = 10'000;

@@ -330,8 +330,7 @@ private:
              "counts a turn in 1 .. 2^data_bits (a single-turn position fits the data field)");
     ssi.counts_per_turn = static_cast<std::uint32_t>(cpt);
     ssi.monoflop = r.opt_duration("monoflop").value_or(ssi.monoflop);
-    if (ssi.monoflop <= Nanos{0} || ssi.monoflop > milliseconds(1))
-      r.fail("monoflop", "a monoflop time above 0, at most 1ms (typically 12 to 20 us, L1091)");
+    if (!limits::monoflop_in_range(ssi.monoflop)) r.fail("monoflop", std::string(limits::kMonoflopRange));
     r.finish();
   }
 

@@ -231,6 +231,12 @@ void apply_faults(signals::QuadratureTrace& trace, const QuadratureOptions& o) {
 
 // Accelerations in turns/s², as a campaign's rpm/s bound.
 constexpr double kMaxTurnsPerS2 = limits::kMaxRpmPerS / 60.0;
+// That bound in words: 1e6 / 60 = 16666.666... turns/s², its digits cut, not rounded (a
+// rounded 16666.7 would be a maximum that is refused).
+std::string max_rate_words() {
+  return fmt::format("{:.3f}... turns/s² ({} rpm/s)", std::floor(kMaxTurnsPerS2 * 1000.0) / 1000.0,
+                     limits::kMaxRpmPerS);
+}
 // A jerk ramp is this many profile segments at most (each is solved for its edges).
 constexpr int kMaxSteps = 1'000;
 // B moved past the next A edge but one is no longer a phase error of one encoder.
@@ -259,7 +265,7 @@ void check_speed(const QuadratureOptions& o) {
 
 // A rate (acceleration, brake) the profile needs (> 0) or may leave at 0.
 void check_rate(const std::string& option, double value, bool needed, const std::string& profile) {
-  const std::string range = fmt::format("{:.6g} turns/s² ({} rpm/s)", kMaxTurnsPerS2, limits::kMaxRpmPerS);
+  const std::string range = max_rate_words();
   if (needed && !(value > 0.0))
     throw CLI::ValidationError(
         option, fmt::format("a {} needs 0 < {} <= {} (got {})", profile, option.substr(2), range, value));
@@ -552,7 +558,7 @@ void add_quadrature(CLI::App& synth) {
   cmd->add_option("--profile", o->profile, "constant | trapezoid | scurve | press")
       ->check(CLI::IsMember({"constant", "trapezoid", "scurve", "press"}));
   cmd->add_option("--lines", o->lines, "lines per turn (X4: 4 counts per line)")->check(positive_number());
-  const std::string rate = fmt::format("0 .. {:.6g} turns/s²", kMaxTurnsPerS2);
+  const std::string rate = "0 .. " + max_rate_words();
   cmd->add_option("--rpm", o->rpm,
                   fmt::format("speed (constant, press) or max speed (trapezoid, scurve), RPM: -{0} .. {0}, "
                               "and at most {1} counts/s (X4); trapezoid, scurve, press: |rpm| >= {2}",
@@ -649,10 +655,16 @@ Train parse_train(const std::string& text) {
   if (t.width >= t.period)
     throw CLI::ValidationError("--train",
                                fmt::format("a width 0 < width < period {} (got {})", parts[1], parts[2]));
-  const double end = t.start.seconds() + t.period.seconds() * static_cast<double>(t.count);
-  if (end > limits::kMaxEnd.seconds())
-    throw CLI::ValidationError("--train", fmt::format("a train within 0 .. {} (got {}: it ends at {:.6g} s)",
-                                                      duration_words(limits::kMaxEnd), text, end));
+  // A train spans its first to its last edge, the last pulse's falling edge (docs/synth.md):
+  // start + (count - 1) x period + width, in ns. Exact in a double up to 2^53 ns (104 days);
+  // past that it is far beyond the limit anyway (and would overflow Nanos).
+  const double last = static_cast<double>(t.start.count()) +
+                      static_cast<double>(t.period.count()) * static_cast<double>(t.count - 1) +
+                      static_cast<double>(t.width.count());
+  if (last > static_cast<double>(limits::kMaxEnd.count()))
+    throw CLI::ValidationError("--train",
+                               fmt::format("a train within 0 .. {} (got {}: its last edge is at {:.9f} s)",
+                                           duration_words(limits::kMaxEnd), text, last * 1e-9));
   return t;
 }
 
@@ -820,7 +832,10 @@ Nanos parse_duration(const std::string& text, const std::string& option, Nanos l
         option, fmt::format("{} .. {} (got {})", duration_words(lo), duration_words(hi), text));
   };
   // As written first: NaN, infinities and huge values never reach the conversion to Nanos.
-  if (!(seconds >= lo.seconds() && seconds <= hi.seconds())) throw refuse();
+  // Half a ns of slack: a value is judged as it rounds (docs/synth.md "Ranges"), so 0.6ns on
+  // a 1ns option is 1 ns and 3600.0000000004s is 3600 s; below 0 stays refused.
+  const double lo_s = lo > Nanos::zero() ? lo.seconds() - 0.5e-9 : lo.seconds();
+  if (!(seconds >= lo_s && seconds <= hi.seconds() + 0.5e-9)) throw refuse();
   const Nanos t = Nanos::from_seconds(seconds);
   if (t < lo || t > hi) throw refuse();
   return t;

@@ -124,6 +124,18 @@ void run_ssi(const CLI::App& cmd, const SsiOptions& o) {
   // The last frame ends within a campaign's run, as quadrature's and discrete's signals do.
   // Exact in Nanos: --frames is at most kMaxFrames, so first + frames x TINT cannot overflow.
   const Nanos tint = master.frame_period();
+  if (!limits::monoflop_in_range(monoflop))
+    throw CLI::ValidationError("--monoflop", fmt::format("{} (got {})", limits::kMonoflopRange, o.monoflop));
+  // Retriggered by every clock edge, the monoflop runs out TM after a frame's last one: DATA is
+  // back at idle before the next frame's latching edge only if TM is shorter than the gap
+  // between them (TIDL, L1089-1098: the transducer must have new data within it).
+  const Nanos idle = tint - master.clock_schedule(Nanos{0}, 1).back().time;
+  if (monoflop >= idle)
+    throw CLI::ValidationError(
+        "--monoflop",
+        fmt::format("shorter than the {} between a frame's last clock edge and the next frame at {} "
+                    "kHz, so that DATA is idle before it (got {})",
+                    duration_words(idle), o.clock_khz, o.monoflop));
   const Nanos end = first + tint * o.frames;
   if (end > limits::kMaxEnd)
     throw CLI::ValidationError(
@@ -218,7 +230,10 @@ void add_synth_ssi(CLI::App& synth) {
   cmd->add_option("--rpm", o->rpm, fmt::format("shaft speed, RPM (signed): -{0} .. {0}", limits::kMaxRpm));
   cmd->add_option("--start", o->start_turns,
                   fmt::format("start position, turns: -{0} .. {0}", limits::kMaxTurns));
-  cmd->add_option("--monoflop", o->monoflop, "transducer monoflop time TM, e.g. 16us: 0s .. 3600s");
+  cmd->add_option(
+      "--monoflop", o->monoflop,
+      "transducer monoflop time TM, e.g. 16us: above 0, at most 1ms and shorter than the idle gap "
+      "between frames (TINT less the frame's clock burst, L1089-1098)");
   cmd->add_option("--output-delay", o->output_delay, "clock edge to data change, e.g. 200ns: 0s .. 3600s");
   cmd->add_option("--stuck", o->stuck, "fault: data line stuck none | high | low")
       ->check(CLI::IsMember({"none", "high", "low"}));

@@ -381,7 +381,14 @@ TEST(CommandLine, SynthBadValuesNameTheOptionAndItsRange) {
       {"quadrature --index-width -1", "--index-width: 0 .. 4096 counts, at most a turn (got -1)"},
       {"quadrature --index-width 4097", "--index-width: 0 .. 4096 counts, at most a turn (got 4097)"},
       {"quadrature --profile trapezoid --accel 10 --decel -1",
-       "--decel: 0 .. 16666.7 turns/s² (1000000 rpm/s) (got -1)"},
+       "--decel: 0 .. 16666.666... turns/s² (1000000 rpm/s) (got -1)"},
+      // 1e6 rpm/s / 60 = 16666.666... turns/s²: the digits printed are accepted, one more is not.
+      {"quadrature --profile trapezoid --rpm 60 --turns 1 --accel 16666.667",
+       "--accel: 0 .. 16666.666... turns/s² (1000000 rpm/s) (got 16666.667)"},
+      {"quadrature --profile trapezoid --rpm 60 --turns 1 --accel 10 --decel 16666.667",
+       "--decel: 0 .. 16666.666... turns/s² (1000000 rpm/s) (got 16666.667)"},
+      {"quadrature --profile press --rpm 60 --brake 16666.667",
+       "--brake: 0 .. 16666.666... turns/s² (1000000 rpm/s) (got 16666.667)"},
       {"quadrature --max-input-hz -1", "--max-input-hz: -1 is not >= 0"},
       {"ssi --flip-bit 0", "--flip-bit: Value 0 not in range 1 to 25"},
       {"ssi --glitch-mask 1024 --bits 10 --counts-per-turn 1024",
@@ -417,7 +424,7 @@ TEST(CommandLine, SynthBadValuesNameTheOptionAndItsRange) {
       {"quadrature --profile press --brake 10 --rpm 0",
        "--rpm: a press profile needs |rpm| 0.01 .. 32767 (got 0)"},
       {"quadrature --profile trapezoid --accel 0",
-       "--accel: a trapezoid needs 0 < accel <= 16666.7 turns/s²"},
+       "--accel: a trapezoid needs 0 < accel <= 16666.666... turns/s²"},
       // The default motion: 1024 lines at 600 rpm for 10 ms is 4096 x 10 x 0.01 = 409.6 counts: 409 edges.
       {"quadrature --missing-edge 999999",
        "--missing-edge: an edge index 0 .. 408: this motion makes 409 edges "

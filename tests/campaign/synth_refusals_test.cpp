@@ -80,6 +80,7 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
           {"ssi --first 3601s", "--first: 1ns .. 3600s (got 3601s)"},
           {"ssi --monoflop 3601s", "--monoflop: 0s .. 3600s (got 3601s)"},
           {"ssi --monoflop nan", "--monoflop: 0s .. 3600s (got nan)"},
+          {"ssi --monoflop 0", "--monoflop: a monoflop time above 0, at most 1ms"},
           {"ssi --output-delay 3601s", "--output-delay: 0s .. 3600s (got 3601s)"},
           {"ssi --late inf", "--late: 0s .. 3600s (got inf)"},
           {"resolver --duration 3601s", "--duration: 1ns .. 3600s (got 3601s)"},
@@ -96,11 +97,26 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
           // 125 kHz a frame is 500 us, so from 3599.999 s two end at 3600 s, three after.
           {"ssi --first 3599.999s --frames 3", "--frames: frames that end by 3600s"},
           {"ssi --first 3599.999s --frames 10000", "--frames: frames that end by 3600s"},
+          {"discrete --train 3599.5s,1s,0.500000001s,1", "its last edge is at 3600.000000001 s"},
+          {"quadrature --duration 0.4ns", "--duration: 1ns .. 3600s (got 0.4ns)"},
+          {"discrete --set 3600.0000000006s=1", "--set: 0s .. 3600s (got 3600.0000000006s)"},
+          {"discrete --set -0.4ns=1", "--set: 0s .. 3600s (got -0.4ns)"},
+          {"discrete --train 3597.5s,1s,0.5s,4", "its last edge is at 3601.000000000 s"},
       });
   expect_written("synth_ok_times",
                  {"quadrature --duration 1ns", "quadrature --duration 1e-9", "resolver --duration 1ns",
-                  "ssi --first 1ns --frames 1", "ssi --monoflop 0 --output-delay 0 --frames 1",
-                  "ssi --first 3599.999s --frames 2"});
+                  "ssi --first 1ns --frames 1", "ssi --monoflop 1ns --output-delay 0 --frames 1",
+                  "ssi --first 3599.999s --frames 2",
+                  // The printed maximum rate, 16666.666... turns/s² (1e6 rpm/s / 60), is accepted.
+                  "quadrature --profile trapezoid --rpm 60 --turns 1 --accel 16666.666 --decel 16666.666",
+                  "quadrature --profile press --rpm 60 --brake 16666.666",
+                  // A train ends with its last pulse's falling edge: start + (count - 1) x
+                  // period + width = 3599.5 + 0 + 0.5 s and 3599.999999995 s + 5 ns = 3600 s.
+                  "discrete --train 3599.5s,1s,0.5s,1", "discrete --train 3599.999999995s,10ns,5ns,1",
+                  "discrete --train 3599s,1s,0.5s,1", "discrete --train 3597.5s,1s,0.5s,3",
+                  // Times are judged as they round to whole ns (docs/synth.md "Ranges").
+                  "quadrature --duration 0.6ns", "quadrature --duration 0.5ns",
+                  "ssi --first 0.5ns --frames 1", "discrete --set 3600.0000000004s=1"});
 }
 
 // A level names its option and the item it is in; a value that looks like an option ("-inf")

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -261,5 +262,75 @@ TEST(QuadratureEdges, X2AndX1DecodingFollowTheX4Count) {
     ASSERT_EQ(x4.count(), trace.edges.empty() ? 0 : trace.edges.back().count);
     EXPECT_EQ(x2.count(), ceil_div(x4.count(), 2)) << "trial " << trial;
     EXPECT_EQ(x1.count(), ceil_div(x4.count(), 4)) << "trial " << trial;
+  }
+}
+
+// A move that ends on a count: the edge into that count is at the move's end time, not before
+// it. Solved forward from the start of the deceleration, v0² + 2·a·d cancels near the end to
+// a rounding residue whose square root put this edge microseconds early (11.1 us here).
+// Closed form: 1 line = 4 counts/turn, 3,000 turns at up to 6,000 rpm (100 turns/s), accel 10
+// and decel 0.01 turns/s². Reaching 100 turns/s and stopping again would take 100²/20 +
+// 100²/0.02 = 500,500 turns, so the move is a triangle: v²·(1/(2·10) + 1/(2·0.01)) = 3,000,
+// v = sqrt(6,000 / 100.1) = 7.742096611 turns/s; the ramps v/10 = 774,209,661 ns and
+// v/0.01 = 774,209,661,139 ns, each rounded to the ns (plan_trapezoid), end at
+// 774,983,870,800 ns. With the rig's WholeCount placement count n is entered when the
+// position reaches n, so count 12,000 is entered at the end. Count 11,999 is entered 0.25 turn
+// before the end: with the ramp's rounded rate b = v'/t_d, where v' = 3,000 / ((t_a + t_d)/2)
+// = 7.742096611386664 turns/s and b = 0.0099999999999957 turns/s², sqrt(2·0.25/b) =
+// 7.071067811867 s before it: 767,912,802,988 ns.
+TEST(QuadratureEdges, AMoveEndingOnACountPutsItsLastEdgeAtItsEndTime) {
+  QuadratureEncoder enc;
+  enc.lines_per_turn = 1; // profile in turns
+  enc.placement = EdgePlacement::WholeCount;
+  MotionProfile p;
+  trapezoid_move(p, 3000.0, MoveLimits{100.0, 10.0, 0.01});
+  ASSERT_EQ(p.end_time(), 774'983'870'800_ns);
+  const QuadratureTrace trace = solve_quadrature(p, enc);
+  ASSERT_EQ(trace.edges.size(), 12'000U);
+  EXPECT_EQ(trace.edges.back().count, 12'000);
+  EXPECT_EQ(trace.edges.back().time, 774'983'870'800_ns);
+  EXPECT_EQ(trace.edges[11'998].count, 11'999);
+  EXPECT_EQ(trace.edges[11'998].time, 767'912'802'988_ns);
+}
+
+// Property: over seeded random trapezoids (rates from 1 to 1e7 counts/s², decelerations up to
+// 1e6 times the accelerations either way) that end on a count boundary (WholeCount: an
+// integer; HalfCount: an integer + 0.5), a move upwards enters its last count at its end time
+// exactly, and the count before it at sqrt(2·(1 count)/b) before the end (D = b·τ²/2 on the
+// last ramp, b its rate as planned), to the nanosecond's rounding. A move downwards enters its
+// last count one count before its end (the edge down sits at the boundary the position falls
+// below, and the move stops on its end boundary): at the same sqrt(2/b) before the end.
+TEST(QuadratureEdges, TrapezoidsEndingOnACountEnterItAtTheirEndTime) {
+  std::mt19937_64 rng(20261129);
+  const auto log_uniform = [&](double lo, double hi) {
+    return lo * std::pow(hi / lo, static_cast<double>(rng() >> 11) * 0x1.0p-53);
+  };
+  for (int trial = 0; trial < 200; ++trial) {
+    QuadratureEncoder enc = encoder_in_counts(100);
+    const bool half = (trial & 1) != 0;
+    enc.placement = half ? EdgePlacement::HalfCount : EdgePlacement::WholeCount;
+    const double start = static_cast<double>(static_cast<std::int64_t>(rng() % 2001) - 1000);
+    const double counts = static_cast<double>(2 + rng() % 3000) * ((rng() & 1) != 0 ? 1.0 : -1.0);
+    const double distance = counts + (half ? 0.5 : 0.0); // the end on the boundary
+    MotionProfile p(start);
+    const MoveLimits limits{log_uniform(10.0, 1e6), log_uniform(1.0, 1e7), log_uniform(1.0, 1e7)};
+    const TrapezoidPlan plan = trapezoid_move(p, distance, limits);
+    const QuadratureTrace trace = solve_quadrature(p, enc);
+    ASSERT_FALSE(trace.edges.empty());
+    const QuadEdge& last = trace.edges.back();
+    ASSERT_EQ(last.count, enc.count_at(start + distance)) << "trial " << trial;
+    const double tau_1 = std::sqrt(2.0 / plan.deceleration); // s, the last count before the end
+    const bool ramp_holds_a_count = 0.5 * std::abs(plan.peak_velocity) * plan.decel_time.seconds() > 1.0;
+    if (distance > 0) {
+      EXPECT_EQ(last.time, p.end_time()) << "trial " << trial;
+      if (ramp_holds_a_count && trace.edges.size() >= 2) {
+        const double expected = static_cast<double>(p.end_time().count()) - tau_1 * 1e9;
+        EXPECT_NEAR(static_cast<double>(trace.edges[trace.edges.size() - 2].time.count()), expected, 1.0)
+            << "trial " << trial;
+      }
+    } else if (ramp_holds_a_count) {
+      const double expected = static_cast<double>(p.end_time().count()) - tau_1 * 1e9;
+      EXPECT_NEAR(static_cast<double>(last.time.count()), expected, 1.0) << "trial " << trial;
+    }
   }
 }

@@ -33,8 +33,9 @@ TEST(SynthCommand, ParsesDurations) {
 }
 
 // One parser, each option's own range in its refusal: both ends are in, a nanosecond (or any
-// amount) beyond either is out, and so are NaN and infinities; a time below the 1 ns minimum is
-// refused by that minimum, not rounded to 0 and then called "not > 0".
+// amount) beyond either is out, and so are NaN and infinities; a time that rounds below the
+// 1 ns minimum is refused by that minimum, not rounded to 0 and then called "not > 0". Times
+// are judged as they round to whole ns (docs/synth.md "Ranges"): 0.9ns and 0.5ns are 1 ns.
 TEST(SynthCommand, DurationsOutsideTheirRangeNameIt) {
   const auto refusal = [](const std::string& text, Nanos lo, Nanos hi) -> std::string {
     try {
@@ -47,7 +48,10 @@ TEST(SynthCommand, DurationsOutsideTheirRangeNameIt) {
   EXPECT_EQ(cli::parse_positive_duration("1ns", "--first"), 1_ns);
   EXPECT_EQ(cli::parse_positive_duration("3600s", "--first"), 3'600_s);
   EXPECT_EQ(cli::parse_instant("0", "--late"), 0_ns);
-  for (const char* text : {"0", "1e-10", "0.9ns", "-1ns", "3600.000000001s", "3601s", "nan", "inf", "-inf"})
+  EXPECT_EQ(cli::parse_positive_duration("0.9ns", "--first"), 1_ns);
+  EXPECT_EQ(cli::parse_positive_duration("0.5ns", "--first"), 1_ns);
+  EXPECT_EQ(cli::parse_positive_duration("3600.0000000004s", "--first"), 3'600_s);
+  for (const char* text : {"0", "1e-10", "0.4ns", "-1ns", "3600.000000001s", "3601s", "nan", "inf", "-inf"})
     EXPECT_EQ(refusal(text, 1_ns, 3'600_s), std::string("--first: 1ns .. 3600s (got ") + text + ")") << text;
   for (const char* text : {"-1ns", "3601s", "nan"})
     EXPECT_EQ(refusal(text, 0_ns, 3'600_s), std::string("--first: 0s .. 3600s (got ") + text + ")") << text;

@@ -190,3 +190,31 @@ TEST(SynthSsi, CountsPerTurnFitTheField) {
   EXPECT_TRUE(accepted("25", "33554432"));
   EXPECT_FALSE(accepted("25", "33554433"));
 }
+
+// --monoflop takes the campaign's `[ssi] monoflop` range (above 0, at most 1 ms; TM "typically
+// 12 to 20 uS", 7361 manual L1091-1092) and must run out before the next frame: retriggered by
+// every clock edge, TM after a frame's last rising edge R25 (24.5 periods after F1: 196 us at
+// 125 kHz, 49 us at 500 kHz) DATA returns to idle, and the transducer must be ready within the
+// idle time before the next F1 (L1089-1093; TINT 500 / 250 us, L1097-1098): TM < 304 us at
+// 125 kHz, < 201 us at 500 kHz. 0 would return DATA to idle at every clock edge.
+TEST(SynthSsi, MonoflopIsAboveZeroAndFitsTheIdleGap) {
+  const std::string out = test::kSynthDir + "/synth_ssi_monoflop.vcd";
+  const auto accepted = [&](const std::string& khz, const std::string& tm) {
+    try {
+      synth({"ssi", "--out", out, "--frames", "2", "--clock-khz", khz, "--monoflop", tm});
+    } catch (const std::exception&) {
+      return false;
+    }
+    return true;
+  };
+  EXPECT_FALSE(accepted("125", "0s"));
+  EXPECT_TRUE(accepted("125", "1ns"));
+  EXPECT_TRUE(accepted("125", "16us"));
+  EXPECT_TRUE(accepted("125", "303999ns"));
+  EXPECT_FALSE(accepted("125", "304us"));
+  EXPECT_FALSE(accepted("125", "304001ns"));
+  EXPECT_TRUE(accepted("500", "200999ns"));
+  EXPECT_FALSE(accepted("500", "201us"));
+  EXPECT_FALSE(accepted("500", "201001ns"));
+  EXPECT_FALSE(accepted("125", "1000001ns")); // beyond the campaign's 1 ms too
+}

@@ -209,5 +209,26 @@ TEST(PressPlant, BrakeHoldsTheRamOnlyWithinItsTorque) {
   EXPECT_LE(p.ram_mass * p.gravity * std::abs(p.crank.d_height(slips.state().angle)), p.brake_torque);
 }
 
+// A crank too light to take a nanosecond to stop (J w0 / T = 1e-9 x 10 / 2000 = 5e-12 s, and
+// down to 1e-300 kg·m² within the documented range "> 0"): the standstill is located at the
+// first nanosecond (the event lies in (t - 1 ns, t]) and the crank stands within that
+// nanosecond's travel of where it was (w0 x 1 ns = 1e-8 rad; the exact stop is w0² J / 2T =
+// 2.5e-11 rad on), never carried backwards past its start by the deceleration (T / J = 2e12
+// rad/s² over the rest of the ns, 1e-6 rad).
+TEST(PressPlant, ACrankThatStopsWithinANanosecondStandsWhereItStopped) {
+  for (const double j : {1e-7, 1e-9, 1e-12, 1e-300}) {
+    PressParams p = frictionless();
+    p.crank_inertia = j;
+    p.brake_torque = 2000.0;
+    PressPlant press(p, PressStart{0.7, 10.0, false, false, {}});
+    const Nanos still = run_to_standstill(press, seconds(1));
+    EXPECT_EQ(still, Nanos{1}) << j;
+    EXPECT_GE(press.state().angle, 0.7) << j;
+    EXPECT_LE(press.state().angle, 0.7 + 10.0 * 1e-9) << j;
+    EXPECT_EQ(press.state().speed, 0.0) << j;
+    EXPECT_EQ(press.mode(), PressPlant::Mode::Stuck) << j;
+  }
+}
+
 } // namespace
 } // namespace hilrig::plants
