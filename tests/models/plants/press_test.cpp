@@ -230,5 +230,26 @@ TEST(PressPlant, ACrankThatStopsWithinANanosecondStandsWhereItStopped) {
   }
 }
 
+// A heavy ram on a long rod (1e6 kg, r 10 m, l 100 m: the documented maxima, docs/plants.md):
+// near top dead centre the crank's inertia J_c + m (ds/dθ)² swings from 2 to ~1e8 kg·m² within
+// a fraction of a degree, which a fixed 100 us step cannot follow (it gained ~2000x the energy
+// there is and read 4e7 counts/s). Without losses the energy stays what it was at every step,
+// and the crank, slowed by the ram it lifts, never turns faster than it started.
+TEST(PressPlant, AHeavyRamNearDeadCentreKeepsItsEnergy) {
+  PressParams p = frictionless();
+  p.flywheel_inertia = 20.0;
+  p.crank_inertia = 2.0;
+  p.ram_mass = 1e6;
+  p.crank = CrankSlider{10.0, 100.0};
+  // The clutch released (no brake torque here): a slipping clutch would take energy by rights.
+  PressPlant press(p, PressStart{0.0, 10.0, false, false, {}});
+  const double e0 = press.energy();
+  while (press.now() < milliseconds(100)) {
+    const Knot k = press.advance(milliseconds(100));
+    ASSERT_NEAR(press.energy(), e0, 1e-9 * e0) << k.time.count(); // e0 ~1.1e9 J, mostly the ram's height
+    ASSERT_LE(std::abs(k.speed), 10.0 * (1.0 + 1e-9)) << k.time.count();
+  }
+}
+
 } // namespace
 } // namespace hilrig::plants
