@@ -83,7 +83,8 @@ CheckResult check_brake_stop(Nanos applied, std::optional<Standstill> still, Nan
   // With the board's tick: the window its report may lie in (plain values: no optional to
   // read through, which GCC cannot prove set).
   const bool windowed = spec.report_tick.has_value();
-  const ReportWindow window = windowed ? report_window(applied, *still, *spec.report_tick) : ReportWindow{};
+  const ReportWindow window =
+      windowed ? report_window(applied, *still, *spec.report_tick, spec.applied_spread) : ReportWindow{};
   if (spec.reported_ms && windowed) {
     r.measurements.push_back(measure(
         spec.name + ".reported", *spec.reported_ms, "ms", window.low_ms, window.high_ms,
@@ -131,8 +132,8 @@ CheckResult check_brake_stop(Nanos applied, std::optional<Standstill> still, Nan
   return r;
 }
 
-ReportWindow report_window(Nanos applied, const Standstill& still, Nanos tick) {
-  const Nanos low = std::max(still.last_change(), applied) - applied - tick;
+ReportWindow report_window(Nanos applied, const Standstill& still, Nanos tick, Nanos applied_spread) {
+  const Nanos low = std::max(still.last_change(), applied) - applied - applied_spread - tick;
   const Nanos high = std::max(still.latest, applied) - applied + tick;
   return ReportWindow{to_ms(low), to_ms(high)};
 }

@@ -58,6 +58,9 @@ struct BrakeSpec {
   Level fault_level = Level::Low;   // [MODEL] ANS1 ch. 3: outputs normally on, off = fault
   bool fault_from_reported = false; // expect the fault from the reported time, not the measured one
   std::string application{};        // how the application was chosen among several, for the details
+  // How much later than `applied` the board may have seen the application (a bounce its tick
+  // saw through a later edge): its report may be that much shorter (report_window()).
+  Nanos applied_spread{0};
 };
 
 // Measurements: "<name>.stop_time" (ms, upper limit, window applied..standstill),
@@ -90,6 +93,7 @@ struct ReportWindow {
   double low_ms = 0.0;
   double high_ms = 0.0;
 };
-[[nodiscard]] ReportWindow report_window(Nanos applied, const Standstill& still, Nanos tick);
+[[nodiscard]] ReportWindow report_window(Nanos applied, const Standstill& still, Nanos tick,
+                                         Nanos applied_spread = Nanos{0});
 
 } // namespace hilrig::checks

@@ -730,6 +730,11 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
                           a.rejected.size() == 1 ? std::string("one application")
                                                  : fmt::format("{} applications", a.rejected.size()),
                           a.rejected.front().count());
+    if (a.depends_on_phase)
+      return erred(fmt::format(
+          "nothing judged: whether the ANS1's debounce (L1038-L1040) qualifies an application of '{}' "
+          "(or which) depends on the phase of its 1 ms tick; give applied_ms",
+          p.brake_line));
     if (!a.applied && c.rig_driven.contains(p.brake_line)) // the rig's own stimulus never came
       return erred(fmt::format(
           "nothing judged: the rig never applied the brake on its line '{}' (no {} to {}{})", p.brake_line,
@@ -738,6 +743,7 @@ CheckResult run(const BrakeParams& p, const Capture& c) {
       return failed(".stop_time", fmt::format("missing edge: the brake line '{}' never applied the brake{}",
                                               p.brake_line, noise));
     applied = *a.applied;
+    s.applied_spread = a.latest - applied;
     if (!a.rejected.empty())
       s.application = fmt::format("the first application the ANS1's debounce qualifies, L1038-L1040; {} "
                                   "dropped as noise before it, the first at {} ns",
