@@ -166,6 +166,11 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
   const std::vector<Axis> axes = read_sweep(file_name, top);
   for (const Axis& a : axes) c.sweep.push_back(a.info);
 
+  // The file as written is a campaign of its own, checked whole before any point: a value that
+  // every point replaces is still the file's, and a typo in it must not hide behind the sweep.
+  // Its errors are the ones the file would get without the sweep, naming no point.
+  if (!axes.empty()) (void)read_scenario_file(file_name, parse_toml(text, file_name));
+
   // The plan's size before anything is allocated for it (a product of axes can overflow).
   std::size_t points = 1;
   for (const Axis& a : axes) {
@@ -211,19 +216,6 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
     }
     return doc;
   };
-  // Whether the file as written, no point's values and no fault's set in it, is refused for the
-  // same reason at the same place: then the sweep and the faults have nothing to do with it
-  // (a name too long, an unknown key) and the error names no point.
-  auto same_error_unswept = [&](const CampaignError& e) {
-    try {
-      (void)read_scenario_file(file_name, parse_toml(text, file_name));
-    } catch (const CampaignError& plain) {
-      return plain.where().line == e.where().line && plain.where().column == e.where().column &&
-             plain.key() == e.key() && plain.expected() == e.expected();
-    } catch (const std::exception&) { // another failure says nothing of this one
-    }
-    return false;
-  };
   // Reads a point; an error in a swept or set value (no position of its own) points at
   // the value in the sweep's array or the fault's table.
   auto read_point = [&](std::size_t p, std::optional<std::size_t> fault, std::string* label) {
@@ -234,8 +226,8 @@ Campaign parse_campaign(std::string_view text, const std::string& file_name) {
       return read_scenario_file(file_name, doc);
     } catch (const CampaignError& e) {
       if (axes.empty() && !fault) throw;
-      if (e.where().line != 0 && same_error_unswept(e)) throw; // the file is wrong whatever the point
       if (e.where().line != 0) {
+        // The file as written was read whole first (or is point 0), so this error is the point's.
         // The line is the file's, but the value there may be fine alone: say which point, or
         // which fault's set, made it wrong (a swept encoder.lines makes a speed too fast).
         std::string in;

@@ -380,6 +380,48 @@ TEST(CampaignParser, ErrorOfTheFileWhateverThePointNamesNoPoint) {
   EXPECT_TRUE(rejected_at(repeat + sweep, "t.toml:4:10: campaign.repeat: a repetition count in 1 .. 10000"));
 }
 
+// The file as written is checked whole even where a sweep replaces a value at every point
+// (docs/campaigns.md "Every key is checked"): a wrong type or a value out of range under a
+// sweep gets the error it gets without the sweep, naming no point.
+TEST(CampaignParser, AValueEveryPointReplacesIsStillCheckedAsWritten) {
+  const std::string delay_sweep = "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", \"100us\"]\n";
+  const std::string speed_sweep = "[[sweep]]\nkey = \"motion.move[0].speed_rpm\"\nvalues = [600, 500]\n";
+  const auto with_delay = [](const std::string& delay) {
+    return replace_line(test::kValidCampaign, 8, "off = 20\ndelay = " + delay);
+  };
+  const auto with_speed = [](const std::string& rpm) {
+    return replace_line(test::kValidCampaign, 21, "speed_rpm = " + rpm);
+  };
+  struct Case {
+    std::string unswept;
+    std::string sweep;
+    std::string error;
+  };
+  // delay is reference_pls's 0s .. 1s (rig/duts); a speed is -32767 .. 32767 rpm (limits.hpp).
+  for (const Case& c :
+       {Case{with_delay("\"banana\""), delay_sweep, "t.toml:9:9: dut.params.delay: expected a duration"},
+        Case{with_delay("\"-1ns\""), delay_sweep, "t.toml:9:9: dut.params.delay: a value in 0s .. 1s"},
+        Case{with_delay("\"1000000001ns\""), delay_sweep,
+             "t.toml:9:9: dut.params.delay: a value in 0s .. 1s"},
+        Case{with_speed("32768"), speed_sweep,
+             "t.toml:21:13: motion.move[0].speed_rpm: a speed in rpm in -32767 .. 32767"},
+        Case{with_speed("99999999"), speed_sweep,
+             "t.toml:21:13: motion.move[0].speed_rpm: a speed in rpm"}}) {
+    SCOPED_TRACE(c.error);
+    EXPECT_TRUE(rejected_at(c.unswept, c.error));
+    EXPECT_EQ(error_of(c.unswept + c.sweep), error_of(c.unswept));
+  }
+  // At the limits the file as written is a campaign, and each point takes the sweep's values.
+  for (const std::string& text : {with_delay("\"0s\"") + delay_sweep, with_delay("\"1s\"") + delay_sweep,
+                                  with_speed("32767") + speed_sweep, with_speed("-32767") + speed_sweep}) {
+    const Campaign c = parse_campaign(text, "t.toml");
+    ASSERT_EQ(c.points.size(), 2U);
+  }
+  const Campaign c = parse_campaign(with_delay("\"1s\"") + delay_sweep, "t.toml");
+  EXPECT_EQ(std::get<Nanos>(c.points[0].dut.params.at("delay").value), 50_us);
+  EXPECT_EQ(std::get<Nanos>(c.points[1].dut.params.at("delay").value), 100_us);
+}
+
 TEST(CampaignParser, SweepsMakeTheCartesianProductLastAxisFastest) {
   const std::string text = replace_line(test::kValidCampaign, 3, "end = \"100ms\"\nrepeat = 2") +
                            "[[sweep]]\nkey = \"dut.params.delay\"\nvalues = [\"50us\", \"100us\"]\n"
