@@ -1,8 +1,11 @@
 #include "rig/campaign/duration.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <string>
+
+#include <fmt/format.h>
 
 namespace hilrig::campaign {
 
@@ -50,6 +53,21 @@ std::optional<Nanos> parse_duration_clamped(std::string_view text) {
   const DurationText d = read_duration(text);
   if (d.too_long != 0) return Nanos{d.too_long * kMaxDurationText.count()};
   return d.value;
+}
+
+std::string duration_text_problem(std::string_view text) {
+  const DurationText d = read_duration(text);
+  if (d.value || d.too_long != 0) return {};
+  // The unit is the letters at the end; what comes before them is the number.
+  std::size_t unit_at = text.size();
+  while (unit_at > 0 && std::isalpha(static_cast<unsigned char>(text[unit_at - 1])) != 0) --unit_at;
+  const std::string_view unit = text.substr(unit_at);
+  const std::string_view number = text.substr(0, unit_at);
+  if (unit.empty()) return fmt::format("no unit (one of {})", kDurationUnits);
+  if (number.empty()) return fmt::format("no number before a unit ({})", kDurationUnits);
+  if (unit != "ns" && unit != "us" && unit != "ms" && unit != "s")
+    return fmt::format("\"{}\" is not a unit (one of {})", unit, kDurationUnits);
+  return fmt::format("\"{}\" is not a finite number", number);
 }
 
 } // namespace hilrig::campaign

@@ -21,6 +21,7 @@
 #include "drivers/modbus/tcp_server.hpp"
 #include "rig/campaign/campaign_error.hpp"
 #include "rig/campaign/duration.hpp"
+#include "rig/campaign/limits.hpp"
 #include "rig/campaign/stop_request.hpp"
 #include "rig/cli/exit_status.hpp"
 #include "rig/cli/serve_devices.hpp"
@@ -55,6 +56,22 @@ struct ServeArgs {
 [[noreturn]] void bad_input(const std::string& why) {
   std::fprintf(stderr, "hilrig serve: %s\n", why.c_str());
   exit_with(kBadInput);
+}
+
+// A duration option's value in lo .. hi. Refused with the option, the whole range in WHAT, and
+// first what is wrong with a text that is no duration ("100h": "h" is not a unit).
+Nanos duration_option(const std::string& option, const std::string& text, Nanos lo, Nanos hi,
+                      const std::string& what) {
+  const auto d = campaign::parse_duration(text);
+  if (d && *d >= lo && *d <= hi) return *d;
+  const std::string problem = campaign::duration_text_problem(text);
+  bad_input(option + " " + text + ": " + (problem.empty() ? "" : problem + ": ") + what);
+}
+
+// At least 1 ms, and at most the longest a duration's text holds (duration.hpp).
+std::string range_from_1ms(const std::string& example) {
+  return "a duration of 1ms .. " + campaign::duration_text(campaign::kMaxDurationText) + ", like \"" +
+         example + "\"";
 }
 
 // --modbus-tcp [ADDR:]PORT; an address beyond loopback needs an explicit --bind.
@@ -154,19 +171,12 @@ void serve_main(const ServeArgs& args) {
     o.link = args.pty ? ServeLink::Pty : ServeLink::Rtu;
     parse_rtu(args, o);
   }
-  if (!args.tick.empty()) {
-    const auto tick = campaign::parse_duration(args.tick);
-    if (!tick || *tick < milliseconds(1)) {
-      bad_input("--tick " + args.tick + ": a duration of at least 1ms, like \"1ms\"");
-    }
-    o.tick = *tick;
-  }
+  if (!args.tick.empty())
+    o.tick = duration_option("--tick", args.tick, milliseconds(1), campaign::kMaxDurationText,
+                             range_from_1ms("1ms"));
   if (!args.idle_timeout.empty()) {
-    const auto idle = campaign::parse_duration(args.idle_timeout);
-    if (!idle || *idle < milliseconds(1)) {
-      bad_input("--idle-timeout " + args.idle_timeout + ": a duration of at least 1ms, like \"60s\"");
-    }
-    o.tcp_limits.idle_timeout = *idle;
+    o.tcp_limits.idle_timeout = duration_option("--idle-timeout", args.idle_timeout, milliseconds(1),
+                                                campaign::kMaxDurationText, range_from_1ms("60s"));
   }
   if (!args.byte_timeout.empty()) {
     // On TCP the MBAP header says where a frame ends: there is no next-byte wait to set.
@@ -174,21 +184,14 @@ void serve_main(const ServeArgs& args) {
       bad_input("--byte-timeout " + args.byte_timeout +
                 ": applies to an RTU link only (--modbus-rtu or --pty); a Modbus TCP frame ends where its "
                 "MBAP length says");
-    const auto wait = campaign::parse_duration(args.byte_timeout);
-    if (!wait || *wait < Nanos{0} || *wait > seconds(10)) {
-      bad_input("--byte-timeout " + args.byte_timeout +
-                ": an RTU link's wait for a frame's next byte, 0s..10s, like \"100ms\"");
-    }
-    o.byte_timeout = *wait;
+    o.byte_timeout = duration_option("--byte-timeout", args.byte_timeout, Nanos{0}, seconds(10),
+                                     "an RTU link's wait for a frame's next byte, 0s..10s, like \"100ms\"");
   }
   if (!args.scan.empty()) {
     if (o.device != "ans1")
       bad_input("--scan " + args.scan + ": applies to the ans1 only (its scan period), not to " + o.device);
-    const auto scan = campaign::parse_duration(args.scan);
-    if (!scan || *scan < microseconds(1) || *scan > milliseconds(1)) {
-      bad_input("--scan " + args.scan + ": the ans1's scan period, 1us..1ms, like \"100us\"");
-    }
-    o.scan_period = *scan;
+    o.scan_period = duration_option("--scan", args.scan, microseconds(1), milliseconds(1),
+                                    "the ans1's scan period, 1us..1ms, like \"100us\"");
   }
   if (o.far.config.empty() && (!o.far.gpio_sim.empty() || !o.far.can.empty())) {
     bad_input("--gpio-sim and --can need --far FAR.toml (which pin is on which line)");

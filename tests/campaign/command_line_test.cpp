@@ -211,6 +211,32 @@ TEST(CommandLine, ServeByteTimeoutIsAnRtuDurationInItsRange) {
   EXPECT_NE(scan.err.find("--scan 100us: applies to the ans1 only"), std::string::npos) << scan.err;
 }
 
+// --idle-timeout is 1ms .. 9000000000s, the longest a duration's text holds (docs/serve.md): a
+// value beyond either end is refused naming the whole range, and a unit hilrig does not take
+// is named as such. A value in range passes on to the next option (--byte-timeout, refused on
+// TCP), so acceptance is seen without serving.
+TEST(CommandLine, ServeIdleTimeoutNamesItsWholeRangeAndABadUnit) {
+  const std::string range = ": a duration of 1ms .. 9000000000s, like \"60s\"";
+  for (const std::string value : {"9000000001s", "0.999ms", "1e400s"}) {
+    const Result r = hilrig("serve ans1 --modbus-tcp 0 --idle-timeout " + value);
+    EXPECT_EQ(r.status, 2) << value;
+    EXPECT_NE(r.err.find("--idle-timeout " + value + range), std::string::npos) << r.err;
+  }
+  for (const std::string unit : {"h", "min"}) {
+    const Result r = hilrig("serve ans1 --modbus-tcp 0 --idle-timeout 100" + unit);
+    EXPECT_EQ(r.status, 2) << unit;
+    EXPECT_NE(r.err.find("--idle-timeout 100" + unit + ": \"" + unit +
+                         "\" is not a unit (one of ns, us, ms or s)" + range),
+              std::string::npos)
+        << r.err;
+  }
+  for (const std::string value : {"9000000000s", "8999999999s", "1ms", "1.001ms"}) {
+    const Result r = hilrig("serve ans1 --modbus-tcp 0 --idle-timeout " + value + " --byte-timeout 0s");
+    EXPECT_EQ(r.status, 2) << value;
+    EXPECT_NE(r.err.find("--byte-timeout 0s: applies to an RTU link only"), std::string::npos) << r.err;
+  }
+}
+
 // `hilrig serve --help` names every device's fault variants, the same list a wrong one is
 // answered with.
 TEST(CommandLine, ServeHelpListsEveryDevicesFaults) {

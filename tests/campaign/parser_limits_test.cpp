@@ -153,6 +153,18 @@ TEST(CampaignLimits, DurationTextIsClampedOnlyBeyondWhatItHolds) {
   EXPECT_EQ(parse_duration_clamped("nans"), std::nullopt);
 }
 
+// What is wrong with a text that is no duration is said: a word that is not a unit is named.
+TEST(CampaignLimits, TextThatIsNoDurationSaysWhy) {
+  EXPECT_EQ(duration_text_problem("100h"), "\"h\" is not a unit (one of ns, us, ms or s)");
+  EXPECT_EQ(duration_text_problem("60min"), "\"min\" is not a unit (one of ns, us, ms or s)");
+  EXPECT_EQ(duration_text_problem("60"), "no unit (one of ns, us, ms or s)");
+  EXPECT_EQ(duration_text_problem("ms"), "no number before a unit (ns, us, ms or s)");
+  EXPECT_EQ(duration_text_problem("6x0s"), "\"6x0\" is not a finite number");
+  // A duration, or one too long to hold (a range check names that), has nothing wrong as text.
+  for (const char* text : {"60s", "1ns", "9000000000s", "9000000001s", "1e400s"})
+    EXPECT_EQ(duration_text_problem(text), "") << text;
+}
+
 // ---- speeds the rig cannot make ------------------------------------------------------------
 
 TEST(CampaignLimits, SpeedsBeyondTheSpeedWordAreRefused) {
