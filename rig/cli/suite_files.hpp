@@ -14,8 +14,10 @@ struct SuiteEntry {
                       // directory without ".toml"; a file given by name: its stem)
 };
 
-// Throws std::invalid_argument naming the path: one that does not exist, a file that is not
-// .toml, a directory without any, or two campaigns whose outputs would share a directory.
+// Throws std::invalid_argument naming the path: a file that is not .toml, one that is not a
+// regular file, a directory without any, or two campaigns whose outputs would share a
+// directory. A path that is not there (or cannot be looked at) is entered as a campaign file:
+// reading it refuses it as the campaign reader refuses any file it cannot open.
 [[nodiscard]] std::vector<SuiteEntry> collect_campaigns(const std::vector<std::string>& paths);
 
 } // namespace hilrig::cli

@@ -333,6 +333,26 @@ TEST(RobustInput, MessagesNameWhatWasReadAndFound) {
   EXPECT_NE(v3.err.find(" reads version 2"), std::string::npos) << v3.err;
 }
 
+// A campaign file that is not there is refused as docs/campaigns.md shows it, "x.toml: file: a
+// readable campaign file (cannot open it: ...)", the form of every whole-file problem, by check
+// (beside the files that are there, still checked) and by run (nothing written).
+TEST(RobustInput, AMissingCampaignFileIsRefusedInTheDocumentedForm) {
+  const fs::path dir = test::scratch_dir("campaign", "robust_missing");
+  const std::string nowhere = (dir / "nope.toml").string();
+  const std::string said =
+      nowhere + ": file: a readable campaign file (cannot open it: No such file or directory)\n";
+  const Result check = hilrig("check " + nowhere + " " + kPass);
+  EXPECT_EQ(check.status, 2);
+  EXPECT_EQ(check.err, said);
+  EXPECT_NE(check.out.find(kPass + ": ok"), std::string::npos) << check.out;
+  for (const std::string& files : {nowhere, nowhere + " " + kPass}) {
+    const Result run = hilrig("run " + files + " --trace none --out " + (dir / "out").string());
+    EXPECT_EQ(run.status, 2) << files;
+    EXPECT_EQ(run.err, said) << files;
+    EXPECT_FALSE(fs::exists(dir / "out")) << files;
+  }
+}
+
 // `latency --cpu N` beyond the machine's CPUs would run unpinned (its header saying so in
 // passing), and a --duration shorter than one --interval measures no wake-up (a table of 0 µs):
 // both refused before anything runs, 2, naming the range. The last CPU and exactly one interval
