@@ -35,12 +35,23 @@ inline constexpr double kMinCruiseRpm = 0.01;
 // Accelerations and brake decelerations: 0 .. 10^6 rpm/s (a stop from 32767 rpm in 33 ms).
 inline constexpr double kMaxRpmPerS = 1'000'000.0;
 // An SSI transducer's monoflop time TM (the time bit 25 stays valid, "typically 12 to 20 uS",
-// 7361 manual L1091-1092): above 0, so that DATA returns to idle after a frame, at most 1 ms.
-// `[ssi] monoflop` and `hilrig synth ssi --monoflop` take this range.
+// 7361 manual L1091-1092): longer than half a clock period, at most 1 ms. Every clock edge
+// retriggers it (signals/ssi_slave.hpp), so one that runs out within a half period returns DATA
+// to idle inside the frame, and the 7361 reads all ones. `[ssi] monoflop` and `hilrig synth ssi
+// --monoflop` take this range: synth with its own clock's half period; a campaign with that of
+// the slower clock the 7361 can be set to at run time (125 or 500 kHz, L1123, L2150-2152):
+// 125 kHz, T = 8 us, half 4 us (a 50 % duty, [MODEL] docs/spec/ssi7361.md).
 inline constexpr Nanos kMaxMonoflop = milliseconds(1);
-[[nodiscard]] constexpr bool monoflop_in_range(Nanos tm) { return tm > Nanos{0} && tm <= kMaxMonoflop; }
-inline constexpr std::string_view kMonoflopRange =
-    "a monoflop time above 0, at most 1ms (typically 12 to 20 us, L1091)";
+inline constexpr Nanos kSlowestSsiHalfClock = microseconds(4);
+[[nodiscard]] constexpr bool monoflop_in_range(Nanos tm, Nanos half_clock) {
+  return tm > half_clock && tm <= kMaxMonoflop;
+}
+// The range in words: `half_clock` as written ("4us"), `clock` the clock it is half a period of
+// ("the 125 kHz clock"). Header-only, as `hilrig synth` links no campaign reader.
+[[nodiscard]] inline std::string monoflop_range(std::string_view half_clock, std::string_view clock) {
+  return "a monoflop time above " + std::string(half_clock) + " (half a period of " + std::string(clock) +
+         ": at or below it DATA returns to idle inside a frame), at most 1ms (typically 12 to 20 us, L1091)";
+}
 // Distances and start positions in turns, and strokes.
 inline constexpr double kMaxTurns = 10'000.0;
 inline constexpr std::int64_t kMaxStrokes = 10'000;

@@ -330,7 +330,10 @@ private:
              "counts a turn in 1 .. 2^data_bits (a single-turn position fits the data field)");
     ssi.counts_per_turn = static_cast<std::uint32_t>(cpt);
     ssi.monoflop = r.opt_duration("monoflop").value_or(ssi.monoflop);
-    if (!limits::monoflop_in_range(ssi.monoflop)) r.fail("monoflop", std::string(limits::kMonoflopRange));
+    // The 7361's clock may be set to 125 or 500 kHz at run time: judged against the slower one.
+    if (!limits::monoflop_in_range(ssi.monoflop, limits::kSlowestSsiHalfClock))
+      r.fail("monoflop", limits::monoflop_range(duration_text(limits::kSlowestSsiHalfClock),
+                                                "the 7361's slower clock, 125 kHz"));
     r.finish();
   }
 

@@ -124,8 +124,13 @@ void run_ssi(const CLI::App& cmd, const SsiOptions& o) {
   // The last frame ends within a campaign's run, as quadrature's and discrete's signals do.
   // Exact in Nanos: --frames is at most kMaxFrames, so first + frames x TINT cannot overflow.
   const Nanos tint = master.frame_period();
-  if (!limits::monoflop_in_range(monoflop))
-    throw CLI::ValidationError("--monoflop", fmt::format("{} (got {})", limits::kMonoflopRange, o.monoflop));
+  const Nanos half_clock = master.clock_period() / 2;
+  if (!limits::monoflop_in_range(monoflop, half_clock))
+    throw CLI::ValidationError(
+        "--monoflop", fmt::format("{} (got {})",
+                                  limits::monoflop_range(duration_words(half_clock),
+                                                         fmt::format("the {} kHz clock", o.clock_khz)),
+                                  o.monoflop));
   // Retriggered by every clock edge, the monoflop runs out TM after a frame's last one: DATA is
   // back at idle before the next frame's latching edge only if TM is shorter than the gap
   // between them (TIDL, L1089-1098: the transducer must have new data within it).
@@ -232,8 +237,9 @@ void add_synth_ssi(CLI::App& synth) {
                   fmt::format("start position, turns: -{0} .. {0}", limits::kMaxTurns));
   cmd->add_option(
       "--monoflop", o->monoflop,
-      "transducer monoflop time TM, e.g. 16us: above 0, at most 1ms and shorter than the idle gap "
-      "between frames (TINT less the frame's clock burst, L1089-1098)");
+      "transducer monoflop time TM, e.g. 16us: above half a clock period (4us at 125 kHz, 1us at 500 kHz), "
+      "at most 1ms and shorter than the idle gap between frames (TINT less the frame's clock burst, "
+      "L1089-1098)");
   cmd->add_option("--output-delay", o->output_delay, "clock edge to data change, e.g. 200ns: 0s .. 3600s");
   cmd->add_option("--stuck", o->stuck, "fault: data line stuck none | high | low")
       ->check(CLI::IsMember({"none", "high", "low"}));

@@ -88,5 +88,40 @@ TEST(SsiPlant, BadSsiTablesAreRefusedWithTheirKey) {
             std::string::npos);
 }
 
+// [ssi] monoflop is longer than half a period of the 7361's slower clock and at most 1 ms: every
+// clock edge retriggers the monoflop, and the clock's edges are T/2 apart (T = 8 us at 125 kHz,
+// manual L1123; the 7361 may be set to 125 or 500 kHz at run time, L2150-2152), so a TM of at most
+// 4 us returns DATA to idle inside a frame and the 7361 reads all ones. 4.001 us still reads the
+// closed form, at 125 kHz as the shipped campaign runs.
+TEST(SsiPlant, MonoflopIsLongerThanHalfTheSlowerClocksPeriod) {
+  const std::string base = test::read_file(kSsiPlantFile);
+  const auto with_monoflop = [&](const std::string& tm) {
+    std::string t = base;
+    const std::string code = "code = \"binary\"\n";
+    const std::size_t at = t.find(code);
+    EXPECT_NE(at, std::string::npos);
+    t.insert(at + code.size(), "monoflop = \"" + tm + "\"\n");
+    return t;
+  };
+  for (const char* bad : {"4us", "3.999us", "1ns", "1000.001us"}) {
+    try {
+      (void)parse_campaign(with_monoflop(bad), "t.toml");
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const CampaignError& e) {
+      EXPECT_EQ(e.key(), "ssi.monoflop") << bad;
+      EXPECT_EQ(
+          e.expected().rfind("a monoflop time above 4us (half a period of the 7361's slower clock, "
+                             "125 kHz: at or below it DATA returns to idle inside a frame), at most 1ms",
+                             0),
+          0U)
+          << e.what();
+    }
+  }
+  for (const char* good : {"4.001us", "1ms"})
+    EXPECT_NO_THROW((void)parse_campaign(with_monoflop(good), "t.toml")) << good;
+  const rig::CampaignResult r = test::run_everything(parse_campaign(with_monoflop("4.001us"), "t.toml"));
+  EXPECT_EQ(r.verdict, Outcome::Pass) << test::failures(r);
+}
+
 } // namespace
 } // namespace hilrig::campaign

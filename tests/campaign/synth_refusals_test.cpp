@@ -80,7 +80,7 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
           {"ssi --first 3601s", "--first: 1ns .. 3600s (got 3601s)"},
           {"ssi --monoflop 3601s", "--monoflop: 0s .. 3600s (got 3601s)"},
           {"ssi --monoflop nan", "--monoflop: 0s .. 3600s (got nan)"},
-          {"ssi --monoflop 0", "--monoflop: a monoflop time above 0, at most 1ms"},
+          {"ssi --monoflop 0", "--monoflop: a monoflop time above 4us (half a period of the 125 kHz clock"},
           {"ssi --output-delay 3601s", "--output-delay: 0s .. 3600s (got 3601s)"},
           {"ssi --late inf", "--late: 0s .. 3600s (got inf)"},
           {"resolver --duration 3601s", "--duration: 1ns .. 3600s (got 3601s)"},
@@ -105,7 +105,7 @@ TEST(SynthRefusals, TimesStateTheirOwnRange) {
       });
   expect_written("synth_ok_times",
                  {"quadrature --duration 1ns", "quadrature --duration 1e-9", "resolver --duration 1ns",
-                  "ssi --first 1ns --frames 1", "ssi --monoflop 1ns --output-delay 0 --frames 1",
+                  "ssi --first 1ns --frames 1", "ssi --monoflop 4.001us --output-delay 0 --frames 1",
                   "ssi --first 3599.999s --frames 2",
                   // The printed maximum rate, 16666.666... turns/s² (1e6 rpm/s / 60), is accepted.
                   "quadrature --profile trapezoid --rpm 60 --turns 1 --accel 16666.666 --decel 16666.666",

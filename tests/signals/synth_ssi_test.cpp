@@ -191,13 +191,14 @@ TEST(SynthSsi, CountsPerTurnFitTheField) {
   EXPECT_FALSE(accepted("25", "33554433"));
 }
 
-// --monoflop takes the campaign's `[ssi] monoflop` range (above 0, at most 1 ms; TM "typically
-// 12 to 20 uS", 7361 manual L1091-1092) and must run out before the next frame: retriggered by
-// every clock edge, TM after a frame's last rising edge R25 (24.5 periods after F1: 196 us at
-// 125 kHz, 49 us at 500 kHz) DATA returns to idle, and the transducer must be ready within the
-// idle time before the next F1 (L1089-1093; TINT 500 / 250 us, L1097-1098): TM < 304 us at
-// 125 kHz, < 201 us at 500 kHz. 0 would return DATA to idle at every clock edge.
-TEST(SynthSsi, MonoflopIsAboveZeroAndFitsTheIdleGap) {
+// --monoflop takes the range `[ssi] monoflop` takes, with its own clock's half period: longer
+// than T/2 (T = 8 us at 125 kHz, 2 us at 500 kHz, 7361 manual L1123; retriggered by every clock
+// edge, T/2 apart, a shorter TM returns DATA to idle inside a frame), at most 1 ms (TM
+// "typically 12 to 20 uS", L1091-1092), and it must run out before the next frame: TM after a
+// frame's last rising edge R25 (24.5 periods after F1: 196 us at 125 kHz, 49 us at 500 kHz) DATA
+// returns to idle, and the transducer must be ready within the idle time before the next F1
+// (L1089-1093; TINT 500 / 250 us, L1097-1098): TM < 304 us at 125 kHz, < 201 us at 500 kHz.
+TEST(SynthSsi, MonoflopIsAboveHalfAClockPeriodAndFitsTheIdleGap) {
   const std::string out = test::kSynthDir + "/synth_ssi_monoflop.vcd";
   const auto accepted = [&](const std::string& khz, const std::string& tm) {
     try {
@@ -208,7 +209,12 @@ TEST(SynthSsi, MonoflopIsAboveZeroAndFitsTheIdleGap) {
     return true;
   };
   EXPECT_FALSE(accepted("125", "0s"));
-  EXPECT_TRUE(accepted("125", "1ns"));
+  EXPECT_FALSE(accepted("125", "3999ns"));
+  EXPECT_FALSE(accepted("125", "4us"));
+  EXPECT_TRUE(accepted("125", "4001ns"));
+  EXPECT_FALSE(accepted("500", "999ns"));
+  EXPECT_FALSE(accepted("500", "1us"));
+  EXPECT_TRUE(accepted("500", "1001ns"));
   EXPECT_TRUE(accepted("125", "16us"));
   EXPECT_TRUE(accepted("125", "303999ns"));
   EXPECT_FALSE(accepted("125", "304us"));
