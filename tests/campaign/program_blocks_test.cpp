@@ -15,6 +15,7 @@
 
 #include "campaign_text.hpp"
 #include "rig/campaign/campaign_parser.hpp"
+#include "rig/duts/device_programs.hpp"
 #include "rig/duts/dut.hpp"
 #include "rig/results/results_json.hpp"
 #include "test_support.hpp"
@@ -347,6 +348,37 @@ TEST(ProgramSsi7361, FormatAndScalarRulesAreCheckedWhenRead) {
                        "1 .. 1000"));
   // Preset +-33,554,431 (L91, L148).
   EXPECT_TRUE(rejected("ssi7361", "program = \"setup\"\npreset = 33554432", 1, 10, "preset", "33554431"));
+}
+
+// The Format word is written whole (L2126-L2152) and the Scalars as a pair (%AQ2/%AQ3, L2091-L2092):
+// a Format or Scalars field given alone is refused, and what `hilrig list` shows of it (the
+// field's description) names the field(s) it goes with, as docs/campaigns.md does.
+TEST(ProgramSsi7361, AFieldThatNeedsAnotherIsRefusedAloneAndListedSo) {
+  struct Alone {
+    std::string field;
+    std::string value;
+    std::string with; // what the listing says it goes with
+  };
+  const duts::ProgramBlockInfo* setup = duts::find_program("ssi7361", "setup");
+  ASSERT_NE(setup, nullptr);
+  for (const Alone& a :
+       {Alone{"bits", "10", "only with first_bit"}, Alone{"first_bit", "2", "only with bits"},
+        Alone{"code", "\"gray\"", "only with bits and first_bit"},
+        Alone{"logic", "\"negative\"", "only with bits and first_bit"},
+        Alone{"clock", "\"500kHz\"", "only with bits and first_bit"},
+        Alone{"multiplier", "1", "only with divisor"}, Alone{"divisor", "2", "only with multiplier"}}) {
+    SCOPED_TRACE(a.field);
+    const std::string got =
+        error_of(campaign_with("ssi7361", "program = \"setup\"\n" + a.field + " = " + a.value));
+    EXPECT_NE(got.find(": host[0]."), std::string::npos) << got;
+    EXPECT_TRUE(got.find("together") != std::string::npos ||
+                got.find("with bits and first_bit") != std::string::npos)
+        << got;
+    bool listed = false;
+    for (const duts::ProgramFieldInfo& f : setup->fields)
+      if (f.name == a.field) listed = f.description.find(a.with) != std::string::npos;
+    EXPECT_TRUE(listed) << a.with;
+  }
 }
 
 // The words of each write of a 7361 campaign whose [[host]] entries are BODIES, 1 ms apart.
