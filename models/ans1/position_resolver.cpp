@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "signals/stator_band.hpp"
+
 namespace hilrig::models::ans1 {
 
 ResolverExcitation::ResolverExcitation(double frequency_hz, double amplitude)
@@ -36,7 +38,7 @@ ResolverReading decode_resolver(double sin_stator, double cos_stator, double ref
   const double s = sin_stator / reference;
   const double c = cos_stator / reference;
   r.ratio = std::hypot(s, c);
-  r.valid = r.ratio >= min_ratio && r.ratio <= max_ratio;
+  r.valid = signals::stator_ratio_in_band(r.ratio, min_ratio, max_ratio); // closed, with rounding slack
   if (!r.valid) {
     return r;
   }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "signals/stator_band.hpp"
+
 namespace hilrig::models::pls2700 {
 
 Excitation::Excitation(double frequency_hz, double amplitude)
@@ -49,11 +51,7 @@ StatorReading decode_stators(double sin_stator, double cos_stator, double refere
   const double s = sin_stator / reference;
   const double c = cos_stator / reference;
   r.ratio = std::hypot(s, c);
-  // The band is closed: a transducer exactly at a limit is good. The ratio of two sampled
-  // sinusoids carries a few ulps of rounding (cos 60 deg reads 0.49999999999999994 at some
-  // angles), so a ratio within kRatioSlack of a limit counts as at it, not past it.
-  constexpr double kRatioSlack = 1e-9;
-  r.valid = r.ratio >= min_ratio * (1.0 - kRatioSlack) && r.ratio <= max_ratio * (1.0 + kRatioSlack);
+  r.valid = signals::stator_ratio_in_band(r.ratio, min_ratio, max_ratio); // closed, with rounding slack
   if (r.valid) {
     r.raw = raw_from_turns(std::atan2(s, c) / (2.0 * std::numbers::pi));
   }

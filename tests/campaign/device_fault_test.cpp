@@ -194,6 +194,60 @@ TEST(DeviceFaultModels, Ans1SeesAnOpenSinCoilWhereTheCosStatorAloneIsTooSmall) {
   EXPECT_TRUE(a::decode_resolver(0.75 * 0.6, 0.75 * 0.8, 1.0, 0.75, 1.25).valid); // at the limit
 }
 
+// The same band on the running board: a stator ratio exactly at resolver_min_ratio 0.75 or
+// resolver_max_ratio 1.25 ([MODEL], closed) through a whole turn at 100 RPM (600 ms; a peak
+// every 100 us, 6,000 angles) leaves Resolver Fault (status bit 12, L2299) clear; the fault
+// latches (XFltLatch 0, L1839), so a single peak judged bad would still show at 610 ms.
+// 0.749 and 1.251 are a fault.
+std::string ans1_turn_at_ratio(double ratio) {
+  return R"([campaign]
+name = "t"
+end = "620ms"
+[dut]
+model = "ans1"
+[[wiring]]
+rig = "res.sin"
+board = "SIN"
+[[wiring]]
+rig = "res.cos"
+board = "COS"
+[resolver]
+sin = "res.sin"
+cos = "res.cos"
+[motion]
+[[motion.move]]
+kind = "constant"
+speed_rpm = 100
+duration = "620ms"
+[[host]]
+at = "610ms"
+read = 0
+name = "status"
+[[check]]
+kind = "word_bits"
+name = "no_fault"
+observation = "status"
+mask = 4096
+value = 0
+[[device_fault]]
+fault = "ratio_out_of_range"
+at = "0ms"
+ratio = )" +
+         std::to_string(ratio) + "\n";
+}
+
+TEST(DeviceFaultModels, Ans1StatorsExactlyAtARatioLimitAreNoFaultThroughATurn) {
+  for (const double at_limit : {0.75, 1.25}) {
+    const rig::CampaignResult r =
+        test::run_everything(parse_campaign(ans1_turn_at_ratio(at_limit), "t.toml"));
+    EXPECT_EQ(r.verdict, Outcome::Pass) << at_limit << ": " << test::failures(r);
+  }
+  for (const double beyond : {0.749, 1.251}) {
+    const rig::CampaignResult r = test::run_everything(parse_campaign(ans1_turn_at_ratio(beyond), "t.toml"));
+    EXPECT_EQ(r.verdict, Outcome::Fail) << beyond;
+  }
+}
+
 // pls2700 manual (seeds/002_46e90574ec92805f.txt:765-772, digest §4.9): a broken transducer cable is a
 // transducer fault; with both stators lost the demodulated amplitude is 0 whatever the angle.
 TEST(DeviceFaultModels, Pls2700SeesATransducerLossAtEveryAngle) {

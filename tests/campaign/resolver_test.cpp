@@ -11,6 +11,7 @@
 #include <string>
 
 #include "campaign_text.hpp"
+#include "models/ans1/position_resolver.hpp"
 #include "models/pls2700/position.hpp"
 #include "rig/campaign/campaign_parser.hpp"
 #include "rig/campaign/executive.hpp"
@@ -183,6 +184,34 @@ TEST(ResolverStators, The2700RatioBandIsClosedAtEveryAngle) {
   EXPECT_FALSE(models::pls2700::decode_stators(0.0, reference * std::cos(std::numbers::pi / 3.0 + 1e-6),
                                                reference, 0.5, 1.5)
                    .valid);
+}
+
+// The ANS1's fault band resolver_min_ratio .. resolver_max_ratio (0.75 .. 1.25, [MODEL],
+// models/ans1/README.md "Device faults") is closed the same way (the routine the 2700 uses):
+// stators exactly at 0.75 or 1.25 of the reference are no Resolver Fault (L2299) at any angle
+// nor at any excitation peak, positive or negative; 0.749 and 1.251 are one at every angle,
+// 0.751 and 1.249 at none; the relative 1e-9 around each limit counts as at it, 1e-6 beyond not.
+TEST(ResolverStators, TheAns1RatioBandIsClosedAtEveryAngle) {
+  namespace a = models::ans1;
+  const a::ResolverExcitation excitation(5'000.0, 1.0); // the model's default reference
+  int bad_inside = 0;
+  int good_beyond = 0;
+  Nanos peak = excitation.next_peak(Nanos{0});
+  for (int k = 0; k < 100'000; ++k, peak = excitation.next_peak(peak)) {
+    const double angle = 2.0 * std::numbers::pi * k / 100'000.0;
+    const double reference = excitation.value(peak); // the rig's stators carry this wave
+    const auto valid = [&](double ratio) {
+      return a::decode_resolver(ratio * reference * std::sin(angle), ratio * reference * std::cos(angle),
+                                reference, 0.75, 1.25)
+          .valid;
+    };
+    for (const double inside : {0.75, 1.25, 0.751, 1.249, 0.75 * (1.0 - 0.5e-9), 1.25 * (1.0 + 0.5e-9)})
+      if (!valid(inside)) ++bad_inside;
+    for (const double beyond : {0.749, 1.251, 0.75 * (1.0 - 1e-6), 1.25 * (1.0 + 1e-6)})
+      if (valid(beyond)) ++good_beyond;
+  }
+  EXPECT_EQ(bad_inside, 0);
+  EXPECT_EQ(good_beyond, 0);
 }
 
 TEST(ResolverStators, TheAns1FollowsTheResolverToItsSetpoints) {

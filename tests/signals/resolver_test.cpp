@@ -8,6 +8,7 @@
 
 #include "signals/motion_profile.hpp"
 #include "signals/resolver.hpp"
+#include "signals/stator_band.hpp"
 
 namespace hilrig::signals {
 namespace {
@@ -109,6 +110,25 @@ TEST(Resolver, FaultsActOnTheWindings) {
   r.set_faults(f);
   EXPECT_NEAR(r.sample(50_us).cos, 0.0, 1e-12);
   EXPECT_NEAR(r.sample(100_us).cos, -std::sqrt(3.0) / 2.0, 1e-12); // sin(pi + pi/2) = -1
+}
+
+// The stator fault band both resolver boards judge by (ANS1 resolver_min/max_ratio 0.75 / 1.25
+// [MODEL], models/ans1/README.md; Series 2700 min/max_stator_ratio, models/pls2700/README.md
+// "Decoder"): closed, and a ratio within a relative 1e-9 of a limit counts as at the limit.
+TEST(StatorBand, IsClosedWithARelativeSlackOfOneBillionth) {
+  for (const double lo : {0.75, 0.5}) {
+    const double hi = lo == 0.75 ? 1.25 : 1.5;
+    EXPECT_TRUE(stator_ratio_in_band(lo, lo, hi));                  // at the lower limit
+    EXPECT_TRUE(stator_ratio_in_band(hi, lo, hi));                  // at the upper limit
+    EXPECT_TRUE(stator_ratio_in_band(lo * (1.0 - 0.5e-9), lo, hi)); // rounding below it
+    EXPECT_TRUE(stator_ratio_in_band(hi * (1.0 + 0.5e-9), lo, hi)); // rounding above it
+    EXPECT_FALSE(stator_ratio_in_band(lo * (1.0 - 2e-9), lo, hi));  // beyond the slack
+    EXPECT_FALSE(stator_ratio_in_band(hi * (1.0 + 2e-9), lo, hi));
+    EXPECT_TRUE(stator_ratio_in_band(lo * 1.001, lo, hi)); // one step inside each limit
+    EXPECT_TRUE(stator_ratio_in_band(hi * 0.999, lo, hi));
+    EXPECT_FALSE(stator_ratio_in_band(lo * 0.999, lo, hi)); // one step beyond each limit
+    EXPECT_FALSE(stator_ratio_in_band(hi * 1.001, lo, hi));
+  }
 }
 
 } // namespace
