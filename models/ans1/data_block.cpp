@@ -4,6 +4,7 @@
 
 #include "models/ans1/ans1.hpp"
 #include "models/ans1/monitors.hpp"
+#include "models/ans1/speed.hpp"
 
 namespace hilrig::models::ans1 {
 
@@ -117,7 +118,7 @@ void machine_status(const DataSelection& sel, const Ans1& d, const Monitors& m, 
   const OutputStatusMasks& masks = d.status_masks();
   w[1] = d.gmp();
   w[2] = u16(d.speed_rpm());
-  w[3] = u16(std::clamp(rate, -32768, 32767)); // S x Multiplier / Divisor (L2536), truncated [MODEL]
+  w[3] = u16(saturated_speed_word(rate)); // S x Multiplier / Divisor (L2536), truncated [MODEL]
   w[4] = d.time_of_rotation();
   w[5] = d.input_states();
   w[6] = sel.input;

@@ -1,6 +1,5 @@
 #include "models/ans1/speed.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace hilrig::models::ans1 {
@@ -13,10 +12,7 @@ double measured_rpm(std::int64_t delta_counts, std::uint16_t counts_per_cycle, N
   return cycles * 60.0 / period.seconds();
 }
 
-std::int16_t reported_rpm(double speed) {
-  const double r = std::clamp(std::round(speed), -32768.0, 32767.0);
-  return static_cast<std::int16_t>(r);
-}
+std::int16_t reported_rpm(double speed) { return saturated_speed_word(std::round(speed)); }
 
 void SpeedFilter::update(std::int64_t delta_counts, std::uint16_t counts_per_cycle, Nanos period,
                          std::uint16_t rpm_filter) {

@@ -4,6 +4,7 @@
 // cycles per minute ([MODEL] for A13: CPC counts make one cycle, the only definition that
 // works for an encoder). X is the change in transducer counts over the update period ([MODEL]
 // for A14).
+#include <algorithm>
 #include <cstdint>
 
 #include "core/time.hpp"
@@ -23,8 +24,16 @@ namespace hilrig::models::ans1 {
   return k * previous + (1.0 - k) * measured;
 }
 
-// DA16 word 2: rounded to the nearest RPM ([MODEL], rounding not stated) and held within
-// the 16-bit signed range.
+// A speed-like host word (DA16 w2 speed, w3 production rate) saturates at +-32767, the
+// range of the words a speed is set against (RPM Enable setpoints, L2019-L2020) [MODEL]: a
+// reverse speed saturates at the mirror of a forward one, never at -32768, so the widest
+// window -32767 .. 32767 holds both. `whole` is already a whole number.
+inline constexpr double kSpeedWordLimit = 32767.0;
+[[nodiscard]] constexpr std::int16_t saturated_speed_word(double whole) {
+  return static_cast<std::int16_t>(std::clamp(whole, -kSpeedWordLimit, kSpeedWordLimit));
+}
+
+// DA16 word 2: rounded to the nearest RPM ([MODEL], rounding not stated), saturated.
 [[nodiscard]] std::int16_t reported_rpm(double speed);
 
 class SpeedFilter {

@@ -52,6 +52,52 @@ TEST(HostLiveData, W13LeadAdvanceCountsInDataAttribute19) {
   EXPECT_EQ(at150.select(19, 4)[9], 9);
 }
 
+// The slave position one count every 200 us backwards, scheduled to `until_ms` (past the reads
+// that follow, so the speed holds while the host reads): -5 counts/ms, as run_staircase forward.
+void schedule_reverse_staircase(HostRig& rig, std::int64_t until_ms) {
+  const std::int64_t start_us = rig.scheduler.now() / microseconds(1);
+  for (std::int64_t t = (start_us / 200 + 1) * 200; t <= until_ms * 1000; t += 200) {
+    rig.scheduler.at(microseconds(t), [&rig, t] { rig.device.set_slave_position(-t / 200); });
+  }
+}
+
+[[nodiscard]] std::int16_t signed_word(std::uint16_t w) { return static_cast<std::int16_t>(w); }
+
+TEST(HostLiveData, ReverseProductionRateSaturatesAtMinus32767) {
+  // -73 counts per 14.6 ms with CPC 3000 is -100 RPM (as W13 forward). Production rate =
+  // S x Multiplier / Divisor (L2536), saturated at -32767 like the speed words the manual
+  // bounds (RPM Enable setpoints -32,767 .. +32,767, L2019-L2020) [MODEL], never -32768.
+  HostRig rig;
+  program_lead_advance(rig, 3000);
+  schedule_reverse_staircase(rig, 300);
+  rig.scheduler.run_until(milliseconds(200));
+  const auto rate = [&rig](int multiplier, int divisor) {
+    EXPECT_EQ(rig.send(block(10, {9}, {{2, multiplier}, {3, divisor}})), ErrorCode::None);
+    return signed_word(rig.select(16)[3]);
+  };
+  EXPECT_EQ(signed_word(rig.select(16)[2]), -100);
+  EXPECT_EQ(rate(32766, 100), -32766); // -100 x 32766 / 100: one inside the limit
+  EXPECT_EQ(rate(32767, 100), -32767); // at the limit
+  EXPECT_EQ(rate(32767, 99), -32767);  // -33097 beyond it
+  EXPECT_EQ(rate(400, 1), -32767);     // -40000
+}
+
+TEST(HostLiveData, TheWidestSpeedWindowKeepsASaturatedReverseSpeedEnabled) {
+  // CPC = FSC = 2: -5 counts/ms is -2.5 cycles/ms = -150,000 RPM, saturated to -32767 in DA16
+  // w2. RPM Enable -32767 .. 32767 (L2019-L2020, CB6 bit 9) holds it: output 1's bit in the
+  // RPM-enabled mask (DA16 w15) is set; output 2 with Low -32766 is one step narrower: clear.
+  HostRig rig;
+  rig.use_slave_position();
+  ASSERT_EQ(rig.send(block(2, {8, 9, 12}, {{2, 2}, {3, 2}, {7, 0}})), ErrorCode::None);
+  ASSERT_EQ(rig.send(block(6, {9}, {{1, 1}, {2, -32767}, {3, 32767}})), ErrorCode::None);
+  ASSERT_EQ(rig.send(block(6, {9}, {{1, 2}, {2, -32766}, {3, 32767}})), ErrorCode::None);
+  schedule_reverse_staircase(rig, 300);
+  rig.scheduler.run_until(milliseconds(200));
+  const HostWords da16 = rig.select(16);
+  EXPECT_EQ(signed_word(da16[2]), -32767);
+  EXPECT_EQ(da16[15] & 0x0003, 0x0001);
+}
+
 TEST(HostLiveData, InputEdgePositionsAndShiftRegisterInDataAttributes16And20) {
   // CPC = FSC = 360 so one slave count is one GMP count; the position advances 1 count/ms.
   // Input 2 (forced) rises at GMP 5 and falls at GMP 35; the shift register samples input 2

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "models/ans1/enable.hpp"
 #include "models/ans1/position_setup.hpp"
 #include "models/ans1/speed.hpp"
 
@@ -50,8 +51,39 @@ TEST(Ans1Speed, ReportedSpeedRoundsAndSaturates) {
   EXPECT_EQ(reported_rpm(99.5), 100);
   EXPECT_EQ(reported_rpm(-99.5), -100);
   EXPECT_EQ(reported_rpm(99.49), 99);
+  // Saturated at +-32767, the range of the RPM Enable setpoints (L2019-L2020) [MODEL]: the
+  // same magnitude both ways, never -32768.
   EXPECT_EQ(reported_rpm(1e6), 32767);
-  EXPECT_EQ(reported_rpm(-1e6), -32768);
+  EXPECT_EQ(reported_rpm(-1e6), -32767);
+  EXPECT_EQ(reported_rpm(32766.4), 32766); // one inside
+  EXPECT_EQ(reported_rpm(-32766.4), -32766);
+  EXPECT_EQ(reported_rpm(32767.0), 32767); // at the limit
+  EXPECT_EQ(reported_rpm(-32767.0), -32767);
+  EXPECT_EQ(reported_rpm(32767.5), 32767); // rounds to one beyond
+  EXPECT_EQ(reported_rpm(-32767.5), -32767);
+  EXPECT_EQ(reported_rpm(-32768.0), -32767);
+}
+
+TEST(Ans1Speed, SpeedWordsSaturateSymmetricallyAt32767) {
+  // Production rate S x M / D (L2536) goes through the same saturation as the speed.
+  EXPECT_EQ(saturated_speed_word(-32766.0), -32766);
+  EXPECT_EQ(saturated_speed_word(-32767.0), -32767);
+  EXPECT_EQ(saturated_speed_word(-32768.0), -32767);
+  EXPECT_EQ(saturated_speed_word(-40000.0), -32767); // -100 RPM x 400
+  EXPECT_EQ(saturated_speed_word(32766.0), 32766);
+  EXPECT_EQ(saturated_speed_word(32767.0), 32767);
+  EXPECT_EQ(saturated_speed_word(32768.0), 32767);
+  EXPECT_EQ(saturated_speed_word(40000.0), 32767);
+}
+
+TEST(Ans1Speed, TheWidestEnableWindowHoldsASaturatedSpeedEitherWay) {
+  // RPM Enable Low/High -32767 .. 32767 (L2019-L2020) is the widest window a host can program:
+  // a speed saturated in reverse is inside it as one saturated forward is.
+  EXPECT_TRUE(speed_enabled(-32767, 32767, reported_rpm(-1e6)));
+  EXPECT_TRUE(speed_enabled(-32767, 32767, reported_rpm(1e6)));
+  // One step narrower at either end: the saturated speed on that side is outside.
+  EXPECT_FALSE(speed_enabled(-32766, 32767, reported_rpm(-1e6)));
+  EXPECT_FALSE(speed_enabled(-32767, 32766, reported_rpm(1e6)));
 }
 
 } // namespace
