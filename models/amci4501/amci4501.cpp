@@ -41,6 +41,7 @@ void Amci4501::power_off() {
   if (!powered_) return;
   reset_measurement(); // drops pending responses (their generation) and the timeout
   deferred_.clear();
+  instant_inputs_.clear(); // edges of this instant not yet taken: an unpowered module sees none
   powered_ = false;
 }
 
@@ -170,22 +171,64 @@ void Amci4501::on_index(const Edge& e) {
   if (is_high(e.level) && (config_.mode == 2 || params_.z_resets_in_all_modes)) decoder_.set_count(0);
 }
 
+// Start and Latch edges wait for the end of their instant (end_of_instant()): the encoder
+// edges of that instant come first, whichever the scheduler ran first.
 void Amci4501::on_start(const Edge& e) {
   if (!powered_) return;
-  const bool now_active = active(e.level, params_.start_jumper);
-  if (now_active == start_active_) return;
-  start_active_ = now_active;
-  defer(e.time, Op::StartMark, now_active);
-  start_edge(now_active, e.time);
+  instant_inputs_.push_back({true, e.level});
+  end_instant_later();
 }
 
 void Amci4501::on_latch(const Edge& e) {
   if (!powered_) return;
-  const bool now_active = active(e.level, params_.latch_jumper);
+  instant_inputs_.push_back({false, e.level});
+  end_instant_later();
+}
+
+void Amci4501::end_instant_later() {
+  if (!instant_end_event_.valid())
+    instant_end_event_ = scheduler_.at(
+        scheduler_.now(), [this] { end_of_instant(); }, Scheduler::Tie::Last);
+}
+
+void Amci4501::take_start(Level level, Nanos t) {
+  const bool now_active = active(level, params_.start_jumper);
+  if (now_active == start_active_) return;
+  start_active_ = now_active;
+  defer(t, Op::StartMark, now_active);
+  start_edge(now_active, t);
+}
+
+void Amci4501::take_latch(Level level, Nanos t) {
+  const bool now_active = active(level, params_.latch_jumper);
   if (now_active == latch_active_) return;
   latch_active_ = now_active;
-  defer(e.time, Op::LatchMark, now_active);
-  latch_edge(now_active, e.time);
+  defer(t, Op::LatchMark, now_active);
+  latch_edge(now_active, t);
+}
+
+// The end of an instant (README, "Same-instant order"), after every encoder and Z edge at it:
+// the instant's Start/Latch edges in their order, then the timeout if it is due now and the
+// cycle has not ended (a cycle ending at the timeout instant ended within it, L93), then the
+// responses due now, which waited for that decision (fire()). Runs from the Tie::Last event
+// of the first Start/Latch edge or of the timeout, whichever comes first.
+void Amci4501::end_of_instant() {
+  if (instant_end_event_.valid()) scheduler_.cancel(instant_end_event_);
+  instant_end_event_ = {};
+  const Nanos now = scheduler_.now();
+  for (std::size_t i = 0; i < instant_inputs_.size(); ++i) {
+    const InputEdge in = instant_inputs_[i];
+    if (in.start)
+      take_start(in.level, now);
+    else
+      take_latch(in.level, now);
+  }
+  instant_inputs_.clear();
+  if (timeout_event_.valid() && timeout_due_ == now) {
+    scheduler_.cancel(timeout_event_);
+    on_timeout();
+  }
+  apply_due();
 }
 
 std::uint64_t Amci4501::time_value(std::int64_t from, std::int64_t to) const {
@@ -214,14 +257,17 @@ void Amci4501::defer(Nanos t, Op op, bool on, std::uint8_t first, std::span<cons
 }
 
 void Amci4501::fire() {
+  // The module's own timer before the responses due at its instant: a cycle that times out at
+  // t shows nothing that would land at t. Whether it times out is known only at the instant's
+  // end (end_of_instant() applies them then).
+  if (timeout_event_.valid() && timeout_due_ == scheduler_.now()) return;
+  apply_due();
+}
+
+// Applies the responses due by now in order of due time (equal: in order deferred); entries
+// not yet due stay.
+void Amci4501::apply_due() {
   const Nanos now = scheduler_.now();
-  // The module's own timer before the responses due at its instant, whichever was scheduled
-  // first: a cycle that times out at t shows nothing that would land at t.
-  if (timeout_event_.valid() && timeout_due_ == now) {
-    scheduler_.cancel(timeout_event_);
-    on_timeout();
-  }
-  // Apply in order of due time (equal: in order deferred); entries not yet due stay.
   while (true) {
     auto next = deferred_.end();
     for (auto it = deferred_.begin(); it != deferred_.end(); ++it)
@@ -297,12 +343,17 @@ void Amci4501::end_cycle_output() {
 void Amci4501::arm_timeout(Nanos from) {
   cancel_timeout();
   timeout_due_ = from + timeout_of(config_, params_);
-  timeout_event_ = scheduler_.at(timeout_due_, [this] { on_timeout(); });
+  // At the end of its instant: a cycle that ends at start + timeout ended within it (L93).
+  timeout_event_ = scheduler_.at(
+      timeout_due_, [this] { end_of_instant(); }, Scheduler::Tie::Last);
 }
 
 void Amci4501::cancel_timeout() {
-  if (timeout_event_.valid()) scheduler_.cancel(timeout_event_);
+  if (!timeout_event_.valid()) return;
+  scheduler_.cancel(timeout_event_);
   timeout_event_ = {};
+  // Responses due now wait for the timeout's decision (fire()): the instant still ends.
+  if (timeout_due_ == scheduler_.now()) end_instant_later();
 }
 
 // Velocity (L114): counts in the last window, every window; modes 1 (word 2, signed) and

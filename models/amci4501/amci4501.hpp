@@ -9,6 +9,8 @@
 // timer (L26); every response to an input edge (Cycle Output edge, result words, Start/
 // Latch Mark) appears Params::throughput (125 us, L281; 100 us in mode 5, L49) later.
 // Host writes act at once (L167). Timeouts fire at the start edge + timeout.
+// At one instant (README, "Same-instant order"): encoder/Z edges, then Start/Latch edges,
+// then the timeout if the cycle has not ended, then the responses due then.
 //
 //   Scheduler s; virt::VirtualBus bus{s};
 //   Amci4501 m{s, {bus.line("a").reader(), bus.line("b").reader(), bus.line("start").reader(),
@@ -104,6 +106,10 @@ private:
   void on_index(const Edge& e);
   void on_start(const Edge& e);
   void on_latch(const Edge& e);
+  void take_start(Level level, Nanos t);
+  void take_latch(Level level, Nanos t);
+  void end_instant_later();
+  void end_of_instant();
   [[nodiscard]] bool active(Level level, Jumper jumper) const;
   [[nodiscard]] std::int64_t tick(Nanos t) const { return t.count() / params_.timer_resolution.count(); }
   [[nodiscard]] std::uint64_t time_value(std::int64_t from, std::int64_t to) const;
@@ -126,6 +132,7 @@ private:
   void defer(Nanos t, Op op, bool on = false, std::uint8_t first = 0,
              std::span<const std::uint16_t> words = {});
   void fire();
+  void apply_due();
   void apply(const Deferred& d);
   void publish(std::span<const std::uint16_t> words, std::uint8_t first);
   void set_cycle_output(bool on);
@@ -181,6 +188,14 @@ private:
   Nanos timeout_due_{0}; // when timeout_event_ fires
   std::int64_t velocity_ref_ = 0;
   std::uint32_t velocity_epoch_ = 0; // bumped at power-up: the timer chain before it stops
+
+  // Start/Latch edges of the current instant, taken at its end (end_of_instant()).
+  struct InputEdge {
+    bool start;
+    Level level;
+  };
+  std::vector<InputEdge> instant_inputs_;
+  EventId instant_end_event_{};
 
   std::vector<Deferred> deferred_;
   std::uint64_t published_ = 0;

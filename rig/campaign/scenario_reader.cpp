@@ -837,8 +837,9 @@ private:
       // check's name no two checks' measurements can share a name ("on_forward.max" as a check
       // would be check on_forward's max), and the rig's own entries keep theirs.
       if (c.name.find('.') != std::string::npos)
-        r.fail("name", fmt::format("a check name without '.' (\"{}\": '.' joins a check's name to its "
-                                   "measurements', so it could read as another check's measurement)",
+        r.fail("name", fmt::format("a check name without '.' (\"{}\": '.' joins a check's name to the "
+                                   "names of its measurements, so it could read as another check's "
+                                   "measurement)",
                                    c.name));
       if (c.name == rig::kHostCheckName || c.name == rig::kRigCheckName)
         r.fail("name", fmt::format("a check name other than \"{}\" (the rig's own entry: \"host\" holds the "

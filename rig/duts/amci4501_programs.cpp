@@ -31,7 +31,11 @@ Words mode(const Mode& m) {
     return {w0, word(m.timeout_ms)};
   }
   // "The enable window on setpoint must be less than the enable window off setpoint" (L171); a
-  // deliberately invalid window, to provoke the Parameter Error, is written raw.
+  // deliberately invalid window, to provoke the Parameter Error, is written raw. The setpoints
+  // end at 65,535 (L172), so no off setpoint lies above an on setpoint of 65,535.
+  if (m.on >= 65535)
+    throw ProgramFieldError("on", "no off setpoint exists above 65535 (L172: 0 .. 65535; L171: on below "
+                                  "off), so the on setpoint must be at most 65534");
   if (m.on >= m.off)
     throw ProgramFieldError(
         "off", fmt::format("must be above the on setpoint {} (L171): {} .. 65535", m.on, m.on + 1));

@@ -186,7 +186,9 @@ TEST(CampaignParser, NamesArePrintableLabels) {
 // entries of one name in results.json, junit.xml and trace.vcd; the neighbours pass.
 TEST(CampaignParser, CheckNamesCannotCollideWithMeasurementsOrTheRigsEntries) {
   EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 25, "name = \"on.max\""),
-                          "t.toml:25:8: check[0].name: a check name without '.' (\"on.max\""));
+                          "t.toml:25:8: check[0].name: a check name without '.' (\"on.max\": '.' joins a "
+                          "check's name to the names of its measurements, so it could read as another "
+                          "check's measurement)"));
   EXPECT_TRUE(rejected_at(replace_line(test::kValidCampaign, 25, "name = \".\""),
                           "t.toml:25:8: check[0].name: a check name without '.'"));
   EXPECT_TRUE(

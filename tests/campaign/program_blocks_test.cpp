@@ -301,6 +301,15 @@ TEST(ProgramAmci4501, ModeWordTimeoutAndTheEnableWindow) {
             (Words{0x0004, 0, 0, 5, 0, 6}));
   EXPECT_EQ(words_of("amci4501", "program = \"mode\"\nmode = 2\non = 65534\noff = 65535"),
             (Words{0x0004, 0, 65, 534, 65, 535}));
+  // The top of the range (L172): above on = 65,535 no off setpoint exists, so on is refused,
+  // not an empty off range; on = 65,534 with off = 65,535 (above) is the last window.
+  EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2\non = 65535", 2, 6, "on",
+                       "no off setpoint exists above 65535 (L172: 0 .. 65535; L171: on below off), so the "
+                       "on setpoint must be at most 65534"));
+  EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2\non = 65535\noff = 65535", 2, 6, "on",
+                       "must be at most 65534"));
+  EXPECT_TRUE(rejected("amci4501", "program = \"mode\"\nmode = 2\non = 65534", -2, 1, "off",
+                       "must be above the on setpoint 65534 (L171): 65535 .. 65535"));
 }
 
 // --- 7361 (docs/spec/ssi7361.md §4-§5; manual seeds/004) ---------------------------------

@@ -204,7 +204,7 @@ TEST(Amci4501Mode2, TimeoutDropsALeadingEdgesAnswerStillOnItsWay) {
       {6864, {{6989, true}, {6990, false}}}, // 126 us before: on 1 us before T
       {6865, {}},                            // 125 us before: would land at T
       {6945, {}},                            // 45 us before (the audit's case)
-      {6990, {}},                            // at T: the Latch edge (scheduled first) is in the window
+      {6990, {}},                            // at T: taken before the timeout (in the window), answer dropped
       {6991, {}},                            // after T: no window
   };
   for (const Case& c : cases) {
@@ -276,6 +276,99 @@ TEST(Amci4501Mode2, LatchCountsCapAt32767) {
   b.run_until(200_ms);
   EXPECT_EQ(b.word(1), 32767);
   EXPECT_GE(b.module->count_overflows(), 1u);
+}
+
+// Same-instant order (README): at one instant the encoder edge first, then Start/Latch edges,
+// then the timeout if the cycle has not ended. The bench's encoder: 100 us per edge from
+// 1,000 us, so edge k (P = k) at 1,000 + (k - 1)·100 us. Window on 100 opens at 10,900 us.
+
+// L12: "The measurement cycle is complete when the encoder position reaches the off
+// setpoint"; L93: Time Out only if the cycle "does not end within the programmed timeout
+// time" (inclusive, as in modes 1/3/4). Timeout 10 ms (T = 20,900 us); off 199/200/201 close the
+// window at T - 100 us / T / T + 100 us. The edges after 16 ms are scheduled after the timer
+// (as the rig's encoder stream is), so scheduling order cannot decide the tie. Latch
+// 12,050-13,050 us: L1 = 111 - 100 = 11, L2 = 121 - 100 = 21.
+TEST(Amci4501Mode2, WindowClosingAtTheTimeoutEndsWithinIt) {
+  for (const auto& [off, timed_out] :
+       {std::pair{199u, false}, std::pair{200u, false}, std::pair{201u, true}}) {
+    Bench b;
+    b.program_window(100, off, 10);
+    b.burst(150, us(1000), us(100)); // edges 1..150, to 15,900 us
+    b.latch_pulse(us(12050), 1_ms);
+    b.run_until(16_ms);
+    b.burst(150, us(16000), us(100)); // edges 151..300
+    b.run_until(40_ms);
+    EXPECT_EQ(b.bit(status::kTimeout), timed_out) << off;
+    EXPECT_EQ(b.bit(status::kNewValue), !timed_out) << off;
+    EXPECT_EQ(b.word(1), timed_out ? 0 : 11) << off;
+    EXPECT_EQ(b.word(2), timed_out ? 0 : 21) << off;
+  }
+}
+
+// The window is half-open in time, [reaching on, reaching off) (L12, L226): a Latch rising
+// at the instant P reaches off (edge 200, 20,900 us) is after the window, no L1 and no Cycle
+// Output pulse; 1 ns earlier it is inside (L1 = 199 - 100 = 99; the output copies it and is
+// forced off at window end + 125 us, L12, L281). Either scheduling order gives the same.
+TEST(Amci4501Mode2, LatchAtTheWindowsCloseIsAfterIt) {
+  const Nanos close = us(20900);
+  struct Case {
+    Nanos lead;
+    std::uint16_t l1;
+    std::vector<std::pair<Nanos, bool>> edges; // the Cycle Output's
+  };
+  const std::vector<Case> cases{
+      {close - 1_ns, 99, {{close - 1_ns + us(125), true}, {close + us(125), false}}},
+      {close, 0, {}},
+      {close + 1_ns, 0, {}},
+  };
+  for (const Case& c : cases) {
+    for (const bool latch_first : {true, false}) {
+      Bench b;
+      b.program_window(100, 200, 1000);
+      if (latch_first) b.latch_pulse(c.lead, us(300));
+      b.burst(300, us(1000), us(100));
+      if (!latch_first) b.latch_pulse(c.lead, us(300));
+      b.run_until(40_ms);
+      EXPECT_TRUE(b.bit(status::kNewValue));
+      EXPECT_EQ(b.word(1), c.l1) << c.lead.count() << " latch first " << latch_first;
+      EXPECT_EQ(b.word(2), 0) << c.lead.count(); // the trailing edge is after the window
+      std::vector<std::pair<Nanos, bool>> seen;
+      for (const CapturedEdge& e : b.cycle_edges) seen.emplace_back(e.time, e.on);
+      EXPECT_EQ(seen, c.edges) << c.lead.count() << " latch first " << latch_first;
+    }
+  }
+}
+
+// The same at the other end and for a trailing edge: a Latch rising at the instant P reaches
+// on (edge 100, 10,900 us) is inside (L1 = 0); 1 ns earlier it was already active when the
+// window opened (not counted, [I] A14). A trailing edge at the instant P reaches off is
+// after the window (L2 = 0, output forced off at window end, L12); 1 ns earlier it is L2 = 99.
+TEST(Amci4501Mode2, LatchEdgesAtTheWindowsEndsFollowTheHalfOpenWindow) {
+  const Nanos open = us(10900);
+  const Nanos close = us(20900);
+  for (const auto& [lead, l1] : {std::pair{open - 1_ns, 0}, std::pair{open, 0}, std::pair{open + 1_ns, 0}}) {
+    Bench b;
+    b.program_window(100, 200, 1000);
+    b.latch_pulse(lead, us(450)); // trailing edge at edge 104.5: L2 = 4 when counted
+    b.burst(300, us(1000), us(100));
+    b.run_until(40_ms);
+    const bool counted = lead >= open;
+    EXPECT_EQ(b.word(1), l1) << lead.count();
+    EXPECT_EQ(b.word(2), counted ? 4 : 0) << lead.count();
+    EXPECT_EQ(b.cycle_edges.size(), counted ? 2u : 0u) << lead.count();
+  }
+  for (const auto& [trail, l2] :
+       {std::pair{close - 1_ns, 99}, std::pair{close, 0}, std::pair{close + 1_ns, 0}}) {
+    Bench b;
+    b.program_window(100, 200, 1000);
+    b.burst(300, us(1000), us(100));
+    b.latch_pulse(us(15050), trail - us(15050)); // L1 = 141 - 100 = 41
+    b.run_until(40_ms);
+    EXPECT_EQ(b.word(1), 41) << trail.count();
+    EXPECT_EQ(b.word(2), l2) << trail.count();
+    ASSERT_EQ(b.cycle_edges.size(), 2u) << trail.count();
+    EXPECT_EQ(b.cycle_edges[1].time, std::min(trail, close) + us(125)) << trail.count();
+  }
 }
 
 } // namespace
