@@ -14,10 +14,12 @@ enum class ReverseAdvance : std::uint8_t {
 
 struct Params {
   // Resolver reference on R1/R2 [X, §2.2]: amplitude * cos(2 pi f t), so a peak falls on every
-  // multiple of 1/(2f) — with 5 kHz every 100 us, on the 200/400 us update grid.
+  // multiple of 1/(2f) — with 5 kHz every 100 us, on the 200/400 us update grid. Only a
+  // frequency whose peaks fall on that grid is taken (params_check.hpp).
   double excitation_hz = 5'000.0;
   double excitation_amplitude = 1.0;
-  // Transducer fault threshold [X, §2.2]: demodulated stator/reference ratio outside this band.
+  // Transducer fault threshold [X, §2.2]: demodulated stator/reference ratio outside this closed
+  // band; min <= max (params_check.hpp).
   double min_stator_ratio = 0.5;
   double max_stator_ratio = 1.5;
   // Tach code 0 is 32 ms on single-channel modules (L469) instead of 30 ms (L374) [§7.2].

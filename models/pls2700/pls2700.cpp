@@ -1,14 +1,30 @@
 #include "models/pls2700/pls2700.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "models/pls2700/error_codes.hpp"
 #include "models/pls2700/instructions.hpp"
+#include "models/pls2700/params_check.hpp"
 
 namespace hilrig::models::pls2700 {
 
+namespace {
+
+// Params that do not go together (params_check.hpp) are refused before the module runs: no
+// reference off the update grid, no empty fault band.
+const Params& checked(ModelVariant model, const Params& params) {
+  if (const auto conflict = params_conflict(model, params))
+    throw std::invalid_argument("pls2700 " + std::string(conflict->fields.front()) + ": " +
+                                conflict->expected);
+  return params;
+}
+
+} // namespace
+
 Pls2700::Pls2700(Scheduler& scheduler, ModelVariant model, const Params& params, Fault fault)
-    : scheduler_(scheduler), model_(traits(model)), params_(params), fault_(fault),
+    : scheduler_(scheduler), model_(traits(model)), params_(checked(model, params)), fault_(fault),
       period_(fault == Fault::LateOutputs ? model_.update_period * 2 : model_.update_period),
       excitation_(params.excitation_hz, params.excitation_amplitude),
       advance_speed_{AdvanceSpeed(advance_window_updates(params.advance_speed_window, period_), period_),

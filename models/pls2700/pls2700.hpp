@@ -40,7 +40,8 @@ class Pls2700 {
 public:
   // Updates start at the first reference peak at or after scheduler.now() +
   // params.update_phase. Keep the device alive while
-  // the scheduler runs.
+  // the scheduler runs. Throws std::invalid_argument on params that do not go together
+  // (params_check.hpp).
   Pls2700(Scheduler& scheduler, ModelVariant model, const Params& params = {}, Fault fault = Fault::Nominal);
   Pls2700(Scheduler& scheduler, const Pls2700Pins& pins, ModelVariant model, const Params& params = {},
           Fault fault = Fault::Nominal);

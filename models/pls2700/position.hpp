@@ -12,14 +12,19 @@ namespace hilrig::models::pls2700 {
 
 inline constexpr int kInternalCounts = 8192;
 
-// The reference on R1/R2: amplitude * cos(2 pi f t); its peaks fall at k / (2f).
+// The reference on R1/R2: amplitude * cos(2 pi f t); its peaks fall at k / (2f). A whole
+// number of hertz (every reference the module takes is one, params_check.hpp), so each peak
+// is known exactly: 7.5 kHz peaks every 66,666 2/3 ns, every third one on the 200 us grid.
 class Excitation {
 public:
+  // Throws std::invalid_argument unless frequency_hz is a whole number in 1 .. kMaxWholeHz.
   Excitation(double frequency_hz, double amplitude);
+  static constexpr double kMaxWholeHz = 1e6;
   [[nodiscard]] double value(Nanos t) const;
-  // The latest peak (positive or negative) at or before t (t >= 0).
+  // The latest peak (positive or negative) at or before t (t >= 0). A peak between two
+  // nanoseconds is on the grid at the later one.
   [[nodiscard]] Nanos latest_peak(Nanos t) const;
-  // The first peak at or after t (t >= 0).
+  // The first peak at or after t (t >= 0), on the grid as latest_peak() has it.
   [[nodiscard]] Nanos peak_at_or_after(Nanos t) const;
   [[nodiscard]] double frequency_hz() const { return frequency_hz_; }
   [[nodiscard]] double amplitude() const { return amplitude_; }
@@ -28,9 +33,13 @@ public:
   [[nodiscard]] signals::ResolverParams resolver_params(double transformation_ratio = 1.0) const;
 
 private:
+  // Peak k falls at k * half_num_ / half_den_ ns (the half period 1e9 / (2f) ns, reduced).
+  [[nodiscard]] std::int64_t peaks_through(Nanos t) const; // index of the latest peak at or before t
+  [[nodiscard]] Nanos peak_time(std::int64_t k) const;     // peak k, rounded up to the ns grid
   double frequency_hz_;
   double amplitude_;
-  Nanos half_period_;
+  std::int64_t half_num_ = 1;
+  std::int64_t half_den_ = 1;
 };
 
 struct StatorReading {

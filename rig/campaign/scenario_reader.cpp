@@ -198,6 +198,11 @@ private:
     }
     for (const auto& info : info_->params)
       if (!dut.params.contains(info.name)) dut.params[info.name] = Param{info.default_value, dut.where};
+    // Values each in range may still not go together (a rule across keys, DutInfo::conflict).
+    if (const auto conflict = info_->params_conflict(given)) {
+      const std::string& key = conflict->keys.front();
+      fail(dut.params.at(key).where, "dut.params." + key, conflict->expected);
+    }
     r.finish();
   }
 

@@ -69,6 +69,7 @@ duts::ParamValue parse_value(const duts::ParamInfo& p, const std::string& text, 
 
 duts::DutParams serve_params(const duts::DutInfo& device, const std::vector<std::string>& key_values) {
   std::map<std::string, duts::ParamValue, std::less<>> given;
+  std::map<std::string, std::string, std::less<>> texts; // as written, for the messages
   for (const std::string& kv : key_values) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -88,6 +89,15 @@ duts::DutParams serve_params(const duts::DutInfo& device, const std::vector<std:
     if (!duts::in_range(p->range, value))
       throw std::invalid_argument(where + ": " + campaign::param_range_text(device.name, *p));
     given[key] = std::move(value);
+    texts[key] = text;
+  }
+  // Values each in range may still not go together (a rule across keys, DutInfo::conflict).
+  if (const auto conflict = device.params_conflict(given)) {
+    const std::string& key = conflict->keys.front();
+    const auto text = texts.find(key);
+    throw std::invalid_argument(
+        (text != texts.end() ? "--param " + key + "=" + text->second : "--param " + key) + ": " +
+        conflict->expected);
   }
   return device.with_defaults(given);
 }

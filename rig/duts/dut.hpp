@@ -68,6 +68,13 @@ struct ParamInfo {
   ParamRange range;
 };
 
+// Values each in its parameter's range that do not go together (the Series 2700's reference
+// frequency against its module's update period): bad input, refused before anything runs.
+struct ParamConflict {
+  std::vector<std::string> keys; // the parameters in conflict; an error points at the first one given
+  std::string expected;          // what they must be
+};
+
 struct VariantInfo {
   std::string name;
   std::string description;
@@ -195,6 +202,9 @@ struct DutInfo {
   std::string description;
   std::vector<PinInfo> pins;
   std::vector<ParamInfo> params;
+  // The rules across parameters, for values each in range (unset: none): a campaign's
+  // [dut.params] and `hilrig serve --param` are refused with what it returns.
+  std::function<std::optional<ParamConflict>(const DutParams&)> conflict{};
   std::vector<VariantInfo> variants;   // "nominal" first
   std::vector<DeviceFaultInfo> faults; // [[device_fault]] fault = ...
   // What a power cycle ([[power_cycle]]) does to the board, per its manual (`hilrig list`).
@@ -213,6 +223,11 @@ struct DutInfo {
   [[nodiscard]] std::optional<std::size_t> panel_index(std::string_view action_name) const;
   // Defaults for every parameter, overridden by the given values.
   [[nodiscard]] DutParams with_defaults(const std::map<std::string, ParamValue, std::less<>>& given) const;
+  // What `conflict` says of the given values over the defaults (nullopt when they go together
+  // or there is no rule), its keys reordered so the first is the one to point at: the rule's
+  // first key that `given` holds (a default is nowhere in the campaign), else its first.
+  [[nodiscard]] std::optional<ParamConflict>
+  params_conflict(const std::map<std::string, ParamValue, std::less<>>& given) const;
 };
 
 // Every DUT this build can simulate, in name order.

@@ -98,6 +98,17 @@ DutParams DutInfo::with_defaults(const std::map<std::string, ParamValue, std::le
   return out;
 }
 
+std::optional<ParamConflict>
+DutInfo::params_conflict(const std::map<std::string, ParamValue, std::less<>>& given) const {
+  if (!conflict) return std::nullopt;
+  std::optional<ParamConflict> found = conflict(with_defaults(given));
+  if (!found || found->keys.empty()) return found;
+  const auto blamed = std::find_if(found->keys.begin(), found->keys.end(),
+                                   [&](const std::string& key) { return given.contains(key); });
+  if (blamed != found->keys.end()) std::rotate(found->keys.begin(), blamed, blamed + 1);
+  return found;
+}
+
 const std::vector<DutInfo>& dut_registry() {
   static const std::vector<DutInfo> registry = [] {
     std::vector<DutInfo> r;

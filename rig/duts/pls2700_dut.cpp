@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "drivers/virtual/virtual_bus.hpp"
+#include "models/pls2700/params_check.hpp"
 #include "models/pls2700/pls2700.hpp"
 
 namespace hilrig::duts {
@@ -163,20 +164,29 @@ DutInfo pls2700_info() {
         {p::output_pin_name(n), PinDirection::Output, "limit output " + std::to_string(n), false});
   const p::Params d{};
   // Ranges: the manual gives no reference frequency, amplitude or fault threshold (docs/spec/pls2700.md
-  // L632, [X]); the model's sampling at each reference peak is honest for the common resolver
-  // references, 400 Hz .. 10 kHz. Stator/reference ratios 0 .. 10; the mask is 8 outputs (R-M-2);
-  // the 2742-18 input delay is at most 3 ms (L1724); the update period is 200/400 us (L377).
+  // L632, [X]). The update clock is locked to the reference, so a reference is taken only where
+  // its peaks fall on the 200/400 us update grid (L377; models/pls2700/params_check.hpp, checked
+  // with the model by `conflict` below): multiples of 1,250 Hz up to 10 kHz, the common resolver
+  // references. Stator/reference ratios 0 .. 10, min <= max; the mask is 8 outputs (R-M-2); the
+  // 2742-18 input delay is at most 3 ms (L1724); the update period is 200/400 us (L377).
+  const std::int64_t one_channel_step = p::reference_step_hz(p::traits(p::ModelVariant::M2741).update_period);
+  const std::int64_t two_channel_step = p::reference_step_hz(p::traits(p::ModelVariant::M2742).update_period);
   info.params = {
       {"model", ParamKind::Text, std::string("2742"), "2731, 2731-04, 2732, 2732-04, 2741, 2742, 2742-18",
        one_of({"2731", "2731-04", "2732", "2732-04", "2741", "2742", "2742-18"})},
-      {"excitation_hz", ParamKind::Number, d.excitation_hz, "resolver reference frequency [X]",
-       between(400.0, 10'000.0)},
+      {"excitation_hz", ParamKind::Number, d.excitation_hz,
+       fmt::format(
+           "resolver reference frequency [X]; its half period divides the update period (L377): a "
+           "multiple of {} Hz on a 2731, 2731-04 or 2741 (200 us), of {} Hz on the two-channel models "
+           "(400 us)",
+           one_channel_step, two_channel_step),
+       between(static_cast<double>(two_channel_step), static_cast<double>(p::kMaxReferenceHz))},
       {"excitation_amplitude", ParamKind::Number, d.excitation_amplitude, "reference peak [X]",
        between(0.001, 100.0)},
-      {"min_stator_ratio", ParamKind::Number, d.min_stator_ratio, "transducer fault below this stator/ref",
-       between(0.0, 10.0)},
-      {"max_stator_ratio", ParamKind::Number, d.max_stator_ratio, "transducer fault above this stator/ref",
-       between(0.0, 10.0)},
+      {"min_stator_ratio", ParamKind::Number, d.min_stator_ratio,
+       "transducer fault below this stator/ref (at most max_stator_ratio)", between(0.0, 10.0)},
+      {"max_stator_ratio", ParamKind::Number, d.max_stator_ratio,
+       "transducer fault above this stator/ref (at least min_stator_ratio)", between(0.0, 10.0)},
       {"tach_32ms", ParamKind::Boolean, d.tach_32ms_on_single_channel, "tach code 0 = 32 ms on 27x1", {}},
       {"wrap_pairs", ParamKind::Boolean, d.wrap_pairs, "ON > OFF wraps through zero", {}},
       {"equal_pair_full_turn", ParamKind::Boolean, d.equal_pair_full_turn, "ON == OFF always on", {}},
@@ -212,6 +222,14 @@ DutInfo pls2700_info() {
        {}},
       {"advance_speed_window", ParamKind::Duration, d.advance_speed_window,
        "the advances' speed is the motion over this moving window (R-ADV-5)", between(1_ms, 10_s)},
+  };
+  // The model's own rules across its settings (params_check.hpp): the reference against the
+  // module's update period, the fault band's ends.
+  info.conflict = [](const DutParams& params) -> std::optional<ParamConflict> {
+    const auto found = p::params_conflict(pls2700_model(params), pls2700_params(params));
+    if (!found) return std::nullopt;
+    return ParamConflict{std::vector<std::string>(found->fields.begin(), found->fields.end()),
+                         found->expected};
   };
   for (const auto& f : p::kFaultNames)
     info.variants.push_back({std::string(f.name), std::string(f.description)});

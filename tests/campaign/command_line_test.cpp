@@ -237,6 +237,29 @@ TEST(CommandLine, ServeIdleTimeoutNamesItsWholeRangeAndABadUnit) {
   }
 }
 
+// Parameters each in range that do not go together are refused before anything serves (exit
+// 2): a reference off the 2741's 200 us update grid (L377; models/pls2700/README.md
+// "Decoder"), an empty transducer-fault band.
+TEST(CommandLine, ServePls2700RefusesParamsThatDoNotGoTogether) {
+  const Result off_grid =
+      hilrig("serve pls2700 --modbus-tcp 0 --model 2741 --param excitation_hz=3000", "timeout 20 ");
+  EXPECT_EQ(off_grid.status, 2);
+  EXPECT_NE(off_grid.err.find("--param excitation_hz=3000: a reference whose half period 1/(2f) divides the "
+                              "2741's 200 us update"),
+            std::string::npos)
+      << off_grid.err;
+  EXPECT_NE(off_grid.err.find("a multiple of 2500 Hz up to 10000: 2500, 5000, 7500, 10000"),
+            std::string::npos)
+      << off_grid.err;
+  const Result empty_band =
+      hilrig("serve pls2700 --modbus-tcp 0 --param min_stator_ratio=0.6 --param max_stator_ratio=0.5",
+             "timeout 20 ");
+  EXPECT_EQ(empty_band.status, 2);
+  EXPECT_NE(empty_band.err.find("--param min_stator_ratio=0.6: min_stator_ratio at most max_stator_ratio"),
+            std::string::npos)
+      << empty_band.err;
+}
+
 // `hilrig serve --help` names every device's fault variants, the same list a wrong one is
 // answered with.
 TEST(CommandLine, ServeHelpListsEveryDevicesFaults) {

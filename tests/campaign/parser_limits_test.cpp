@@ -237,9 +237,87 @@ TEST(CampaignLimits, UnknownSeries2700ModelIsBadInputNotARigFault) {
   EXPECT_TRUE(rejected_at(replace_line(kPls2700, 7, "reverse_advance = \"sideways\""),
                           "t.toml:7:19: dut.params.reverse_advance: one of signed, disabled"));
   EXPECT_TRUE(rejected_at(replace_line(kPls2700, 7, "excitation_hz = 1e12"),
-                          "t.toml:7:17: dut.params.excitation_hz: a value in 400 .. 10000"));
+                          "t.toml:7:17: dut.params.excitation_hz: a value in 1250 .. 10000"));
   EXPECT_TRUE(rejected_at(replace_line(kPls2700, 7, "excitation_hz = nan"),
                           "t.toml:7:17: dut.params.excitation_hz: a finite number"));
+}
+
+// The module's update period is "always 200 microseconds for single channel units and 400
+// microseconds for two channel units" (L377, L455-L457), and the model samples at a reference
+// peak at each update (models/pls2700/README.md "Decoder"): a reference is taken only where
+// its half period 1/(2f) divides that period, f a multiple of 1/(2 * 200 us) = 2,500 Hz on a
+// 2741, of 1/(2 * 400 us) = 1,250 Hz on a 2742, up to 10 kHz. One hertz beside each is refused
+// at the key's line (line 8, col 17: "excitation_hz = " is 16 characters).
+TEST(CampaignLimits, Series2700ReferenceMustFallOnTheUpdateGrid) {
+  const auto with = [](const char* model, const std::string& hz) {
+    return replace_line(kPls2700, 7, fmt::format("model = \"{}\"\nexcitation_hz = {}", model, hz));
+  };
+  const std::string on_2741 =
+      "t.toml:8:17: dut.params.excitation_hz: a reference whose half period 1/(2f) "
+      "divides the 2741's 200 us update, so every update samples at a peak "
+      "(models/pls2700/README.md \"Decoder\", L377): a multiple of 2500 Hz up to 10000: 2500, "
+      "5000, 7500, 10000 (got ";
+  for (const int hz : {2500, 5000, 7500, 10000}) {
+    EXPECT_TRUE(accepted(with("2741", std::to_string(hz)))) << hz;
+    EXPECT_TRUE(rejected_at(with("2741", std::to_string(hz - 1)), on_2741 + std::to_string(hz - 1) + " Hz)"))
+        << hz - 1;
+    if (hz < 10000) {
+      EXPECT_TRUE(
+          rejected_at(with("2741", std::to_string(hz + 1)), on_2741 + std::to_string(hz + 1) + " Hz)"))
+          << hz + 1;
+    }
+  }
+  // A hair off a valid frequency is off the grid too (exact, not a float that rounds to it).
+  EXPECT_TRUE(rejected_at(with("2741", "5000.000000001"), on_2741 + "5000.000000001 Hz)"));
+  EXPECT_TRUE(rejected_at(with("2741", "3000"), on_2741 + "3000 Hz)")); // the examiner's 359 us case
+  EXPECT_TRUE(rejected_at(with("2741", "1250"), on_2741 + "1250 Hz)")); // a two-channel module's only
+  EXPECT_TRUE(
+      rejected_at(with("2741", "10001"), "t.toml:8:17: dut.params.excitation_hz: a value in 1250 .. 10000"));
+  const std::string on_2742 =
+      "t.toml:8:17: dut.params.excitation_hz: a reference whose half period 1/(2f) "
+      "divides the 2742's 400 us update, so every update samples at a peak "
+      "(models/pls2700/README.md \"Decoder\", L377): a multiple of 1250 Hz up to 10000: 1250, "
+      "2500, 3750, 5000, 6250, 7500, 8750, 10000 (got ";
+  for (const int hz : {1250, 3750, 8750}) {
+    EXPECT_TRUE(accepted(with("2742", std::to_string(hz)))) << hz;
+    EXPECT_TRUE(rejected_at(with("2742", std::to_string(hz + 1)), on_2742 + std::to_string(hz + 1) + " Hz)"))
+        << hz + 1;
+  }
+  EXPECT_TRUE(
+      rejected_at(with("2742", "1249"), "t.toml:8:17: dut.params.excitation_hz: a value in 1250 .. 10000"));
+  EXPECT_TRUE(rejected_at(with("2742", "3749"), on_2742 + "3749 Hz)"));
+  // A swept frequency is checked at each point, pointed at in the sweep's values (line 17).
+  EXPECT_TRUE(
+      rejected_at(replace_line(kPls2700, 7, "model = \"2741\"") +
+                      "[[sweep]]\nkey = \"dut.params.excitation_hz\"\nvalues = [5000, 3000]\n",
+                  on_2741.substr(0, 7) + "17:17: dut.params.excitation_hz: a reference whose half period"));
+  // Written before the model, the frequency is still the key pointed at (line 7).
+  EXPECT_TRUE(rejected_at(replace_line(kPls2700, 7, "excitation_hz = 3000\nmodel = \"2741\""),
+                          "t.toml:7:17: dut.params.excitation_hz: a reference whose half period"));
+}
+
+// The transducer-fault band [min_stator_ratio, max_stator_ratio] is closed (models/pls2700/
+// README.md "Decoder"): equal ends are a band of one ratio, accepted; a minimum above the
+// maximum holds no ratio (a fault whatever the signal) and is refused, naming both keys, at the
+// line of the one given (the minimum when both are).
+TEST(CampaignLimits, Series2700FaultBandMinimumIsAtMostItsMaximum) {
+  const auto band = [](const std::string& lines) { return replace_line(kPls2700, 7, lines); };
+  const std::string says = "dut.params.min_stator_ratio: min_stator_ratio at most max_stator_ratio: the "
+                           "transducer-fault band [min_stator_ratio, max_stator_ratio] is empty with ";
+  EXPECT_TRUE(accepted(band("min_stator_ratio = 1.0\nmax_stator_ratio = 1.0")));
+  EXPECT_TRUE(accepted(band("min_stator_ratio = 0.999999999999\nmax_stator_ratio = 1.0")));
+  EXPECT_TRUE(rejected_at(band("min_stator_ratio = 1.000000000001\nmax_stator_ratio = 1.0"),
+                          "t.toml:7:20: " + says + "1.000000000001 > 1, a fault whatever the signal"));
+  EXPECT_TRUE(rejected_at(band("max_stator_ratio = 0.5\nmin_stator_ratio = 0.6"),
+                          "t.toml:8:20: " + says + "0.6 > 0.5"));
+  // One end given against the other's default (0.5 .. 1.5, README "Parameters"): that end.
+  EXPECT_TRUE(accepted(band("min_stator_ratio = 1.5")));
+  EXPECT_TRUE(rejected_at(band("min_stator_ratio = 1.6"), "t.toml:7:20: " + says + "1.6 > 1.5"));
+  EXPECT_TRUE(accepted(band("max_stator_ratio = 0.5")));
+  EXPECT_TRUE(
+      rejected_at(band("max_stator_ratio = 0.4"),
+                  "t.toml:7:20: dut.params.max_stator_ratio: min_stator_ratio at most max_stator_ratio: "
+                  "the transducer-fault band [min_stator_ratio, max_stator_ratio] is empty with 0.5 > 0.4"));
 }
 
 TEST(CampaignLimits, SweptValuesAreCheckedAgainstTheSameRanges) {

@@ -134,6 +134,10 @@ TEST(ServedParams, BadParamsAreRefusedBeforeServing) {
       on_tcp("amci4501", {}, "constant:300rpm"),
       on_tcp("ssi7361", {"rate_rounding=up"}),
       on_tcp("ans1", {"model=2742"}),
+      // Each in range, not together: a reference off the 2741's 200 us grid (L377), an empty
+      // transducer-fault band (models/pls2700/README.md "Decoder").
+      on_tcp("pls2700", {"model=2741", "excitation_hz=3000"}),
+      on_tcp("pls2700", {"min_stator_ratio=0.6", "max_stator_ratio=0.5"}),
   };
   for (const cli::ServeOptions& o : bad) {
     EXPECT_THROW(ServeThread server(o), std::invalid_argument)
@@ -142,6 +146,43 @@ TEST(ServedParams, BadParamsAreRefusedBeforeServing) {
   // At the limit it is accepted (limits are inclusive).
   ServeThread at_limit(on_tcp("pls2700", {"input_delay=3ms", "power_up_mask=255"}));
   EXPECT_GT(at_limit.port(), 0);
+  ServeThread on_grid(on_tcp("pls2700", {"model=2741", "excitation_hz=7500"}));
+  EXPECT_GT(on_grid.port(), 0);
+  ServeThread one_point_band(on_tcp("pls2700", {"min_stator_ratio=1", "max_stator_ratio=1"}));
+  EXPECT_GT(one_point_band.port(), 0);
+}
+
+TEST(ServedParams, Pls2700RulesAcrossKeysNameTheKeyAndTheValidValues) {
+  // The update period is 200 us on a 2741 (L377), so a reference is a multiple of
+  // 1/(2 * 200 us) = 2,500 Hz (models/pls2700/README.md "Decoder"); --model is model=.
+  const duts::DutInfo& pls = *duts::find_dut("pls2700");
+  const auto refusal = [&](const std::vector<std::string>& given) {
+    try {
+      (void)cli::serve_params(pls, given);
+      return std::string("accepted");
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+  };
+  for (const char* hz : {"2500", "5000", "7500", "10000"})
+    EXPECT_EQ(refusal({"model=2741", std::string("excitation_hz=") + hz}), "accepted") << hz;
+  for (const char* hz : {"2499", "2501", "4999", "5001", "7499", "7501", "9999"})
+    EXPECT_EQ(refusal({"excitation_hz=" + std::string(hz), "model=2741"}),
+              "--param excitation_hz=" + std::string(hz) +
+                  ": a reference whose half period 1/(2f) divides the 2741's 200 us update, so every update "
+                  "samples at a peak (models/pls2700/README.md \"Decoder\", L377): a multiple of 2500 Hz up "
+                  "to 10000: "
+                  "2500, 5000, 7500, 10000 (got " +
+                  hz + " Hz)");
+  // The band: equal ends accepted, the minimum a hair above refused naming both keys.
+  EXPECT_EQ(refusal({"min_stator_ratio=1", "max_stator_ratio=1"}), "accepted");
+  EXPECT_EQ(refusal({"max_stator_ratio=1", "min_stator_ratio=1.000000000001"}),
+            "--param min_stator_ratio=1.000000000001: min_stator_ratio at most max_stator_ratio: the "
+            "transducer-fault band [min_stator_ratio, max_stator_ratio] is empty with 1.000000000001 > 1, a "
+            "fault whatever the signal");
+  EXPECT_EQ(
+      refusal({"max_stator_ratio=0.4"}).rfind("--param max_stator_ratio=0.4: min_stator_ratio at most", 0),
+      0U);
 }
 
 // What a campaign's [dut.params] says of `key = toml` (the value as TOML) on `device`: the
@@ -198,11 +239,17 @@ TEST(ServedParams, AValueOfTheWrongKindSaysWhatTheKindIsWrittenAs) {
 TEST(ServedParams, EveryRefusalReadsAsTheCampaignReadersForTheSameValue) {
   // Every parameter of every device: values of the wrong kind, and a hair beyond each end of
   // the declared range (the ends themselves are accepted: limits are inclusive), are refused by
-  // `serve --param` in the words a campaign's [dut.params] gets for the same value.
+  // `serve --param` in the words a campaign's [dut.params] gets for the same value. An end a
+  // rule across keys refuses beside the other keys' defaults (the 2700's min_stator_ratio 10
+  // above max_stator_ratio 1.5) is refused by both in the rule's words.
   for (const duts::DutInfo& device : duts::dut_registry()) {
     for (const duts::ParamInfo& p : device.params) {
       std::vector<std::pair<std::string, std::string>> refused; // (serve text, TOML)
-      std::vector<std::string> accepted;
+      struct InRange {
+        std::string text, toml;
+        duts::ParamValue value;
+      };
+      std::vector<InRange> accepted;
       const auto quoted = [](const std::string& t) { return "\"" + t + "\""; };
       switch (p.kind) {
       case duts::ParamKind::Integer: {
@@ -213,7 +260,8 @@ TEST(ServedParams, EveryRefusalReadsAsTheCampaignReadersForTheSameValue) {
                    {"", quoted("")},
                    {std::to_string(lo - 1), std::to_string(lo - 1)},
                    {std::to_string(hi + 1), std::to_string(hi + 1)}};
-        accepted = {std::to_string(lo), std::to_string(hi)};
+        accepted = {{std::to_string(lo), std::to_string(lo), lo},
+                    {std::to_string(hi), std::to_string(hi), hi}};
         break;
       }
       case duts::ParamKind::Number: {
@@ -221,7 +269,8 @@ TEST(ServedParams, EveryRefusalReadsAsTheCampaignReadersForTheSameValue) {
         const std::string below = fmt::format("{:.12e}", p.range.min - hair(p.range.min));
         const std::string above = fmt::format("{:.12e}", p.range.max + hair(p.range.max));
         refused = {{"abc", quoted("abc")}, {"inf", "inf"}, {"nan", "nan"}, {below, below}, {above, above}};
-        accepted = {fmt::format("{}", p.range.min), fmt::format("{}", p.range.max)};
+        for (const double end : {p.range.min, p.range.max})
+          accepted.push_back({fmt::format("{}", end), fmt::format("{}", end), end});
         break;
       }
       case duts::ParamKind::Duration: {
@@ -232,16 +281,17 @@ TEST(ServedParams, EveryRefusalReadsAsTheCampaignReadersForTheSameValue) {
         const std::string above = ns(p.range.max, 1);
         refused = {{"125", "125"},         {"1.5", "1.5"},         {"125xs", quoted("125xs")},
                    {"abc", quoted("abc")}, {below, quoted(below)}, {above, quoted(above)}};
-        accepted = {ns(p.range.min, 0), ns(p.range.max, 0)};
+        for (const double end : {p.range.min, p.range.max})
+          accepted.push_back({ns(end, 0), quoted(ns(end, 0)), Nanos{static_cast<std::int64_t>(end)}});
         break;
       }
       case duts::ParamKind::Boolean:
         refused = {{"yes", quoted("yes")}, {"1", "1"}};
-        accepted = {"true", "false"};
+        accepted = {{"true", "true", true}, {"false", "false", false}};
         break;
       case duts::ParamKind::Text:
         if (!p.range.choices.empty()) refused = {{"no_such_word", quoted("no_such_word")}};
-        accepted = p.range.choices;
+        for (const std::string& word : p.range.choices) accepted.push_back({word, quoted(word), word});
         break;
       }
       for (const auto& [text, toml] : refused) {
@@ -250,9 +300,16 @@ TEST(ServedParams, EveryRefusalReadsAsTheCampaignReadersForTheSameValue) {
         EXPECT_EQ(serve_param_says(device, p.name, text), campaign)
             << device.name << " --param " << p.name << "=" << text;
       }
-      for (const std::string& text : accepted)
-        EXPECT_EQ(serve_param_says(device, p.name, text), "accepted")
-            << device.name << " " << p.name << "=" << text;
+      for (const InRange& in : accepted) {
+        const auto conflict = device.params_conflict({{p.name, in.value}});
+        const std::string want = conflict ? conflict->expected : "accepted";
+        EXPECT_EQ(serve_param_says(device, p.name, in.text), want)
+            << device.name << " " << p.name << "=" << in.text;
+        if (conflict) { // a campaign of this key alone has no checks: only its refusal says anything
+          EXPECT_EQ(campaign_param_says(device.name, p.name, in.toml), want)
+              << device.name << " " << p.name << " = " << in.toml;
+        }
+      }
     }
   }
 }

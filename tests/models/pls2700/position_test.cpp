@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 #include "models/pls2700/bcd.hpp"
 #include "models/pls2700/error_codes.hpp"
@@ -235,6 +236,25 @@ TEST(Pls2700Fault, UnwiredSecondChannelIsAFaultOnlyOnTwoChannelModels) {
   two.run_for(1_ms);
   EXPECT_TRUE(two.device().transducer_fault(2));
   EXPECT_EQ(two.btr()[2], 0x8000);
+}
+
+// The reference's peaks fall at k / (2f) (README "Decoder"): at 7.5 kHz every 66,666 2/3 ns,
+// so every third one exactly on the 200 us update grid (L377), however far in time; a peak
+// between two nanoseconds is placed at the later one.
+TEST(Pls2700Excitation, PeaksOfAWholeHertzReferenceAreExact) {
+  const Excitation ref(7'500.0, 1.0);
+  EXPECT_EQ(ref.latest_peak(Nanos{66'666}), Nanos{0});
+  EXPECT_EQ(ref.latest_peak(Nanos{66'667}), Nanos{66'667}); // 66,666.67 rounded up
+  EXPECT_EQ(ref.peak_at_or_after(Nanos{1}), Nanos{66'667});
+  EXPECT_EQ(ref.peak_at_or_after(Nanos{66'668}), Nanos{133'334}); // 133,333.33 rounded up
+  for (const std::int64_t k : {1LL, 2LL, 3LL, 1'000LL, 1'000'000'007LL, 40'000'000'000LL}) {
+    const Nanos update = 200_us * k;
+    EXPECT_EQ(ref.latest_peak(update), update) << k;
+    EXPECT_EQ(ref.peak_at_or_after(update), update) << k;
+    EXPECT_EQ(ref.latest_peak(update - Nanos{1}), update - Nanos{66'666}) << k; // peak 3k - 1
+  }
+  // A fraction of a hertz has no exact peaks here: refused (params_check.hpp takes whole hertz).
+  EXPECT_THROW(Excitation(5'000.5, 1.0), std::invalid_argument);
 }
 
 } // namespace
