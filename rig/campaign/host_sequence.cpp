@@ -44,7 +44,7 @@ void HostSequence::read(const HostAction& h) {
   const std::uint16_t raw = words_.read(h.word);
   const double value =
       h.is_signed ? static_cast<double>(static_cast<std::int16_t>(raw)) : static_cast<double>(raw);
-  observations_.push_back(rig::Observation{h.name, value, h.unit, sched_.now()});
+  observations_.push_back(rig::Observation{h.name, value, h.unit, sched_.now(), h.at});
 }
 
 void HostSequence::poll_ack(bool want) {

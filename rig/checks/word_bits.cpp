@@ -16,7 +16,7 @@ CheckResult check_word_bits(std::span<const Observation> observations, const Wor
   }
   const Observation* chosen = chosen_observation(observations, spec);
   if (!chosen) {
-    r.measurements.push_back(missing_word(spec));
+    r.measurements.push_back(missing_word(observations, spec));
     return r;
   }
   // A signed read of a word keeps its 16 bits: take them back as two's complement.

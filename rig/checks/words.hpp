@@ -24,11 +24,14 @@ struct WordSpec {
 // (any time without it); nullptr when there is none.
 [[nodiscard]] const Observation* chosen_observation(std::span<const Observation> observations,
                                                     const WordSpec& spec);
-// A word check's failure when there is none: "missing word: no observation named 'x' by T ns".
-[[nodiscard]] rig::Measurement missing_word(const WordSpec& spec);
+// A word check's measurement when there is none. A read due by spec.at that the rig made only
+// after it (a host action waits for the handshake before it) is the rig's lateness, not the
+// board's: an error, nothing judged. Otherwise a failure: "missing word: no observation named
+// 'x' by T ns" (the board did not answer, or the campaign never read it).
+[[nodiscard]] rig::Measurement missing_word(std::span<const Observation> observations, const WordSpec& spec);
 
-// "<name>" = the chosen observation's value against [lower, upper]. No such observation is a
-// failure ("missing word").
+// "<name>" = the chosen observation's value against [lower, upper]. No such observation:
+// missing_word().
 [[nodiscard]] CheckResult check_word_within(std::span<const Observation> observations, const WordSpec& spec);
 // The same with lower = upper = expected.
 [[nodiscard]] CheckResult check_word_equals(std::span<const Observation> observations, WordSpec spec,

@@ -115,7 +115,11 @@ struct Observation {
   std::string name;
   double value = 0.0;
   std::string unit;
-  Nanos time;
+  Nanos time; // when the rig made the read
+  // When the campaign asked for it: its [[host]] `at` (a read inside a handshake: its write's).
+  // A host action waits for the handshake before it (docs/campaigns.md, [[host]]), so `time`
+  // may be later. None where not known (an observation loaded from results.json).
+  std::optional<Nanos> due{};
 };
 
 // The one comparison rule (docs/campaigns.md, "How limits are compared"): every limit is

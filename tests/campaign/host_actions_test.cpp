@@ -286,6 +286,43 @@ TEST(HostActions, ReadWhileAcknowledgedIsLostWhenAcknowledgeNeverComes) {
   EXPECT_EQ(ack->outcome, rig::Outcome::Fail);
 }
 
+// A host action starts at its time or when the handshake before it has finished
+// (docs/campaigns.md, [[host]]): a read the rig itself postponed past a word check's at_ms
+// judged nothing (an error), not a word the board left missing (a fail). The write at 1 ms
+// holds the host until 2 ms (Acknowledge seen at 1.5 ms, its drop at 2 ms, as above).
+TEST(HostActions, AReadTheHandshakeDeferredPastAtMsIsNotJudged) {
+  const auto within = [](const std::string& name, const std::string& observation, const std::string& at_ms) {
+    return "[[check]]\nkind = \"word_within\"\nname = \"" + name + "\"\nobservation = \"" + observation +
+           "\"\nlower = 0\nat_ms = " + at_ms + "\n";
+  };
+  const Campaign c = parse_campaign(
+      k7361 + host("at = \"1ms\"\nwrite = [0x0012, 0x0101, 0, 0, 0, 0, 0]\nname = \"bad_format\"") +
+          host("read = 0\nname = \"status\"\nwhile_acknowledged = true") +
+          host("at = \"1ms\"\nread = 0\nname = \"status_after\"") + within("due", "status_after", "1.0") +
+          within("one_ns_early", "status_after", "1.999999") + within("made", "status_after", "2.0") +
+          within("in_handshake", "status", "1.0") + within("acknowledged", "status", "1.5"),
+      "t.toml");
+  const rig::RunResult r = Executive(c).run(c.runs[0]).result;
+  ASSERT_EQ(r.observations.size(), 2U);
+  ASSERT_EQ(r.observations[1].name, "status_after");
+  ASSERT_EQ(r.observations[1].time, 2_ms);
+  for (const char* name : {"due", "one_ns_early", "in_handshake"}) {
+    const auto* m = find(r, name);
+    ASSERT_NE(m, nullptr) << name;
+    EXPECT_EQ(m->outcome, rig::Outcome::Error) << name;
+    EXPECT_NE(m->detail.find("not judged: the rig made read"), std::string::npos) << m->detail;
+  }
+  EXPECT_NE(find(r, "due")->detail.find("'status_after' at 2000000 ns, after at_ms 1000000 ns"),
+            std::string::npos)
+      << find(r, "due")->detail;
+  // At the instant the rig made the read the word is judged, as before.
+  for (const char* name : {"made", "acknowledged"}) {
+    const auto* m = find(r, name);
+    ASSERT_NE(m, nullptr) << name;
+    EXPECT_EQ(m->outcome, rig::Outcome::Pass) << name << ": " << m->detail;
+  }
+}
+
 // --- block-transfer writes of a bad length (Series 2700) ----------------------------------
 
 // A 2731 turned by its resolver at 300 rpm (no transducer fault, so a BTW is not ignored with

@@ -6,6 +6,7 @@
 #include "check_test_support.hpp"
 #include "rig/checks/frames.hpp"
 #include "rig/checks/pulse_width.hpp"
+#include "rig/checks/word_bits.hpp"
 #include "rig/checks/words.hpp"
 
 namespace hilrig::checks {
@@ -76,6 +77,41 @@ TEST(Words, AValueThatIsNotANumberCannotBeJudged) {
   const std::vector<rig::Observation> nan{{"w", std::numeric_limits<double>::quiet_NaN(), "", 1_ms}};
   EXPECT_EQ(check_word_within(nan, {.name = "w", .observation = "w", .lower = 0.0}).outcome(),
             rig::Outcome::Error);
+}
+
+// A host action starts at its time or when the handshake before it has finished
+// (docs/campaigns.md, [[host]]). The read below was due at 10.45 ms and made at 11.35 ms.
+TEST(Words, AReadTheRigMadeAfterAtMsThoughDueByThenIsNotJudged) {
+  const std::vector<rig::Observation> late{{"w1", 7.0, "", 11'350'000_ns, 10'450'000_ns}};
+  const auto spec = [](Nanos at) {
+    return WordSpec{.name = "c", .observation = "w1", .lower = 0.0, .at = at};
+  };
+  // Due at at_ms, or one ns before the read: the rig read late, nothing judged, in every kind.
+  for (const Nanos at : {10'450'000_ns, 11'349'999_ns}) {
+    const auto r = check_word_within(late, spec(at));
+    EXPECT_EQ(r.outcome(), rig::Outcome::Error);
+    EXPECT_NE(find(r, "c").detail.find("not judged: the rig made read 'w1' at 11350000 ns, after at_ms"),
+              std::string::npos)
+        << find(r, "c").detail;
+    EXPECT_EQ(check_word_equals(late, spec(at), 7.0).outcome(), rig::Outcome::Error);
+    EXPECT_EQ(check_word_bits(late, spec(at), 0xFFFF, 7).outcome(), rig::Outcome::Error);
+  }
+  // At the read itself (and after it) the word is judged, as before.
+  EXPECT_EQ(check_word_within(late, spec(11'350'000_ns)).outcome(), rig::Outcome::Pass);
+  EXPECT_EQ(check_word_equals(late, spec(11'350'001_ns), 8.0).outcome(), rig::Outcome::Fail);
+  // Not due by at_ms (made on time, at_ms 1 ns before it; or due 1 ns after at_ms): still a
+  // missing word, and so is a read with no due time known.
+  const std::vector<rig::Observation> on_time{{"w1", 7.0, "", 11'350'000_ns, 11'350'000_ns}};
+  const std::vector<rig::Observation> unknown{{"w1", 7.0, "", 11'350'000_ns}};
+  const std::vector<rig::Observation> due_after{{"w1", 7.0, "", 11'350'000_ns, 10'450'001_ns}};
+  for (const auto* obs : {&on_time, &unknown}) {
+    const auto r = check_word_within(*obs, spec(11'349'999_ns));
+    EXPECT_EQ(r.outcome(), rig::Outcome::Fail);
+    EXPECT_NE(find(r, "c").detail.find("missing word"), std::string::npos);
+  }
+  EXPECT_EQ(check_word_within(due_after, spec(10'450'000_ns)).outcome(), rig::Outcome::Fail);
+  // A read never made (the board never acknowledged the write before it) stays a fail.
+  EXPECT_EQ(check_word_bits({}, spec(10'450'000_ns), 0xFFFF, 7).outcome(), rig::Outcome::Fail);
 }
 
 TEST(Frames, EveryFrameDecodesOrTheFirstErrorIsNamed) {
