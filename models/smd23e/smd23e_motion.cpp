@@ -31,7 +31,7 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
 
 // The progress of a run at t. Where its motion has run to its planned end, the total is snapped
 // to the whole step it was planned as (a move's n steps, a registration's last step): its sum
-// of pieces may fall an ulp short of it.
+// of pieces may fall an ulp short, and that last step is due at the end.
 double run_progress(const ShaftRun& r, Nanos t) {
   const Nanos at = std::min(t, r.stop);
   const double p = r.base + r.motion.progress(at);
@@ -166,7 +166,11 @@ Nanos Smd23e::next_step_time(Nanos now) const {
   if (!run_ || runs_.empty()) return Nanos::max();
   const ShaftRun& r = runs_.back();
   const double k = static_cast<double>(whole(run_progress(r, now))) + 1.0;
-  return r.motion.time_at_progress(k, r.base);
+  const Nanos t = r.motion.time_at_progress(k, r.base);
+  if (t != Nanos::max()) return t;
+  // A total an ulp short of its last whole step: run_progress snaps it at the motion's end.
+  const Nanos end = r.motion.end();
+  return end != Nanos::max() && end > now && run_progress(r, end) >= k ? end : Nanos::max();
 }
 
 void Smd23e::start_motion(Run run, std::vector<Piece> pieces, int dir) {

@@ -167,6 +167,30 @@ TEST(Smd23eDut, EStopJustBeforeAStepIsDueLeavesItOffTheStepLine) {
   }
 }
 
+// A registration move outputs exactly S steps after the stop input (L1049), so its tail
+// does not depend on where between two steps the input comes: v_s 1000, v_p 5000 steps/s, A = D
+// = 100 (100,000 steps/s²), S = 1000, started at 10 ms. The ramp ends at 50 ms (120 steps), the
+// cruise steps are 200 us apart on 50 ms + k·200 us. From the last step at or before the input
+// (t_k): 880 steps at 5000 (176 ms) and 120 down to 1000 steps/s (40 ms), the last at t_k +
+// 216 ms, 1000 steps after the input, the last interval the one from 1 step before the end:
+// 1 = 1000·t + 100,000·t²/2, t = 954.451 us (§3.8).
+TEST(Smd23eDut, RegistrationTailIsTheSameWhateverTheInputsPhase) {
+  for (const std::int64_t offset : {-1, 0, 1, 2, 1000, 100'000, 199'999}) {
+    SCOPED_TRACE(offset);
+    Bench b;
+    b.configure(0b100); // input 1: Stop Jog/Registration
+    b.at(10_ms, Block{0x0080, 0x8080, 1, 0, 5, 0, 100, 100, 0, 0});
+    const Nanos input = 200'200'000_ns + Nanos{offset};
+    b.sched.at(input, [&b] { b.bus.line("in1").driver().set(Level::High); });
+    b.sched.run_until(500_ms);
+    const Nanos t_k = offset < 0 ? 200_ms : 200'200'000_ns;
+    const std::vector<Nanos> tail = steps_after(b, input);
+    ASSERT_EQ(tail.size(), 1000U);
+    EXPECT_EQ(tail.back(), t_k + 216_ms);
+    EXPECT_NEAR(static_cast<double>((tail.back() - tail[tail.size() - 2]).count()), 954'451.15, 1.0);
+  }
+}
+
 TEST(Smd23eDut, UnknownPinOrVariantIsRefused) {
   const DutInfo info = smd23e_info();
   Scheduler sched;
