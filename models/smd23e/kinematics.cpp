@@ -152,13 +152,15 @@ Motion::Span Motion::span_between(std::int64_t lo, std::int64_t hi, std::size_t&
   return p.v0 >= 0.0 && p.a0 >= 0.0 && p.jerk >= 0.0 ? Span::Rising : Span::OnePiece;
 }
 
-// Progress is non-decreasing on [lo, hi], so every probe keeps progress(lo) < x <= progress(hi)
+// Progress is non-decreasing on [lo, hi], so every probe keeps lo short of x and hi reaching it
 // and the first ns reaching x is the one the bisection would end on. The first probe is the
 // closed-form time (within a ns or so of the answer); from there the bracket grows towards the
 // answer in doubling strides, then is halved: a few probes, never many more than a bisection's.
-Nanos Motion::first_reaching(double x, std::size_t piece, std::int64_t lo, std::int64_t hi) const {
+Nanos Motion::first_reaching(double x, double base, std::size_t piece, std::int64_t lo,
+                             std::int64_t hi) const {
   const Piece& p = pieces_[piece];
-  const double rest = x - placed_[piece].p0;
+  const double rest = x - base - placed_[piece].p0;
+  const auto reached = [this, x, base](std::int64_t t) { return reaches(base + progress(Nanos{t}), x); };
   // The local time where the piece covers `rest`: the quadratic's stable root, then Newton for
   // the jerk's term.
   const double root = std::sqrt(std::max(0.0, p.v0 * p.v0 + 2.0 * p.a0 * rest));
@@ -175,11 +177,11 @@ Nanos Motion::first_reaching(double x, std::size_t piece, std::int64_t lo, std::
   std::int64_t g = lo + (hi - lo) / 2;
   if (guess > static_cast<double>(lo) && guess < static_cast<double>(hi))
     g = static_cast<std::int64_t>(guess);
-  if (progress(Nanos{g}) >= x) {
+  if (reached(g)) {
     hi = g;
     for (std::int64_t stride = 1; hi - lo > 1; stride *= 2) {
       const std::int64_t t = std::max(hi - stride, lo + 1);
-      if (progress(Nanos{t}) < x) {
+      if (!reached(t)) {
         lo = t;
         break;
       }
@@ -189,7 +191,7 @@ Nanos Motion::first_reaching(double x, std::size_t piece, std::int64_t lo, std::
     lo = g;
     for (std::int64_t stride = 1; hi - lo > 1; stride *= 2) {
       const std::int64_t t = std::min(lo + stride, hi - 1);
-      if (progress(Nanos{t}) >= x) {
+      if (reached(t)) {
         hi = t;
         break;
       }
@@ -198,7 +200,7 @@ Nanos Motion::first_reaching(double x, std::size_t piece, std::int64_t lo, std::
   }
   while (hi - lo > 1) {
     const std::int64_t mid = lo + (hi - lo) / 2;
-    if (progress(Nanos{mid}) >= x)
+    if (reached(mid))
       hi = mid;
     else
       lo = mid;
@@ -206,11 +208,11 @@ Nanos Motion::first_reaching(double x, std::size_t piece, std::int64_t lo, std::
   return Nanos{hi};
 }
 
-Nanos Motion::time_at_progress(double x) const {
-  if (x <= 0.0) {
+Nanos Motion::time_at_progress(double x, double base) const {
+  if (reaches(base, x)) {
     return start_;
   }
-  if (x > total_) {
+  if (!reaches(base + total_, x)) {
     return Nanos::max();
   }
   // Progress is non-decreasing (speed never drops below v_s > 0): bisect on whole ns.
@@ -218,7 +220,7 @@ Nanos Motion::time_at_progress(double x) const {
   std::int64_t hi = end_ == Nanos::max() ? lo : end_.count();
   if (end_ == Nanos::max()) {
     std::int64_t step = 1'000'000;
-    while (progress(Nanos{hi}) < x) {
+    while (!reaches(base + progress(Nanos{hi}), x)) {
       lo = hi;
       hi += step;
       step *= 2;
@@ -227,7 +229,7 @@ Nanos Motion::time_at_progress(double x) const {
   // The progress at lo: the start's, or a probe's (the value progress(Nanos{lo}) gives).
   double at_lo = progress(Nanos{lo});
   const auto probe = [this](std::int64_t t) { return progress(Nanos{t}); };
-  // Once lo and hi are probes (progress(lo) < x <= progress(hi)) within one rising piece, the
+  // Once lo and hi are probes (lo short of x, hi reaching it) within one rising piece, the
   // bisection can only end at the one ns where progress there first reaches x: that ns is
   // found from the piece's closed form rather than by the rest of the bisection's probes. Looked at only
   // before a probe the path does not remember (remembered ones cost nothing), and no more once
@@ -238,18 +240,18 @@ Nanos Motion::time_at_progress(double x) const {
     if (look_for_rise && lo > start_.count() && hi < end_.count() && !path_.knows(depth, mid)) {
       std::size_t piece = 0;
       const Span span = span_between(lo, hi, piece);
-      if (span == Span::Rising) return first_reaching(x, piece, lo, hi);
+      if (span == Span::Rising) return first_reaching(x, base, piece, lo, hi);
       look_for_rise = span == Span::Pieces;
     }
     const double at_mid = path_.probe(depth, mid, probe);
-    if (at_mid >= x) {
+    if (reaches(base + at_mid, x)) {
       hi = mid;
     } else {
       lo = mid;
       at_lo = at_mid;
     }
   }
-  return at_lo >= x ? Nanos{lo} : Nanos{hi};
+  return reaches(base + at_lo, x) ? Nanos{lo} : Nanos{hi};
 }
 
 } // namespace hilrig::models::smd23e

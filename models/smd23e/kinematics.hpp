@@ -4,7 +4,9 @@
 // constant jerk (jerk 0 for linear ramps and cruise), like Klipper's trapq moves. Times come
 // from the closed-form profile formulas, never from sampling.
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/time.hpp"
@@ -13,6 +15,15 @@
 namespace hilrig::models::smd23e {
 
 enum class Phase : std::uint8_t { Accelerate, Cruise, Decelerate };
+
+// Whether a progress p has reached x. Floating-point progress lands a few ulps off a whole
+// step where the exact profile meets it on a whole ns (a cruise step 1.4 ms into a cruise
+// gives 126.99999999999999): within 8 ulps of x counts as reached, far below a ns of travel at
+// any step rate of the board (1 ns at 1 step/s is 1e-9 step). Non-decreasing in p, so the first
+// ns reaching x is well defined; step counts and step times both use it.
+[[nodiscard]] inline bool reaches(double p, double x) {
+  return x - p <= 8.0 * std::numeric_limits<double>::epsilon() * std::abs(x);
+}
 
 struct Piece {
   double duration = 0.0; // s; +inf for an open-ended cruise (jog)
@@ -78,8 +89,10 @@ public:
   [[nodiscard]] double progress(Nanos t) const;
   [[nodiscard]] double velocity(Nanos t) const;
   [[nodiscard]] Phase phase(Nanos t) const;
-  // First time the progress reaches x (exact to 1 ns); Nanos::max() if never.
-  [[nodiscard]] Nanos time_at_progress(double x) const;
+  // First time base + progress reaches() x (exact to 1 ns); Nanos::max() if never. `base`:
+  // a chain's progress before this motion, added in the same floating-point sum the caller
+  // counts steps by, so the time found and the count agree to the ns.
+  [[nodiscard]] Nanos time_at_progress(double x, double base = 0.0) const;
 
 private:
   struct Placed {
@@ -93,8 +106,10 @@ private:
   enum class Span : std::uint8_t { Rising, OnePiece, Pieces };
   [[nodiscard]] Span span_between(std::int64_t lo, std::int64_t hi, std::size_t& piece) const;
   // The first whole ns in (lo, hi] whose progress reaches x, where [lo, hi] lies in that rising
-  // piece, progress(lo) < x and progress(hi) >= x: searched from the piece's closed-form time.
-  [[nodiscard]] Nanos first_reaching(double x, std::size_t piece, std::int64_t lo, std::int64_t hi) const;
+  // piece, base + progress(lo) does not reach x and base + progress(hi) does: searched from the
+  // piece's closed-form time.
+  [[nodiscard]] Nanos first_reaching(double x, double base, std::size_t piece, std::int64_t lo,
+                                     std::int64_t hi) const;
   [[nodiscard]] double board_time(Nanos t) const { return (t - start_).seconds() / scale_; }
   Nanos start_{0};
   Nanos end_{0};

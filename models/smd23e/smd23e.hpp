@@ -85,6 +85,9 @@ public:
   // the present run (and a little of the past, for tests and traces) is ever looked at.
   static constexpr std::size_t kKeptRuns = 64;
   [[nodiscard]] bool moving() const { return run_.has_value(); }
+  // When the present run issues its next whole step after now (the same rule step_position
+  // counts by, exact to 1 ns); Nanos::max() when not moving or no further step comes.
+  [[nodiscard]] Nanos next_step_time(Nanos now) const;
   // The shaft stays where it is until an outside call (a host write, an input edge, a fault,
   // power): no run, no pause before the next move, no delayed input or late stop pending.
   // shaft_steps() is the same at every later time until then.

@@ -11,17 +11,34 @@ namespace hilrig::models::smd23e {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kEps = 1e-6; // steps: absorbs floating error at whole-step boundaries
+constexpr double kEps = 1e-6; // steps: absorbs floating error in a planned total of whole steps
 constexpr std::int32_t kMaxTarget = 8'388'607;
 
-std::int64_t whole(double progress) { return static_cast<std::int64_t>(std::floor(progress + kEps)); }
+// Steps issued by a progress: the whole steps it reaches(), the same rule as the step's due
+// time (Motion::time_at_progress), so a step is issued at t exactly when it is due at or before
+// t. A stop just before a step is due issues none (L976–980: the step train stops at once).
+std::int64_t whole(double progress) {
+  const double below = std::floor(progress);
+  return static_cast<std::int64_t>(below) + (reaches(progress, below + 1.0) ? 1 : 0);
+}
+// A planned total (a move of n steps, an encoder move's stop point) in whole steps.
+std::int64_t planned_whole(double total) { return static_cast<std::int64_t>(std::floor(total + kEps)); }
 
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {
   const std::int64_t q = a / b;
   return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
 }
 
-double run_progress(const ShaftRun& r, Nanos t) { return r.base + r.motion.progress(std::min(t, r.stop)); }
+// The progress of a run at t. Where its motion has run to its planned end, the total is snapped
+// to the whole step it was planned as (a move's n steps, a registration's last step): its sum
+// of pieces may fall an ulp short, and that last step is due at the end.
+double run_progress(const ShaftRun& r, Nanos t) {
+  const Nanos at = std::min(t, r.stop);
+  const double p = r.base + r.motion.progress(at);
+  if (at < r.motion.end()) return p;
+  const double w = std::round(p);
+  return std::abs(p - w) <= kEps ? w : p;
+}
 std::int64_t issued_at(const ShaftRun& r, Nanos t) {
   return r.issued_before + whole(run_progress(r, t)) - whole(r.base);
 }
@@ -144,6 +161,17 @@ void Smd23e::network_link(bool up) {
 double Smd23e::progress() const { return run_progress(runs_.back(), sched_.now()); }
 
 double Smd23e::velocity() const { return runs_.back().motion.velocity(sched_.now()); }
+
+Nanos Smd23e::next_step_time(Nanos now) const {
+  if (!run_ || runs_.empty()) return Nanos::max();
+  const ShaftRun& r = runs_.back();
+  const double k = static_cast<double>(whole(run_progress(r, now))) + 1.0;
+  const Nanos t = r.motion.time_at_progress(k, r.base);
+  if (t != Nanos::max()) return t;
+  // A total an ulp short of its last whole step: run_progress snaps it at the motion's end.
+  const Nanos end = r.motion.end();
+  return end != Nanos::max() && end > now && run_progress(r, end) >= k ? end : Nanos::max();
+}
 
 void Smd23e::start_motion(Run run, std::vector<Piece> pieces, int dir) {
   const Nanos now = sched_.now();
@@ -474,7 +502,7 @@ void Smd23e::start_encoder_move(bool absolute) {
   r.kind = Kind::EncoderMove;
   r.spec = *spec;
   const double total = x + ramp_steps(vp, vs(), spec->d, spec->shape);
-  r.target = motor_position() + dir * whole(total);
+  r.target = motor_position() + dir * planned_whole(total);
   start_motion(std::move(r), std::move(pieces), dir);
 }
 

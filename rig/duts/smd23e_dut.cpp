@@ -114,15 +114,11 @@ private:
     wake_ = sched_.at(next_wake(now), [this] { follow(); });
   }
 
-  // The exact time the present run issues its next whole step (the model issues a step when
-  // the continuous profile crosses a whole step), or the idle poll, whichever is sooner.
+  // The exact time the present run issues its next whole step (the model's own rule), or the
+  // idle poll, whichever is sooner.
   [[nodiscard]] Nanos next_wake(Nanos now) const {
-    Nanos next = now + kIdlePoll;
-    if (!device_.moving() || device_.runs().empty()) return next;
-    const m::ShaftRun& r = device_.runs().back();
-    const double progress = r.base + r.motion.progress(now);
-    const double k = std::floor(progress + 1e-6) + 1.0;
-    const Nanos t = r.motion.time_at_progress(k - r.base);
+    const Nanos next = now + kIdlePoll;
+    const Nanos t = device_.next_step_time(now);
     if (t <= now) return now + Nanos{1};
     return t < next ? t : next;
   }

@@ -38,9 +38,10 @@ struct Bench {
   void at(Nanos t, const Block& b) {
     sched.at(t, [this, b] { write(b); });
   }
-  // v_s 1000 steps/s (1, 0), 2048 steps/turn, driver on; then Command Mode.
-  void configure() {
-    at(0_ms, Block{0x8000, 0x8007, 1, 0, 2048, 0, 1024, 50, 20, 0});
+  // v_s 1000 steps/s (1, 0), 2048 steps/turn, driver on; then Command Mode. `control`: the
+  // input functions (input 1 in bits 0-2).
+  void configure(std::uint16_t control = 0) {
+    at(0_ms, Block{static_cast<std::uint16_t>(0x8000 | control), 0x8007, 1, 0, 2048, 0, 1024, 50, 20, 0});
     at(1_ms, Block{0, 0x8000, 0, 0, 0, 0, 0, 0, 0, 0});
   }
 };
@@ -138,6 +139,56 @@ TEST(Smd23eDut, LostStepsVariantShowsFewerShaftSteps) {
   b.sched.run_until(600_ms);
   // One in 100 lost (models/smd23e/README.md): 40 of 4000.
   EXPECT_EQ(b.trace.edges_of("step").size(), 3960U);
+}
+
+// The times of the STEP edges after `from`.
+std::vector<Nanos> steps_after(const Bench& b, Nanos from) {
+  std::vector<Nanos> out;
+  for (const Edge& e : b.trace.edges_of("step"))
+    if (e.time > from) out.push_back(e.time);
+  return out;
+}
+
+// An E-Stop edge (input 1, code 101) is an immediate stop (L976–980, L593): a jog at v_p = v_s
+// = 1000 steps/s set off at 10 ms has its STEP edges on the whole ms, and an edge 1 or 2 ns
+// before the one due at 300 ms leaves it out; at or after it, the step is on STEP at 300 ms.
+TEST(Smd23eDut, EStopJustBeforeAStepIsDueLeavesItOffTheStepLine) {
+  for (const std::int64_t offset : {-2, -1, 0, 1}) {
+    SCOPED_TRACE(offset);
+    Bench b;
+    b.configure(0b101);
+    b.at(10_ms, Block{0x0080, 0x8000, 0, 0, 1, 0, 100, 100, 0, 0}); // +Jog, v_p 1000
+    const Nanos edge = 300_ms + Nanos{offset};
+    b.sched.at(edge, [&b] { b.bus.line("in1").driver().set(Level::High); });
+    b.sched.run_until(500_ms);
+    const std::vector<Nanos> step = steps_after(b, 0_ms);
+    ASSERT_EQ(step.size(), offset < 0 ? 289U : 290U);
+    EXPECT_EQ(step.back(), offset < 0 ? 299_ms : 300_ms);
+  }
+}
+
+// A registration move outputs exactly S steps after the stop input (L1049), so its tail
+// does not depend on where between two steps the input comes: v_s 1000, v_p 5000 steps/s, A = D
+// = 100 (100,000 steps/s²), S = 1000, started at 10 ms. The ramp ends at 50 ms (120 steps), the
+// cruise steps are 200 us apart on 50 ms + k·200 us. From the last step at or before the input
+// (t_k): 880 steps at 5000 (176 ms) and 120 down to 1000 steps/s (40 ms), the last at t_k +
+// 216 ms, 1000 steps after the input, the last interval the one from 1 step before the end:
+// 1 = 1000·t + 100,000·t²/2, t = 954.451 us (§3.8).
+TEST(Smd23eDut, RegistrationTailIsTheSameWhateverTheInputsPhase) {
+  for (const std::int64_t offset : {-1, 0, 1, 2, 1000, 100'000, 199'999}) {
+    SCOPED_TRACE(offset);
+    Bench b;
+    b.configure(0b100); // input 1: Stop Jog/Registration
+    b.at(10_ms, Block{0x0080, 0x8080, 1, 0, 5, 0, 100, 100, 0, 0});
+    const Nanos input = 200'200'000_ns + Nanos{offset};
+    b.sched.at(input, [&b] { b.bus.line("in1").driver().set(Level::High); });
+    b.sched.run_until(500_ms);
+    const Nanos t_k = offset < 0 ? 200_ms : 200'200'000_ns;
+    const std::vector<Nanos> tail = steps_after(b, input);
+    ASSERT_EQ(tail.size(), 1000U);
+    EXPECT_EQ(tail.back(), t_k + 216_ms);
+    EXPECT_NEAR(static_cast<double>((tail.back() - tail[tail.size() - 2]).count()), 954'451.15, 1.0);
+  }
 }
 
 TEST(Smd23eDut, UnknownPinOrVariantIsRefused) {

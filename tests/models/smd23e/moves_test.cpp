@@ -1,6 +1,8 @@
 // Every move type, timed from the outside through the step train (spec §3). Common numbers:
 // v_s = 100 steps/s, A = D = 10 steps/ms/s (10,000 steps/s²), 2048 steps/turn; the ramp
 // 100 → 1100 steps/s takes 60 steps and 0.1 s (examples file, "handy P0 ramps").
+#include <string>
+
 #include "tests/models/smd23e/smd23e_fixture.hpp"
 
 namespace hilrig::models::smd23e::test {
@@ -642,6 +644,49 @@ TEST_F(Smd23eMoves, FindHomeWithoutAHomeInputIsACommandError) {
   EXPECT_TRUE(bit1(sw1::kCommandError));
   EXPECT_TRUE(bit1(sw1::kStopped));
 }
+
+// Profile A's last step: "Creep CW at v_s. Stop on Home inactive→active" (L1331–1335, spec
+// §3.9 step 7), position := 0 there (L1275). The Home edge stops the step train at once: a
+// creep step is issued only if it was due at or before the edge, to the ns (a step due at the
+// edge itself comes first). Home is already active at the command, so the profile starts at the
+// reverse search (L1335); it goes inactive at 500 ms; after the deceleration and the 2 s pause
+// (L1327) the creep's step k is due at its start + k / v_s: step v_s 1 s into it.
+struct CreepPhase {
+  std::int32_t vs; // steps/s
+  std::int64_t offset_ns;
+};
+
+class Smd23eCreepPhase : public Smd23eBench, public ::testing::WithParamInterface<CreepPhase> {};
+
+TEST_P(Smd23eCreepPhase, ACreepStepIsIssuedOnlyIfDueAtOrBeforeTheHomeEdge) {
+  const CreepPhase c = GetParam();
+  configure(ConfigWords{.control = 0b110, .vs = c.vs}); // input 1: Home
+  in1.set(Level::High);
+  command(msw::kHomeCw);
+  at(500_ms, in1, Level::Low);
+  run_to(3_s);
+  ASSERT_TRUE(bit1(sw1::kMovingCw));
+  const Nanos creep = dut.runs().back().motion.start();
+  // The decel 1100 → v_s at 10,000 steps/s² and the pause: the creep's start as the manual has it.
+  ASSERT_NEAR(creep.seconds(), 0.5 + (1100.0 - c.vs) / 10'000.0 + 2.0, 1e-6);
+  const std::int64_t before = dut.step_position(creep);
+  const std::int64_t step = c.vs; // the step due 1 s into the creep
+  const Nanos due = creep + 1_s;
+  at(due + Nanos{c.offset_ns}, in1, Level::High);
+  run_to(due + 1_s);
+  EXPECT_TRUE(bit1(sw1::kHomed));
+  EXPECT_EQ(dut.step_position(sched.now()) - before, c.offset_ns < 0 ? step - 1 : step);
+}
+
+INSTANTIATE_TEST_SUITE_P(Phases, Smd23eCreepPhase,
+                         ::testing::Values(CreepPhase{1000, -2}, CreepPhase{1000, -1}, CreepPhase{1000, 0},
+                                           CreepPhase{1000, 1}, CreepPhase{100, -11}, CreepPhase{100, -10},
+                                           CreepPhase{100, -1}, CreepPhase{100, 0}, CreepPhase{100, 1}),
+                         [](const ::testing::TestParamInfo<CreepPhase>& i) {
+                           const std::int64_t o = i.param.offset_ns;
+                           return "At" + std::to_string(i.param.vs) + (o < 0 ? "Minus" : "Plus") +
+                                  std::to_string(o < 0 ? -o : o) + "ns";
+                         });
 
 // ---- Homing with both overtravel limits wired ------------------------------------------------
 // smd23e manual (seeds/003_7a93cebfafae55cd.txt):

@@ -1,6 +1,7 @@
 // Stops, limits, E-Stop, stall, driver faults and invalid commands with their error bits
 // (spec §3.4, §3.7, §4, §6.7).
 #include <array>
+#include <string>
 #include <utility>
 
 #include "tests/models/smd23e/smd23e_fixture.hpp"
@@ -56,6 +57,45 @@ TEST_F(Smd23eStops, EStopStopsAtOnceAndBlocksMovesWhileActive) {
   run_to(3_s);
   EXPECT_EQ(position_word(), -180);
 }
+
+// An E-Stop is an immediate stop (L976–980, L593): the step train stops at the edge. A step is
+// issued only if it was due at or before the edge, to the ns: an edge 1 or 2 ns before a step
+// is due leaves that step out, one at or after it keeps it (the tie: the step first). The jog
+// runs at v_p = v_s (no ramp, §3.7), started at 10 ms: step k is due at 10 ms + k / v_s.
+struct EStopPhase {
+  std::int32_t vs; // steps/s
+  std::int64_t offset_ns;
+};
+
+class Smd23eEStopPhase : public Smd23eBench, public ::testing::WithParamInterface<EStopPhase> {};
+
+TEST_P(Smd23eEStopPhase, AStepIsIssuedOnlyIfDueAtOrBeforeTheEdge) {
+  const EStopPhase c = GetParam();
+  configure(ConfigWords{.control = kLimitsAndEStop, .vs = c.vs});
+  preset(0);
+  run_to(10_ms);
+  command(msw::kJogCw, kDrive, MoveWords{.vp = c.vs, .accel = 100, .decel = 100});
+  constexpr std::int64_t kStep = 3;
+  constexpr std::int64_t kSecond = 1'000'000'000; // ns
+  const Nanos due = 10_ms + Nanos{kStep * kSecond / c.vs};
+  at(due + Nanos{c.offset_ns}, in3, Level::High);
+  run_to(due + Nanos{3 * kSecond / c.vs});
+  EXPECT_TRUE(bit1(sw1::kStopped));
+  EXPECT_EQ(dut.step_position(sched.now()), c.offset_ns < 0 ? kStep - 1 : kStep);
+  EXPECT_EQ(position_word(), c.offset_ns < 0 ? kStep - 1 : kStep);
+}
+
+INSTANTIATE_TEST_SUITE_P(Phases, Smd23eEStopPhase,
+                         ::testing::Values(EStopPhase{1000, -2}, EStopPhase{1000, -1}, EStopPhase{1000, 0},
+                                           EStopPhase{1000, 1}, EStopPhase{100, -11}, EStopPhase{100, -10},
+                                           EStopPhase{100, -2}, EStopPhase{100, -1}, EStopPhase{100, 0},
+                                           EStopPhase{100, 1}, EStopPhase{1, -1000}, EStopPhase{1, -2},
+                                           EStopPhase{1, -1}, EStopPhase{1, 0}, EStopPhase{1, 1}),
+                         [](const ::testing::TestParamInfo<EStopPhase>& i) {
+                           const std::int64_t o = i.param.offset_ns;
+                           return "At" + std::to_string(i.param.vs) + (o < 0 ? "Minus" : "Plus") +
+                                  std::to_string(o < 0 ? -o : o) + "ns";
+                         });
 
 TEST_F(Smd23eStops, EStopWhileIdleSetsInputError) {
   configure(ConfigWords{.control = kLimitsAndEStop});
